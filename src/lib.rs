@@ -1,0 +1,8 @@
+//! rollbench: high-speed rolling-bearing analysis (SASHBEAN lamina method, NASA CR-191182).
+//!
+//! Layers: `model` (pure physics), `solve` (equilibrium solvers, staged pipeline),
+//! `deck` (TOML input), `report` (text/JSON/CSV), `thermal` (lumped network). None of
+//! these depend on the terminal UI.
+#![forbid(unsafe_code)]
+
+pub mod model;

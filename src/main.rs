@@ -1,0 +1,3 @@
+fn main() {
+    println!("rollbench: under construction");
+}

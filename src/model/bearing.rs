@@ -1,0 +1,313 @@
+//! The resolved bearing description in SI units: what every physics stage reads.
+//!
+//! A deck (TOML, SI or US customary) is parsed and validated by `crate::deck` into a
+//! [`Bearing`]; nothing downstream ever sees deck units. Field names carry their unit.
+
+use serde::{Deserialize, Serialize};
+
+/// Elastic and inertial properties of one body (roller or ring).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Material {
+    /// Young's modulus, Pa.
+    pub youngs_modulus_pa: f64,
+    /// Poisson's ratio, dimensionless.
+    pub poisson_ratio: f64,
+    /// Mass density, kg/m³.
+    pub density_kg_m3: f64,
+    /// Specific heat, J/(kg·K) (thermal network capacities).
+    pub specific_heat_j_kg_k: f64,
+    /// Thermal conductivity, W/(m·K).
+    pub conductivity_w_m_k: f64,
+}
+
+impl Material {
+    /// AISI 52100 / M50 bearing steel (E = 29.0 Mpsi, ν = 0.30, as in seed 000 App. E).
+    pub const STEEL: Material = Material {
+        youngs_modulus_pa: 29.0e6 * 6_894.757_293_168_361,
+        poisson_ratio: 0.30,
+        density_kg_m3: 7_833.0,
+        specific_heat_j_kg_k: 460.0,
+        conductivity_w_m_k: 43.0,
+    };
+    /// Hot-pressed silicon nitride (E = 43.0 Mpsi, ν = 0.27, as in seed 000 App. E).
+    pub const SILICON_NITRIDE: Material = Material {
+        youngs_modulus_pa: 43.0e6 * 6_894.757_293_168_361,
+        poisson_ratio: 0.27,
+        density_kg_m3: 3_200.0,
+        specific_heat_j_kg_k: 680.0,
+        conductivity_w_m_k: 30.0,
+    };
+
+    /// E/(1−ν²), Pa: the plane-strain modulus of this body.
+    pub fn plane_strain_modulus_pa(&self) -> f64 {
+        self.youngs_modulus_pa / (1.0 - self.poisson_ratio * self.poisson_ratio)
+    }
+}
+
+/// Bearing internal geometry (seed 000 symbol list), SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Geometry {
+    /// Z, number of rollers.
+    pub roller_count: usize,
+    /// D, roller maximum diameter, m.
+    pub roller_diameter_m: f64,
+    /// L, roller overall length, m (mass properties).
+    pub roller_length_m: f64,
+    /// L_eff, roller effective (contacting) length, m, sliced into Γ laminae.
+    pub effective_length_m: f64,
+    /// R_o, roller crown radius, m.
+    pub roller_crown_radius_m: f64,
+    /// Inner raceway crown radius, m (≥ roller crown radius).
+    pub inner_crown_radius_m: f64,
+    /// Outer raceway crown radius, m (≥ roller crown radius). A self-aligning
+    /// spherical outer raceway has P_t/(2 cos β) + D/2.
+    pub outer_crown_radius_m: f64,
+    /// P_t, pitch diameter, m.
+    pub pitch_diameter_m: f64,
+    /// β, initial contact angle measured from the radial plane, rad.
+    pub contact_angle_rad: f64,
+    /// Diametral clearance, m (negative: preload interference).
+    pub diametral_clearance_m: f64,
+}
+
+impl Geometry {
+    /// θ = D·cos β / P_t (seed 000 symbol list).
+    pub fn theta(&self) -> f64 {
+        self.roller_diameter_m * self.contact_angle_rad.cos() / self.pitch_diameter_m
+    }
+}
+
+/// Roller and ring materials.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Materials {
+    pub roller: Material,
+    pub inner_ring: Material,
+    pub outer_ring: Material,
+}
+
+/// Loads and speeds. Speeds are signed angular velocities about the bearing axis.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Operating {
+    /// Ω₁, inner ring angular velocity, rad/s.
+    pub inner_speed_rad_s: f64,
+    /// Ω₂, outer ring angular velocity, rad/s.
+    pub outer_speed_rad_s: f64,
+    /// F_r, radial load, N (acts toward roller 1, azimuth 0).
+    pub radial_load_n: f64,
+    /// F_a, axial load, N (positive presses the rings together).
+    pub axial_load_n: f64,
+}
+
+/// Which film-thickness formula the EHD stage uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum FilmModel {
+    /// Grubin, seed 000 eq. 5.1 (the seed's choice, and the basis of the ASME curve).
+    #[default]
+    Grubin,
+    /// Dowson–Higginson minimum film.
+    DowsonHigginson,
+    /// Pan–Hamrock minimum film.
+    PanHamrock,
+}
+
+/// Lubricant at operating temperature, and EHD traction parameters (seed 000 §5, §9).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Lubricant {
+    /// η₀, absolute viscosity at operating temperature and ambient pressure, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// α (seed's ζ), pressure-viscosity coefficient, 1/Pa.
+    pub pressure_viscosity_pa_inv: f64,
+    /// Lubricant density, kg/m³ (kinematic viscosity for the drag term).
+    pub density_kg_m3: f64,
+    /// Specific heat, J/(kg·K) (oil mass transport in the thermal network).
+    pub specific_heat_j_kg_k: f64,
+    /// τ_tr, transition shear stress of the Allen–Townsend–Zaretsky law, Pa.
+    pub transition_shear_stress_pa: f64,
+    /// μ_fl, limiting (pseudo) traction coefficient, dimensionless.
+    pub limiting_traction_coefficient: f64,
+    /// Constant traction coefficient in lost-lubrication mode, dimensionless.
+    pub lost_lubrication_traction_coefficient: f64,
+    /// Film formula.
+    pub film_model: FilmModel,
+}
+
+/// RMS surface finishes (seed 000 eq. 6.7), m.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Surfaces {
+    pub roller_rms_m: f64,
+    pub inner_rms_m: f64,
+    pub outer_rms_m: f64,
+}
+
+/// Which life-adjustment method is used for lubrication.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum LifeMethod {
+    /// Seed 000 §6.1: ASME (1971) lubrication factor, extended down to Λ = 0.1.
+    #[default]
+    Asme,
+    /// ISO 281:2007 modified rating life a_ISO(κ, e_C·C_u/P).
+    Iso281,
+}
+
+/// Life factors (seed 000 §4.2, §6).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LifeFactors {
+    /// ξ, basic dynamic capacity reduction factor (0.60–0.85 typical).
+    pub capacity_reduction: f64,
+    /// Material life-adjustment factor (§6.2).
+    pub material_factor: f64,
+    /// Stress-concentration factor applied to loaded edge laminae (§4.2, 1.5–2.0 typical).
+    pub edge_stress_factor: f64,
+    /// Lubrication adjustment method.
+    pub method: LifeMethod,
+    /// ISO 281 contamination factor e_C (0–1).
+    pub iso_contamination_factor: f64,
+    /// ISO 281 fatigue load limit C_u, N.
+    pub iso_fatigue_load_limit_n: f64,
+    /// ISO 281 reference kinematic viscosity ν₁ override, m²/s (0 = compute from n and d_m).
+    pub iso_reference_viscosity_m2_s: f64,
+}
+
+/// Which ring guides the cage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum GuidingRing {
+    Inner,
+    #[default]
+    Outer,
+}
+
+/// Cage rails (seed 000 §9.3) and drag factor (§9.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Cage {
+    /// W_cr, total width of the cage rails, m.
+    pub rail_width_m: f64,
+    /// D_cr, mean rail/land interface diameter, m.
+    pub mean_diameter_m: f64,
+    /// dc_cr, diametral clearance between lands and rails, m.
+    pub diametral_clearance_m: f64,
+    /// Guiding ring.
+    pub guided_by: GuidingRing,
+    /// Ψ (seed's f₀), viscous-drag factor of eq. 9.5 (5 for spherical roller bearings in oil bath).
+    pub drag_factor: f64,
+    /// Cage mass, kg (informational; thermal capacity of the cage node).
+    pub mass_kg: f64,
+}
+
+/// Numerical settings: one place for tolerances and iteration limits.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SolverSettings {
+    /// Γ, number of laminae per roller.
+    pub laminae: usize,
+    /// Force tolerance of the equilibria, relative to the reference load (max of
+    /// the applied load and the roller centrifugal force), dimensionless.
+    pub force_tolerance: f64,
+    /// Newton iteration limit of the bearing (ring) equilibrium.
+    pub max_iterations: usize,
+    /// Newton iteration limit of one roller's equilibrium.
+    pub max_roller_iterations: usize,
+    /// Stiffness of the cage pocket (roller held along its axis and in pitch) as a
+    /// fraction of a roller's contact stiffness; see `solve::load_distribution`.
+    pub cage_stiffness_ratio: f64,
+}
+
+impl Default for SolverSettings {
+    fn default() -> Self {
+        SolverSettings {
+            laminae: 21,
+            force_tolerance: 1e-9,
+            max_iterations: 100,
+            max_roller_iterations: 60,
+            cage_stiffness_ratio: 1e-4,
+        }
+    }
+}
+
+/// Everything the SASHBEAN pipeline needs, SI.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Bearing {
+    pub name: String,
+    pub geometry: Geometry,
+    pub materials: Materials,
+    pub operating: Operating,
+    pub lubricant: Lubricant,
+    pub surfaces: Surfaces,
+    pub life: LifeFactors,
+    pub cage: Cage,
+    pub solver: SolverSettings,
+}
+
+impl Bearing {
+    /// A high-speed aerospace angular-contact spherical roller bearing near 1.1 million DN
+    /// (65 mm bore at 17 000 rpm), the same bearing as `decks/aerospace.toml`. For unit tests
+    /// and benchmarks that must not depend on the deck parser.
+    pub fn example_aerospace() -> Bearing {
+        const IN: f64 = 0.0254;
+        const LBF: f64 = 4.448_221_615_260_5;
+        const RPM: f64 = std::f64::consts::PI / 30.0;
+        let pitch = 3.3 * IN;
+        let beta = 12.0_f64.to_radians();
+        let d = 0.5 * IN;
+        Bearing {
+            name: "aerospace example".into(),
+            geometry: Geometry {
+                roller_count: 16,
+                roller_diameter_m: d,
+                roller_length_m: 0.5 * IN,
+                effective_length_m: 0.46 * IN,
+                roller_crown_radius_m: 1.90 * IN,
+                inner_crown_radius_m: 1.95 * IN,
+                outer_crown_radius_m: pitch / (2.0 * beta.cos()) + d / 2.0,
+                pitch_diameter_m: pitch,
+                contact_angle_rad: beta,
+                diametral_clearance_m: 0.0008 * IN,
+            },
+            materials: Materials {
+                roller: Material::STEEL,
+                inner_ring: Material::STEEL,
+                outer_ring: Material::STEEL,
+            },
+            operating: Operating {
+                inner_speed_rad_s: 17_000.0 * RPM,
+                outer_speed_rad_s: 0.0,
+                radial_load_n: 3_000.0 * LBF,
+                axial_load_n: 1_000.0 * LBF,
+            },
+            lubricant: Lubricant {
+                viscosity_pa_s: 0.0045,
+                pressure_viscosity_pa_inv: 1.1e-8,
+                density_kg_m3: 950.0,
+                specific_heat_j_kg_k: 2_000.0,
+                transition_shear_stress_pa: 1_000.0 * 6_894.757_293_168_361,
+                limiting_traction_coefficient: 0.06,
+                lost_lubrication_traction_coefficient: 0.1,
+                film_model: FilmModel::Grubin,
+            },
+            surfaces: Surfaces {
+                roller_rms_m: 2.0e-6 * IN,
+                inner_rms_m: 4.0e-6 * IN,
+                outer_rms_m: 4.0e-6 * IN,
+            },
+            life: LifeFactors {
+                capacity_reduction: 0.75,
+                material_factor: 6.0,
+                edge_stress_factor: 1.5,
+                method: LifeMethod::Asme,
+                iso_contamination_factor: 0.8,
+                iso_fatigue_load_limit_n: 6_000.0,
+                iso_reference_viscosity_m2_s: 0.0,
+            },
+            cage: Cage {
+                rail_width_m: 0.25 * IN,
+                mean_diameter_m: 3.75 * IN,
+                diametral_clearance_m: 0.02 * IN,
+                guided_by: GuidingRing::Outer,
+                drag_factor: 5.0,
+                mass_kg: 0.15,
+            },
+            solver: SolverSettings::default(),
+        }
+    }
+}

@@ -1,0 +1,5 @@
+//! Pure physics, SI units throughout.
+
+pub mod bearing;
+
+pub use bearing::*;
