@@ -220,7 +220,7 @@ impl Default for SolverSettings {
             force_tolerance: 1e-9,
             max_iterations: 100,
             max_roller_iterations: 60,
-            cage_stiffness_ratio: 1e-4,
+            cage_stiffness_ratio: 1e-7,
         }
     }
 }

@@ -1,0 +1,35 @@
+//! Typed solver failures: every one carries the numbers a user needs to judge it.
+
+use thiserror::Error;
+
+/// Why a solve stopped without a trustworthy answer.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SolveError {
+    /// The bearing (ring) equilibrium did not converge.
+    #[error("load distribution did not converge after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
+    NotConverged {
+        iterations: usize,
+        residual_n: f64,
+        tolerance_n: f64,
+    },
+    /// One roller's equilibrium did not converge.
+    #[error("roller {roller} equilibrium did not converge after {iterations} iterations (residual {residual:.3e}, tolerance {tolerance:.3e})")]
+    RollerNotConverged {
+        roller: usize,
+        iterations: usize,
+        residual: f64,
+        tolerance: f64,
+    },
+    /// A linear system could not be solved.
+    #[error("singular matrix in {stage}")]
+    Singular { stage: &'static str },
+    /// A number became NaN or infinite.
+    #[error("non-finite value in {stage}: {what}")]
+    NonFinite { stage: &'static str, what: String },
+    /// The solve was cancelled (a newer job superseded it).
+    #[error("cancelled")]
+    Cancelled,
+    /// A stage failed for a reason the model reports.
+    #[error("{stage}: {message}")]
+    Stage { stage: &'static str, message: String },
+}

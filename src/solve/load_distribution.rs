@@ -1,0 +1,1002 @@
+//! Lamina load distribution with centrifugal force and gyroscopic moment
+//! (seed 000 §3, eq. 3.1–3.13, App. C–D).
+//!
+//! The seed adjusts one unknown at a time in nested loops (Fig. 4). We solve the same
+//! equilibria by Newton's method on the system's potential energy:
+//!
+//! Π(u, q₁…q_Z) = Σ_j [Σ_l U(δ_jl) − f_j·q_j + ½ q_jᵀK_cage q_j] − F·u
+//!
+//! with u = (axial, radial) ring deflection, q_j = (axial, radial, pitch) of roller j, U the
+//! lamina strain energy (∂U/∂δ = Q, eq. 3.3), f_j the inertial loads (centrifugal force
+//! along r, eq. 3.10; gyroscopic moment about the pitching axis, eq. 3.11). ∂Π/∂q_j = 0 is
+//! each roller's axial, radial and pitching equilibrium (eq. 3.9–3.11); ∂Π/∂u = 0 is the
+//! bearing's (eq. 3.12–3.13). For a given u every roller is an independent 3-unknown Newton
+//! problem (warm-started); the ring deflection is updated by Newton with the exact
+//! condensed stiffness (Schur complement). Each step is safeguarded by a trust radius and
+//! an energy line search, so out-of-contact rollers, clearance and zero load neither hang
+//! nor produce NaN.
+//!
+//! "Controlled by the cage" (§7.1): a roller touching one raceway or none has no contact
+//! stiffness along its own axis and in pitch (it can roll around a raceway's crown). The
+//! cage pocket holds it there, modelled as a soft spring on the roller's axial position and
+//! pitch (stiffness = `cage_stiffness_ratio` × the roller's contact stiffness at an approach
+//! of 10⁻⁴·D). Its reaction is reported per roller (`cage_force_n`, `cage_moment_nm`); for
+//! rollers loaded at both raceways it is a negligible fraction of the contact loads (tested).
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
+use serde::Serialize;
+
+use super::SolveError;
+use crate::model::geometry::{LaminaGeometry, V2};
+use crate::model::lamina_law::LaminaLaw;
+use crate::model::roller::{roller_mass, RollerMass};
+use crate::model::Bearing;
+
+/// Speeds that set the dynamic loads: cage orbit and roller spin relative to the cage (rad/s).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DynamicSpeeds {
+    /// Ω_cg, cage angular velocity about the bearing axis, rad/s.
+    pub cage_rad_s: f64,
+    /// ω_s, roller spin relative to the cage about its axis a = (cos β, −sin β), rad/s.
+    pub roller_spin_rad_s: f64,
+}
+
+impl DynamicSpeeds {
+    /// App. C's first estimate (eq. C.1–C.2): no slip, contact at the design angle.
+    pub fn app_c_estimate(b: &Bearing) -> Self {
+        let theta = b.geometry.theta();
+        let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
+        DynamicSpeeds {
+            cage_rad_s: 0.5 * (w1 * (1.0 - theta) + w2 * (1.0 + theta)),
+            roller_spin_rad_s: b.geometry.pitch_diameter_m / (2.0 * b.geometry.roller_diameter_m)
+                * (1.0 - theta)
+                * (1.0 + theta)
+                * (w2 - w1),
+        }
+    }
+}
+
+/// The moment about the pitching axis e_t (N·m) that the raceways must apply to sustain
+/// steady precession: M = Ω_cg e_x × H, H = I_p(ω·a)a + I_t(ω − (ω·a)a), ω = Ω_cg e_x + ω_s a.
+/// Its magnitude is App. D's eq. D.1 with the polar moment on the spin term.
+pub fn gyroscopic_moment(mass: &RollerMass, speeds: &DynamicSpeeds, beta: f64) -> f64 {
+    let a = [beta.cos(), -beta.sin()];
+    let wc = speeds.cage_rad_s;
+    let w = [wc + speeds.roller_spin_rad_s * a[0], speeds.roller_spin_rad_s * a[1]];
+    let wa = w[0] * a[0] + w[1] * a[1];
+    let ip = mass.polar_inertia_kg_m2;
+    let it = mass.transverse_inertia_kg_m2;
+    // H_r; (e_x × H)_t = H_r.
+    let h_r = ip * wa * a[1] + it * (w[1] - wa * a[1]);
+    wc * h_r
+}
+
+/// Options of one load-distribution solve.
+#[derive(Debug, Default, Clone)]
+pub struct SolveOptions {
+    /// Warm start: ring deflection (axial, radial) and each unique roller's (axial, radial, pitch).
+    pub warm_start: Option<WarmStart>,
+    /// Record the Newton iterations of this roller (0-based roller index) for the stepper.
+    pub trace_roller: Option<usize>,
+}
+
+/// A previous solution's unknowns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WarmStart {
+    pub ring: [f64; 2],
+    pub rollers: Vec<[f64; 3]>,
+}
+
+/// Result for one lamina (seed 000 eq. 3.3–3.5).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LaminaResult {
+    pub offset_m: f64,
+    pub width_m: f64,
+    pub inner_load_n: f64,
+    pub outer_load_n: f64,
+    /// Approach (positive = interference, negative = gap), m.
+    pub inner_approach_m: f64,
+    pub outer_approach_m: f64,
+    /// Contact angle of the lamina normal from the radial plane, deg.
+    pub inner_angle_deg: f64,
+    pub outer_angle_deg: f64,
+    /// Contact point (axial x, radius from bearing axis) at the inner raceway, m.
+    pub inner_point_m: [f64; 2],
+    /// Contact point (axial x, radius from bearing axis) at the outer raceway, m.
+    pub outer_point_m: [f64; 2],
+}
+
+/// One raceway contact of a roller (seed 000 §4.5).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RacewayContact {
+    /// Σ lamina loads projected on the most loaded lamina's normal, N.
+    pub normal_load_n: f64,
+    /// Contact angle of the most loaded lamina, deg (design angle when unloaded).
+    pub contact_angle_deg: f64,
+    /// Number of loaded laminae ñ.
+    pub loaded_laminae: usize,
+    /// Index of the most loaded lamina (absent when unloaded).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_lamina: Option<usize>,
+}
+
+/// One roller's equilibrium.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RollerResult {
+    /// Roller number j (1-based, eq. 3.1).
+    pub index: usize,
+    pub azimuth_deg: f64,
+    pub axial_displacement_m: f64,
+    pub radial_displacement_m: f64,
+    pub tilt_rad: f64,
+    pub centrifugal_force_n: f64,
+    /// Moment about the pitching axis the raceways supply to sustain precession, N·m.
+    pub gyroscopic_moment_nm: f64,
+    /// Cage pocket reaction along the roller axis, N, and in pitch, N·m.
+    pub cage_force_n: f64,
+    pub cage_moment_nm: f64,
+    pub inner: RacewayContact,
+    pub outer: RacewayContact,
+    pub laminae: Vec<LaminaResult>,
+}
+
+/// Largest equilibrium residuals at the solution.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+pub struct Residuals {
+    pub bearing_radial_n: f64,
+    pub bearing_axial_n: f64,
+    pub roller_force_n: f64,
+    pub roller_moment_nm: f64,
+}
+
+/// Work counters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+pub struct SolveStats {
+    /// Ring (outer Newton) iterations.
+    pub iterations: usize,
+    /// Roller Newton iterations, all rollers and ring iterations together.
+    pub roller_iterations: usize,
+    /// Lamina contact evaluations.
+    pub lamina_evaluations: usize,
+    pub wall_time_s: f64,
+}
+
+/// One recorded roller Newton iteration (seed Fig. 4's inner loop, made visible).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TraceStep {
+    /// Ring iteration this belongs to and the roller iteration within it.
+    pub ring_iteration: usize,
+    pub roller_iteration: usize,
+    /// Ring deflection (axial, radial), m.
+    pub ring: [f64; 2],
+    /// Roller (axial, radial, pitch) in m, m, rad.
+    pub roller: [f64; 3],
+    /// Residual (axial force N, radial force N, moment N·m).
+    pub residual: [f64; 3],
+    pub inner_approach_m: Vec<f64>,
+    pub outer_approach_m: Vec<f64>,
+    pub inner_load_n: Vec<f64>,
+    pub outer_load_n: Vec<f64>,
+}
+
+/// The solved load distribution.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadDistribution {
+    pub converged: bool,
+    pub axial_deflection_m: f64,
+    pub radial_deflection_m: f64,
+    pub speeds: DynamicSpeeds,
+    pub roller_mass: RollerMass,
+    pub rollers: Vec<RollerResult>,
+    pub residuals: Residuals,
+    pub stats: SolveStats,
+    #[serde(skip)]
+    pub warm: WarmStart,
+    #[serde(skip)]
+    pub trace: Vec<TraceStep>,
+}
+
+/// Precomputed problem data.
+struct Problem {
+    geom: LaminaGeometry,
+    law_in: LaminaLaw,
+    law_out: LaminaLaw,
+    cf: f64,
+    gm: f64,
+    k_cage: f64,
+    k_tilt: f64,
+    load: [f64; 2],
+    /// Force scale for tolerances, N.
+    f_ref: f64,
+    l_ref: f64,
+    tol: f64,
+    max_roller_it: usize,
+    /// cos φ of each unique roller and its multiplicity.
+    unique: Vec<(f64, f64)>,
+    evals: std::cell::Cell<usize>,
+}
+
+/// Everything one roller contributes at (u, q).
+struct RollerEval {
+    energy: f64,
+    g_q: Vector3<f64>,
+    h_qq: Matrix3<f64>,
+    g_u: Vector2<f64>,
+    h_uq: Matrix2x3<f64>,
+    h_uu: Matrix2<f64>,
+}
+
+#[inline]
+fn rot(alpha: f64, p: V2) -> V2 {
+    let (s, c) = alpha.sin_cos();
+    [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+}
+
+impl Problem {
+    fn new(b: &Bearing, speeds: &DynamicSpeeds) -> Self {
+        let g = &b.geometry;
+        let laminae = b.solver.laminae.max(1);
+        let geom = LaminaGeometry::new(g, laminae);
+        let w = g.effective_length_m / laminae as f64;
+        let law_in = LaminaLaw::new(w, g.effective_length_m, &b.materials.roller, &b.materials.inner_ring);
+        let law_out = LaminaLaw::new(w, g.effective_length_m, &b.materials.roller, &b.materials.outer_ring);
+        let mass = roller_mass(g, b.materials.roller.density_kg_m3);
+        // CF at the pitch radius with the cage orbit speed (eq. 3.10, App. C).
+        let cf = mass.mass_kg * speeds.cage_rad_s.powi(2) * 0.5 * g.pitch_diameter_m;
+        let gm = gyroscopic_moment(&mass, speeds, g.contact_angle_rad);
+        // Reference roller stiffness at δ = 1e-4·D.
+        let d_ref = 1e-4 * g.roller_diameter_m;
+        let k_roller = laminae as f64 * law_out.eval(d_ref).1;
+        let k_cage = b.solver.cage_stiffness_ratio * k_roller;
+        let l_ref = 0.5 * g.effective_length_m;
+        let z = g.roller_count;
+        let unique = (0..=z / 2)
+            .map(|j| {
+                let phi = 2.0 * std::f64::consts::PI * j as f64 / z as f64; // eq. 3.1
+                let mult = if j == 0 || 2 * j == z { 1.0 } else { 2.0 };
+                (phi.cos(), mult)
+            })
+            .collect();
+        let load = [b.operating.axial_load_n, b.operating.radial_load_n];
+        let f_ref = load[0]
+            .abs()
+            .max(load[1].abs())
+            .max(z as f64 * cf)
+            .max(gm.abs() / l_ref)
+            .max(1.0);
+        Problem {
+            geom,
+            law_in,
+            law_out,
+            cf,
+            gm,
+            k_cage,
+            k_tilt: k_cage * l_ref * l_ref,
+            load,
+            f_ref,
+            l_ref,
+            tol: b.solver.force_tolerance.max(1e-14) * f_ref,
+            max_roller_it: b.solver.max_roller_iterations.max(1),
+            unique,
+            evals: std::cell::Cell::new(0),
+        }
+    }
+
+    /// Inertial generalised load on a roller: (axial, radial, pitch).
+    fn f_ext(&self) -> Vector3<f64> {
+        // Σ contact + inertial = 0 with inertial = (0, +CF, −M_req) (App. D: the raceways
+        // must supply M_req, so the roller "loads" them with −M_req).
+        Vector3::new(0.0, self.cf, -self.gm)
+    }
+
+    /// Energy, gradient and Hessian of one roller at ring deflection `u` (cos φ = `cphi`).
+    fn eval(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>, hessian: bool) -> RollerEval {
+        let mut ev = RollerEval {
+            energy: 0.0,
+            g_q: Vector3::zeros(),
+            h_qq: Matrix3::zeros(),
+            g_u: Vector2::zeros(),
+            h_uq: Matrix2x3::zeros(),
+            h_uu: Matrix2::zeros(),
+        };
+        let g = &self.geom;
+        let ci = [g.inner_centre[0] + u[0], g.inner_centre[1] + u[1] * cphi];
+        self.evals.set(self.evals.get() + 2 * g.laminae.len());
+        for lam in &g.laminae {
+            for inner in [true, false] {
+                let (p0, c, r, law) = if inner {
+                    (lam.inner_point, ci, g.inner_radius_m, &self.law_in)
+                } else {
+                    (lam.outer_point, g.outer_centre, g.outer_radius_m, &self.law_out)
+                };
+                let p = rot(q[2], p0);
+                let d = [q[0] + p[0] - c[0], q[1] + p[1] - c[1]];
+                let rho = (d[0] * d[0] + d[1] * d[1]).sqrt();
+                let delta = rho - r;
+                if delta <= 0.0 {
+                    continue;
+                }
+                let (qq, dq, uu) = law.eval(delta);
+                let nh = [d[0] / rho, d[1] / rho];
+                // ∂P/∂α = e_t × p = (−p_r, p_x)
+                let t = [-p[1], p[0]];
+                let gd = Vector3::new(nh[0], nh[1], nh[0] * t[0] + nh[1] * t[1]);
+                ev.energy += uu;
+                ev.g_q += qq * gd;
+                let gdu = Vector2::new(-nh[0], -nh[1] * cphi);
+                if inner {
+                    ev.g_u += qq * gdu;
+                }
+                if !hessian {
+                    continue;
+                }
+                // Projector (I − n nᵀ)/ρ: curvature of |P − C|.
+                let pm = Matrix2::new(1.0 - nh[0] * nh[0], -nh[0] * nh[1], -nh[0] * nh[1], 1.0 - nh[1] * nh[1]) / rho;
+                let j = Matrix2x3::new(1.0, 0.0, t[0], 0.0, 1.0, t[1]);
+                let mut hq = dq * gd * gd.transpose() + qq * (j.transpose() * pm * j);
+                // ∂²P/∂α² = −p
+                hq[(2, 2)] += qq * (-(nh[0] * p[0] + nh[1] * p[1]));
+                ev.h_qq += hq;
+                if inner {
+                    let s = Matrix2::new(1.0, 0.0, 0.0, cphi);
+                    ev.h_uu += dq * gdu * gdu.transpose() + qq * (s.transpose() * pm * s);
+                    ev.h_uq += dq * gdu * gd.transpose() - qq * (s.transpose() * pm * j);
+                }
+            }
+        }
+        // Inertial loads.
+        let f = self.f_ext();
+        ev.energy -= f.dot(q);
+        ev.g_q -= f;
+        // Cage pocket: springs on the position along the roller axis and on pitch.
+        let a = g.axis;
+        let s = q[0] * a[0] + q[1] * a[1];
+        ev.energy += 0.5 * self.k_cage * s * s + 0.5 * self.k_tilt * q[2] * q[2];
+        ev.g_q += Vector3::new(self.k_cage * s * a[0], self.k_cage * s * a[1], self.k_tilt * q[2]);
+        if hessian {
+            ev.h_qq[(0, 0)] += self.k_cage * a[0] * a[0];
+            ev.h_qq[(0, 1)] += self.k_cage * a[0] * a[1];
+            ev.h_qq[(1, 0)] += self.k_cage * a[0] * a[1];
+            ev.h_qq[(1, 1)] += self.k_cage * a[1] * a[1];
+            ev.h_qq[(2, 2)] += self.k_tilt;
+        }
+        ev
+    }
+
+    /// Scaled residual norm of a roller gradient (forces in N, moment over l_ref).
+    fn roller_residual(&self, g: &Vector3<f64>) -> f64 {
+        g[0].abs().max(g[1].abs()).max(g[2].abs() / self.l_ref)
+    }
+
+    /// Solve one roller's equilibrium at ring deflection u, starting from q.
+    #[allow(clippy::too_many_arguments)]
+    fn solve_roller(
+        &self,
+        index: usize,
+        cphi: f64,
+        u: [f64; 2],
+        q: &mut Vector3<f64>,
+        iterations: &mut usize,
+        mut trace: Option<(&mut Vec<TraceStep>, usize)>,
+    ) -> Result<RollerEval, SolveError> {
+        let scale_t = 1e-3 * 2.0 * self.l_ref; // initial trust radius in translation, m
+        let mut trust = scale_t;
+        for it in 0..self.max_roller_it {
+            let ev = self.eval(cphi, u, q, true);
+            if let Some((steps, ring_it)) = trace.as_mut() {
+                steps.push(self.trace_step(*ring_it, it, cphi, u, q, &ev.g_q));
+            }
+            let res = self.roller_residual(&ev.g_q);
+            if !res.is_finite() {
+                return Err(SolveError::NonFinite {
+                    stage: "roller equilibrium",
+                    what: format!("roller {} residual", index + 1),
+                });
+            }
+            if res <= self.tol {
+                return Ok(ev);
+            }
+            *iterations += 1;
+            let step = newton_step3(&ev.h_qq, &ev.g_q, self.l_ref);
+            // Trust region in the scaled norm (translation m, pitch × l_ref).
+            let len = (step[0].powi(2) + step[1].powi(2) + (step[2] * self.l_ref).powi(2)).sqrt();
+            let (step, capped) = if len > trust { (step * (trust / len), true) } else { (step, false) };
+            let slope = ev.g_q.dot(&step);
+            let mut lambda = 1.0;
+            let mut accepted = false;
+            for _ in 0..40 {
+                let trial = *q + lambda * step;
+                let e2 = self.eval(cphi, u, &trial, false);
+                let ok_energy = e2.energy <= ev.energy + 1e-4 * lambda * slope + 1e-14 * ev.energy.abs();
+                let ok_grad = self.roller_residual(&e2.g_q) < 0.5 * res;
+                if ok_energy || ok_grad {
+                    *q = trial;
+                    accepted = true;
+                    break;
+                }
+                lambda *= 0.5;
+            }
+            if !accepted {
+                // No descent even at 2⁻⁴⁰ of the step: the residual is at round-off level.
+                let ev = self.eval(cphi, u, q, true);
+                let r = self.roller_residual(&ev.g_q);
+                if r <= 1e3 * self.tol {
+                    return Ok(ev);
+                }
+                return Err(SolveError::RollerNotConverged {
+                    roller: index + 1,
+                    iterations: it + 1,
+                    residual: r,
+                    tolerance: self.tol,
+                });
+            }
+            if lambda == 1.0 && capped {
+                trust *= 4.0;
+            } else if lambda < 1.0 {
+                trust = (lambda * len).max(1e-9 * scale_t);
+            }
+        }
+        let ev = self.eval(cphi, u, q, true);
+        let r = self.roller_residual(&ev.g_q);
+        if r <= self.tol {
+            return Ok(ev);
+        }
+        Err(SolveError::RollerNotConverged {
+            roller: index + 1,
+            iterations: self.max_roller_it,
+            residual: r,
+            tolerance: self.tol,
+        })
+    }
+
+    fn trace_step(&self, ring_it: usize, it: usize, cphi: f64, u: [f64; 2], q: &Vector3<f64>, g: &Vector3<f64>) -> TraceStep {
+        let (ia, oa, il, ol) = self.lamina_state(cphi, u, q);
+        TraceStep {
+            ring_iteration: ring_it,
+            roller_iteration: it,
+            ring: u,
+            roller: [q[0], q[1], q[2]],
+            residual: [g[0], g[1], g[2]],
+            inner_approach_m: ia,
+            outer_approach_m: oa,
+            inner_load_n: il,
+            outer_load_n: ol,
+        }
+    }
+
+    /// Approaches and loads of every lamina (inner and outer).
+    #[allow(clippy::type_complexity)]
+    fn lamina_state(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>) -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>) {
+        let g = &self.geom;
+        let ci = [g.inner_centre[0] + u[0], g.inner_centre[1] + u[1] * cphi];
+        let n = g.laminae.len();
+        let (mut ia, mut oa, mut il, mut ol) = (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n));
+        for lam in &g.laminae {
+            let pi = rot(q[2], lam.inner_point);
+            let po = rot(q[2], lam.outer_point);
+            let di = crate::model::geometry::dist([q[0] + pi[0], q[1] + pi[1]], ci) - g.inner_radius_m;
+            let d_o = crate::model::geometry::dist([q[0] + po[0], q[1] + po[1]], g.outer_centre) - g.outer_radius_m;
+            ia.push(di);
+            oa.push(d_o);
+            il.push(self.law_in.eval(di).0);
+            ol.push(self.law_out.eval(d_o).0);
+        }
+        (ia, oa, il, ol)
+    }
+
+    /// Solve all unique rollers at u; returns Σ energy, condensed gradient and stiffness.
+    fn solve_rollers(
+        &self,
+        u: [f64; 2],
+        qs: &mut [Vector3<f64>],
+        roller_its: &mut usize,
+        trace: &mut Option<(usize, Vec<TraceStep>)>,
+        ring_it: usize,
+    ) -> Result<(f64, Vector2<f64>, Matrix2<f64>, f64), SolveError> {
+        let mut energy = -(self.load[0] * u[0] + self.load[1] * u[1]);
+        let mut g = Vector2::new(-self.load[0], -self.load[1]);
+        let mut k = Matrix2::zeros();
+        let mut worst = 0.0f64;
+        for (j, (&(cphi, mult), q)) in self.unique.iter().zip(qs.iter_mut()).enumerate() {
+            let tr = match trace {
+                Some((idx, steps)) if *idx == j => Some((steps, ring_it)),
+                _ => None,
+            };
+            let ev = self.solve_roller(j, cphi, u, q, roller_its, tr)?;
+            worst = worst.max(self.roller_residual(&ev.g_q));
+            energy += mult * ev.energy;
+            g += mult * ev.g_u;
+            // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
+            // with every roller kept in equilibrium).
+            let hqu = ev.h_uq.transpose();
+            let x = solve3_mat(&ev.h_qq, &hqu, self.l_ref);
+            k += mult * (ev.h_uu - ev.h_uq * x);
+        }
+        Ok((energy, g, k, worst))
+    }
+}
+
+/// Newton step −H⁻¹g for a 3×3 symmetric H, shifted to positive definite if needed.
+fn newton_step3(h: &Matrix3<f64>, g: &Vector3<f64>, l_ref: f64) -> Vector3<f64> {
+    // Scale pitch by l_ref so the three unknowns have comparable units.
+    let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
+    let hs = s * h * s;
+    let gs = s * g;
+    let tr = hs.trace().abs().max(1e-300);
+    let mut mu = 0.0;
+    for _ in 0..40 {
+        let m = hs + Matrix3::identity() * mu;
+        if let Some(ch) = m.cholesky() {
+            return s * (-ch.solve(&gs));
+        }
+        mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
+    }
+    // H indefinite beyond repair: steepest descent scaled by the trace.
+    s * (-gs / tr)
+}
+
+/// X = H⁻¹B for the condensation, with the same regularisation as the Newton step.
+fn solve3_mat(h: &Matrix3<f64>, b: &nalgebra::Matrix3x2<f64>, l_ref: f64) -> nalgebra::Matrix3x2<f64> {
+    let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
+    let hs = s * h * s;
+    let tr = hs.trace().abs().max(1e-300);
+    let mut mu = 0.0;
+    for _ in 0..40 {
+        let m = hs + Matrix3::identity() * mu;
+        if let Some(ch) = m.cholesky() {
+            return s * ch.solve(&(s * b));
+        }
+        mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
+    }
+    nalgebra::Matrix3x2::zeros()
+}
+
+/// Solve the load distribution of `b` with dynamic loads from `speeds`.
+pub fn solve(
+    b: &Bearing,
+    speeds: &DynamicSpeeds,
+    options: &SolveOptions,
+    cancel: Option<&AtomicBool>,
+) -> Result<LoadDistribution, SolveError> {
+    let start = Instant::now();
+    let p = Problem::new(b, speeds);
+    let n_unique = p.unique.len();
+    let (mut u, mut qs) = match &options.warm_start {
+        Some(w) if w.rollers.len() == n_unique => (w.ring, w.rollers.iter().map(|r| Vector3::new(r[0], r[1], r[2])).collect::<Vec<_>>()),
+        _ => ([0.0, 0.0], vec![Vector3::zeros(); n_unique]),
+    };
+    let mut trace = options.trace_roller.map(|r| (unique_index(r, b.geometry.roller_count), Vec::new()));
+    let mut stats = SolveStats::default();
+    let d = b.geometry.roller_diameter_m;
+    let mut trust = 1e-3 * d;
+    let max_it = b.solver.max_iterations.max(1);
+    let mut state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)?;
+    let mut converged = false;
+    let mut ring_res = f64::INFINITY;
+    for it in 0..max_it {
+        if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+            return Err(SolveError::Cancelled);
+        }
+        let (energy, g, k, _) = state;
+        ring_res = g[0].abs().max(g[1].abs());
+        if !ring_res.is_finite() {
+            return Err(SolveError::NonFinite { stage: "ring equilibrium", what: "ring force residual".into() });
+        }
+        if ring_res <= p.tol {
+            converged = true;
+            break;
+        }
+        stats.iterations = it + 1;
+        let step = newton_step2(&k, &g);
+        let len = (step[0].powi(2) + step[1].powi(2)).sqrt();
+        let (step, capped) = if len > trust { (step * (trust / len), true) } else { (step, false) };
+        let slope = g.dot(&step);
+        let mut lambda = 1.0;
+        let mut accepted = None;
+        for _ in 0..40 {
+            let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
+            let mut qt = qs.clone();
+            let st = p.solve_rollers(trial, &mut qt, &mut stats.roller_iterations, &mut trace, it + 1)?;
+            let ok_energy = st.0 <= energy + 1e-4 * lambda * slope + 1e-14 * energy.abs();
+            let ok_grad = st.1[0].abs().max(st.1[1].abs()) < 0.5 * ring_res;
+            if ok_energy || ok_grad {
+                accepted = Some((trial, qt, st));
+                break;
+            }
+            lambda *= 0.5;
+        }
+        match accepted {
+            Some((trial, qt, st)) => {
+                u = trial;
+                qs = qt;
+                state = st;
+            }
+            None => {
+                if ring_res <= 1e3 * p.tol {
+                    converged = true;
+                    break;
+                }
+                return Err(SolveError::NotConverged { iterations: it + 1, residual_n: ring_res, tolerance_n: p.tol });
+            }
+        }
+        if lambda == 1.0 && capped {
+            trust *= 4.0;
+        } else if lambda < 1.0 {
+            trust = (lambda * len).max(1e-12 * d);
+        }
+    }
+    if !converged {
+        let g = state.1;
+        ring_res = g[0].abs().max(g[1].abs());
+        if ring_res > p.tol {
+            return Err(SolveError::NotConverged { iterations: max_it, residual_n: ring_res, tolerance_n: p.tol });
+        }
+    }
+    stats.lamina_evaluations = p.evals.get();
+    let g = state.1;
+    let residuals = Residuals {
+        bearing_axial_n: g[0].abs(),
+        bearing_radial_n: g[1].abs(),
+        roller_force_n: 0.0,
+        roller_moment_nm: 0.0,
+    };
+    let mut out = assemble(b, &p, u, &qs, residuals, speeds);
+    out.stats = stats;
+    out.stats.wall_time_s = start.elapsed().as_secs_f64();
+    out.trace = trace.map(|t| t.1).unwrap_or_default();
+    Ok(out)
+}
+
+/// Unique (symmetry) index of roller `r` (0-based): rollers j and Z−j mirror each other.
+fn unique_index(r: usize, z: usize) -> usize {
+    let r = r % z.max(1);
+    r.min(z - r)
+}
+
+fn newton_step2(k: &Matrix2<f64>, g: &Vector2<f64>) -> Vector2<f64> {
+    let tr = k.trace().abs();
+    let mut mu = 0.0;
+    for _ in 0..60 {
+        let m = k + Matrix2::identity() * mu;
+        if let Some(ch) = m.cholesky() {
+            return -ch.solve(g);
+        }
+        mu = if mu == 0.0 { (1e-10 * tr).max(1e-30) } else { mu * 10.0 };
+    }
+    -g / tr.max(1e-30)
+}
+
+fn assemble(b: &Bearing, p: &Problem, u: [f64; 2], qs: &[Vector3<f64>], mut residuals: Residuals, speeds: &DynamicSpeeds) -> LoadDistribution {
+    let z = b.geometry.roller_count;
+    let g = &p.geom;
+    let beta_deg = b.geometry.contact_angle_rad.to_degrees();
+    let mut rollers = Vec::with_capacity(z);
+    for j in 0..z {
+        let uj = unique_index(j, z);
+        let (cphi, _) = p.unique[uj];
+        let q = qs[uj];
+        let ev = p.eval(cphi, u, &q, false);
+        residuals.roller_force_n = residuals.roller_force_n.max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
+        residuals.roller_moment_nm = residuals.roller_moment_nm.max(ev.g_q[2].abs());
+        let ci = [g.inner_centre[0] + u[0], g.inner_centre[1] + u[1] * cphi];
+        let centre = [q[0], q[1] + g.pitch_radius_m];
+        let laminae: Vec<LaminaResult> = g
+            .laminae
+            .iter()
+            .map(|lam| {
+                let pi = rot(q[2], lam.inner_point);
+                let po = rot(q[2], lam.outer_point);
+                let pin = [q[0] + pi[0], q[1] + pi[1]];
+                let pout = [q[0] + po[0], q[1] + po[1]];
+                let ri = crate::model::geometry::dist(pin, ci);
+                let ro = crate::model::geometry::dist(pout, g.outer_centre);
+                let di = ri - g.inner_radius_m;
+                let d_o = ro - g.outer_radius_m;
+                // Inner: force on the roller along (C − P); angle of that direction from the radial plane.
+                let ni = [(ci[0] - pin[0]) / ri, (ci[1] - pin[1]) / ri];
+                let no = [(pout[0] - g.outer_centre[0]) / ro, (pout[1] - g.outer_centre[1]) / ro];
+                LaminaResult {
+                    offset_m: lam.offset_m,
+                    width_m: lam.width_m,
+                    inner_load_n: p.law_in.eval(di).0,
+                    outer_load_n: p.law_out.eval(d_o).0,
+                    inner_approach_m: di,
+                    outer_approach_m: d_o,
+                    inner_angle_deg: ni[0].atan2(ni[1]).to_degrees(),
+                    outer_angle_deg: no[0].atan2(no[1]).to_degrees(),
+                    inner_point_m: [pin[0], pin[1] + g.pitch_radius_m],
+                    outer_point_m: [pout[0], pout[1] + g.pitch_radius_m],
+                }
+            })
+            .collect();
+        let inner = raceway_contact(&laminae, true, beta_deg);
+        let outer = raceway_contact(&laminae, false, beta_deg);
+        let s = q[0] * g.axis[0] + q[1] * g.axis[1];
+        let _ = centre;
+        rollers.push(RollerResult {
+            index: j + 1,
+            azimuth_deg: 360.0 * j as f64 / z as f64,
+            axial_displacement_m: q[0],
+            radial_displacement_m: q[1],
+            tilt_rad: q[2],
+            centrifugal_force_n: p.cf,
+            gyroscopic_moment_nm: p.gm,
+            cage_force_n: -p.k_cage * s,
+            cage_moment_nm: -p.k_tilt * q[2],
+            inner,
+            outer,
+            laminae,
+        });
+    }
+    LoadDistribution {
+        converged: true,
+        axial_deflection_m: u[0],
+        radial_deflection_m: u[1],
+        speeds: *speeds,
+        roller_mass: roller_mass(&b.geometry, b.materials.roller.density_kg_m3),
+        rollers,
+        residuals,
+        stats: SolveStats::default(),
+        warm: WarmStart { ring: u, rollers: qs.iter().map(|q| [q[0], q[1], q[2]]).collect() },
+        trace: Vec::new(),
+    }
+}
+
+/// §4.5: normal load = Σ lamina loads projected on the most loaded lamina's normal.
+fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> RacewayContact {
+    let load = |l: &LaminaResult| if inner { l.inner_load_n } else { l.outer_load_n };
+    let angle = |l: &LaminaResult| if inner { l.inner_angle_deg } else { l.outer_angle_deg };
+    let loaded = laminae.iter().filter(|l| load(l) > 0.0).count();
+    let max = laminae
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| load(l) > 0.0)
+        .max_by(|a, b| load(a.1).total_cmp(&load(b.1)))
+        .map(|(i, _)| i);
+    match max {
+        None => RacewayContact { normal_load_n: 0.0, contact_angle_deg: beta_deg, loaded_laminae: 0, max_lamina: None },
+        Some(m) => {
+            let a0 = angle(&laminae[m]).to_radians();
+            let total = laminae.iter().map(|l| load(l) * (angle(l).to_radians() - a0).cos()).sum();
+            RacewayContact { normal_load_n: total, contact_angle_deg: angle(&laminae[m]), loaded_laminae: loaded, max_lamina: Some(m) }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Bearing;
+
+    fn stribeck_bearing(z: usize) -> Bearing {
+        let mut b = Bearing::example_aerospace();
+        let g = &mut b.geometry;
+        g.roller_count = z;
+        g.contact_angle_rad = 0.0;
+        g.diametral_clearance_m = 0.0;
+        g.roller_crown_radius_m = 0.05;
+        g.inner_crown_radius_m = 0.05;
+        g.outer_crown_radius_m = 0.05;
+        // Keep rollers from overlapping for small Z is irrelevant to the statics.
+        b.operating.inner_speed_rad_s = 0.0;
+        b.operating.outer_speed_rad_s = 0.0;
+        b.operating.axial_load_n = 0.0;
+        b.operating.radial_load_n = 20_000.0;
+        b
+    }
+
+    fn run(b: &Bearing) -> LoadDistribution {
+        let s = DynamicSpeeds::app_c_estimate(b);
+        match solve(b, &s, &SolveOptions::default(), None) {
+            Ok(r) => r,
+            Err(e) => panic!("solve failed: {e}"),
+        }
+    }
+
+    #[test]
+    fn stribeck_distribution() {
+        // NASA/TM-2012-217115 Table I (exponent 10/9), roller at ψ = 0.
+        let table = [(5, 4.281), (6, 4.100), (7, 4.027), (8, 4.076), (9, 4.111), (10, 4.087), (20, 4.084), (30, 4.084)];
+        for (z, st) in table {
+            let b = stribeck_bearing(z);
+            let r = run(&b);
+            let q: Vec<f64> = r.rollers.iter().map(|x| x.inner.normal_load_n).collect();
+            let qmax = q[0];
+            // Discrete sum with the 10/9 law: F_r = Q_max Σ cos^(19/9) φ_j over cos φ_j > 0.
+            let sum: f64 = (0..z)
+                .map(|j| (2.0 * std::f64::consts::PI * j as f64 / z as f64).cos())
+                .filter(|c| *c > 0.0)
+                .map(|c| c.powf(19.0 / 9.0))
+                .sum();
+            let exact = z as f64 / sum;
+            let got = z as f64 * qmax / b.operating.radial_load_n;
+            // The exact geometry's approach of an off-centre lamina is e·h/R + O(e²d²/R³), so the
+            // roller law is e^(10/9) to ~1e-6 relative (not exactly): 1e-5 tolerance.
+            assert!((got / exact - 1.0).abs() < 1e-5, "Z={z}: {got} vs exact {exact}");
+            // Published table: 4 digits (0.2 % band, references.md).
+            assert!((got / st - 1.0).abs() < 2e-3, "Z={z}: {got} vs table {st}");
+            // Each roller follows Q_max cos^(10/9) φ (1e-5 relative, same reason).
+            for (j, qj) in q.iter().enumerate() {
+                let c = (2.0 * std::f64::consts::PI * j as f64 / z as f64).cos();
+                let expect = if c > 0.0 { qmax * c.powf(10.0 / 9.0) } else { 0.0 };
+                assert!((qj - expect).abs() < 1e-5 * qmax, "Z={z} j={j}: {qj} vs {expect}");
+            }
+        }
+    }
+
+    #[test]
+    fn pure_axial_zero_speed() {
+        let mut b = Bearing::example_aerospace();
+        b.operating.inner_speed_rad_s = 0.0;
+        b.operating.radial_load_n = 0.0;
+        b.operating.axial_load_n = 5_000.0;
+        let r = run(&b);
+        let q0 = r.rollers[0].inner.normal_load_n;
+        let mut fa = 0.0;
+        for x in &r.rollers {
+            // All rollers equal: symmetric problem, 1e-9 relative.
+            assert!((x.inner.normal_load_n / q0 - 1.0).abs() < 1e-9);
+            fa += x.laminae.iter().map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().sin()).sum::<f64>();
+        }
+        // Axial components sum to F_a (equilibrium to the solver tolerance, 1e-8).
+        assert!((fa / 5_000.0 - 1.0).abs() < 1e-8, "{fa}");
+        // Q ≈ F_a/(Z sin β): the operating angle differs from β by the deflection only (1 %).
+        let beta = b.geometry.contact_angle_rad;
+        let expect = 5_000.0 / (16.0 * beta.sin());
+        assert!((q0 / expect - 1.0).abs() < 0.01, "{q0} vs {expect}");
+    }
+
+    #[test]
+    fn speed_loads_outer_raceway() {
+        let b = Bearing::example_aerospace();
+        let r = run(&b);
+        let cf = r.rollers[0].centrifugal_force_n;
+        assert!(cf > 100.0, "CF {cf}");
+        for x in &r.rollers {
+            if x.inner.loaded_laminae == 0 {
+                continue;
+            }
+            // Radial balance along r: Q_o cos β_o − Q_i cos β_i = CF (the pitch moment and
+            // the cage spring change this only through the small cage reaction: 1e-3·CF).
+            let fo: f64 = x.laminae.iter().map(|l| l.outer_load_n * l.outer_angle_deg.to_radians().cos()).sum();
+            let fi: f64 = x.laminae.iter().map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().cos()).sum();
+            // The cage force acts along the roller axis a = (cos β, −sin β).
+            let cage_r = -x.cage_force_n * b.geometry.contact_angle_rad.sin();
+            assert!((fo - fi - cf - cage_r).abs() < 1e-6 * cf.max(fo), "roller {}: {fo} {fi} {cf}", x.index);
+            assert!(x.outer.normal_load_n > x.inner.normal_load_n);
+            // The cage carries a negligible share of a two-sided roller (default ratio 1e-7:
+            // below 1e-3 of the roller load).
+            assert!(x.cage_force_n.abs() < 1e-3 * x.inner.normal_load_n, "cage {} vs {}", x.cage_force_n, x.inner.normal_load_n);
+        }
+    }
+
+    #[test]
+    fn gyroscopic_moment_balanced_by_lamina_loads() {
+        // The raceways' lamina forces supply the precession moment M = Ω_cg e_x × H (App. D):
+        // Σ (p × F)_t + cage moment = −(−M) at each roller, to the solver tolerance.
+        let b = Bearing::example_aerospace();
+        let r = run(&b);
+        let gm = r.rollers[0].gyroscopic_moment_nm;
+        assert!(gm.abs() > 1e-3, "gm {gm}");
+        for x in &r.rollers {
+            let c = [x.axial_displacement_m, x.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m];
+            let mut m = 0.0;
+            for l in &x.laminae {
+                for (pt, q, ang) in [(l.inner_point_m, l.inner_load_n, l.inner_angle_deg), (l.outer_point_m, -l.outer_load_n, l.outer_angle_deg)] {
+                    let a = ang.to_radians();
+                    let f = [q * a.sin(), q * a.cos()];
+                    let p = [pt[0] - c[0], pt[1] - c[1]];
+                    m += p[0] * f[1] - p[1] * f[0];
+                }
+            }
+            let err = m + x.cage_moment_nm - gm;
+            assert!(err.abs() < 1e-6 * (gm.abs() + 1.0), "roller {}: {m} + {} vs {gm}", x.index, x.cage_moment_nm);
+        }
+    }
+
+    #[test]
+    fn gyroscopic_moment_matches_eq_d1() {
+        // Eq. D.1 with the polar moment on the spin term: GM = [I_p(ω_s + Ω cos β) − I_t Ω cos β] Ω sin β,
+        // and our vector form gives −GM about e_t (sign of the frame); round-off tolerance.
+        let b = Bearing::example_aerospace();
+        let m = roller_mass(&b.geometry, b.materials.roller.density_kg_m3);
+        let s = DynamicSpeeds::app_c_estimate(&b);
+        let beta = b.geometry.contact_angle_rad;
+        let d1 = (m.polar_inertia_kg_m2 * (s.roller_spin_rad_s + s.cage_rad_s * beta.cos())
+            - m.transverse_inertia_kg_m2 * s.cage_rad_s * beta.cos())
+            * s.cage_rad_s
+            * beta.sin();
+        let v = gyroscopic_moment(&m, &s, beta);
+        assert!((v + d1).abs() < 1e-12 * d1.abs(), "{v} vs {d1}");
+    }
+
+    #[test]
+    fn analytic_derivatives_match_finite_differences() {
+        // Central differences with h = 1e-9 m (1e-7 rad): truncation ~h², round-off ~1e-16/h;
+        // 1e-5 relative to the largest entry is a safe band for both.
+        let mut b = Bearing::example_aerospace();
+        b.geometry.diametral_clearance_m = -2e-5; // preload: all laminae loaded
+        let p = Problem::new(&b, &DynamicSpeeds::app_c_estimate(&b));
+        let u = [1e-6, 2e-6];
+        let q = Vector3::new(1e-6, -5e-7, 2e-4);
+        let cphi = 0.7;
+        let ev = p.eval(cphi, u, &q, true);
+        let hs = [1e-9, 1e-9, 1e-7];
+        for k in 0..3 {
+            let mut qp = q;
+            let mut qm = q;
+            qp[k] += hs[k];
+            qm[k] -= hs[k];
+            let (ep, em) = (p.eval(cphi, u, &qp, true), p.eval(cphi, u, &qm, true));
+            let fd_g = (ep.energy - em.energy) / (2.0 * hs[k]);
+            assert!((fd_g - ev.g_q[k]).abs() < 1e-5 * ev.g_q.amax().max(1.0), "g_q[{k}] {fd_g} vs {}", ev.g_q[k]);
+            for i in 0..3 {
+                let fd = (ep.g_q[i] - em.g_q[i]) / (2.0 * hs[k]);
+                assert!((fd - ev.h_qq[(i, k)]).abs() < 1e-5 * ev.h_qq.amax(), "h_qq[{i},{k}] {fd} vs {}", ev.h_qq[(i, k)]);
+            }
+            for i in 0..2 {
+                let fd = (ep.g_u[i] - em.g_u[i]) / (2.0 * hs[k]);
+                assert!((fd - ev.h_uq[(i, k)]).abs() < 1e-5 * ev.h_uq.amax(), "h_uq[{i},{k}] {fd} vs {}", ev.h_uq[(i, k)]);
+            }
+        }
+        for k in 0..2 {
+            let mut up = u;
+            let mut um = u;
+            up[k] += 1e-9;
+            um[k] -= 1e-9;
+            let (ep, em) = (p.eval(cphi, up, &q, true), p.eval(cphi, um, &q, true));
+            let fd_g = (ep.energy - em.energy) / 2e-9;
+            assert!((fd_g - ev.g_u[k]).abs() < 1e-5 * ev.g_u.amax(), "g_u[{k}]");
+            for i in 0..2 {
+                let fd = (ep.g_u[i] - em.g_u[i]) / 2e-9;
+                assert!((fd - ev.h_uu[(i, k)]).abs() < 1e-5 * ev.h_uu.amax(), "h_uu[{i},{k}] {fd} vs {}", ev.h_uu[(i, k)]);
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_cases_do_not_fail() {
+        let base = Bearing::example_aerospace();
+        let mut cases = Vec::new();
+        let mut b = base.clone();
+        b.operating.radial_load_n = 0.0;
+        b.operating.axial_load_n = 0.0;
+        cases.push(("zero load at speed", b.clone()));
+        b.operating.inner_speed_rad_s = 0.0;
+        cases.push(("zero load, zero speed", b.clone()));
+        let mut b = base.clone();
+        b.operating.axial_load_n = 0.0;
+        b.geometry.diametral_clearance_m = 1e-4;
+        cases.push(("pure radial, big clearance", b.clone()));
+        let mut b = base.clone();
+        b.geometry.diametral_clearance_m = -3e-5;
+        cases.push(("preload", b.clone()));
+        let mut b = base.clone();
+        b.operating.outer_speed_rad_s = -b.operating.inner_speed_rad_s;
+        cases.push(("counter-rotating", b.clone()));
+        let mut b = base.clone();
+        b.operating.inner_speed_rad_s *= 3.0;
+        b.operating.radial_load_n *= 0.05;
+        cases.push(("3.3 MDN light load", b));
+        for (name, b) in cases {
+            let r = run(&b);
+            let json = serde_json::to_string(&r).unwrap_or_default();
+            assert!(!json.contains("NaN") && !json.contains("null"), "{name}");
+            assert!(r.residuals.bearing_radial_n.is_finite(), "{name}");
+        }
+    }
+
+    #[test]
+    fn mirrored_rollers_equal() {
+        let r = run(&Bearing::example_aerospace());
+        let z = r.rollers.len();
+        for j in 1..z {
+            let (a, b) = (&r.rollers[j], &r.rollers[z - j]);
+            assert_eq!(a.inner.normal_load_n, b.inner.normal_load_n);
+            assert_eq!(a.outer.normal_load_n, b.outer.normal_load_n);
+        }
+    }
+}
