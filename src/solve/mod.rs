@@ -2,5 +2,6 @@
 
 pub mod error;
 pub mod load_distribution;
+pub mod pipeline;
 
 pub use error::SolveError;
