@@ -7,3 +7,5 @@
 
 pub mod model;
 pub mod solve;
+pub mod report;
+pub mod cli;

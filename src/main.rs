@@ -1,3 +1,92 @@
-fn main() {
-    println!("rollbench: under construction");
+//! rollbench binary: the workbench by default, headless subcommands otherwise.
+#![forbid(unsafe_code)]
+
+use std::process::ExitCode;
+
+use clap::Parser;
+use rollbench::cli::{load_deck, write_atomic, Cli, Command, Format, UnitsArg};
+use rollbench::deck::Units;
+use rollbench::report::{self, ReportUnits};
+use rollbench::solve::pipeline::{self, Request};
+
+fn report_units(u: Units) -> ReportUnits {
+    match u {
+        Units::Si => ReportUnits::Si,
+        Units::Us => ReportUnits::Us,
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        None => {
+            // Until the workbench lands: print the text report of the deck.
+            let deck = match load_deck(cli.deck.as_deref(), &cli.set) {
+                Ok(d) => d,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(1);
+                }
+            };
+            match pipeline::run(&deck.bearing, &Request::default(), None) {
+                Ok(a) => {
+                    print!("{}", report::text::to_string(&a, report_units(deck.units)));
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("solve failed: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
+        Some(Command::Run { deck, format, output }) => {
+            let deck = match load_deck(Some(&deck), &cli.set) {
+                Ok(d) => d,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(1);
+                }
+            };
+            let analysis = match pipeline::run(&deck.bearing, &Request::default(), None) {
+                Ok(a) => a,
+                Err(e) => {
+                    eprintln!("solve failed: {e}");
+                    return ExitCode::from(2);
+                }
+            };
+            let text = match format {
+                Format::Text => report::text::to_string(&analysis, report_units(deck.units)),
+                Format::Json => report::json::to_string(&analysis) + "\n",
+                Format::Csv => report::csv::to_string(&analysis),
+            };
+            match output {
+                Some(path) => {
+                    if let Err(e) = write_atomic(&path, &text) {
+                        eprintln!("cannot write {}: {e}", path.display());
+                        return ExitCode::from(1);
+                    }
+                }
+                None => print!("{text}"),
+            }
+            ExitCode::SUCCESS
+        }
+        Some(Command::Check { deck }) => match load_deck(Some(&deck), &cli.set) {
+            Ok(_) => {
+                println!("{}: ok", deck.display());
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("{e}");
+                ExitCode::from(1)
+            }
+        },
+        Some(Command::Template { units }) => {
+            let u = match units {
+                UnitsArg::Si => Units::Si,
+                UnitsArg::Us => Units::Us,
+            };
+            print!("{}", rollbench::deck::template(u));
+            ExitCode::SUCCESS
+        }
+    }
 }

@@ -209,8 +209,6 @@ struct Problem {
     k_cage: f64,
     k_tilt: f64,
     load: [f64; 2],
-    /// Force scale for tolerances, N.
-    f_ref: f64,
     l_ref: f64,
     tol: f64,
     max_roller_it: usize,
@@ -276,7 +274,6 @@ impl Problem {
             k_cage,
             k_tilt: k_cage * l_ref * l_ref,
             load,
-            f_ref,
             l_ref,
             tol: b.solver.force_tolerance.max(1e-14) * f_ref,
             max_roller_it: b.solver.max_roller_iterations.max(1),
@@ -575,7 +572,7 @@ pub fn solve(
     let max_it = b.solver.max_iterations.max(1);
     let mut state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)?;
     let mut converged = false;
-    let mut ring_res = f64::INFINITY;
+    let mut ring_res;
     for it in 0..max_it {
         if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
             return Err(SolveError::Cancelled);

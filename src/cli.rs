@@ -1,0 +1,94 @@
+//! Command line (clap): a thin layer over the library.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+/// rollbench: high-speed rolling-bearing analysis (SASHBEAN lamina method).
+#[derive(Debug, Parser)]
+#[command(name = "rollbench", version, about, long_about = None)]
+pub struct Cli {
+    /// Deck to open in the workbench (default: the embedded aerospace deck).
+    pub deck: Option<PathBuf>,
+    /// Override a deck value, in the deck's units: --set geometry.pitch_diameter=3.4 (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE", global = true)]
+    pub set: Vec<String>,
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// Subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Solve a deck and print the report.
+    Run {
+        /// Deck file (TOML).
+        deck: PathBuf,
+        /// Report format.
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write the report to FILE instead of standard output.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
+    /// Validate a deck; exit 1 with messages if it is invalid.
+    Check {
+        /// Deck file (TOML).
+        deck: PathBuf,
+    },
+    /// Print a fully commented deck template.
+    Template {
+        /// Unit system of the template.
+        #[arg(long, value_enum, default_value_t = UnitsArg::Us)]
+        units: UnitsArg,
+    },
+}
+
+/// Report formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+    Csv,
+}
+
+/// Unit systems on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum UnitsArg {
+    Si,
+    Us,
+}
+
+/// Load a deck from a path (or the embedded default) and apply `--set` overrides.
+pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::Deck, String> {
+    let mut deck = match path {
+        Some(p) => crate::deck::Deck::load(p).map_err(|e| e.to_string())?,
+        None => crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml (embedded)")
+            .map_err(|e| e.to_string())?,
+    };
+    for s in sets {
+        let Some((k, v)) = s.split_once('=') else {
+            return Err(format!("--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"));
+        };
+        deck.set(k.trim(), v.trim()).map_err(|e| format!("--set {s}: {e}"))?;
+    }
+    Ok(deck)
+}
+
+/// Write `text` to `path` atomically (temporary file in the same directory, then rename).
+pub fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "output".into());
+    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
