@@ -1,5 +1,6 @@
 //! Solvers: load distribution (Newton on the lamina model), and the staged pipeline.
 
+pub mod contacts;
 pub mod error;
 pub mod load_distribution;
 pub mod pipeline;

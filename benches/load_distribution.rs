@@ -1,0 +1,34 @@
+//! Load distribution on each shipped deck (seed 000 §3).
+use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::deck::Deck;
+use rollbench::solve::load_distribution::{solve, DynamicSpeeds, SolveOptions};
+
+fn decks() -> Vec<(String, Deck)> {
+    let mut out = Vec::new();
+    let mut paths: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))
+        .map(|d| d.filter_map(|e| e.ok()).map(|e| e.path()).collect())
+        .unwrap_or_default();
+    paths.sort();
+    for p in paths {
+        if p.extension().is_some_and(|e| e == "toml") {
+            if let Ok(d) = Deck::load(&p) {
+                let name = p.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+                out.push((name, d));
+            }
+        }
+    }
+    out
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("load_distribution");
+    for (name, deck) in decks() {
+        let b = deck.bearing.clone();
+        let s = DynamicSpeeds::app_c_estimate(&b);
+        g.bench_function(&name, |bch| bch.iter(|| solve(&b, &s, &SolveOptions::default(), None)));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
