@@ -535,6 +535,23 @@ mod tests {
         }
     }
 
+    /// Hand numbers, β = β₁ = 0, O at the roller centre, x = 0: P/2 = OP = 0.04 m,
+    /// OE = z = 0.006 m, Ω₁ = 100 rad/s, Ω_cg = 0, Ω_o = ω_s = −300 rad/s.
+    /// Eq. 8.1: v₁ = −(0.04 − 0.006)·100 = −3.4 m/s; eq. 8.2: v_o = 0.006·(−300) = −1.8;
+    /// eq. 8.3: v_rel = −1.6 m/s along the seed's y, i.e. +1.6 m/s along t.
+    /// Tolerance 1e-15 m/s: round-off.
+    #[test]
+    fn sliding_hand_example() {
+        let c = [0.0, 0.04, 0.0];
+        let p = [0.0, 0.034, 0.0];
+        let v = sliding_velocity(p, 100.0, 0.0, c, roller_axis(0.0), -300.0);
+        assert!((v - 1.6).abs() < 1e-15, "{v}");
+        // Same contact with the cage turning at 40 rad/s and the ring at 140: the ring's
+        // speed relative to the cage is unchanged, so is the sliding.
+        let v = sliding_velocity(p, 140.0, 40.0, c, roller_axis(0.0), -300.0);
+        assert!((v - 1.6).abs() < 1e-14, "{v}");
+    }
+
     /// Crowned roller on the inner raceway, points along the contact line at offset s
     /// along a, at the crowned radius ρ(s) = √(R_o² − s²) − (R_o − D/2) (App. A).
     fn crowned_inner_point(pt: f64, d: f64, ro: f64, beta: f64, s: f64) -> [f64; 3] {

@@ -259,7 +259,9 @@ impl TractionModel {
     /// 2·w·b·∫_0^{π/2} τ(p₀ cos φ)·cos φ dφ, whose integrand is analytic on each branch of
     /// the law (in x the semi-ellipse has an infinite slope at ±b, where Gauss–Legendre
     /// converges only algebraically). The φ-range is split at the kinks where the EHD
-    /// law changes branch (found by a 32-sample scan and bisection to round-off), and each
+    /// law changes branch (found by a 32-sample scan and bisection to round-off; a branch
+    /// entered and left between two samples, a sliver under π/64 wide, is integrated
+    /// unsplit at reduced accuracy), and each
     /// smooth piece is integrated with 4 panels of 8-point Gauss–Legendre (exact for
     /// polynomials of degree 15 per panel): the constant model's cos²φ is then exact to
     /// round-off (μ·Q to 1e-14), and the Newtonian e^{αp₀ cos φ}·cos φ to ~1e-12 for
@@ -473,7 +475,7 @@ mod tests {
         2.0 * sum * hs / 3.0
     }
 
-    /// Newtonian low-pressure lamina (p₀ = 200 MPa, α·p₀ = 2.2, τ_N ≤ 0.43 MPa ≪ τ_tr):
+    /// Newtonian low-pressure lamina (p₀ = 200 MPa, α·p₀ = 2.2, τ_N ≤ 1.02 kPa ≪ τ_tr):
     /// F = w·∫η₀·e^{αp(x)}·v/h dx, evaluated independently by graded Simpson in x.
     /// Tolerance 1e-8 relative: the reference's own error (Simpson with 2·10⁵ intervals).
     #[test]
@@ -492,13 +494,49 @@ mod tests {
         let got = m.lamina_traction(&c, v, h).force_n;
         let want = w * reference_integral(|p| eta * (alpha * p).exp() * v / h, p0, b);
         assert!((got - want).abs() < 1e-8 * want, "{got} vs {want}");
-        // Also against the modified-Bessel closed form:
-        // ∫_{−b}^{b} e^{a√(1−x²/b²)} dx = π·b·[I₁(a) + L₋₁(a)] is awkward; instead check
-        // the small-α limit F → η₀·v·2b·w/h (α = 0 exactly), tolerance 1e-14.
+        // α = 0: F = η₀·v·2b·w/h exactly (constant stress over the strip), tolerance 1e-14.
         let m0 = ehd(eta, 0.0, 1000.0 * PSI, 0.06);
         let f0 = m0.lamina_traction(&c, v, h).force_n;
         let want0 = eta * v * 2.0 * b * w / h;
         assert!((f0 - want0).abs() < 1e-14 * want0);
+    }
+
+    /// The Newtonian integral in closed form, as a series: with x = b·sin φ,
+    /// ∫_{−b}^{b} e^{a√(1−x²/b²)} dx = b·Σ_k a^k/k!·W_{k+1}, W_n = ∫_{−π/2}^{π/2} cosⁿφ dφ
+    /// (Wallis: W₀ = π, W₁ = 2, W_n = (n−1)/n·W_{n−2}); all terms positive, summed until
+    /// they stop contributing. Checks the quadrature for a = α·p₀ up to 20 (the
+    /// documented range); τ_tr and μ set huge so the whole strip is Newtonian.
+    /// Tolerance 1e-12 relative: quadrature error (≈ round-off) plus series round-off.
+    #[test]
+    fn newtonian_lamina_against_series() {
+        let (eta, v, h, b, w) = (0.0045, 0.01, 1e-6, 50e-6, 0.5e-3);
+        let m = ehd(eta, 1e-8, 1e30, 1e30);
+        for a in [0.5f64, 2.2, 10.0, 20.0] {
+            let p0 = a / 1e-8;
+            let c = LaminaContact {
+                load_n: p0 * std::f64::consts::PI * b * w / 2.0,
+                half_width_m: b,
+                width_m: w,
+            };
+            // Σ_k a^k/k!·W_{k+1}
+            let (mut w_prev, mut w_cur) = (std::f64::consts::PI, 2.0); // W_0, W_1
+            let mut term_coef = 1.0; // a^k/k!
+            let mut sum = w_cur; // k = 0
+            for k in 1..400 {
+                let n = (k + 1) as f64; // W_{k+1} = k/(k+1)·W_{k−1}
+                let w_next = (n - 1.0) / n * w_prev;
+                w_prev = w_cur;
+                w_cur = w_next;
+                term_coef *= a / k as f64;
+                sum += term_coef * w_cur;
+            }
+            let want = w * eta * v / h * b * sum;
+            let got = m.lamina_traction(&c, v, h).force_n;
+            assert!(
+                (got - want).abs() < 1e-12 * want,
+                "a = {a}: {got} vs {want}"
+            );
+        }
     }
 
     /// Mixed laminae against the independent reference: (v, h) = (0.5 m/s, 0.3 µm) and
