@@ -126,6 +126,31 @@ pub struct ContactPointPair {
     pub outer: Option<(f64, f64)>,
 }
 
+impl ContactPointPair {
+    /// Builds the pair from the contact points themselves (`[x, r, t]`, m, in the
+    /// roller frame; `None` for an unloaded raceway): the radius from the bearing axis is
+    /// √(r² + t²) (eqs. 7.1, 7.3: r = AP·cos β_i) and the radius from the roller axis is
+    /// [`distance_from_axis`] of the line through `roller_centre` along `roller_axis`
+    /// (eqs. 7.8, 7.10: r_o = OA·cos(β_i − β)).
+    pub fn from_points(
+        inner: Option<[f64; 3]>,
+        outer: Option<[f64; 3]>,
+        roller_centre: [f64; 3],
+        roller_axis: [f64; 3],
+    ) -> ContactPointPair {
+        let radii = |p: [f64; 3]| {
+            (
+                (p[1] * p[1] + p[2] * p[2]).sqrt(),
+                distance_from_axis(p, roller_centre, roller_axis),
+            )
+        };
+        ContactPointPair {
+            inner: inner.map(radii),
+            outer: outer.map(radii),
+        }
+    }
+}
+
 /// Cage and roller speeds from the contact points (seed 000 eqs. 7.5–7.12).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct InternalSpeeds {
@@ -430,6 +455,33 @@ mod tests {
         let spin0 = s.roller_spin_rad_s[0].expect("loaded");
         let want = 0.5 * (-(1000.0 - cage) * 0.035 / 0.006 + (0.0 - cage) * 0.049 / 0.006);
         assert!(close(spin0, want, 1e-12));
+    }
+
+    /// `from_points` reproduces eqs. 7.1, 7.3, 7.8, 7.10 for the Fig. 9–10 geometry: O on
+    /// the roller axis (offset s from the centre), A at distance OA along the contact
+    /// normal at β_i, P where that normal meets the bearing axis:
+    /// r₁ = (OP − OA)·cos β₁, r_o,1 = OA·cos(β₁ − β); r₂ = (OP + OA)·cos β₂,
+    /// r_o,2 = OA·cos(β − β₂). Tolerance 1e-12 relative: round-off.
+    #[test]
+    fn from_points_matches_eqs_7_1_to_7_10() {
+        let (pt, beta, s, oa) = (0.08382, 12f64.to_radians(), 0.0011, 0.00631);
+        let (b1, b2) = (13.1f64.to_radians(), 11.2f64.to_radians());
+        let c = [0.0, pt / 2.0, 0.0];
+        let a = roller_axis(beta);
+        let o = add(c, scale(s, a));
+        let pa1 = add(o, scale(-oa, contact_normal(b1)));
+        let pa2 = add(o, scale(oa, contact_normal(b2)));
+        let pair = ContactPointPair::from_points(Some(pa1), Some(pa2), c, a);
+        let (r1, ro1) = pair.inner.expect("inner given");
+        let (r2, ro2) = pair.outer.expect("outer given");
+        let op1 = o[1] / b1.cos();
+        let op2 = o[1] / b2.cos();
+        assert!(close(r1, (op1 - oa) * b1.cos(), 1e-12));
+        assert!(close(ro1, oa * (b1 - beta).cos(), 1e-12));
+        assert!(close(r2, (op2 + oa) * b2.cos(), 1e-12));
+        assert!(close(ro2, oa * (beta - b2).cos(), 1e-12));
+        let none = ContactPointPair::from_points(None, Some(pa2), c, a);
+        assert_eq!(none.inner, None);
     }
 
     /// Errors instead of NaN: no controlling roller, bad pitch, zero radius.
