@@ -5,4 +5,6 @@
 //! these depend on the terminal UI.
 #![forbid(unsafe_code)]
 
+pub mod deck;
 pub mod model;
+pub mod units;
