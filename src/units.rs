@@ -237,9 +237,12 @@ mod tests {
     #[test]
     fn round_trip_both_ways() {
         for q in ALL {
-            let scale = if q == Quantity::Temperature { 500.0 } else { 0.0 };
-            let close =
-                |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(scale);
+            let scale = if q == Quantity::Temperature {
+                500.0
+            } else {
+                0.0
+            };
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(scale);
             for v in [
                 1e-9, 0.0127, 1.0, 3.3, 17_000.0, 6.5e-7, 2.9e11, -40.0, 300.0,
             ] {
