@@ -2,6 +2,7 @@
 //!
 //! Physics works in SI throughout; deck values are converted here, at the boundary, and
 //! nowhere else. Every factor is exact by definition (international inch, pound, BTU_IT).
+#![warn(missing_docs)]
 
 use std::fmt;
 use std::str::FromStr;

@@ -1,6 +1,18 @@
 //! TOML input decks: parse (US customary or SI) into the SI [`Bearing`], validate with
 //! key/line/column diagnostics, edit values in place keeping comments, convert between
 //! unit systems, and save atomically.
+//!
+//! The key layout is a contract (see [`template`] for every key, its unit and range):
+//! top-level `units` ("us" | "si") and `name`, then the tables `[geometry]`,
+//! `[materials]`, `[operating]`, `[lubricant]`, `[surfaces]`, `[life]`, `[cage]`,
+//! optional `[solver]`, and an optional `[thermal]` table kept opaque for the thermal
+//! module. Every editable scalar is described once in [`fields()`]: parsing,
+//! validation, the template, [`Deck::get`]/[`Deck::set`] and the TUI read that table.
+#![warn(missing_docs)]
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
 
 mod error;
 mod io;
@@ -111,6 +123,11 @@ impl Deck {
         let wants_string = key_path == "name"
             || is_body
             || spec.is_some_and(|s| matches!(s.kind, FieldKind::Choice(_)));
+        // The two ways of giving α are exclusive: setting one removes the other.
+        let exclusive_other = match spec.map(|s| s.presence) {
+            Some(Presence::OneOf(other)) => Some(other),
+            _ => None,
+        };
         let trimmed = value.trim();
         let mut new_value = match trimmed.parse::<Value>() {
             Ok(v) if !wants_string || v.is_str() => v,
@@ -169,6 +186,14 @@ impl Deck {
                 t.insert(last, Item::Value(new_value));
             }
         }
+        if let Some(other) = exclusive_other {
+            let mut it = other.split('.');
+            if let (Some(g), Some(k)) = (it.next(), it.next()) {
+                if let Some(t) = doc.get_mut(g).and_then(Item::as_table_like_mut) {
+                    t.remove(k);
+                }
+            }
+        }
         let text = doc.to_string();
         let parsed = validate::parse_text(&text, &self.source_name)?;
         self.units = parsed.units;
@@ -176,6 +201,19 @@ impl Deck {
         self.thermal = parsed.thermal;
         self.doc = doc;
         Ok(())
+    }
+
+    /// Applies a command-line assignment `key.path=value` (as for `--set`), in deck
+    /// units; see [`Deck::set`].
+    pub fn set_assignment(&mut self, assignment: &str) -> Result<(), DeckErrors> {
+        match assignment.split_once('=') {
+            Some((k, v)) => self.set(k.trim(), v),
+            None => Err(DeckError::NotEditable {
+                key: assignment.to_string(),
+                reason: "expected key.path=value".into(),
+            }
+            .into()),
+        }
     }
 
     /// The value of `key_path` as written in the deck (deck units; strings unquoted).

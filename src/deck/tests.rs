@@ -396,6 +396,16 @@ fn set_and_get_keep_comments() {
     );
     assert!(d.set("materials.roller", "silicon-nitride").is_ok());
     assert_eq!(d.bearing.materials.roller, Material::SILICON_NITRIDE);
+    // α and LP are exclusive: setting one replaces the other (LP = 1e11·η·α; 1e-12
+    // relative, one division)
+    assert!(d.set("lubricant.lubricant_parameter", "9.9").is_ok());
+    assert!(rel(d.bearing.lubricant.pressure_viscosity_pa_inv, 2.2e-8) < 1e-12);
+    assert!(!d.to_toml_string().contains("pressure_viscosity ="));
+    assert!(d.set("lubricant.pressure_viscosity", "7.6e-5").is_ok());
+    assert!(!d.to_toml_string().contains("lubricant_parameter ="));
+    assert!(d.set_assignment("operating.radial_load=2500").is_ok());
+    assert_eq!(d.get("operating.radial_load").as_deref(), Some("2500"));
+    assert!(d.set_assignment("operating.radial_load").is_err());
     // an optional key not in the file is inserted
     let mut r = load_deck("radial_si.toml");
     assert!(r.set("cage.drag_factor", "3").is_ok());

@@ -582,7 +582,7 @@ fn cross_checks(ctx: &mut Ctx<'_>, b: &Bearing, units: Units) {
         if ok || !keys.iter().all(|k| ctx.valid.contains_key(k)) {
             continue;
         }
-        let key = keys[0];
+        let Some(&key) = keys.first() else { continue };
         let (location, value) = match ctx.seen.get(key) {
             Some((l, v)) => (l.clone(), v.clone()),
             None => (Location::start(ctx.source), String::from("(default)")),
