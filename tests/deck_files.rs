@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use proptest::prelude::*;
-use rollbench::deck::{fields, write_bearing, Deck, Units};
+use rollbench::deck::{write_bearing, Deck, Units};
 use rollbench::model::{Bearing, FilmModel, GuidingRing, LifeMethod, Material};
 
 fn toml_files(dir: &str) -> Vec<PathBuf> {
@@ -214,21 +214,93 @@ fn bearing() -> impl Strategy<Value = Bearing> {
         })
 }
 
-/// Fields differing by more than `tol` relative (every registry field, which covers
-/// every number of `Bearing`).
+/// Field-by-field comparison through the serde representation (independent of the
+/// deck registry): numbers within `tol` relative, everything else equal.
 fn diff(a: &Bearing, b: &Bearing, tol: f64) -> Vec<String> {
-    fields()
-        .iter()
-        .filter_map(|f| {
-            let (x, y) = (f.get_si(a), f.get_si(b));
-            let r = if x == y {
-                0.0
-            } else {
-                (x - y).abs() / x.abs().max(y.abs())
-            };
-            (r > tol).then(|| format!("{}: {x} vs {y}", f.key))
-        })
-        .collect()
+    fn walk(
+        path: &str,
+        x: &serde_json::Value,
+        y: &serde_json::Value,
+        tol: f64,
+        out: &mut Vec<String>,
+    ) {
+        use serde_json::Value as J;
+        match (x, y) {
+            (J::Object(p), J::Object(q)) => {
+                for (k, v) in p {
+                    match q.get(k) {
+                        Some(w) => walk(&format!("{path}.{k}"), v, w, tol, out),
+                        None => out.push(format!("{path}.{k}: missing")),
+                    }
+                }
+            }
+            (J::Number(p), J::Number(q)) => {
+                let (p, q) = (
+                    p.as_f64().unwrap_or(f64::NAN),
+                    q.as_f64().unwrap_or(f64::NAN),
+                );
+                let r = if p == q {
+                    0.0
+                } else {
+                    (p - q).abs() / p.abs().max(q.abs())
+                };
+                if !(r <= tol) {
+                    out.push(format!("{path}: {p} vs {q}"));
+                }
+            }
+            _ => {
+                if x != y {
+                    out.push(format!("{path}: {x} vs {y}"));
+                }
+            }
+        }
+    }
+    let mut out = Vec::new();
+    match (serde_json::to_value(a), serde_json::to_value(b)) {
+        (Ok(x), Ok(y)) => walk("bearing", &x, &y, tol, &mut out),
+        _ => out.push("not serializable".into()),
+    }
+    out
+}
+
+fn deck(name: &str) -> Deck {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("decks")
+        .join(name);
+    match Deck::load(&path) {
+        Ok(d) => d,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// The shipped decks are what their headers say (exact where the deck writes the
+/// number itself; 1e-5 relative for the spherical outer race written to 6 digits).
+#[test]
+fn shipped_decks_have_their_stated_character() {
+    let spherical = |b: &Bearing| {
+        let g = &b.geometry;
+        g.pitch_diameter_m / (2.0 * g.contact_angle_rad.cos()) + g.roller_diameter_m / 2.0
+    };
+    let radial = deck("radial_si.toml");
+    assert_eq!(radial.units, Units::Si);
+    assert_eq!(radial.bearing.geometry.contact_angle_rad, 0.0);
+    assert_eq!(radial.bearing.operating.axial_load_n, 0.0);
+    assert_eq!(radial.bearing.geometry.roller_count, 18);
+    let thrust = deck("thrust.toml");
+    assert_eq!(thrust.bearing.operating.radial_load_n, 0.0);
+    assert!(thrust.bearing.operating.axial_load_n > 0.0);
+    assert!((thrust.bearing.geometry.contact_angle_rad - 15f64.to_radians()).abs() < 1e-15);
+    let r = spherical(&thrust.bearing) / thrust.bearing.geometry.outer_crown_radius_m;
+    assert!((r - 1.0).abs() < 1e-5, "{r}");
+    let ind = deck("industrial.toml");
+    assert_eq!(ind.units, Units::Si);
+    assert!(ind.bearing.operating.inner_speed_rad_s < 400.0 * std::f64::consts::PI / 30.0);
+    let r = spherical(&ind.bearing) / ind.bearing.geometry.outer_crown_radius_m;
+    assert!((r - 1.0).abs() < 1e-5, "{r}");
+    let aero = deck("aerospace.toml");
+    assert!(diff(&aero.bearing, &Bearing::example_aerospace(), 1e-12).is_empty());
+    let aero_si = deck("aerospace_si.toml");
+    assert!(diff(&aero_si.bearing, &aero.bearing, 1e-9).is_empty());
 }
 
 proptest! {

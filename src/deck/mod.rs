@@ -149,7 +149,9 @@ impl Deck {
                     .iter()
                     .filter(|f| f.group == format!("materials.{body}"))
                 {
+                    // 15 significant digits: hides the last-bit noise of the conversion
                     let v = f.from_si(f.get_si(&self.bearing), self.units);
+                    let v: f64 = template::fmt_real(v).parse().unwrap_or(v);
                     t.insert(f.name(), Value::from(v));
                 }
                 if let Some(slot) = doc.get_mut("materials").and_then(|m| m.get_mut(body)) {
