@@ -244,7 +244,7 @@ fn diff(a: &Bearing, b: &Bearing, tol: f64) -> Vec<String> {
                 } else {
                     (p - q).abs() / p.abs().max(q.abs())
                 };
-                if !(r <= tol) {
+                if r.is_nan() || r > tol {
                     out.push(format!("{path}: {p} vs {q}"));
                 }
             }

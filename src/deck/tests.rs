@@ -39,7 +39,7 @@ pub(crate) fn bearing_diff(a: &Bearing, b: &Bearing, tol: f64) -> Vec<String> {
                     p.as_f64().unwrap_or(f64::NAN),
                     q.as_f64().unwrap_or(f64::NAN),
                 );
-                if !(rel(p, q) <= tol) {
+                if rel(p, q).is_nan() || rel(p, q) > tol {
                     out.push(format!("{path}: {p} vs {q}"));
                 }
             }
