@@ -455,6 +455,9 @@ fn set_and_get_keep_comments() {
     assert!(d.set_assignment("operating.radial_load=2500").is_ok());
     assert_eq!(d.get("operating.radial_load").as_deref(), Some("2500"));
     assert!(d.set_assignment("operating.radial_load").is_err());
+    assert!(d.set("name", "test rig #2").is_ok());
+    assert_eq!(d.bearing.name, "test rig #2");
+    assert_eq!(d.get("name").as_deref(), Some("test rig #2"));
     // an optional key not in the file is inserted
     let mut r = load_deck("radial_si.toml");
     assert!(r.set("cage.drag_factor", "3").is_ok());
