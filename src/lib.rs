@@ -2,10 +2,12 @@
 //!
 //! Layers: `model` (pure physics), `solve` (equilibrium solvers, staged pipeline),
 //! `deck` (TOML input), `report` (text/JSON/CSV), `thermal` (lumped network). None of
-//! these depend on the terminal UI.
+//! these depend on the terminal UI; `cli` and `tui` are thin layers on top.
 #![forbid(unsafe_code)]
 
-pub mod model;
-pub mod solve;
-pub mod report;
 pub mod cli;
+pub mod deck;
+pub mod model;
+pub mod report;
+pub mod solve;
+pub mod units;
