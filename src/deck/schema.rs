@@ -373,16 +373,7 @@ const MAT_ROLLER: [FieldSpec; 5] = material_fields!(roller, "roller", "Roller");
 const MAT_INNER: [FieldSpec; 5] = material_fields!(inner_ring, "inner_ring", "Inner ring");
 const MAT_OUTER: [FieldSpec; 5] = material_fields!(outer_ring, "outer_ring", "Outer ring");
 
-const fn defaults() -> SolverSettings {
-    SolverSettings {
-        laminae: 21,
-        force_tolerance: 1e-9,
-        max_iterations: 100,
-        max_roller_iterations: 60,
-        cage_stiffness_ratio: 1e-4,
-    }
-}
-const SOLVER_DEFAULTS: SolverSettings = defaults();
+const SOLVER_DEFAULTS: SolverSettings = SolverSettings::DEFAULT;
 
 static FIELDS: [FieldSpec; 59] = [
     // --- geometry ---

@@ -213,15 +213,22 @@ pub struct SolverSettings {
     pub cage_stiffness_ratio: f64,
 }
 
+impl SolverSettings {
+    /// The defaults (one place for tolerances and iteration limits; decks override them).
+    /// The cage ratio 1e-7 keeps the cage reaction of rollers loaded at both raceways below
+    /// 1e-3 of their load while still holding one-sided rollers (see `solve::load_distribution`).
+    pub const DEFAULT: SolverSettings = SolverSettings {
+        laminae: 21,
+        force_tolerance: 1e-9,
+        max_iterations: 100,
+        max_roller_iterations: 60,
+        cage_stiffness_ratio: 1e-7,
+    };
+}
+
 impl Default for SolverSettings {
     fn default() -> Self {
-        SolverSettings {
-            laminae: 21,
-            force_tolerance: 1e-9,
-            max_iterations: 100,
-            max_roller_iterations: 60,
-            cage_stiffness_ratio: 1e-7,
-        }
+        SolverSettings::DEFAULT
     }
 }
 
