@@ -1,5 +1,8 @@
 //! Pure physics, SI units throughout.
 
 pub mod bearing;
+pub mod hertz;
+pub mod pchip;
+pub mod subsurface;
 
 pub use bearing::*;
