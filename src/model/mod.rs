@@ -1,6 +1,7 @@
 //! Pure physics, SI units throughout.
 
 pub mod bearing;
+pub mod film;
 pub mod hertz;
 pub mod pchip;
 pub mod subsurface;
