@@ -3,6 +3,7 @@
 pub mod bearing;
 pub mod film;
 pub mod hertz;
+pub mod life;
 pub mod pchip;
 pub mod subsurface;
 
