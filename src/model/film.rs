@@ -18,6 +18,9 @@
 //! contact (R ≤ 0, E′ ≤ 0, negative viscosity or pressure-viscosity coefficient, NaN).
 //! Zero entrainment speed is a loaded contact with zero film: `Some(0.0)`.
 
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
 use crate::model::FilmModel;
 
 /// One lamina's EHD inputs, SI.

@@ -4,6 +4,9 @@
 //! length `w` (the lamina width) pressed together by the lamina load `Q`. The contact is
 //! a strip of half-width `b` with the elliptical (Hertz) pressure p(x) = p₀·√(1 − x²/b²).
 
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
 use thiserror::Error;
 
 /// Why a pair of lamina surfaces is not a Hertzian contact.

@@ -13,6 +13,9 @@
 //! slope of line contact (Lundberg–Palmgren), i.e. 4.5, and eq. 6.6 uses the same e;
 //! §6.1's "1 ≤ Λ ≤ 10" is 0.1 ≤ Λ ≤ 10 (below 0.1 it returns 0.27, above 10 3.02).
 
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
 use crate::model::pchip::MonotoneCubic;
 use crate::model::{Geometry, LifeFactors, LifeMethod};
 use std::sync::OnceLock;

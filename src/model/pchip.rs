@@ -1,10 +1,16 @@
 //! Monotone piecewise-cubic Hermite interpolation (Fritsch–Carlson, SIAM J. Numer. Anal.
 //! 17 (1980) 238–246), used by the tabulated curves of `subsurface` and `life`.
 //!
-//! A monotone scheme is used because the tabulated quantities (life factor against
-//! film parameter, subsurface stress against ellipse ratio) are monotone physically and
-//! an ordinary cubic spline can overshoot between knots, which would invent a life
-//! factor above the curve's plateau or a non-monotone stress.
+//! A monotone scheme is used because the tabulated quantities are monotone between
+//! their turning points (the life factor against film parameter everywhere, the
+//! subsurface stresses against ellipse ratio piecewise) and an ordinary cubic spline can
+//! overshoot between knots, which would invent a life factor above the curve's plateau
+//! or a spurious wiggle in a stress. Slopes are the Fritsch–Butland weighted harmonic
+//! means (the "pchip" choice), which satisfy the Fritsch–Carlson monotonicity region;
+//! at a local extremum of the data the slope is zero, so extrema are not overshot.
+
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
 
 /// Knots and slopes of a monotone cubic Hermite interpolant, `y(x)` dimensionless.
 #[derive(Debug, Clone, PartialEq)]

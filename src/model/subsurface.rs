@@ -41,6 +41,9 @@
 //! (ν = 0, 0.05, …, 0.5, each lazily under a `OnceLock`), interpolated with a monotone
 //! cubic in k and linearly in ν; [`subsurface_ratios_exact`] is the direct computation.
 
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
 use crate::model::pchip::MonotoneCubic;
 use std::sync::OnceLock;
 
@@ -340,8 +343,11 @@ pub fn subsurface_ratios(k: f64, nu: f64) -> SubsurfaceRatios {
 
 /// Maximum subsurface stresses in SI for a contact with max pressure p₀ (Pa) and
 /// semi-axes `semi_major_m` (a, along the roller) and `semi_minor_m` (b, rolling
-/// direction), Poisson ratio ν of the body considered (seed 000 §4.4). The axes may be
-/// given in either order. Zero pressure or a zero axis gives zeros.
+/// direction), Poisson ratio ν of the body considered (seed 000 §4.4). Semi-axes are
+/// halves of the seed's §4.3 ellipse axes: a = ½·(cumulative width of the loaded
+/// laminae), b = the Hertz half-width of the most heavily loaded lamina. The axes may be
+/// given in either order. Zero pressure or a zero axis gives zeros. Depths in m, stresses
+/// in Pa.
 pub fn subsurface_stress(
     p0_pa: f64,
     semi_major_m: f64,
@@ -463,9 +469,14 @@ mod tests {
             prev = r;
         }
         assert_eq!(tau_turns, 1, "τ₁/p₀ should rise then fall once");
-        // Circle end of τ₀: t solves (t²−1)(2t−1) = 1; check the root, 1e-12.
+        // Circle end of τ₀: (t²−1)(2t−1) = 1 is 2t³ − t² − 2t = 0, so t = (1 + √17)/4
+        // exactly; τ₀/p₀ = 0.213891, z/b = 0.350864. 1e-12: bisection to round-off.
+        let t = (1.0 + 17f64.sqrt()) / 4.0;
         let (t0, z0) = orthogonal_shear(1.0);
-        assert!(t0 > 0.0 && t0 < 0.25 && z0 > 0.0 && z0 < 0.5);
+        let r = (2.0 * t - 1.0).sqrt();
+        assert!((t0 - r / (2.0 * t * (t + 1.0))).abs() < 1e-12, "{t0}");
+        assert!((z0 - 1.0 / ((t + 1.0) * r)).abs() < 1e-12, "{z0}");
+        assert!((t0 - 0.213_891).abs() < 1e-6);
     }
 
     #[test]
