@@ -42,7 +42,7 @@
 //! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
-use crate::model::{Bearing, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings};
+use crate::model::{Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings};
 use crate::units::{Quantity, Units, PSI_PA};
 
 /// What TOML value a field takes.
@@ -202,6 +202,8 @@ pub fn format_short(v: f64) -> String {
 pub const FILM_MODELS: &[&str] = &["grubin", "dowson-higginson", "pan-hamrock"];
 /// Life-method choices, in [`LifeMethod`] order.
 pub const LIFE_METHODS: &[&str] = &["asme", "iso281"];
+/// Dynamic-load choices, in [`DynamicLoads`] order.
+pub const DYNAMIC_LOADS: &[&str] = &["iterated", "estimate"];
 /// Cage-guidance choices, in [`GuidingRing`] order.
 pub const GUIDING_RINGS: &[&str] = &["inner", "outer"];
 /// Material presets accepted as `materials.<body> = "<name>"`.
@@ -249,6 +251,19 @@ fn method_from(v: f64) -> LifeMethod {
         LifeMethod::Iso281
     } else {
         LifeMethod::Asme
+    }
+}
+fn dynamic_index(d: DynamicLoads) -> f64 {
+    match d {
+        DynamicLoads::Iterated => 0.0,
+        DynamicLoads::Estimate => 1.0,
+    }
+}
+fn dynamic_from(v: f64) -> DynamicLoads {
+    if v as usize == 1 {
+        DynamicLoads::Estimate
+    } else {
+        DynamicLoads::Iterated
     }
 }
 fn guide_index(g: GuidingRing) -> f64 {
@@ -375,7 +390,7 @@ const MAT_OUTER: [FieldSpec; 5] = material_fields!(outer_ring, "outer_ring", "Ou
 
 const SOLVER_DEFAULTS: SolverSettings = SolverSettings::DEFAULT;
 
-static FIELDS: [FieldSpec; 59] = [
+static FIELDS: [FieldSpec; 60] = [
     // --- geometry ---
     field!("geometry.roller_count", "geometry", "Roller count Z", Count, I, 3.0, false, 500.0, false, REQ,
         "number of rollers", get: |b| b.geometry.roller_count as f64, set: |b, v| b.geometry.roller_count = to_count(v)),
@@ -513,6 +528,9 @@ static FIELDS: [FieldSpec; 59] = [
     field!("solver.cage_stiffness_ratio", "solver", "Cage stiffness ratio", Dimensionless, R, 0.0, false, 1.0, false,
         Presence::Default(SOLVER_DEFAULTS.cage_stiffness_ratio), "cage pocket stiffness as a fraction of contact stiffness",
         get: |b| b.solver.cage_stiffness_ratio, set: |b, v| b.solver.cage_stiffness_ratio = v),
+    field!("solver.dynamic_loads", "solver", "Dynamic loads from", Dimensionless, FieldKind::Choice(DYNAMIC_LOADS), 0.0, false, 1.0, false,
+        Presence::Default(0.0), "speeds for CF and gyroscopic moment: iterated with §7, or App. C estimate",
+        get: |b| dynamic_index(b.solver.dynamic_loads), set: |b, v| b.solver.dynamic_loads = dynamic_from(v)),
     // padding rows are not allowed: the array length is exact
 ];
 

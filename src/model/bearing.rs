@@ -196,6 +196,17 @@ pub struct Cage {
     pub mass_kg: f64,
 }
 
+/// Which speeds set the centrifugal force and gyroscopic moment (seed 000 §3, §7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum DynamicLoads {
+    /// Re-solve with §7's cage and roller speeds until speeds and loads agree.
+    #[default]
+    Iterated,
+    /// SASHBEAN's choice: App. C's first estimate only.
+    Estimate,
+}
+
 /// Numerical settings: one place for tolerances and iteration limits.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SolverSettings {
@@ -211,6 +222,8 @@ pub struct SolverSettings {
     /// Stiffness of the cage pocket (roller held along its axis and in pitch) as a
     /// fraction of a roller's contact stiffness; see `solve::load_distribution`.
     pub cage_stiffness_ratio: f64,
+    /// Which speeds drive the dynamic loads.
+    pub dynamic_loads: DynamicLoads,
 }
 
 impl SolverSettings {
@@ -223,6 +236,7 @@ impl SolverSettings {
         max_iterations: 100,
         max_roller_iterations: 60,
         cage_stiffness_ratio: 1e-7,
+        dynamic_loads: DynamicLoads::Iterated,
     };
 }
 

@@ -10,19 +10,45 @@ pub fn to_value(a: &Analysis) -> Value {
     let rollers: Vec<Value> = ld
         .rollers
         .iter()
-        .map(|r| {
-            let contact = |c: &crate::solve::load_distribution::RacewayContact| {
-                json!({
+        .enumerate()
+        .map(|(j, r)| {
+            let contact = |k: usize, c: &crate::solve::load_distribution::RacewayContact| {
+                let mut v = json!({
                     "normal_load_n": c.normal_load_n,
                     "contact_angle_deg": c.contact_angle_deg,
                     "loaded_laminae": c.loaded_laminae,
-                })
+                });
+                if let (Some(m), Some(st)) = (v.as_object_mut(), a.stresses.as_ref()) {
+                    let rs = &st.rollers[j][k];
+                    m.insert("max_stress_pa".into(), json!(rs.max_stress_pa));
+                    m.insert("mean_stress_pa".into(), json!(rs.mean_stress_pa));
+                    m.insert("contact_major_axis_m".into(), json!(rs.contact_major_axis_m));
+                    m.insert("contact_minor_axis_m".into(), json!(rs.contact_minor_axis_m));
+                    m.insert("eccentricity_m".into(), json!(rs.eccentricity_m));
+                    m.insert("subsurface_shear_pa".into(), json!(rs.subsurface_shear_pa));
+                    m.insert("subsurface_depth_m".into(), json!(rs.subsurface_depth_m));
+                    m.insert("orthogonal_shear_pa".into(), json!(rs.orthogonal_shear_pa));
+                    m.insert("orthogonal_shear_depth_m".into(), json!(rs.orthogonal_depth_m));
+                    m.insert("von_mises_pa".into(), json!(rs.von_mises_pa));
+                    m.insert("von_mises_depth_m".into(), json!(rs.von_mises_depth_m));
+                }
+                if let (Some(m), Some(fi)) = (v.as_object_mut(), a.films.as_ref()) {
+                    m.insert("min_film_m".into(), json!(fi.min_film[j][k]));
+                }
+                if let (Some(m), Some(li)) = (v.as_object_mut(), a.life.as_ref()) {
+                    m.insert("equivalent_load_n".into(), json!(li.equivalent_loads_n[j][k]));
+                }
+                if let (Some(m), Some(fr)) = (v.as_object_mut(), a.friction.as_ref()) {
+                    m.insert("heat_w".into(), json!(fr.roller_heat_w[j][k]));
+                }
+                v
             };
             let laminae: Vec<Value> = r
                 .laminae
                 .iter()
-                .map(|l| {
-                    json!({
+                .enumerate()
+                .map(|(i, l)| {
+                    let mut v = json!({
                         "offset_m": l.offset_m,
                         "width_m": l.width_m,
                         "inner_load_n": l.inner_load_n,
@@ -33,7 +59,32 @@ pub fn to_value(a: &Analysis) -> Value {
                         "outer_angle_deg": l.outer_angle_deg,
                         "inner_point_m": l.inner_point_m,
                         "outer_point_m": l.outer_point_m,
-                    })
+                    });
+                    if let Some(m) = v.as_object_mut() {
+                        if let Some(st) = &a.stresses {
+                            let h = &st.laminae[j][i];
+                            m.insert("inner_half_width_m".into(), json!(h[0].half_width_m));
+                            m.insert("outer_half_width_m".into(), json!(h[1].half_width_m));
+                            m.insert("inner_stress_pa".into(), json!(h[0].max_pressure_pa));
+                            m.insert("outer_stress_pa".into(), json!(h[1].max_pressure_pa));
+                            m.insert("inner_mean_stress_pa".into(), json!(h[0].mean_pressure_pa));
+                            m.insert("outer_mean_stress_pa".into(), json!(h[1].mean_pressure_pa));
+                        }
+                        if let Some(fi) = &a.films {
+                            m.insert("inner_film_m".into(), json!(fi.laminae[j][i][0]));
+                            m.insert("outer_film_m".into(), json!(fi.laminae[j][i][1]));
+                        }
+                        if let Some(fr) = &a.friction {
+                            let f = &fr.laminae[j][i];
+                            m.insert("inner_sliding_m_s".into(), json!(f[0].sliding_m_s));
+                            m.insert("outer_sliding_m_s".into(), json!(f[1].sliding_m_s));
+                            m.insert("inner_traction_n".into(), json!(f[0].traction_n));
+                            m.insert("outer_traction_n".into(), json!(f[1].traction_n));
+                            m.insert("inner_heat_w".into(), json!(f[0].heat_w));
+                            m.insert("outer_heat_w".into(), json!(f[1].heat_w));
+                        }
+                    }
+                    v
                 })
                 .collect();
             json!({
@@ -46,8 +97,9 @@ pub fn to_value(a: &Analysis) -> Value {
                 "gyroscopic_moment_nm": r.gyroscopic_moment_nm,
                 "cage_force_n": r.cage_force_n,
                 "cage_moment_nm": r.cage_moment_nm,
-                "inner": contact(&r.inner),
-                "outer": contact(&r.outer),
+                "spin_rpm": a.speeds.spin_rpm.get(j).copied().unwrap_or(0.0),
+                "inner": contact(0, &r.inner),
+                "outer": contact(1, &r.outer),
                 "laminae": laminae,
             })
         })
@@ -76,7 +128,19 @@ pub fn to_value(a: &Analysis) -> Value {
         "dynamic_speeds".into(),
         json!({"cage_rad_s": ld.speeds.cage_rad_s, "roller_spin_rad_s": ld.speeds.roller_spin_rad_s}),
     );
+    doc.insert("speeds".into(), serde_json::to_value(&a.speeds).unwrap_or(Value::Null));
     doc.insert("rollers".into(), Value::Array(rollers));
+    if let Some(li) = &a.life {
+        doc.insert("life".into(), serde_json::to_value(&li.result).unwrap_or(Value::Null));
+    }
+    if let Some(fr) = &a.friction {
+        let mut h = serde_json::to_value(&fr.heat).unwrap_or(Value::Null);
+        if let Some(m) = h.as_object_mut() {
+            m.insert("total_btu_per_hr".into(), json!(fr.heat.total_btu_per_hour()));
+            m.insert("lost_lubrication".into(), json!(fr.lost_lubrication));
+        }
+        doc.insert("heat".into(), h);
+    }
     doc.insert(
         "residuals".into(),
         json!({

@@ -4,5 +4,6 @@ pub mod contacts;
 pub mod error;
 pub mod load_distribution;
 pub mod pipeline;
+pub mod stages;
 
 pub use error::SolveError;
