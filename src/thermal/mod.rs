@@ -24,3 +24,6 @@ pub use transient::{
     Integrator, OilCoupled, Scenario, TransientNode, TransientResult, TransientSettings,
     TransientStats,
 };
+
+#[cfg(test)]
+mod tests;
