@@ -121,6 +121,12 @@ pub enum ThermalError {
         /// Node name.
         node: String,
     },
+    /// The caller cancelled a transient.
+    #[error("thermal transient cancelled at t = {time_s} s")]
+    Cancelled {
+        /// Simulated time reached, s.
+        time_s: f64,
+    },
     /// A `[thermal]` deck entry is malformed.
     #[error("thermal deck {location}: {message}")]
     Deck {

@@ -20,9 +20,9 @@ pub use network::{
 };
 pub use steady::{solve_steady, SteadyNode, SteadyResult};
 pub use transient::{
-    explicit_stable_step_s, run_transient, run_transient_from, scenario_network, HeatSchedule,
-    Integrator, OilCoupled, Scenario, TransientNode, TransientResult, TransientSettings,
-    TransientStats,
+    explicit_stable_step_s, run_transient, run_transient_cancellable, run_transient_from,
+    scenario_network, HeatSchedule, Integrator, OilCoupled, Scenario, TransientNode,
+    TransientResult, TransientSettings, TransientStats,
 };
 
 #[cfg(test)]

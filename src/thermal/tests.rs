@@ -784,3 +784,107 @@ fn json_field_names_are_the_contract() {
         .unwrap();
     assert!(shaft_end["time_to_limit_s"].is_null() && shaft_end["limit_c"].is_null());
 }
+
+#[test]
+fn transient_can_be_cancelled() {
+    // The cancel flag is checked before each step: flipping it after 3 steps stops the
+    // run at t = 3 s with a typed error.
+    let net = one_node(C1, G1, TINF);
+    let calls = std::cell::Cell::new(0);
+    let cancel = || {
+        calls.set(calls.get() + 1);
+        calls.get() > 3
+    };
+    let e = run_transient_cancellable(
+        &net,
+        &[T0, TINF],
+        &continued(100.0, 1.0, Integrator::Implicit),
+        &q(Q1),
+        &cancel,
+    )
+    .unwrap_err();
+    assert_eq!(e, ThermalError::Cancelled { time_s: 3.0 });
+}
+
+#[test]
+fn fixed_nodes_keep_their_temperature_in_transients() {
+    // A wrong initial value for the fixed sink is ignored: the sink is reported at its
+    // given 20 °C throughout (exact).
+    let net = one_node(C1, G1, TINF);
+    let r = run_transient_from(
+        &net,
+        &[T0, 999.0],
+        &continued(10.0, 1.0, Integrator::Implicit),
+        &q(Q1),
+    )
+    .unwrap();
+    assert!(r
+        .node("sink")
+        .unwrap()
+        .temperature_c
+        .iter()
+        .all(|&t| t == TINF));
+}
+
+mod props {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A random tree of free nodes hanging from one fixed node at 20 °C, each free node
+    /// with a random conductance to its parent, non-negative heat (via the cage-rail
+    /// mechanism, shared equally) and optionally an oil stream from the fixed node.
+    fn network(parents: &[usize], g: &[f64], heated: &[bool], oil: &[Option<f64>]) -> Network {
+        let mut nodes = vec![Node::fixed("n0", 20.0)];
+        let mut links = Vec::new();
+        for (k, ((&p, &gk), (&h, o))) in parents
+            .iter()
+            .zip(g)
+            .zip(heated.iter().zip(oil))
+            .enumerate()
+        {
+            let i = k + 1;
+            let mut node = Node::free(format!("n{i}"), 1.0);
+            if h {
+                node = node.with_heat(HeatMechanism::CageRails);
+            }
+            nodes.push(node);
+            links.push(Link::conductance(
+                format!("n{i}"),
+                format!("n{}", p % i),
+                gk,
+            ));
+            if let Some(mc) = o {
+                links.push(Link::mass_transport("n0", format!("n{i}"), *mc));
+            }
+        }
+        let mut net = Network::new(nodes, links);
+        net.roller_heat_fraction = 0.0;
+        net
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Energy balance to 1e-9 relative, and the maximum principle: with heat ≥ 0 no
+        /// free node is colder than the coldest fixed node (20 °C, to 1e-9 K round-off).
+        #[test]
+        fn balance_and_maximum_principle(
+            parents in prop::collection::vec(0usize..100, 1..25),
+            g in prop::collection::vec(0.01f64..100.0, 25),
+            heated in prop::collection::vec(any::<bool>(), 25),
+            oil in prop::collection::vec(prop::option::of(1.0f64..200.0), 25),
+            q_w in 0.0f64..5000.0,
+        ) {
+            let n = parents.len();
+            let mut heated = heated[..n].to_vec();
+            heated[n - 1] = true;
+            let net = network(&parents, &g[..n], &heated, &oil[..n]);
+            let heat = HeatInput { cage_rails_w: q_w, ..HeatInput::default() };
+            let s = solve_steady(&net, &heat).unwrap();
+            prop_assert!(s.balance_w.abs() <= 1e-9 * s.heat_in_w.max(1.0));
+            for node in &s.nodes {
+                prop_assert!(node.temperature_c >= 20.0 - 1e-9);
+            }
+        }
+    }
+}

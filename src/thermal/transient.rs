@@ -205,7 +205,21 @@ pub fn run_transient_from(
     settings: &TransientSettings,
     heat: &dyn HeatSchedule,
 ) -> Result<TransientResult, ThermalError> {
+    run_transient_cancellable(network, initial_c, settings, heat, &|| false)
+}
+
+/// As [`run_transient_from`], checking `cancelled()` before every output step; returns
+/// [`ThermalError::Cancelled`] (with the simulated time reached) when it turns true, so a
+/// worker thread can abandon a stale run.
+pub fn run_transient_cancellable(
+    network: &Network,
+    initial_c: &[f64],
+    settings: &TransientSettings,
+    heat: &dyn HeatSchedule,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<TransientResult, ThermalError> {
     check_settings(settings)?;
+    network.validate()?;
     if initial_c.len() != network.nodes.len() {
         return Err(ThermalError::InvalidSetting {
             field: "initial_c".into(),
@@ -235,7 +249,14 @@ pub fn run_transient_from(
     let sys = System::assemble(&net, &resolved);
     let oil = oil_node(network, settings, heat)?;
 
-    let mut t_all: Vec<f64> = initial_c.to_vec();
+    // Fixed nodes keep their given temperature whatever `initial_c` says.
+    let t_all_init: Vec<f64> = net
+        .nodes
+        .iter()
+        .zip(initial_c)
+        .map(|(n, &t0)| n.fixed_c.unwrap_or(t0))
+        .collect();
+    let mut t_all = t_all_init;
     let mut t = sys.gather(&t_all);
     let bound = stable_bound(&sys);
     let heat_at = |t_all: &[f64]| -> Result<DVector<f64>, ThermalError> {
@@ -266,6 +287,9 @@ pub fn run_transient_from(
         .max(1.0) as usize;
     let mut now = 0.0;
     for k in 1..=n_steps {
+        if cancelled() {
+            return Err(ThermalError::Cancelled { time_s: now });
+        }
         let next = if k == n_steps {
             settings.duration_s
         } else {
