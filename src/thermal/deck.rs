@@ -261,8 +261,8 @@ fn array<'a>(section: &'a toml::Table, key: &str) -> Result<&'a [toml::Value], T
 
 /// Parses the `[thermal]` section of a deck.
 ///
-/// `table` is the deck root holding a `thermal` table; if it has no `thermal` key it is
-/// taken to be the section itself. Values are in `units`; the result is SI. Each entry
+/// `table` is the deck root holding a `thermal` table; if it has no `thermal` key but a
+/// `nodes` key it is taken to be the section itself. Values are in `units`; the result is SI. Each entry
 /// is deserialised on its own so errors name the node or link and the field; the network
 /// is then validated (names, signs, grounding).
 pub fn parse_thermal(
@@ -272,7 +272,8 @@ pub fn parse_thermal(
     let section = match table.get("thermal") {
         Some(toml::Value::Table(t)) => t,
         Some(_) => return Err(deck_err("[thermal]", "expected a table")),
-        None => table,
+        None if table.contains_key("nodes") => table,
+        None => return Err(deck_err("[thermal]", "section missing")),
     };
     for key in section.keys() {
         if !matches!(key.as_str(), "nodes" | "links" | "transient") {

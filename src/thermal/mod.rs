@@ -5,6 +5,7 @@
 //! and returns JSON-ready [`SteadyResult`] / [`TransientResult`].
 
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+#![deny(missing_docs)]
 
 pub mod deck;
 pub mod error;

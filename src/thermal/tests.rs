@@ -368,6 +368,12 @@ fn shipped_rig_steady_balance() {
     // Energy balance to 1e-9 relative (the brief's contract; LU round-off is ~1e-13).
     // Plausibility: ~2.1 kW into 100 W/K of oil gives a ~20 K oil rise; rings and rollers
     // run 10–40 K above the oil, all below their limits.
+    let root: toml::Table = toml::from_str(RIG).unwrap();
+    assert_eq!(
+        root.keys().collect::<Vec<_>>(),
+        ["thermal"],
+        "only a [thermal] section"
+    );
     let m = rig();
     let n = m.network.nodes.len();
     assert!((15..=20).contains(&n), "{n} nodes");
@@ -689,6 +695,11 @@ fn deck_errors_name_node_link_and_field() {
     .unwrap_err()
     .to_string();
     assert!(e.contains("link 'fit'") && e.contains("'h'"), "{e}");
+
+    let e = parse("[bearing]\nz = 1\n", ThermalUnits::Si)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("[thermal]") && e.contains("missing"), "{e}");
 
     let e = parse("[thermal]\nnodez = []\n", ThermalUnits::Si)
         .unwrap_err()
