@@ -149,10 +149,10 @@ fn implicit_is_first_order() {
 #[test]
 fn explicit_above_bound_is_substepped() {
     // C/G = 1 s; a 5 s step is split into ⌊5/1⌋ + 1 = 6 sub-steps of 5/6 s (< bound), so
-    // forward Euler stays stable and monotone. The result must match the exponential
-    // within 0.05·|ΔT| = 2 K at every output time (forward Euler with Δt/τ = 0.83 lags
-    // the exponential by at most ≈ 0.27·e^(−1)·40 K ≈ 4 K at the first sub-steps, but at
-    // output times (every 5 τ) the error is below 0.3 K); after 20 τ it is at Q/G to 1e-6 K.
+    // forward Euler stays stable and monotone (amplification 1 − 5/6 > 0). At the output
+    // times (every 5 τ) the transient has nearly died out, so the error against the
+    // exponential is small (observed 0.27 K); tolerance 2 K = 5 % of |ΔT| = 40 K, loose
+    // because a first-order step of 0.83 τ is coarse. After 100 τ it sits at Q/G to 1e-6 K.
     let (c, g) = (10.0, 10.0);
     let net = one_node(c, g, TINF);
     let res = run_transient_from(
