@@ -10,4 +10,5 @@ pub mod deck;
 pub mod model;
 pub mod report;
 pub mod solve;
+pub mod thermal;
 pub mod units;
