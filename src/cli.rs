@@ -31,6 +31,9 @@ pub enum Command {
         /// Write the report to FILE instead of standard output.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
+        /// Skip the loss-of-oil thermal transient (the steady state is still solved).
+        #[arg(long)]
+        no_transient: bool,
     },
     /// Validate a deck; exit 1 with messages if it is invalid.
     Check {
@@ -74,6 +77,20 @@ pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::De
         deck.set(k.trim(), v.trim()).map_err(|e| format!("--set {s}: {e}"))?;
     }
     Ok(deck)
+}
+
+/// The thermal network of a deck's `[thermal]` section, if any (errors name node, link, field).
+pub fn thermal_model(deck: &crate::deck::Deck) -> Result<Option<crate::thermal::ThermalModel>, String> {
+    let units = match deck.units {
+        crate::deck::Units::Si => crate::thermal::ThermalUnits::Si,
+        crate::deck::Units::Us => crate::thermal::ThermalUnits::Us,
+    };
+    match &deck.thermal {
+        None => Ok(None),
+        Some(t) => crate::thermal::parse_thermal(t, units)
+            .map(Some)
+            .map_err(|e| format!("{}: [thermal]: {e}", deck.source_name())),
+    }
 }
 
 /// Write `text` to `path` atomically (temporary file in the same directory, then rename).

@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use rollbench::cli::{load_deck, write_atomic, Cli, Command, Format, UnitsArg};
+use rollbench::cli::{load_deck, thermal_model, write_atomic, Cli, Command, Format, UnitsArg};
 use rollbench::deck::Units;
 use rollbench::report::{self, ReportUnits};
 use rollbench::solve::pipeline::{self, Request};
@@ -39,15 +39,16 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Some(Command::Run { deck, format, output }) => {
-            let deck = match load_deck(Some(&deck), &cli.set) {
+        Some(Command::Run { deck, format, output, no_transient }) => {
+            let (deck, thermal) = match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d).map(|t| (d, t))) {
                 Ok(d) => d,
                 Err(e) => {
                     eprintln!("{e}");
                     return ExitCode::from(1);
                 }
             };
-            let analysis = match pipeline::run(&deck.bearing, &Request::default(), None) {
+            let request = Request { thermal_transient: !no_transient, ..Request::default() };
+            let analysis = match pipeline::run_with_thermal(&deck.bearing, thermal.as_ref(), &request, None) {
                 Ok(a) => a,
                 Err(e) => {
                     eprintln!("solve failed: {e}");
@@ -70,7 +71,7 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
-        Some(Command::Check { deck }) => match load_deck(Some(&deck), &cli.set) {
+        Some(Command::Check { deck }) => match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d)) {
             Ok(_) => {
                 println!("{}: ok", deck.display());
                 ExitCode::SUCCESS

@@ -12,6 +12,7 @@ use super::stages::{self, Films, Friction, Life, Speeds, Stresses};
 use super::SolveError;
 use crate::model::kinematics::InternalSpeeds;
 use crate::model::{Bearing, DynamicLoads};
+use crate::thermal::{self, HeatInput, SteadyResult, ThermalModel, TransientResult};
 
 /// What the caller needs computed.
 #[derive(Debug, Clone, PartialEq)]
@@ -52,9 +53,34 @@ pub struct Analysis {
     pub life: Option<Life>,
     /// §8–9 sliding and heat.
     pub friction: Option<Friction>,
+    /// §10 thermal network (when the deck has one).
+    pub thermal: Option<ThermalOut>,
     /// Stepper trace of the requested roller (empty unless requested).
     #[serde(skip)]
     pub trace: Vec<TraceStep>,
+}
+
+/// §10 results.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ThermalOut {
+    pub steady: SteadyResult,
+    /// Loss-of-oil transient, when requested.
+    pub transient: Option<TransientResult>,
+    /// Heat fed to the transient (lost-lubrication traction), W.
+    pub transient_heat_w: Option<f64>,
+}
+
+fn heat_input(f: &Friction) -> HeatInput {
+    HeatInput {
+        inner_contacts_w: f.heat.inner_contacts_w,
+        outer_contacts_w: f.heat.outer_contacts_w,
+        cage_rails_w: f.heat.cage_rails_w,
+        viscous_drag_w: f.heat.viscous_drag_w,
+    }
+}
+
+fn thermal_err(e: thermal::ThermalError) -> SolveError {
+    SolveError::Stage { stage: "thermal network (§10)", message: e.to_string() }
 }
 
 /// Relative tolerance of the dynamic-load iteration on the cage speed and roller spin.
@@ -62,8 +88,20 @@ const DYNAMIC_TOL: f64 = 1e-9;
 /// Iteration limit of the dynamic-load iteration.
 const DYNAMIC_MAX: usize = 30;
 
-/// Run the pipeline on `bearing`.
+/// Run the pipeline on `bearing` (no thermal network).
 pub fn run(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) -> Result<Analysis, SolveError> {
+    run_with_thermal(bearing, None, request, cancel)
+}
+
+/// Run the pipeline on `bearing` with an optional thermal network (§10): steady state with
+/// the pipeline's heat by mechanism; with `request.thermal_transient`, the loss-of-oil
+/// transient from that steady state with the lost-lubrication heat.
+pub fn run_with_thermal(
+    bearing: &Bearing,
+    thermal_model: Option<&ThermalModel>,
+    request: &Request,
+    cancel: Option<&AtomicBool>,
+) -> Result<Analysis, SolveError> {
     let estimate = DynamicSpeeds::app_c_estimate(bearing);
     let mut opts = SolveOptions { warm_start: None, trace_roller: request.trace_roller };
     let mut load = load_distribution::solve(bearing, &estimate, &opts, cancel)?;
@@ -114,8 +152,24 @@ pub fn run(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) ->
         (Some(st), Some(fi)) if request.heat => Some(stages::friction(bearing, &load, &cts, st, fi, &speeds, false)?),
         _ => None,
     };
+    let thermal = match (thermal_model, &friction, &stresses, &films) {
+        (Some(tm), Some(fr), Some(st), Some(fi)) => {
+            let steady = thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
+            let (transient, transient_heat_w) = if request.thermal_transient {
+                let lost = stages::friction(bearing, &load, &cts, st, fi, &speeds, true)?;
+                let h = heat_input(&lost);
+                let tr = thermal::run_transient(&tm.network, &steady, &tm.transient, &h).map_err(thermal_err)?;
+                (Some(tr), Some(lost.heat.total_w))
+            } else {
+                (None, None)
+            };
+            Some(ThermalOut { steady, transient, transient_heat_w })
+        }
+        _ => None,
+    };
     Ok(Analysis {
         input: bearing.clone(),
+        thermal,
         load,
         speeds: speeds_report,
         contacts: cts,

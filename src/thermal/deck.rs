@@ -276,13 +276,26 @@ pub fn parse_thermal(
         None => return Err(deck_err("[thermal]", "section missing")),
     };
     for key in section.keys() {
-        if !matches!(key.as_str(), "nodes" | "links" | "transient") {
+        if !matches!(key.as_str(), "nodes" | "links" | "transient" | "units") {
             return Err(deck_err(
                 "[thermal]",
-                format!("unknown key '{key}' (expected nodes, links, transient)"),
+                format!("unknown key '{key}' (expected units, nodes, links, transient)"),
             ));
         }
     }
+    // `[thermal] units = "si" | "us"` overrides the deck's unit system for this section, so a
+    // network written in SI can sit in an inch-unit deck.
+    let units = match section.get("units") {
+        None => units,
+        Some(toml::Value::String(u)) if u == "si" => ThermalUnits::Si,
+        Some(toml::Value::String(u)) if u == "us" => ThermalUnits::Us,
+        Some(other) => {
+            return Err(deck_err(
+                "[thermal] key 'units'",
+                format!("{other} is not allowed (allowed: \"si\" or \"us\")"),
+            ))
+        }
+    };
     let mut nodes = Vec::new();
     for (i, v) in array(section, "nodes")?.iter().enumerate() {
         let loc = match entry_name(v) {
