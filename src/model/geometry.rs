@@ -29,6 +29,22 @@ pub struct Lamina {
     pub inner_point: V2,
     /// Surface point facing the outer raceway, relative to the roller centre (nominal), m.
     pub outer_point: V2,
+    /// Nominal vectors from the raceway crown centres (without clearance) to the points, m.
+    pub inner_v0: V2,
+    pub outer_v0: V2,
+    /// |v₀|² − R_race², m², evaluated without cancellation (see [`LaminaGeometry::approach`]).
+    pub inner_k0: f64,
+    pub outer_k0: f64,
+}
+
+/// One lamina's contact state: approach δ (m, > 0 = interference), unit normal from the
+/// raceway's crown centre to the point, the distance ρ (m) and the rotated point p (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Approach {
+    pub delta: f64,
+    pub normal: V2,
+    pub rho: f64,
+    pub point: V2,
 }
 
 /// Precomputed geometry shared by every roller.
@@ -48,6 +64,8 @@ pub struct LaminaGeometry {
     pub outer_centre: V2,
     /// Outer raceway crown radius, m.
     pub outer_radius_m: f64,
+    /// Radial shift of the outer raceway by half the diametral clearance, m.
+    pub outer_shift: V2,
     /// Pitch radius P_t/2, m.
     pub pitch_radius_m: f64,
 }
@@ -72,11 +90,23 @@ impl LaminaGeometry {
                 // Outer side: crown centre at −sag·n, point at centre + h·n + d·a.
                 let outer = [(h - sag) * n[0] + d * a[0], (h - sag) * n[1] + d * a[1]];
                 let inner = [-(h - sag) * n[0] + d * a[0], -(h - sag) * n[1] + d * a[1]];
+                // Crown sag s₀ = R₀ − √(R₀² − d²) = d²/(R₀ + h), free of cancellation. With the
+                // raceway centre on the normal through the roller centre, |v₀|² − R² =
+                // −2·s₀·(R_race − R₀) exactly (from d² = 2R₀s₀ − s₀²).
+                let s0 = d * d / (r0 + h);
+                let ri = g.inner_crown_radius_m;
+                let ro = g.outer_crown_radius_m;
+                let vi = [(ri - r0 + h) * -n[0] + d * a[0], (ri - r0 + h) * -n[1] + d * a[1]];
+                let vo = [(ro - r0 + h) * n[0] + d * a[0], (ro - r0 + h) * n[1] + d * a[1]];
                 Lamina {
                     offset_m: d,
                     width_m: w,
                     inner_point: inner,
                     outer_point: outer,
+                    inner_v0: vi,
+                    outer_v0: vo,
+                    inner_k0: -2.0 * s0 * (ri - r0),
+                    outer_k0: -2.0 * s0 * (ro - r0),
                 }
             })
             .collect();
@@ -93,7 +123,39 @@ impl LaminaGeometry {
             inner_radius_m: ri,
             outer_centre: [co * n[0], co * n[1] + 0.5 * g.diametral_clearance_m],
             outer_radius_m: ro,
+            outer_shift: [0.0, 0.5 * g.diametral_clearance_m],
             pitch_radius_m: 0.5 * g.pitch_diameter_m,
+        }
+    }
+
+    /// Approach of lamina `lam` at the inner (`inner = true`) or outer raceway for roller
+    /// displacement `q` = (axial, radial, pitch) and inner-raceway centre shift `shift`
+    /// (the ring deflection projected at the roller's azimuth; ignored for the outer).
+    ///
+    /// Computed as δ = (K₀ + 2v₀·e + e·e)/(|v₀ + e| + R) with e the relative displacement of
+    /// point and centre, so that crowns of any radius (up to the flat "no crown" limit, where
+    /// |v₀| ≈ R is metres while δ is nanometres) lose no digits to cancellation.
+    #[inline]
+    pub fn approach(&self, lam: &Lamina, inner: bool, q: [f64; 3], shift: V2) -> Approach {
+        let (p0, v0, k0, r, dc) = if inner {
+            (lam.inner_point, lam.inner_v0, lam.inner_k0, self.inner_radius_m, shift)
+        } else {
+            (lam.outer_point, lam.outer_v0, lam.outer_k0, self.outer_radius_m, self.outer_shift)
+        };
+        let (sa, ca) = q[2].sin_cos();
+        // cos α − 1 = −2 sin²(α/2), accurate for small pitch.
+        let cm1 = -2.0 * (0.5 * q[2]).sin().powi(2);
+        let _ = ca;
+        let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
+        let e = [q[0] + dp[0] - dc[0], q[1] + dp[1] - dc[1]];
+        let v = [v0[0] + e[0], v0[1] + e[1]];
+        let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let delta = (k0 + 2.0 * (v0[0] * e[0] + v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1]) / (rho + r);
+        Approach {
+            delta,
+            normal: [v[0] / rho, v[1] / rho],
+            rho,
+            point: [p0[0] + dp[0], p0[1] + dp[1]],
         }
     }
 
@@ -101,8 +163,8 @@ impl LaminaGeometry {
     /// at rest (m; positive = gap). The geometric counterpart of eq. 3.4.
     pub fn initial_clearance(&self, l: usize) -> (f64, f64) {
         let lam = &self.laminae[l];
-        let di = dist(lam.inner_point, self.inner_centre) - self.inner_radius_m;
-        let dout = dist(lam.outer_point, self.outer_centre) - self.outer_radius_m;
+        let di = self.approach(lam, true, [0.0; 3], [0.0; 2]).delta;
+        let dout = self.approach(lam, false, [0.0; 3], [0.0; 2]).delta;
         (-di, -dout)
     }
 }
@@ -114,9 +176,17 @@ pub fn sag_clearance(race_radius_m: f64, roller_radius_m: f64, offset_m: f64) ->
     s(roller_radius_m) - s(race_radius_m)
 }
 
-#[inline]
+#[cfg(test)]
 pub(crate) fn dist(p: V2, c: V2) -> f64 {
     ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2)).sqrt()
+}
+
+#[cfg(test)]
+pub(crate) mod tests_support {
+    pub fn rotate(alpha: f64, p: super::V2) -> super::V2 {
+        let (s, c) = alpha.sin_cos();
+        [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+    }
 }
 
 #[cfg(test)]
@@ -139,6 +209,14 @@ mod tests {
             let eo = sag_clearance(b.geometry.outer_crown_radius_m, b.geometry.roller_crown_radius_m, d);
             assert!((ci - ei).abs() < 0.01 * ei.abs() + 1e-9, "inner l={l}: {ci} vs {ei}");
             assert!((co - eo).abs() < 0.01 * eo.abs() + 1e-9, "outer l={l}: {co} vs {eo}");
+        }
+        // The cancellation-free approach equals the plain distance formula (1e-12 m: the plain
+        // formula's round-off on |v₀| ≈ 50 mm).
+        for lam in &g.laminae {
+            let a = g.approach(lam, false, [1e-6, 2e-6, 1e-4], [0.0; 2]);
+            let p = super::super::geometry::tests_support::rotate(1e-4, lam.outer_point);
+            let plain = dist([1e-6 + p[0], 2e-6 + p[1]], g.outer_centre) - g.outer_radius_m;
+            assert!((a.delta - plain).abs() < 1e-12, "{} vs {plain}", a.delta);
         }
         // Middle lamina of an odd count touches both raceways exactly (round-off).
         let (ci, co) = g.initial_clearance(10);
