@@ -1,25 +1,26 @@
 use rollbench::deck::Deck;
-use rollbench::solve::load_distribution::*;
+use rollbench::solve::pipeline::{run, Request};
 fn main() {
-    let d = Deck::load("decks/radial_si.toml").unwrap();
-    let mut b = d.bearing;
-    b.geometry.roller_crown_radius_m = 100.0;
-    b.geometry.inner_crown_radius_m = 100.0;
-    b.geometry.outer_crown_radius_m = 100.0;
-    b.geometry.diametral_clearance_m = 0.0;
-    b.operating.radial_load_n = 100.0;
-    let s = DynamicSpeeds::app_c_estimate(&b);
-    let opts = SolveOptions { warm_start: None, trace_roller: Some(3) };
-    match solve(&b, &s, &opts, None) {
-        Ok(r) => println!("ok {:?}", r.stats),
-        Err(e) => println!("err {e}"),
-    }
-    let mut o2 = opts.clone(); o2.trace_roller = Some(3);
-    // re-run with huge iteration limit to see the trace
-    b.solver.force_tolerance = 1e-9;
-    let rr = solve(&b, &s, &o2, None); println!("{:?}", rr.as_ref().err()); if let Ok(r) = rr {
-        for t in r.trace.iter().filter(|t| t.roller_iteration < 1000).take(400) {
-            if true { println!("{} {} q {:?} res {:?} nload {}", t.ring_iteration, t.roller_iteration, t.roller, t.residual, t.inner_load_n.iter().filter(|x| **x>0.0).count()); }
-        }
+    for name in ["aerospace", "radial_si", "thrust", "industrial"] {
+        let d = Deck::load(format!("decks/{name}.toml")).unwrap();
+        let req = Request::default();
+        let n = 200;
+        let mut times = vec![];
+        let mut a = None;
+        for _ in 0..n { let t = std::time::Instant::now(); a = Some(run(&d.bearing, &req, None).unwrap()); times.push(t.elapsed().as_secs_f64()); }
+        times.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let a = a.unwrap();
+        let mut t2 = vec![];
+        let req2 = Request { contact: false, heat: false, ..Request::default() };
+        for _ in 0..n { let t = std::time::Instant::now(); let _ = run(&d.bearing, &req2, None).unwrap(); t2.push(t.elapsed().as_secs_f64()); }
+        t2.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let mut t3 = vec![];
+        let req3 = Request { contact: true, heat: false, ..Request::default() };
+        for _ in 0..n { let t = std::time::Instant::now(); let _ = run(&d.bearing, &req3, None).unwrap(); t3.push(t.elapsed().as_secs_f64()); }
+        t3.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        println!("  LD+speeds only {:.3} ms, +contact {:.3} ms", t2[n/2]*1e3, t3[n/2]*1e3);
+        println!("{name}: median {:.3} ms, dyn its {}, ring its {}, roller its {}, evals {}", times[n/2]*1e3, a.speeds.iterations, a.load.stats.iterations, a.load.stats.roller_iterations, a.load.stats.lamina_evaluations);
     }
 }
+#[allow(dead_code)]
+fn stage_times() {}

@@ -244,3 +244,53 @@ fn solver_statistics_per_deck() {
     }
     insta::assert_snapshot!(s);
 }
+
+#[test]
+fn stage_cache_reruns_only_what_an_edit_touches() {
+    use rollbench::solve::pipeline::{Pipeline, StageCounters};
+    let d = deck("aerospace.toml");
+    let tm = match rollbench::cli::thermal_model(&d) {
+        Ok(Some(t)) => t,
+        other => panic!("{other:?}"),
+    };
+    let mut p = Pipeline::new();
+    let mut b = d.bearing.clone();
+    let steady_only = Request::default();
+    let first = p.run(&b, Some(&tm), &steady_only, None).map(|a| a.life.is_some());
+    assert_eq!(first, Ok(true));
+    let c = |load_distribution, contact, friction, thermal_steady, thermal_transient| StageCounters { load_distribution, contact, friction, thermal_steady, thermal_transient };
+    // First run: every stage once, no transient (not requested).
+    assert_eq!(p.counters(), c(1, 1, 1, 1, 0));
+    // Same inputs: nothing re-runs.
+    let _ = p.run(&b, Some(&tm), &steady_only, None);
+    assert_eq!(p.counters(), c(1, 1, 1, 1, 0));
+    // Lubricant-only edit: the load distribution is reused.
+    b.lubricant.viscosity_pa_s *= 1.1;
+    let _ = p.run(&b, Some(&tm), &steady_only, None);
+    assert_eq!(p.counters(), c(1, 2, 2, 2, 0));
+    // Cage-only edit: only friction and thermal.
+    b.cage.diametral_clearance_m *= 1.2;
+    let _ = p.run(&b, Some(&tm), &steady_only, None);
+    assert_eq!(p.counters(), c(1, 2, 3, 3, 0));
+    // Thermal-only edit: nothing upstream re-runs.
+    let mut tm2 = tm.clone();
+    tm2.transient.duration_s *= 0.5;
+    let _ = p.run(&b, Some(&tm2), &steady_only, None);
+    assert_eq!(p.counters(), c(1, 2, 3, 4, 0));
+    // The transient runs only when asked, once.
+    let with_transient = Request { thermal_transient: true, ..Request::default() };
+    let a = p.run(&b, Some(&tm2), &with_transient, None);
+    assert!(a.as_ref().is_ok_and(|a| a.thermal.as_ref().is_some_and(|t| t.transient.is_some())));
+    let _ = p.run(&b, Some(&tm2), &with_transient, None);
+    assert_eq!(p.counters(), c(1, 2, 3, 4, 1));
+    // A load edit re-runs everything downstream.
+    b.operating.radial_load_n *= 1.1;
+    let _ = p.run(&b, Some(&tm2), &with_transient, None);
+    assert_eq!(p.counters(), c(2, 3, 4, 5, 2));
+    // A view that needs neither contact nor heat (and no thermal model) runs the load stage only.
+    let mut q = Pipeline::new();
+    let bare = Request { contact: false, heat: false, ..Request::default() };
+    let a = q.run(&b, None, &bare, None);
+    assert!(a.is_ok_and(|a| a.stresses.is_none() && a.friction.is_none()));
+    assert_eq!(q.counters(), c(1, 0, 0, 0, 0));
+}

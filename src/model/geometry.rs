@@ -37,6 +37,21 @@ pub struct Lamina {
     pub outer_k0: f64,
 }
 
+/// sin α and cos α − 1 of a roller pitch α (the latter as −2 sin²(α/2), accurate for small α).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pitch {
+    pub sin: f64,
+    pub cos_minus_one: f64,
+}
+
+impl Pitch {
+    /// Trigonometry of pitch `alpha` (rad).
+    #[inline]
+    pub fn new(alpha: f64) -> Self {
+        Pitch { sin: alpha.sin(), cos_minus_one: -2.0 * (0.5 * alpha).sin().powi(2) }
+    }
+}
+
 /// One lamina's contact state: approach δ (m, > 0 = interference), unit normal from the
 /// raceway's crown centre to the point, the distance ρ (m) and the rotated point p (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -137,15 +152,18 @@ impl LaminaGeometry {
     /// |v₀| ≈ R is metres while δ is nanometres) lose no digits to cancellation.
     #[inline]
     pub fn approach(&self, lam: &Lamina, inner: bool, q: [f64; 3], shift: V2) -> Approach {
+        self.approach_with(lam, inner, q, shift, Pitch::new(q[2]))
+    }
+
+    /// [`Self::approach`] with the pitch's trigonometry computed once per roller.
+    #[inline]
+    pub fn approach_with(&self, lam: &Lamina, inner: bool, q: [f64; 3], shift: V2, pitch: Pitch) -> Approach {
         let (p0, v0, k0, r, dc) = if inner {
             (lam.inner_point, lam.inner_v0, lam.inner_k0, self.inner_radius_m, shift)
         } else {
             (lam.outer_point, lam.outer_v0, lam.outer_k0, self.outer_radius_m, self.outer_shift)
         };
-        let (sa, ca) = q[2].sin_cos();
-        // cos α − 1 = −2 sin²(α/2), accurate for small pitch.
-        let cm1 = -2.0 * (0.5 * q[2]).sin().powi(2);
-        let _ = ca;
+        let (sa, cm1) = (pitch.sin, pitch.cos_minus_one);
         let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
         let e = [q[0] + dp[0] - dc[0], q[1] + dp[1] - dc[1]];
         let v = [v0[0] + e[0], v0[1] + e[1]];

@@ -76,7 +76,8 @@ impl LaminaLaw {
         if delta <= 0.0 {
             return (0.0, 0.0, 0.0);
         }
-        let d19 = delta.powf(1.0 / 9.0);
+        // δ^(1/9) as two cube roots: several times cheaper than powf on the hot path.
+        let d19 = delta.cbrt().cbrt();
         let q = self.stiffness * delta * d19;
         (q, self.stiffness * (10.0 / 9.0) * d19, q * delta * (9.0 / 19.0))
     }

@@ -297,11 +297,12 @@ impl Problem {
         let g = &self.geom;
         let shift = [u[0], u[1] * cphi];
         let qa = [q[0], q[1], q[2]];
+        let pitch = crate::model::geometry::Pitch::new(q[2]);
         self.evals.set(self.evals.get() + 2 * g.laminae.len());
         for lam in &g.laminae {
             for inner in [true, false] {
                 let law = if inner { &self.law_in } else { &self.law_out };
-                let ap = g.approach(lam, inner, qa, shift);
+                let ap = g.approach_with(lam, inner, qa, shift, pitch);
                 let (delta, rho, p) = (ap.delta, ap.rho, ap.point);
                 if delta <= 0.0 {
                     continue;

@@ -83,8 +83,11 @@ fn thermal_err(e: thermal::ThermalError) -> SolveError {
     SolveError::Stage { stage: "thermal network (§10)", message: e.to_string() }
 }
 
-/// Relative tolerance of the dynamic-load iteration on the cage speed and roller spin.
-const DYNAMIC_TOL: f64 = 1e-9;
+/// Relative tolerance of the dynamic-load iteration on the cage speed and roller spin, as a
+/// multiple of the deck's force tolerance: CF ∝ Ω², so a relative speed error ε changes the
+/// centrifugal force by 2ε·CF, below the equilibrium tolerance for ε = 10 × force_tolerance
+/// (Z·CF ≥ 2·CF bounds the reference force).
+const DYNAMIC_TOL_FACTOR: f64 = 10.0;
 /// Iteration limit of the dynamic-load iteration.
 const DYNAMIC_MAX: usize = 30;
 
@@ -95,13 +98,188 @@ pub fn run(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) ->
 
 /// Run the pipeline on `bearing` with an optional thermal network (§10): steady state with
 /// the pipeline's heat by mechanism; with `request.thermal_transient`, the loss-of-oil
-/// transient from that steady state with the lost-lubrication heat.
+/// transient from that steady state with the lost-lubrication heat. No caching: see
+/// [`Pipeline`] for the incremental version.
 pub fn run_with_thermal(
     bearing: &Bearing,
     thermal_model: Option<&ThermalModel>,
     request: &Request,
     cancel: Option<&AtomicBool>,
 ) -> Result<Analysis, SolveError> {
+    Pipeline::default().run(bearing, thermal_model, request, cancel)
+}
+
+/// How many times each stage has run (the proof that edits re-run only what they touch).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct StageCounters {
+    /// Load distribution with the dynamic-load iteration and §7 speeds.
+    pub load_distribution: usize,
+    /// Stresses, film and life (§4–6).
+    pub contact: usize,
+    /// Sliding, traction and heat (§8–9).
+    pub friction: usize,
+    /// Thermal steady state (§10.2).
+    pub thermal_steady: usize,
+    /// Loss-of-oil transient (§10.3).
+    pub thermal_transient: usize,
+}
+
+/// Output of the load stage.
+#[derive(Debug, Clone)]
+struct LoadStage {
+    load: LoadDistribution,
+    contacts: Vec<RollerContacts>,
+    speeds: InternalSpeeds,
+    iterations: usize,
+    trace: Vec<TraceStep>,
+}
+
+/// The inputs each stage reads: an edit that changes none of a stage's inputs (nor an
+/// upstream stage's) reuses its cached output.
+#[derive(Debug, Clone, PartialEq)]
+struct LoadKey {
+    geometry: crate::model::Geometry,
+    materials: crate::model::Materials,
+    operating: crate::model::Operating,
+    solver: crate::model::SolverSettings,
+    trace_roller: Option<usize>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct ContactKey {
+    lubricant: crate::model::Lubricant,
+    surfaces: crate::model::Surfaces,
+    life: crate::model::LifeFactors,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct FrictionKey {
+    lubricant: crate::model::Lubricant,
+    cage: crate::model::Cage,
+}
+
+/// An incremental pipeline: caches each stage's output with the inputs it read.
+#[derive(Debug, Default)]
+pub struct Pipeline {
+    load: Option<(LoadKey, LoadStage)>,
+    contact: Option<(ContactKey, (Stresses, Films, Life))>,
+    friction: Option<(FrictionKey, Friction)>,
+    steady: Option<(ThermalModel, SteadyResult)>,
+    transient: Option<(ThermalModel, (TransientResult, f64))>,
+    counters: StageCounters,
+}
+
+impl Pipeline {
+    /// A pipeline with empty caches.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Stage run counters since creation.
+    pub fn counters(&self) -> StageCounters {
+        self.counters
+    }
+
+    /// Run the stages `request` needs, reusing cached outputs whose inputs did not change.
+    pub fn run(
+        &mut self,
+        bearing: &Bearing,
+        thermal_model: Option<&ThermalModel>,
+        request: &Request,
+        cancel: Option<&AtomicBool>,
+    ) -> Result<Analysis, SolveError> {
+        let load_key = LoadKey {
+            geometry: bearing.geometry,
+            materials: bearing.materials,
+            operating: bearing.operating,
+            solver: bearing.solver,
+            trace_roller: request.trace_roller,
+        };
+        let load_fresh = !matches!(&self.load, Some((k, _)) if *k == load_key);
+        if load_fresh {
+            let stage = load_stage(bearing, request, cancel)?;
+            self.counters.load_distribution += 1;
+            self.load = Some((load_key, stage));
+            self.contact = None;
+            self.friction = None;
+            self.steady = None;
+            self.transient = None;
+        }
+        let Some((_, ls)) = &self.load else {
+            return Err(SolveError::Stage { stage: "pipeline", message: "load stage missing".into() });
+        };
+        let need_contact = request.contact || request.heat || thermal_model.is_some();
+        let contact_key = ContactKey { lubricant: bearing.lubricant, surfaces: bearing.surfaces, life: bearing.life };
+        if need_contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
+            let st = stages::stresses(bearing, &ls.contacts);
+            let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
+            let li = stages::life(bearing, &ls.load, &fi);
+            self.counters.contact += 1;
+            self.contact = Some((contact_key, (st, fi, li)));
+            self.friction = None;
+            self.steady = None;
+            self.transient = None;
+        }
+        let need_friction = request.heat || thermal_model.is_some();
+        let friction_key = FrictionKey { lubricant: bearing.lubricant, cage: bearing.cage };
+        if need_friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
+            if let Some((_, (st, fi, _))) = &self.contact {
+                let fr = stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, false)?;
+                self.counters.friction += 1;
+                self.friction = Some((friction_key, fr));
+                self.steady = None;
+                self.transient = None;
+            }
+        }
+        if let (Some(tm), Some((_, fr))) = (thermal_model, &self.friction) {
+            if !matches!(&self.steady, Some((k, _)) if k == tm) {
+                let steady = thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
+                self.counters.thermal_steady += 1;
+                self.steady = Some((tm.clone(), steady));
+                self.transient = None;
+            }
+            if request.thermal_transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
+                if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
+                    let lost = stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, true)?;
+                    let tr = thermal::run_transient(&tm.network, steady, &tm.transient, &heat_input(&lost)).map_err(thermal_err)?;
+                    self.counters.thermal_transient += 1;
+                    self.transient = Some((tm.clone(), (tr, lost.heat.total_w)));
+                }
+            }
+        }
+        let (stresses, films, life) = match (&self.contact, need_contact) {
+            (Some((_, (st, fi, li))), true) => (Some(st.clone()), Some(fi.clone()), Some(li.clone())),
+            _ => (None, None, None),
+        };
+        let friction = if need_friction { self.friction.as_ref().map(|f| f.1.clone()) } else { None };
+        let thermal = match (thermal_model, &self.steady) {
+            (Some(_), Some((_, steady))) => {
+                let tr = if request.thermal_transient { self.transient.as_ref().map(|t| t.1.clone()) } else { None };
+                Some(ThermalOut {
+                    steady: steady.clone(),
+                    transient_heat_w: tr.as_ref().map(|t| t.1),
+                    transient: tr.map(|t| t.0),
+                })
+            }
+            _ => None,
+        };
+        Ok(Analysis {
+            input: bearing.clone(),
+            thermal,
+            load: ls.load.clone(),
+            speeds: stages::speeds_report(bearing, &ls.speeds, ls.iterations),
+            contacts: ls.contacts.clone(),
+            stresses,
+            films,
+            life,
+            friction,
+            trace: ls.trace.clone(),
+        })
+    }
+}
+
+/// §3 load distribution with the dynamic-load iteration (§7 ↔ §3) and the contact geometry.
+fn load_stage(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) -> Result<LoadStage, SolveError> {
     let estimate = DynamicSpeeds::app_c_estimate(bearing);
     let mut opts = SolveOptions { warm_start: None, trace_roller: request.trace_roller };
     let mut load = load_distribution::solve(bearing, &estimate, &opts, cancel)?;
@@ -109,6 +287,7 @@ pub fn run_with_thermal(
     let mut speeds = stages::internal_speeds(bearing, &load, &cts);
     let mut iterations = 1;
     let mut stats = load.stats;
+    let dynamic_tol = (DYNAMIC_TOL_FACTOR * bearing.solver.force_tolerance).max(1e-13);
     if bearing.solver.dynamic_loads == DynamicLoads::Iterated {
         let mut current = estimate;
         loop {
@@ -116,17 +295,21 @@ pub fn run_with_thermal(
             let scale = |x: f64| x.abs().max(1e-9);
             let change = ((next.cage_rad_s - current.cage_rad_s).abs() / scale(current.cage_rad_s))
                 .max((next.roller_spin_rad_s - current.roller_spin_rad_s).abs() / scale(current.roller_spin_rad_s));
-            if change <= DYNAMIC_TOL {
+            if change <= dynamic_tol {
                 break;
             }
             if iterations >= DYNAMIC_MAX {
                 return Err(SolveError::Stage {
                     stage: "dynamic-load iteration (§7 speeds ↔ §3 loads)",
-                    message: format!("not converged after {iterations} iterations (relative change {change:.3e}, tolerance {DYNAMIC_TOL:.0e})"),
+                    message: format!("not converged after {iterations} iterations (relative change {change:.3e}, tolerance {dynamic_tol:.0e})"),
                 });
             }
             opts.warm_start = Some(load.warm.clone());
+            // The stepper shows the first (App. C) solve's iterations only.
+            opts.trace_roller = None;
+            let trace = std::mem::take(&mut load.trace);
             load = load_distribution::solve(bearing, &next, &opts, cancel)?;
+            load.trace = trace;
             stats.iterations += load.stats.iterations;
             stats.roller_iterations += load.stats.roller_iterations;
             stats.lamina_evaluations += load.stats.lamina_evaluations;
@@ -139,46 +322,7 @@ pub fn run_with_thermal(
     }
     load.stats = stats;
     let trace = std::mem::take(&mut load.trace);
-    let speeds_report = stages::speeds_report(bearing, &speeds, iterations);
-    let (stresses, films, life) = if request.contact || request.heat {
-        let st = stages::stresses(bearing, &cts);
-        let fi = stages::films(bearing, &cts, &speeds);
-        let li = stages::life(bearing, &load, &fi);
-        (Some(st), Some(fi), Some(li))
-    } else {
-        (None, None, None)
-    };
-    let friction = match (&stresses, &films) {
-        (Some(st), Some(fi)) if request.heat => Some(stages::friction(bearing, &load, &cts, st, fi, &speeds, false)?),
-        _ => None,
-    };
-    let thermal = match (thermal_model, &friction, &stresses, &films) {
-        (Some(tm), Some(fr), Some(st), Some(fi)) => {
-            let steady = thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
-            let (transient, transient_heat_w) = if request.thermal_transient {
-                let lost = stages::friction(bearing, &load, &cts, st, fi, &speeds, true)?;
-                let h = heat_input(&lost);
-                let tr = thermal::run_transient(&tm.network, &steady, &tm.transient, &h).map_err(thermal_err)?;
-                (Some(tr), Some(lost.heat.total_w))
-            } else {
-                (None, None)
-            };
-            Some(ThermalOut { steady, transient, transient_heat_w })
-        }
-        _ => None,
-    };
-    Ok(Analysis {
-        input: bearing.clone(),
-        thermal,
-        load,
-        speeds: speeds_report,
-        contacts: cts,
-        stresses,
-        films,
-        life,
-        friction,
-        trace,
-    })
+    Ok(LoadStage { load, contacts: cts, speeds, iterations, trace })
 }
 
 /// Dynamic speeds for the next iteration: §7's cage speed and the mean spin of the
