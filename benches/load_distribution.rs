@@ -12,7 +12,10 @@ fn decks() -> Vec<(String, Deck)> {
     for p in paths {
         if p.extension().is_some_and(|e| e == "toml") {
             if let Ok(d) = Deck::load(&p) {
-                let name = p.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+                let name = p
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
                 out.push((name, d));
             }
         }
@@ -25,7 +28,9 @@ fn bench(c: &mut Criterion) {
     for (name, deck) in decks() {
         let b = deck.bearing.clone();
         let s = DynamicSpeeds::app_c_estimate(&b);
-        g.bench_function(&name, |bch| bch.iter(|| solve(&b, &s, &SolveOptions::default(), None)));
+        g.bench_function(&name, |bch| {
+            bch.iter(|| solve(&b, &s, &SolveOptions::default(), None))
+        });
     }
     g.finish();
 }

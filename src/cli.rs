@@ -67,20 +67,27 @@ pub enum UnitsArg {
 pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::Deck, String> {
     let mut deck = match path {
         Some(p) => crate::deck::Deck::load(p).map_err(|e| e.to_string())?,
-        None => crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml (embedded)")
-            .map_err(|e| e.to_string())?,
+        None => {
+            crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml (embedded)")
+                .map_err(|e| e.to_string())?
+        }
     };
     for s in sets {
         let Some((k, v)) = s.split_once('=') else {
-            return Err(format!("--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"));
+            return Err(format!(
+                "--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"
+            ));
         };
-        deck.set(k.trim(), v.trim()).map_err(|e| format!("--set {s}: {e}"))?;
+        deck.set(k.trim(), v.trim())
+            .map_err(|e| format!("--set {s}: {e}"))?;
     }
     Ok(deck)
 }
 
 /// The thermal network of a deck's `[thermal]` section, if any (errors name node, link, field).
-pub fn thermal_model(deck: &crate::deck::Deck) -> Result<Option<crate::thermal::ThermalModel>, String> {
+pub fn thermal_model(
+    deck: &crate::deck::Deck,
+) -> Result<Option<crate::thermal::ThermalModel>, String> {
     let units = match deck.units {
         crate::deck::Units::Si => crate::thermal::ThermalUnits::Si,
         crate::deck::Units::Us => crate::thermal::ThermalUnits::Us,
@@ -95,8 +102,14 @@ pub fn thermal_model(deck: &crate::deck::Deck) -> Result<Option<crate::thermal::
 
 /// Write `text` to `path` atomically (temporary file in the same directory, then rename).
 pub fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "output".into());
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "output".into());
     let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;

@@ -39,22 +39,33 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Some(Command::Run { deck, format, output, no_transient }) => {
-            let (deck, thermal) = match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d).map(|t| (d, t))) {
+        Some(Command::Run {
+            deck,
+            format,
+            output,
+            no_transient,
+        }) => {
+            let (deck, thermal) = match load_deck(Some(&deck), &cli.set)
+                .and_then(|d| thermal_model(&d).map(|t| (d, t)))
+            {
                 Ok(d) => d,
                 Err(e) => {
                     eprintln!("{e}");
                     return ExitCode::from(1);
                 }
             };
-            let request = Request { thermal_transient: !no_transient, ..Request::default() };
-            let analysis = match pipeline::run_with_thermal(&deck.bearing, thermal.as_ref(), &request, None) {
-                Ok(a) => a,
-                Err(e) => {
-                    eprintln!("solve failed: {e}");
-                    return ExitCode::from(2);
-                }
+            let request = Request {
+                thermal_transient: !no_transient,
+                ..Request::default()
             };
+            let analysis =
+                match pipeline::run_with_thermal(&deck.bearing, thermal.as_ref(), &request, None) {
+                    Ok(a) => a,
+                    Err(e) => {
+                        eprintln!("solve failed: {e}");
+                        return ExitCode::from(2);
+                    }
+                };
             let text = match format {
                 Format::Text => report::text::to_string(&analysis, report_units(deck.units)),
                 Format::Json => report::json::to_string(&analysis) + "\n",
@@ -71,16 +82,18 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
-        Some(Command::Check { deck }) => match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d)) {
-            Ok(_) => {
-                println!("{}: ok", deck.display());
-                ExitCode::SUCCESS
+        Some(Command::Check { deck }) => {
+            match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d)) {
+                Ok(_) => {
+                    println!("{}: ok", deck.display());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("{e}");
+                    ExitCode::from(1)
+                }
             }
-            Err(e) => {
-                eprintln!("{e}");
-                ExitCode::from(1)
-            }
-        },
+        }
         Some(Command::Template { units }) => {
             let u = match units {
                 UnitsArg::Si => Units::Si,

@@ -15,14 +15,38 @@ fn root() -> &'static str {
 
 #[test]
 fn run_json_has_the_contract_fields() {
-    let out = bin().args(["run", &format!("{}/decks/aerospace.toml", root()), "--format", "json", "--no-transient"]).output();
+    let out = bin()
+        .args([
+            "run",
+            &format!("{}/decks/aerospace.toml", root()),
+            "--format",
+            "json",
+            "--no-transient",
+        ])
+        .output();
     let out = match out {
         Ok(o) => o,
         Err(e) => panic!("{e}"),
     };
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap_or_default();
-    for k in ["input", "converged", "loads", "rings", "rollers", "residuals", "stats", "life", "speeds", "heat", "thermal"] {
+    for k in [
+        "input",
+        "converged",
+        "loads",
+        "rings",
+        "rollers",
+        "residuals",
+        "stats",
+        "life",
+        "speeds",
+        "heat",
+        "thermal",
+    ] {
         assert!(v.get(k).is_some(), "missing {k}");
     }
     for k in ["radial_n", "axial_n"] {
@@ -32,28 +56,98 @@ fn run_json_has_the_contract_fields() {
         assert!(v["rings"][k].is_number(), "rings.{k}");
     }
     let r = &v["rollers"][0];
-    for k in ["index", "azimuth_deg", "axial_displacement_m", "radial_displacement_m", "tilt_rad", "centrifugal_force_n", "gyroscopic_moment_nm", "spin_rpm"] {
+    for k in [
+        "index",
+        "azimuth_deg",
+        "axial_displacement_m",
+        "radial_displacement_m",
+        "tilt_rad",
+        "centrifugal_force_n",
+        "gyroscopic_moment_nm",
+        "spin_rpm",
+    ] {
         assert!(r[k].is_number(), "rollers[0].{k}");
     }
     for side in ["inner", "outer"] {
-        for k in ["normal_load_n", "contact_angle_deg", "loaded_laminae", "max_stress_pa", "mean_stress_pa", "contact_major_axis_m", "contact_minor_axis_m", "eccentricity_m", "subsurface_shear_pa", "subsurface_depth_m", "min_film_m", "equivalent_load_n"] {
+        for k in [
+            "normal_load_n",
+            "contact_angle_deg",
+            "loaded_laminae",
+            "max_stress_pa",
+            "mean_stress_pa",
+            "contact_major_axis_m",
+            "contact_minor_axis_m",
+            "eccentricity_m",
+            "subsurface_shear_pa",
+            "subsurface_depth_m",
+            "min_film_m",
+            "equivalent_load_n",
+        ] {
             assert!(r[side][k].is_number(), "rollers[0].{side}.{k}");
         }
     }
     let l = &r["laminae"][0];
-    for k in ["offset_m", "width_m", "inner_load_n", "outer_load_n", "inner_approach_m", "outer_approach_m", "inner_angle_deg", "outer_angle_deg", "inner_half_width_m", "outer_half_width_m", "inner_stress_pa", "outer_stress_pa", "inner_sliding_m_s", "outer_sliding_m_s", "inner_traction_n", "outer_traction_n", "inner_heat_w", "outer_heat_w"] {
+    for k in [
+        "offset_m",
+        "width_m",
+        "inner_load_n",
+        "outer_load_n",
+        "inner_approach_m",
+        "outer_approach_m",
+        "inner_angle_deg",
+        "outer_angle_deg",
+        "inner_half_width_m",
+        "outer_half_width_m",
+        "inner_stress_pa",
+        "outer_stress_pa",
+        "inner_sliding_m_s",
+        "outer_sliding_m_s",
+        "inner_traction_n",
+        "outer_traction_n",
+        "inner_heat_w",
+        "outer_heat_w",
+    ] {
         assert!(l.get(k).is_some(), "laminae[0].{k}");
     }
-    for k in ["bearing_radial_n", "bearing_axial_n", "roller_force_n", "roller_moment_nm"] {
+    for k in [
+        "bearing_radial_n",
+        "bearing_axial_n",
+        "roller_force_n",
+        "roller_moment_nm",
+    ] {
         assert!(v["residuals"][k].is_number(), "residuals.{k}");
     }
-    for k in ["capacity_inner_n", "capacity_outer_n", "mean_load_inner_n", "mean_load_outer_n", "l10_inner_mrev", "l10_outer_mrev", "l10_bearing_mrev", "l10_bearing_h", "lambda_inner", "lambda_outer", "lubrication_factor_inner", "lubrication_factor_outer", "material_factor", "adjusted_l10_inner_mrev", "adjusted_l10_outer_mrev", "adjusted_l10_bearing_mrev"] {
+    for k in [
+        "capacity_inner_n",
+        "capacity_outer_n",
+        "mean_load_inner_n",
+        "mean_load_outer_n",
+        "l10_inner_mrev",
+        "l10_outer_mrev",
+        "l10_bearing_mrev",
+        "l10_bearing_h",
+        "lambda_inner",
+        "lambda_outer",
+        "lubrication_factor_inner",
+        "lubrication_factor_outer",
+        "material_factor",
+        "adjusted_l10_inner_mrev",
+        "adjusted_l10_outer_mrev",
+        "adjusted_l10_bearing_mrev",
+    ] {
         assert!(v["life"][k].is_number(), "life.{k}");
     }
     for k in ["inner_rpm", "outer_rpm", "cage_rpm", "cage_rpm_estimate"] {
         assert!(v["speeds"][k].is_number(), "speeds.{k}");
     }
-    for k in ["inner_contacts_w", "outer_contacts_w", "cage_rails_w", "viscous_drag_w", "total_w", "friction_torque_nm"] {
+    for k in [
+        "inner_contacts_w",
+        "outer_contacts_w",
+        "cage_rails_w",
+        "viscous_drag_w",
+        "total_w",
+        "friction_torque_nm",
+    ] {
         assert!(v["heat"][k].is_number(), "heat.{k}");
     }
     for k in ["heat_in_w", "heat_out_w", "balance_w"] {
@@ -64,7 +158,14 @@ fn run_json_has_the_contract_fields() {
 
 #[test]
 fn transient_is_reported_when_asked() {
-    let out = bin().args(["run", &format!("{}/decks/aerospace.toml", root()), "--format", "json"]).output();
+    let out = bin()
+        .args([
+            "run",
+            &format!("{}/decks/aerospace.toml", root()),
+            "--format",
+            "json",
+        ])
+        .output();
     let Ok(out) = out else { panic!("spawn") };
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap_or_default();
@@ -72,7 +173,9 @@ fn transient_is_reported_when_asked() {
     assert!(t["scenario"].is_string());
     assert!(t["time_s"].as_array().is_some_and(|a| a.len() > 1));
     let nodes = t["nodes"].as_array().cloned().unwrap_or_default();
-    assert!(nodes.iter().all(|n| n["name"].is_string() && n["temperature_c"].is_array() && n.get("time_to_limit_s").is_some()));
+    assert!(nodes.iter().all(|n| n["name"].is_string()
+        && n["temperature_c"].is_array()
+        && n.get("time_to_limit_s").is_some()));
 }
 
 #[test]
@@ -85,7 +188,10 @@ fn check_rejects_every_invalid_deck_with_exit_1() {
         let Ok(out) = out else { panic!("spawn") };
         assert_eq!(out.status.code(), Some(1), "{}", p.display());
         let msg = String::from_utf8_lossy(&out.stderr);
-        let name = p.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+        let name = p
+            .file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_default();
         assert!(msg.contains(&name), "{name}: message names the file: {msg}");
         n += 1;
     }
@@ -95,13 +201,21 @@ fn check_rejects_every_invalid_deck_with_exit_1() {
 #[test]
 fn template_parses_back_in_both_units() {
     for units in ["si", "us"] {
-        let Ok(out) = bin().args(["template", "--units", units]).output() else { panic!("spawn") };
+        let Ok(out) = bin().args(["template", "--units", units]).output() else {
+            panic!("spawn")
+        };
         assert!(out.status.success());
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
         let path = dir.path().join("t.toml");
         std::fs::write(&path, &out.stdout).unwrap_or_else(|e| panic!("{e}"));
-        let Ok(chk) = bin().args(["check", &path.to_string_lossy()]).output() else { panic!("spawn") };
-        assert!(chk.status.success(), "{units}: {}", String::from_utf8_lossy(&chk.stderr));
+        let Ok(chk) = bin().args(["check", &path.to_string_lossy()]).output() else {
+            panic!("spawn")
+        };
+        assert!(
+            chk.status.success(),
+            "{units}: {}",
+            String::from_utf8_lossy(&chk.stderr)
+        );
     }
 }
 
@@ -111,22 +225,45 @@ fn set_overrides_and_output_file() {
     let out_path = dir.path().join("r.csv");
     let deck = format!("{}/decks/radial_si.toml", root());
     let status = bin()
-        .args(["run", &deck, "--format", "csv", "--output", &out_path.to_string_lossy(), "--set", "operating.radial_load=30000"])
+        .args([
+            "run",
+            &deck,
+            "--format",
+            "csv",
+            "--output",
+            &out_path.to_string_lossy(),
+            "--set",
+            "operating.radial_load=30000",
+        ])
         .output();
     let Ok(status) = status else { panic!("spawn") };
-    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
     let csv = std::fs::read_to_string(&out_path).unwrap_or_default();
     assert_eq!(csv.lines().count(), 1 + 18, "header + one row per roller");
     // A bad override names the key and its allowed range, exit 1.
-    let Ok(bad) = bin().args(["run", &deck, "--set", "geometry.roller_count=0"]).output() else { panic!("spawn") };
+    let Ok(bad) = bin()
+        .args(["run", &deck, "--set", "geometry.roller_count=0"])
+        .output()
+    else {
+        panic!("spawn")
+    };
     assert_eq!(bad.status.code(), Some(1));
     let msg = String::from_utf8_lossy(&bad.stderr);
-    assert!(msg.contains("geometry.roller_count") && msg.contains("allowed"), "{msg}");
+    assert!(
+        msg.contains("geometry.roller_count") && msg.contains("allowed"),
+        "{msg}"
+    );
 }
 
 #[test]
 fn help_lists_the_commands() {
-    let Ok(out) = bin().arg("--help").output() else { panic!("spawn") };
+    let Ok(out) = bin().arg("--help").output() else {
+        panic!("spawn")
+    };
     let s = String::from_utf8_lossy(&out.stdout);
     for c in ["run", "check", "template"] {
         assert!(s.contains(c), "{c}");

@@ -83,9 +83,16 @@ fn lamina_hertz_matches_closed_form() {
     // same formula evaluated twice.
     let d = deck("aerospace.toml");
     let a = run(&d.bearing);
-    let st = a.stresses.as_ref().map(|s| &s.laminae).cloned().unwrap_or_default();
+    let st = a
+        .stresses
+        .as_ref()
+        .map(|s| &s.laminae)
+        .cloned()
+        .unwrap_or_default();
     let e = &d.bearing.materials;
-    let e_star = 1.0 / ((1.0 - e.roller.poisson_ratio.powi(2)) / e.roller.youngs_modulus_pa + (1.0 - e.inner_ring.poisson_ratio.powi(2)) / e.inner_ring.youngs_modulus_pa);
+    let e_star = 1.0
+        / ((1.0 - e.roller.poisson_ratio.powi(2)) / e.roller.youngs_modulus_pa
+            + (1.0 - e.inner_ring.poisson_ratio.powi(2)) / e.inner_ring.youngs_modulus_pa);
     let mut checked = 0;
     for (j, rc) in a.contacts.iter().enumerate() {
         for (i, pair) in rc.iter().enumerate() {
@@ -126,8 +133,14 @@ fn zero_angle_uncrowned_speeds_equal_app_c() {
     let theta = b.geometry.roller_diameter_m / b.geometry.pitch_diameter_m;
     let w1 = b.operating.inner_speed_rad_s * 30.0 / std::f64::consts::PI;
     let cage = 0.5 * w1 * (1.0 - theta);
-    let spin = b.geometry.pitch_diameter_m / (2.0 * b.geometry.roller_diameter_m) * (1.0 - theta * theta) * (-w1);
-    assert!((a.speeds.cage_rpm / cage - 1.0).abs() < 1e-5, "{} vs {cage}", a.speeds.cage_rpm);
+    let spin = b.geometry.pitch_diameter_m / (2.0 * b.geometry.roller_diameter_m)
+        * (1.0 - theta * theta)
+        * (-w1);
+    assert!(
+        (a.speeds.cage_rpm / cage - 1.0).abs() < 1e-5,
+        "{} vs {cage}",
+        a.speeds.cage_rpm
+    );
     for (j, s) in a.speeds.spin_rpm.iter().enumerate() {
         if a.load.rollers[j].inner.loaded_laminae > 0 {
             assert!((s / spin - 1.0).abs() < 1e-5, "roller {j}: {s} vs {spin}");
@@ -146,14 +159,36 @@ fn sliding_changes_sign_across_crowned_contact() {
     // point on the outer raceway too: there the sliding keeps one sign.)
     let d = deck("aerospace.toml");
     let a = run(&d.bearing);
-    let fr = a.friction.as_ref().map(|f| f.laminae[0].clone()).unwrap_or_default();
+    let fr = a
+        .friction
+        .as_ref()
+        .map(|f| f.laminae[0].clone())
+        .unwrap_or_default();
     for k in 0..2 {
-        let v: Vec<f64> = a.load.rollers[0].laminae.iter().zip(&fr).filter(|(l, _)| if k == 0 { l.inner_load_n > 0.0 } else { l.outer_load_n > 0.0 }).map(|(_, f)| f[k].sliding_m_s).collect();
+        let v: Vec<f64> = a.load.rollers[0]
+            .laminae
+            .iter()
+            .zip(&fr)
+            .filter(|(l, _)| {
+                if k == 0 {
+                    l.inner_load_n > 0.0
+                } else {
+                    l.outer_load_n > 0.0
+                }
+            })
+            .map(|(_, f)| f[k].sliding_m_s)
+            .collect();
         if k == 0 {
-            assert!(v.iter().any(|x| *x > 0.0) && v.iter().any(|x| *x < 0.0), "inner: {v:?}");
+            assert!(
+                v.iter().any(|x| *x > 0.0) && v.iter().any(|x| *x < 0.0),
+                "inner: {v:?}"
+            );
         }
         let dd: Vec<f64> = v.windows(3).map(|w| w[0] - 2.0 * w[1] + w[2]).collect();
-        assert!(dd.iter().all(|x| *x >= -1e-9) || dd.iter().all(|x| *x <= 1e-9), "raceway {k}: {dd:?}");
+        assert!(
+            dd.iter().all(|x| *x >= -1e-9) || dd.iter().all(|x| *x <= 1e-9),
+            "raceway {k}: {dd:?}"
+        );
     }
 }
 
@@ -168,7 +203,11 @@ fn sliding_vanishes_at_the_rolling_point() {
     let mut b = deck("radial_si.toml").bearing;
     b.geometry.inner_crown_radius_m = b.geometry.outer_crown_radius_m;
     let a = run(&b);
-    let fr = a.friction.as_ref().map(|f| f.laminae[0].clone()).unwrap_or_default();
+    let fr = a
+        .friction
+        .as_ref()
+        .map(|f| f.laminae[0].clone())
+        .unwrap_or_default();
     let n = fr.len();
     for k in 0..2 {
         let v: Vec<f64> = fr.iter().map(|l| l[k].sliding_m_s).collect();
@@ -176,8 +215,14 @@ fn sliding_vanishes_at_the_rolling_point() {
         assert!(vmax > 1e-3, "raceway {k}: no sliding at all {v:?}");
         assert!(v[n / 2].abs() < 1e-2 * vmax, "raceway {k}: mid {v:?}");
         for i in n / 2 + 2..n {
-            assert!(v[i].abs() > v[i - 1].abs(), "raceway {k}, lamina {i}: {v:?}");
-            assert!((v[i] - v[n - 1 - i]).abs() <= 1e-9 * vmax, "symmetry {k} {i}");
+            assert!(
+                v[i].abs() > v[i - 1].abs(),
+                "raceway {k}, lamina {i}: {v:?}"
+            );
+            assert!(
+                (v[i] - v[n - 1 - i]).abs() <= 1e-9 * vmax,
+                "symmetry {k} {i}"
+            );
         }
     }
 }
@@ -186,10 +231,17 @@ fn sliding_vanishes_at_the_rolling_point() {
 fn power_balance() {
     // Σ traction × sliding over all laminae = contact heat; total = sum of mechanisms;
     // friction torque × relative speed = total. All are sums of the same numbers: 1e-12.
-    for name in ["aerospace.toml", "radial_si.toml", "thrust.toml", "industrial.toml"] {
+    for name in [
+        "aerospace.toml",
+        "radial_si.toml",
+        "thrust.toml",
+        "industrial.toml",
+    ] {
         let d = deck(name);
         let a = run(&d.bearing);
-        let Some(fr) = &a.friction else { panic!("no heat for {name}") };
+        let Some(fr) = &a.friction else {
+            panic!("no heat for {name}")
+        };
         let mut sum = [0.0f64; 2];
         for r in &fr.laminae {
             for l in r {
@@ -199,12 +251,22 @@ fn power_balance() {
             }
         }
         let h = &fr.heat;
-        assert!((sum[0] - h.inner_contacts_w).abs() <= 1e-12 * sum[0].max(1.0), "{name}");
-        assert!((sum[1] - h.outer_contacts_w).abs() <= 1e-12 * sum[1].max(1.0), "{name}");
+        assert!(
+            (sum[0] - h.inner_contacts_w).abs() <= 1e-12 * sum[0].max(1.0),
+            "{name}"
+        );
+        assert!(
+            (sum[1] - h.outer_contacts_w).abs() <= 1e-12 * sum[1].max(1.0),
+            "{name}"
+        );
         let total = h.inner_contacts_w + h.outer_contacts_w + h.cage_rails_w + h.viscous_drag_w;
         assert!((h.total_w - total).abs() <= 1e-12 * total, "{name}");
-        let rel = (d.bearing.operating.inner_speed_rad_s - d.bearing.operating.outer_speed_rad_s).abs();
-        assert!((h.friction_torque_nm * rel - h.total_w).abs() <= 1e-12 * h.total_w, "{name}");
+        let rel =
+            (d.bearing.operating.inner_speed_rad_s - d.bearing.operating.outer_speed_rad_s).abs();
+        assert!(
+            (h.friction_torque_nm * rel - h.total_w).abs() <= 1e-12 * h.total_w,
+            "{name}"
+        );
     }
 }
 
@@ -212,19 +274,44 @@ fn power_balance() {
 fn iterated_speeds_converge_near_app_c() {
     // The dynamic-load iteration converges (≤ 30 iterations) and §7's cage speed stays within
     // a few percent (5 %) of App. C's estimate on every shipped deck.
-    for name in ["aerospace.toml", "aerospace_si.toml", "radial_si.toml", "thrust.toml", "industrial.toml"] {
+    for name in [
+        "aerospace.toml",
+        "aerospace_si.toml",
+        "radial_si.toml",
+        "thrust.toml",
+        "industrial.toml",
+    ] {
         let a = run(&deck(name).bearing);
-        assert!(a.speeds.iterations >= 1 && a.speeds.iterations < 30, "{name}: {}", a.speeds.iterations);
-        assert!(a.speeds.cage_difference.abs() < 0.05, "{name}: {}", a.speeds.cage_difference);
+        assert!(
+            a.speeds.iterations >= 1 && a.speeds.iterations < 30,
+            "{name}: {}",
+            a.speeds.iterations
+        );
+        assert!(
+            a.speeds.cage_difference.abs() < 0.05,
+            "{name}: {}",
+            a.speeds.cage_difference
+        );
     }
 }
 
 #[test]
 fn bearing_life_below_raceway_lives() {
-    for name in ["aerospace.toml", "radial_si.toml", "thrust.toml", "industrial.toml"] {
+    for name in [
+        "aerospace.toml",
+        "radial_si.toml",
+        "thrust.toml",
+        "industrial.toml",
+    ] {
         let a = run(&deck(name).bearing);
-        let Some(l) = a.life.as_ref().map(|l| &l.result) else { panic!("{name}") };
-        let (bi, bo, bb) = (l.l10_inner_mrev.unwrap_or(f64::MAX), l.l10_outer_mrev.unwrap_or(f64::MAX), l.l10_bearing_mrev.unwrap_or(0.0));
+        let Some(l) = a.life.as_ref().map(|l| &l.result) else {
+            panic!("{name}")
+        };
+        let (bi, bo, bb) = (
+            l.l10_inner_mrev.unwrap_or(f64::MAX),
+            l.l10_outer_mrev.unwrap_or(f64::MAX),
+            l.l10_bearing_mrev.unwrap_or(0.0),
+        );
         assert!(bb > 0.0 && bb < bi && bb < bo, "{name}: {bb} {bi} {bo}");
     }
 }
@@ -234,7 +321,12 @@ fn solver_statistics_per_deck() {
     // Snapshot of iteration counts: a slower convergence fails this test even when the answer
     // is still right (architecture.md, testing layer 4). Update deliberately with a reason.
     let mut s = String::new();
-    for name in ["aerospace.toml", "radial_si.toml", "thrust.toml", "industrial.toml"] {
+    for name in [
+        "aerospace.toml",
+        "radial_si.toml",
+        "thrust.toml",
+        "industrial.toml",
+    ] {
         let a = run(&deck(name).bearing);
         let st = a.load.stats;
         s.push_str(&format!(
@@ -256,9 +348,18 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
     let mut p = Pipeline::new();
     let mut b = d.bearing.clone();
     let steady_only = Request::default();
-    let first = p.run(&b, Some(&tm), &steady_only, None).map(|a| a.life.is_some());
+    let first = p
+        .run(&b, Some(&tm), &steady_only, None)
+        .map(|a| a.life.is_some());
     assert_eq!(first, Ok(true));
-    let c = |load_distribution, contact, friction, thermal_steady, thermal_transient| StageCounters { load_distribution, contact, friction, thermal_steady, thermal_transient };
+    let c =
+        |load_distribution, contact, friction, thermal_steady, thermal_transient| StageCounters {
+            load_distribution,
+            contact,
+            friction,
+            thermal_steady,
+            thermal_transient,
+        };
     // First run: every stage once, no transient (not requested).
     assert_eq!(p.counters(), c(1, 1, 1, 1, 0));
     // Same inputs: nothing re-runs.
@@ -278,9 +379,14 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
     let _ = p.run(&b, Some(&tm2), &steady_only, None);
     assert_eq!(p.counters(), c(1, 2, 3, 4, 0));
     // The transient runs only when asked, once.
-    let with_transient = Request { thermal_transient: true, ..Request::default() };
+    let with_transient = Request {
+        thermal_transient: true,
+        ..Request::default()
+    };
     let a = p.run(&b, Some(&tm2), &with_transient, None);
-    assert!(a.as_ref().is_ok_and(|a| a.thermal.as_ref().is_some_and(|t| t.transient.is_some())));
+    assert!(a
+        .as_ref()
+        .is_ok_and(|a| a.thermal.as_ref().is_some_and(|t| t.transient.is_some())));
     let _ = p.run(&b, Some(&tm2), &with_transient, None);
     assert_eq!(p.counters(), c(1, 2, 3, 4, 1));
     // A load edit re-runs everything downstream.
@@ -289,7 +395,11 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
     assert_eq!(p.counters(), c(2, 3, 4, 5, 2));
     // A view that needs neither contact nor heat (and no thermal model) runs the load stage only.
     let mut q = Pipeline::new();
-    let bare = Request { contact: false, heat: false, ..Request::default() };
+    let bare = Request {
+        contact: false,
+        heat: false,
+        ..Request::default()
+    };
     let a = q.run(&b, None, &bare, None);
     assert!(a.is_ok_and(|a| a.stresses.is_none() && a.friction.is_none()));
     assert_eq!(q.counters(), c(1, 0, 0, 0, 0));

@@ -42,7 +42,9 @@
 //! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
-use crate::model::{Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings};
+use crate::model::{
+    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings,
+};
 use crate::units::{Quantity, Units, PSI_PA};
 
 /// What TOML value a field takes.

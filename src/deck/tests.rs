@@ -163,9 +163,8 @@ fn converted_round_trips() {
 fn thermal_table_is_kept_opaque() {
     // A deck without its own [thermal] section (the default deck carries the rig network).
     let base = include_str!("../../decks/aerospace_si.toml");
-    let text = format!(
-        "{base}\n[thermal]\nambient = 20.0\n[thermal.nodes.inner]\ncapacity = 1.5 # J/K\n"
-    );
+    let text =
+        format!("{base}\n[thermal]\nambient = 20.0\n[thermal.nodes.inner]\ncapacity = 1.5 # J/K\n");
     let d = match Deck::parse(&text, "t.toml") {
         Ok(d) => d,
         Err(e) => panic!("{e}"),

@@ -48,7 +48,10 @@ impl Pitch {
     /// Trigonometry of pitch `alpha` (rad).
     #[inline]
     pub fn new(alpha: f64) -> Self {
-        Pitch { sin: alpha.sin(), cos_minus_one: -2.0 * (0.5 * alpha).sin().powi(2) }
+        Pitch {
+            sin: alpha.sin(),
+            cos_minus_one: -2.0 * (0.5 * alpha).sin().powi(2),
+        }
     }
 }
 
@@ -111,8 +114,14 @@ impl LaminaGeometry {
                 let s0 = d * d / (r0 + h);
                 let ri = g.inner_crown_radius_m;
                 let ro = g.outer_crown_radius_m;
-                let vi = [(ri - r0 + h) * -n[0] + d * a[0], (ri - r0 + h) * -n[1] + d * a[1]];
-                let vo = [(ro - r0 + h) * n[0] + d * a[0], (ro - r0 + h) * n[1] + d * a[1]];
+                let vi = [
+                    (ri - r0 + h) * -n[0] + d * a[0],
+                    (ri - r0 + h) * -n[1] + d * a[1],
+                ];
+                let vo = [
+                    (ro - r0 + h) * n[0] + d * a[0],
+                    (ro - r0 + h) * n[1] + d * a[1],
+                ];
                 Lamina {
                     offset_m: d,
                     width_m: w,
@@ -157,18 +166,38 @@ impl LaminaGeometry {
 
     /// [`Self::approach`] with the pitch's trigonometry computed once per roller.
     #[inline]
-    pub fn approach_with(&self, lam: &Lamina, inner: bool, q: [f64; 3], shift: V2, pitch: Pitch) -> Approach {
+    pub fn approach_with(
+        &self,
+        lam: &Lamina,
+        inner: bool,
+        q: [f64; 3],
+        shift: V2,
+        pitch: Pitch,
+    ) -> Approach {
         let (p0, v0, k0, r, dc) = if inner {
-            (lam.inner_point, lam.inner_v0, lam.inner_k0, self.inner_radius_m, shift)
+            (
+                lam.inner_point,
+                lam.inner_v0,
+                lam.inner_k0,
+                self.inner_radius_m,
+                shift,
+            )
         } else {
-            (lam.outer_point, lam.outer_v0, lam.outer_k0, self.outer_radius_m, self.outer_shift)
+            (
+                lam.outer_point,
+                lam.outer_v0,
+                lam.outer_k0,
+                self.outer_radius_m,
+                self.outer_shift,
+            )
         };
         let (sa, cm1) = (pitch.sin, pitch.cos_minus_one);
         let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
         let e = [q[0] + dp[0] - dc[0], q[1] + dp[1] - dc[1]];
         let v = [v0[0] + e[0], v0[1] + e[1]];
         let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
-        let delta = (k0 + 2.0 * (v0[0] * e[0] + v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1]) / (rho + r);
+        let delta =
+            (k0 + 2.0 * (v0[0] * e[0] + v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1]) / (rho + r);
         Approach {
             delta,
             normal: [v[0] / rho, v[1] / rho],
@@ -223,10 +252,24 @@ mod tests {
         for (l, lam) in g.laminae.iter().enumerate() {
             let (ci, co) = g.initial_clearance(l);
             let d = lam.offset_m;
-            let ei = sag_clearance(b.geometry.inner_crown_radius_m, b.geometry.roller_crown_radius_m, d);
-            let eo = sag_clearance(b.geometry.outer_crown_radius_m, b.geometry.roller_crown_radius_m, d);
-            assert!((ci - ei).abs() < 0.01 * ei.abs() + 1e-9, "inner l={l}: {ci} vs {ei}");
-            assert!((co - eo).abs() < 0.01 * eo.abs() + 1e-9, "outer l={l}: {co} vs {eo}");
+            let ei = sag_clearance(
+                b.geometry.inner_crown_radius_m,
+                b.geometry.roller_crown_radius_m,
+                d,
+            );
+            let eo = sag_clearance(
+                b.geometry.outer_crown_radius_m,
+                b.geometry.roller_crown_radius_m,
+                d,
+            );
+            assert!(
+                (ci - ei).abs() < 0.01 * ei.abs() + 1e-9,
+                "inner l={l}: {ci} vs {ei}"
+            );
+            assert!(
+                (co - eo).abs() < 0.01 * eo.abs() + 1e-9,
+                "outer l={l}: {co} vs {eo}"
+            );
         }
         // The cancellation-free approach equals the plain distance formula (1e-12 m: the plain
         // formula's round-off on |v₀| ≈ 50 mm).

@@ -79,7 +79,11 @@ impl LaminaLaw {
         // δ^(1/9) as two cube roots: several times cheaper than powf on the hot path.
         let d19 = delta.cbrt().cbrt();
         let q = self.stiffness * delta * d19;
-        (q, self.stiffness * (10.0 / 9.0) * d19, q * delta * (9.0 / 19.0))
+        (
+            q,
+            self.stiffness * (10.0 / 9.0) * d19,
+            q * delta * (9.0 / 19.0),
+        )
     }
 }
 

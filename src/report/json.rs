@@ -22,13 +22,22 @@ pub fn to_value(a: &Analysis) -> Value {
                     let rs = &st.rollers[j][k];
                     m.insert("max_stress_pa".into(), json!(rs.max_stress_pa));
                     m.insert("mean_stress_pa".into(), json!(rs.mean_stress_pa));
-                    m.insert("contact_major_axis_m".into(), json!(rs.contact_major_axis_m));
-                    m.insert("contact_minor_axis_m".into(), json!(rs.contact_minor_axis_m));
+                    m.insert(
+                        "contact_major_axis_m".into(),
+                        json!(rs.contact_major_axis_m),
+                    );
+                    m.insert(
+                        "contact_minor_axis_m".into(),
+                        json!(rs.contact_minor_axis_m),
+                    );
                     m.insert("eccentricity_m".into(), json!(rs.eccentricity_m));
                     m.insert("subsurface_shear_pa".into(), json!(rs.subsurface_shear_pa));
                     m.insert("subsurface_depth_m".into(), json!(rs.subsurface_depth_m));
                     m.insert("orthogonal_shear_pa".into(), json!(rs.orthogonal_shear_pa));
-                    m.insert("orthogonal_shear_depth_m".into(), json!(rs.orthogonal_depth_m));
+                    m.insert(
+                        "orthogonal_shear_depth_m".into(),
+                        json!(rs.orthogonal_depth_m),
+                    );
                     m.insert("von_mises_pa".into(), json!(rs.von_mises_pa));
                     m.insert("von_mises_depth_m".into(), json!(rs.von_mises_depth_m));
                 }
@@ -36,7 +45,10 @@ pub fn to_value(a: &Analysis) -> Value {
                     m.insert("min_film_m".into(), json!(fi.min_film[j][k]));
                 }
                 if let (Some(m), Some(li)) = (v.as_object_mut(), a.life.as_ref()) {
-                    m.insert("equivalent_load_n".into(), json!(li.equivalent_loads_n[j][k]));
+                    m.insert(
+                        "equivalent_load_n".into(),
+                        json!(li.equivalent_loads_n[j][k]),
+                    );
                 }
                 if let (Some(m), Some(fr)) = (v.as_object_mut(), a.friction.as_ref()) {
                     m.insert("heat_w".into(), json!(fr.roller_heat_w[j][k]));
@@ -105,7 +117,10 @@ pub fn to_value(a: &Analysis) -> Value {
         })
         .collect();
     let mut doc = Map::new();
-    doc.insert("input".into(), serde_json::to_value(&a.input).unwrap_or(Value::Null));
+    doc.insert(
+        "input".into(),
+        serde_json::to_value(&a.input).unwrap_or(Value::Null),
+    );
     doc.insert("converged".into(), Value::Bool(ld.converged));
     doc.insert(
         "loads".into(),
@@ -128,10 +143,16 @@ pub fn to_value(a: &Analysis) -> Value {
         "dynamic_speeds".into(),
         json!({"cage_rad_s": ld.speeds.cage_rad_s, "roller_spin_rad_s": ld.speeds.roller_spin_rad_s}),
     );
-    doc.insert("speeds".into(), serde_json::to_value(&a.speeds).unwrap_or(Value::Null));
+    doc.insert(
+        "speeds".into(),
+        serde_json::to_value(&a.speeds).unwrap_or(Value::Null),
+    );
     doc.insert("rollers".into(), Value::Array(rollers));
     if let Some(li) = &a.life {
-        doc.insert("life".into(), serde_json::to_value(&li.result).unwrap_or(Value::Null));
+        doc.insert(
+            "life".into(),
+            serde_json::to_value(li.result).unwrap_or(Value::Null),
+        );
     }
     if let Some(th) = &a.thermal {
         doc.insert(
@@ -154,9 +175,12 @@ pub fn to_value(a: &Analysis) -> Value {
         );
     }
     if let Some(fr) = &a.friction {
-        let mut h = serde_json::to_value(&fr.heat).unwrap_or(Value::Null);
+        let mut h = serde_json::to_value(fr.heat).unwrap_or(Value::Null);
         if let Some(m) = h.as_object_mut() {
-            m.insert("total_btu_per_hr".into(), json!(fr.heat.total_btu_per_hour()));
+            m.insert(
+                "total_btu_per_hr".into(),
+                json!(fr.heat.total_btu_per_hour()),
+            );
             m.insert("lost_lubrication".into(), json!(fr.lost_lubrication));
         }
         doc.insert("heat".into(), h);

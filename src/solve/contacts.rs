@@ -51,7 +51,10 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
     let a0 = [beta.cos(), -beta.sin()];
     let (s, c) = tilt.sin_cos();
     let a = [c * a0[0] - s * a0[1], s * a0[0] + c * a0[1]];
-    let centre = [r.axial_displacement_m, r.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m];
+    let centre = [
+        r.axial_displacement_m,
+        r.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m,
+    ];
     let n = r.laminae.len();
     r.laminae
         .iter()
@@ -60,9 +63,17 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
             let edge = n > 1 && (i == 0 || i + 1 == n);
             let mk = |inner: bool| {
                 let (pt, load, ang) = if inner {
-                    (l.inner_point_m, l.inner_load_n, l.inner_angle_deg.to_radians())
+                    (
+                        l.inner_point_m,
+                        l.inner_load_n,
+                        l.inner_angle_deg.to_radians(),
+                    )
                 } else {
-                    (l.outer_point_m, l.outer_load_n, l.outer_angle_deg.to_radians())
+                    (
+                        l.outer_point_m,
+                        l.outer_load_n,
+                        l.outer_angle_deg.to_radians(),
+                    )
                 };
                 // Unit normal of the contact (x, r): the contact angle direction.
                 let nn = [ang.sin(), ang.cos()];
@@ -113,18 +124,37 @@ mod tests {
         b.operating.axial_load_n = 0.0;
         b.operating.inner_speed_rad_s = 0.0;
         b.geometry.diametral_clearance_m = 0.0;
-        let ld = match solve(&b, &DynamicSpeeds::app_c_estimate(&b), &SolveOptions::default(), None) {
+        let ld = match solve(
+            &b,
+            &DynamicSpeeds::app_c_estimate(&b),
+            &SolveOptions::default(),
+            None,
+        ) {
             Ok(x) => x,
             Err(e) => panic!("{e}"),
         };
         let c = contacts(&b, &ld);
         let mid = c[0][b.solver.laminae / 2];
-        let (d, p, beta) = (b.geometry.roller_diameter_m, b.geometry.pitch_diameter_m, b.geometry.contact_angle_rad);
+        let (d, p, beta) = (
+            b.geometry.roller_diameter_m,
+            b.geometry.pitch_diameter_m,
+            b.geometry.contact_angle_rad,
+        );
         let close = |x: f64, y: f64| (x / y - 1.0).abs() < 1e-9;
-        assert!(close(mid[0].roller_radius_m, d / 2.0), "{}", mid[0].roller_radius_m);
+        assert!(
+            close(mid[0].roller_radius_m, d / 2.0),
+            "{}",
+            mid[0].roller_radius_m
+        );
         assert!(close(mid[1].roller_radius_m, d / 2.0));
-        assert!(close(mid[0].ring_radius_m, (p / 2.0 - d / 2.0 * beta.cos()) / beta.cos()));
-        assert!(close(mid[1].ring_radius_m, -(p / 2.0 + d / 2.0 * beta.cos()) / beta.cos()));
+        assert!(close(
+            mid[0].ring_radius_m,
+            (p / 2.0 - d / 2.0 * beta.cos()) / beta.cos()
+        ));
+        assert!(close(
+            mid[1].ring_radius_m,
+            -(p / 2.0 + d / 2.0 * beta.cos()) / beta.cos()
+        ));
         assert!(close(mid[0].roller_axis_distance_m, d / 2.0));
     }
 }

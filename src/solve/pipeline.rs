@@ -29,7 +29,12 @@ pub struct Request {
 
 impl Default for Request {
     fn default() -> Self {
-        Request { trace_roller: None, contact: true, heat: true, thermal_transient: false }
+        Request {
+            trace_roller: None,
+            contact: true,
+            heat: true,
+            thermal_transient: false,
+        }
     }
 }
 
@@ -80,7 +85,10 @@ fn heat_input(f: &Friction) -> HeatInput {
 }
 
 fn thermal_err(e: thermal::ThermalError) -> SolveError {
-    SolveError::Stage { stage: "thermal network (§10)", message: e.to_string() }
+    SolveError::Stage {
+        stage: "thermal network (§10)",
+        message: e.to_string(),
+    }
 }
 
 /// Relative tolerance of the dynamic-load iteration on the cage speed and roller spin, as a
@@ -92,7 +100,11 @@ const DYNAMIC_TOL_FACTOR: f64 = 10.0;
 const DYNAMIC_MAX: usize = 30;
 
 /// Run the pipeline on `bearing` (no thermal network).
-pub fn run(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) -> Result<Analysis, SolveError> {
+pub fn run(
+    bearing: &Bearing,
+    request: &Request,
+    cancel: Option<&AtomicBool>,
+) -> Result<Analysis, SolveError> {
     run_with_thermal(bearing, None, request, cancel)
 }
 
@@ -206,10 +218,17 @@ impl Pipeline {
             self.transient = None;
         }
         let Some((_, ls)) = &self.load else {
-            return Err(SolveError::Stage { stage: "pipeline", message: "load stage missing".into() });
+            return Err(SolveError::Stage {
+                stage: "pipeline",
+                message: "load stage missing".into(),
+            });
         };
         let need_contact = request.contact || request.heat || thermal_model.is_some();
-        let contact_key = ContactKey { lubricant: bearing.lubricant, surfaces: bearing.surfaces, life: bearing.life };
+        let contact_key = ContactKey {
+            lubricant: bearing.lubricant,
+            surfaces: bearing.surfaces,
+            life: bearing.life,
+        };
         if need_contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
             let st = stages::stresses(bearing, &ls.contacts);
             let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
@@ -221,10 +240,14 @@ impl Pipeline {
             self.transient = None;
         }
         let need_friction = request.heat || thermal_model.is_some();
-        let friction_key = FrictionKey { lubricant: bearing.lubricant, cage: bearing.cage };
+        let friction_key = FrictionKey {
+            lubricant: bearing.lubricant,
+            cage: bearing.cage,
+        };
         if need_friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
             if let Some((_, (st, fi, _))) = &self.contact {
-                let fr = stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, false)?;
+                let fr =
+                    stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, false)?;
                 self.counters.friction += 1;
                 self.friction = Some((friction_key, fr));
                 self.steady = None;
@@ -233,28 +256,53 @@ impl Pipeline {
         }
         if let (Some(tm), Some((_, fr))) = (thermal_model, &self.friction) {
             if !matches!(&self.steady, Some((k, _)) if k == tm) {
-                let steady = thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
+                let steady =
+                    thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
                 self.counters.thermal_steady += 1;
                 self.steady = Some((tm.clone(), steady));
                 self.transient = None;
             }
             if request.thermal_transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
                 if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
-                    let lost = stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, true)?;
-                    let tr = thermal::run_transient(&tm.network, steady, &tm.transient, &heat_input(&lost)).map_err(thermal_err)?;
+                    let lost = stages::friction(
+                        bearing,
+                        &ls.load,
+                        &ls.contacts,
+                        st,
+                        fi,
+                        &ls.speeds,
+                        true,
+                    )?;
+                    let tr = thermal::run_transient(
+                        &tm.network,
+                        steady,
+                        &tm.transient,
+                        &heat_input(&lost),
+                    )
+                    .map_err(thermal_err)?;
                     self.counters.thermal_transient += 1;
                     self.transient = Some((tm.clone(), (tr, lost.heat.total_w)));
                 }
             }
         }
         let (stresses, films, life) = match (&self.contact, need_contact) {
-            (Some((_, (st, fi, li))), true) => (Some(st.clone()), Some(fi.clone()), Some(li.clone())),
+            (Some((_, (st, fi, li))), true) => {
+                (Some(st.clone()), Some(fi.clone()), Some(li.clone()))
+            }
             _ => (None, None, None),
         };
-        let friction = if need_friction { self.friction.as_ref().map(|f| f.1.clone()) } else { None };
+        let friction = if need_friction {
+            self.friction.as_ref().map(|f| f.1.clone())
+        } else {
+            None
+        };
         let thermal = match (thermal_model, &self.steady) {
             (Some(_), Some((_, steady))) => {
-                let tr = if request.thermal_transient { self.transient.as_ref().map(|t| t.1.clone()) } else { None };
+                let tr = if request.thermal_transient {
+                    self.transient.as_ref().map(|t| t.1.clone())
+                } else {
+                    None
+                };
                 Some(ThermalOut {
                     steady: steady.clone(),
                     transient_heat_w: tr.as_ref().map(|t| t.1),
@@ -279,9 +327,16 @@ impl Pipeline {
 }
 
 /// §3 load distribution with the dynamic-load iteration (§7 ↔ §3) and the contact geometry.
-fn load_stage(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) -> Result<LoadStage, SolveError> {
+fn load_stage(
+    bearing: &Bearing,
+    request: &Request,
+    cancel: Option<&AtomicBool>,
+) -> Result<LoadStage, SolveError> {
     let estimate = DynamicSpeeds::app_c_estimate(bearing);
-    let mut opts = SolveOptions { warm_start: None, trace_roller: request.trace_roller };
+    let mut opts = SolveOptions {
+        warm_start: None,
+        trace_roller: request.trace_roller,
+    };
     let mut load = load_distribution::solve(bearing, &estimate, &opts, cancel)?;
     let mut cts = contacts::contacts(bearing, &load);
     let mut speeds = stages::internal_speeds(bearing, &load, &cts);
@@ -294,7 +349,10 @@ fn load_stage(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>)
             let next = dynamic_from(&speeds, &current);
             let scale = |x: f64| x.abs().max(1e-9);
             let change = ((next.cage_rad_s - current.cage_rad_s).abs() / scale(current.cage_rad_s))
-                .max((next.roller_spin_rad_s - current.roller_spin_rad_s).abs() / scale(current.roller_spin_rad_s));
+                .max(
+                    (next.roller_spin_rad_s - current.roller_spin_rad_s).abs()
+                        / scale(current.roller_spin_rad_s),
+                );
             if change <= dynamic_tol {
                 break;
             }
@@ -322,7 +380,13 @@ fn load_stage(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>)
     }
     load.stats = stats;
     let trace = std::mem::take(&mut load.trace);
-    Ok(LoadStage { load, contacts: cts, speeds, iterations, trace })
+    Ok(LoadStage {
+        load,
+        contacts: cts,
+        speeds,
+        iterations,
+        trace,
+    })
 }
 
 /// Dynamic speeds for the next iteration: §7's cage speed and the mean spin of the
@@ -333,6 +397,13 @@ fn dynamic_from(s: &InternalSpeeds, current: &DynamicSpeeds) -> DynamicSpeeds {
         return *current;
     }
     let spins: Vec<f64> = s.roller_spin_rad_s.iter().flatten().copied().collect();
-    let spin = if spins.is_empty() { current.roller_spin_rad_s } else { spins.iter().sum::<f64>() / spins.len() as f64 };
-    DynamicSpeeds { cage_rad_s: s.cage_speed_rad_s, roller_spin_rad_s: spin }
+    let spin = if spins.is_empty() {
+        current.roller_spin_rad_s
+    } else {
+        spins.iter().sum::<f64>() / spins.len() as f64
+    };
+    DynamicSpeeds {
+        cage_rad_s: s.cage_speed_rad_s,
+        roller_spin_rad_s: spin,
+    }
 }

@@ -77,7 +77,10 @@ pub struct Stresses {
 pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
     let e_star = reduced_moduli(b);
     let edge_factor = b.life.edge_stress_factor;
-    let nu = [b.materials.inner_ring.poisson_ratio, b.materials.outer_ring.poisson_ratio];
+    let nu = [
+        b.materials.inner_ring.poisson_ratio,
+        b.materials.outer_ring.poisson_ratio,
+    ];
     let mut rollers = Vec::with_capacity(contacts.len());
     let mut laminae = Vec::with_capacity(contacts.len());
     for rc in contacts {
@@ -88,7 +91,11 @@ pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
                 for k in 0..2 {
                     let c = &pair[k];
                     if c.load_n > 0.0 && c.width_m > 0.0 {
-                        let mut lc = hertz::line_contact_reduced(c.load_n / c.width_m, c.reduced_radius_m, e_star[k]);
+                        let mut lc = hertz::line_contact_reduced(
+                            c.load_n / c.width_m,
+                            c.reduced_radius_m,
+                            e_star[k],
+                        );
                         if c.edge {
                             lc.max_pressure_pa *= edge_factor;
                             lc.mean_pressure_pa *= edge_factor;
@@ -102,16 +109,26 @@ pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
         let mut summary = [RacewayStress::default(); 2];
         for k in 0..2 {
             let loaded: Vec<usize> = (0..rc.len()).filter(|&i| rc[i][k].load_n > 0.0).collect();
-            let Some(&imax) = loaded.iter().max_by(|&&a, &&c| rc[a][k].load_n.total_cmp(&rc[c][k].load_n)) else {
+            let Some(&imax) = loaded
+                .iter()
+                .max_by(|&&a, &&c| rc[a][k].load_n.total_cmp(&rc[c][k].load_n))
+            else {
                 continue;
             };
             let major: f64 = loaded.iter().map(|&i| rc[i][k].width_m).sum();
             let half_b = lam[imax][k].half_width_m;
-            let p_max = loaded.iter().map(|&i| lam[i][k].max_pressure_pa).fold(0.0, f64::max);
-            let p_mean = loaded.iter().map(|&i| lam[i][k].mean_pressure_pa).fold(0.0, f64::max);
+            let p_max = loaded
+                .iter()
+                .map(|&i| lam[i][k].max_pressure_pa)
+                .fold(0.0, f64::max);
+            let p_mean = loaded
+                .iter()
+                .map(|&i| lam[i][k].mean_pressure_pa)
+                .fold(0.0, f64::max);
             // The equivalent ellipse: semi-axes ½·major and b at the most loaded lamina; its
             // peak pressure is the most loaded lamina's (the roller's "max of max").
-            let sub: SubsurfaceStress = subsurface::subsurface_stress(p_max, 0.5 * major, half_b, nu[k]);
+            let sub: SubsurfaceStress =
+                subsurface::subsurface_stress(p_max, 0.5 * major, half_b, nu[k]);
             summary[k] = RacewayStress {
                 max_stress_pa: p_max,
                 mean_stress_pa: p_mean,
@@ -186,10 +203,20 @@ pub fn contact_pairs(ld: &LoadDistribution, contacts: &[RollerContacts]) -> Vec<
 
 /// §7 speeds at the equilibrium; falls back to App. C when no roller touches both raceways
 /// (e.g. zero load at zero speed), and says so through `controlling_rollers = 0`.
-pub fn internal_speeds(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts]) -> InternalSpeeds {
+pub fn internal_speeds(
+    b: &Bearing,
+    ld: &LoadDistribution,
+    contacts: &[RollerContacts],
+) -> InternalSpeeds {
     let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
     let est_cage = kinematics::cage_speed_estimate(w1, w2, b.geometry.theta());
-    let est_spin = kinematics::roller_spin_estimate(w1, w2, b.geometry.theta(), b.geometry.roller_diameter_m, b.geometry.pitch_diameter_m);
+    let est_spin = kinematics::roller_spin_estimate(
+        w1,
+        w2,
+        b.geometry.theta(),
+        b.geometry.roller_diameter_m,
+        b.geometry.pitch_diameter_m,
+    );
     let pairs = contact_pairs(ld, contacts);
     match kinematics::internal_speeds(w1, w2, b.geometry.pitch_diameter_m, &pairs) {
         Ok(s) => s,
@@ -205,26 +232,49 @@ pub fn internal_speeds(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerCon
 pub fn speeds_report(b: &Bearing, s: &InternalSpeeds, iterations: usize) -> Speeds {
     let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
     let est_cage = kinematics::cage_speed_estimate(w1, w2, b.geometry.theta());
-    let est_spin = kinematics::roller_spin_estimate(w1, w2, b.geometry.theta(), b.geometry.roller_diameter_m, b.geometry.pitch_diameter_m);
+    let est_spin = kinematics::roller_spin_estimate(
+        w1,
+        w2,
+        b.geometry.theta(),
+        b.geometry.roller_diameter_m,
+        b.geometry.pitch_diameter_m,
+    );
     Speeds {
         inner_rpm: w1 * RPM,
         outer_rpm: w2 * RPM,
         cage_rpm: s.cage_speed_rad_s * RPM,
         cage_rpm_estimate: est_cage * RPM,
-        spin_rpm: s.roller_spin_rad_s.iter().map(|x| x.unwrap_or(est_spin) * RPM).collect(),
+        spin_rpm: s
+            .roller_spin_rad_s
+            .iter()
+            .map(|x| x.unwrap_or(est_spin) * RPM)
+            .collect(),
         spin_rpm_estimate: est_spin * RPM,
         controlling_rollers: s.controlling_rollers,
         dynamic_loads: b.solver.dynamic_loads,
         iterations,
-        cage_difference: if est_cage.abs() > 0.0 { s.cage_speed_rad_s / est_cage - 1.0 } else { 0.0 },
+        cage_difference: if est_cage.abs() > 0.0 {
+            s.cage_speed_rad_s / est_cage - 1.0
+        } else {
+            0.0
+        },
     }
 }
 
 /// Spins per roller with App. C's value where §7 leaves it undetermined, rad/s.
 fn spins(b: &Bearing, s: &InternalSpeeds) -> Vec<f64> {
     let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
-    let est = kinematics::roller_spin_estimate(w1, w2, b.geometry.theta(), b.geometry.roller_diameter_m, b.geometry.pitch_diameter_m);
-    s.roller_spin_rad_s.iter().map(|x| x.unwrap_or(est)).collect()
+    let est = kinematics::roller_spin_estimate(
+        w1,
+        w2,
+        b.geometry.theta(),
+        b.geometry.roller_diameter_m,
+        b.geometry.pitch_diameter_m,
+    );
+    s.roller_spin_rad_s
+        .iter()
+        .map(|x| x.unwrap_or(est))
+        .collect()
 }
 
 // ---------------------------------------------------------------- §5 film
@@ -249,7 +299,10 @@ fn entrainment(ring_rel: f64, spin: f64, c: &LaminaContact) -> f64 {
 pub fn films(b: &Bearing, contacts: &[RollerContacts], speeds: &InternalSpeeds) -> Films {
     let e_star = reduced_moduli(b);
     let spin = spins(b, speeds);
-    let rel = [b.operating.inner_speed_rad_s - speeds.cage_speed_rad_s, b.operating.outer_speed_rad_s - speeds.cage_speed_rad_s];
+    let rel = [
+        b.operating.inner_speed_rad_s - speeds.cage_speed_rad_s,
+        b.operating.outer_speed_rad_s - speeds.cage_speed_rad_s,
+    ];
     let lub = &b.lubricant;
     let mut laminae = Vec::with_capacity(contacts.len());
     let mut min_film = Vec::with_capacity(contacts.len());
@@ -286,7 +339,13 @@ pub fn films(b: &Bearing, contacts: &[RollerContacts], speeds: &InternalSpeeds) 
         min_film.push(rmin);
     }
     let s = &b.surfaces;
-    let lambda = |h: f64, race: f64| if h.is_finite() { film::film_parameter(h, s.roller_rms_m, race) } else { 0.0 };
+    let lambda = |h: f64, race: f64| {
+        if h.is_finite() {
+            film::film_parameter(h, s.roller_rms_m, race)
+        } else {
+            0.0
+        }
+    };
     Films {
         laminae,
         min_film,
@@ -309,7 +368,10 @@ pub struct Life {
 /// P = F_r for α = 0; otherwise X = 1, Y = 0 when F_a/F_r ≤ e = 1.5·tan α, else X = 0.4,
 /// Y = 0.4·cot α (ISO 281:2007 §7.2.2). Used only for a_ISO's e_C·C_u/P.
 pub fn iso_equivalent_load(b: &Bearing) -> f64 {
-    let (fr, fa) = (b.operating.radial_load_n.abs(), b.operating.axial_load_n.abs());
+    let (fr, fa) = (
+        b.operating.radial_load_n.abs(),
+        b.operating.axial_load_n.abs(),
+    );
     let a = b.geometry.contact_angle_rad;
     if a <= 0.0 || fa <= 1.5 * a.tan() * fr {
         fr.max(if a > 0.0 { 0.0 } else { fa })
@@ -326,7 +388,10 @@ pub fn life(b: &Bearing, ld: &LoadDistribution, films: &Films) -> Life {
         .map(|r| {
             let qi: Vec<f64> = r.laminae.iter().map(|l| l.inner_load_n).collect();
             let qo: Vec<f64> = r.laminae.iter().map(|l| l.outer_load_n).collect();
-            [life::equivalent_roller_load(&qi), life::equivalent_roller_load(&qo)]
+            [
+                life::equivalent_roller_load(&qi),
+                life::equivalent_roller_load(&qo),
+            ]
         })
         .collect();
     let inner: Vec<f64> = eq.iter().map(|e| e[0]).collect();
@@ -344,7 +409,10 @@ pub fn life(b: &Bearing, ld: &LoadDistribution, films: &Films) -> Life {
         kinematic_viscosity_m2_s: heat::kinematic_viscosity_m2_s(&b.lubricant),
         iso_equivalent_load_n: iso_equivalent_load(b),
     });
-    Life { result, equivalent_loads_n: eq }
+    Life {
+        result,
+        equivalent_loads_n: eq,
+    }
 }
 
 // ---------------------------------------------------------------- §8–9 sliding and heat
@@ -385,7 +453,11 @@ pub fn friction(
     let spin = spins(b, speeds);
     let wc = speeds.cage_speed_rad_s;
     let ring_w = [b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s];
-    let model = if lost_lubrication { TractionModel::lost_lubrication(&b.lubricant) } else { TractionModel::ehd(&b.lubricant) };
+    let model = if lost_lubrication {
+        TractionModel::lost_lubrication(&b.lubricant)
+    } else {
+        TractionModel::ehd(&b.lubricant)
+    };
     let beta = b.geometry.contact_angle_rad;
     let mut laminae = Vec::with_capacity(contacts.len());
     let mut roller_heat = Vec::with_capacity(contacts.len());
@@ -394,7 +466,11 @@ pub fn friction(
         let (s, c) = r.tilt_rad.sin_cos();
         let a0 = [beta.cos(), -beta.sin()];
         let axis = [c * a0[0] - s * a0[1], s * a0[0] + c * a0[1], 0.0];
-        let centre = [r.axial_displacement_m, r.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m, 0.0];
+        let centre = [
+            r.axial_displacement_m,
+            r.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m,
+            0.0,
+        ];
         let mut rh = [0.0f64; 2];
         let lam: Vec<[LaminaFriction; 2]> = r
             .laminae
@@ -403,8 +479,19 @@ pub fn friction(
             .map(|(i, l)| {
                 let mut out = [LaminaFriction::default(); 2];
                 for k in 0..2 {
-                    let pt = if k == 0 { l.inner_point_m } else { l.outer_point_m };
-                    let v = kinematics::sliding_velocity([pt[0], pt[1], 0.0], ring_w[k], wc, centre, axis, spin[j]);
+                    let pt = if k == 0 {
+                        l.inner_point_m
+                    } else {
+                        l.outer_point_m
+                    };
+                    let v = kinematics::sliding_velocity(
+                        [pt[0], pt[1], 0.0],
+                        ring_w[k],
+                        wc,
+                        centre,
+                        axis,
+                        spin[j],
+                    );
                     out[k].sliding_m_s = v;
                     let contact = &rc[i][k];
                     if contact.load_n <= 0.0 {
@@ -412,7 +499,11 @@ pub fn friction(
                     }
                     let hz = &stresses.laminae[j][i][k];
                     let t = model.lamina_traction(
-                        &traction::LaminaContact { load_n: contact.load_n, half_width_m: hz.half_width_m, width_m: contact.width_m },
+                        &traction::LaminaContact {
+                            load_n: contact.load_n,
+                            half_width_m: hz.half_width_m,
+                            width_m: contact.width_m,
+                        },
                         v,
                         films.laminae[j][i][k].unwrap_or(0.0),
                     );
@@ -430,9 +521,22 @@ pub fn friction(
     }
     let lub = &b.lubricant;
     let cage = heat::cage_rail_power_for(&b.cage, lub.viscosity_pa_s, ring_w[0], ring_w[1], wc)
-        .map_err(|e| super::SolveError::Stage { stage: "cage rail heat (eq. 9.3-9.4)", message: e.to_string() })?;
+        .map_err(|e| super::SolveError::Stage {
+            stage: "cage rail heat (eq. 9.3-9.4)",
+            message: e.to_string(),
+        })?;
     let rel = ring_w[0] - ring_w[1];
-    let drag = heat::viscous_drag_power_w(b.cage.drag_factor, heat::kinematic_viscosity_m2_s(lub), rel, b.geometry.pitch_diameter_m);
+    let drag = heat::viscous_drag_power_w(
+        b.cage.drag_factor,
+        heat::kinematic_viscosity_m2_s(lub),
+        rel,
+        b.geometry.pitch_diameter_m,
+    );
     let heat = HeatBreakdown::new(totals[0], totals[1], cage, drag, ring_w[0], ring_w[1]);
-    Ok(Friction { laminae, roller_heat_w: roller_heat, heat, lost_lubrication })
+    Ok(Friction {
+        laminae,
+        roller_heat_w: roller_heat,
+        heat,
+        lost_lubrication,
+    })
 }

@@ -369,7 +369,10 @@ fn shipped_rig_steady_balance() {
     // Plausibility: ~2.1 kW into 100 W/K of oil gives a ~20 K oil rise; rings and rollers
     // run 10–40 K above the oil, all below their limits.
     let root: toml::Table = toml::from_str(RIG).unwrap();
-    assert!(root.contains_key("thermal"), "the aerospace deck carries the rig network");
+    assert!(
+        root.contains_key("thermal"),
+        "the aerospace deck carries the rig network"
+    );
     let m = rig();
     let n = m.network.nodes.len();
     assert!((15..=20).contains(&n), "{n} nodes");
