@@ -218,6 +218,9 @@ struct Problem {
     /// cos φ of each unique roller and its multiplicity.
     unique: Vec<(f64, f64)>,
     evals: std::cell::Cell<usize>,
+    /// Roller tolerance of the current ring iteration (inexact Newton: loose while the ring
+    /// residual is large, the full tolerance at the end).
+    roller_tol: std::cell::Cell<f64>,
 }
 
 /// Everything one roller contributes at (u, q).
@@ -286,6 +289,7 @@ impl Problem {
             max_roller_it: b.solver.max_roller_iterations.max(1),
             unique,
             evals: std::cell::Cell::new(0),
+            roller_tol: std::cell::Cell::new(0.0),
         }
     }
 
@@ -405,7 +409,7 @@ impl Problem {
                     what: format!("roller {} residual", index + 1),
                 });
             }
-            if res <= self.tol {
+            if res <= self.roller_tol.get() {
                 return Ok(ev);
             }
             *iterations += 1;
@@ -527,7 +531,8 @@ impl Problem {
         roller_its: &mut usize,
         trace: &mut Option<(usize, Vec<TraceStep>)>,
         ring_it: usize,
-    ) -> Result<(f64, Vector2<f64>, Matrix2<f64>, f64), SolveError> {
+    ) -> Result<RingState, SolveError> {
+        let mut sens = Vec::with_capacity(qs.len());
         let mut energy = -(self.load[0] * u[0] + self.load[1] * u[1]);
         let mut g = Vector2::new(-self.load[0], -self.load[1]);
         let mut k = Matrix2::zeros();
@@ -546,9 +551,21 @@ impl Problem {
             let hqu = ev.h_uq.transpose();
             let x = solve3_mat(&ev.h_qq, &hqu, self.l_ref);
             k += mult * (ev.h_uu - ev.h_uq * x);
+            // dq/du = −H_qq⁻¹ H_qu: predicts each roller's equilibrium at a trial ring step.
+            sens.push(-x);
         }
-        Ok((energy, g, k, worst))
+        Ok(RingState { energy, g, k, sens, _worst: worst })
     }
+}
+
+/// The ring-level state at one ring deflection: energy, ring force residual, condensed
+/// stiffness and each roller's sensitivity dq/du.
+struct RingState {
+    energy: f64,
+    g: Vector2<f64>,
+    k: Matrix2<f64>,
+    sens: Vec<nalgebra::Matrix3x2<f64>>,
+    _worst: f64,
 }
 
 /// Newton step −H⁻¹g for a 3×3 symmetric H, shifted to positive definite if needed.
@@ -617,6 +634,7 @@ pub fn solve(
     let d = b.geometry.roller_diameter_m;
     let mut trust = 1e-3 * d;
     let max_it = b.solver.max_iterations.max(1);
+    p.roller_tol.set(p.tol);
     let mut state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)?;
     let mut converged = false;
     let mut ring_res;
@@ -624,7 +642,7 @@ pub fn solve(
         if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
             return Err(SolveError::Cancelled);
         }
-        let (energy, g, k, _) = state;
+        let (energy, g, k) = (state.energy, state.g, state.k);
         ring_res = g[0].abs().max(g[1].abs());
         if !ring_res.is_finite() {
             return Err(SolveError::NonFinite {
@@ -633,9 +651,17 @@ pub fn solve(
             });
         }
         if ring_res <= p.tol {
-            converged = true;
-            break;
+            if p.roller_tol.get() <= p.tol {
+                converged = true;
+                break;
+            }
+            // Converged with loose rollers: tighten them at this ring deflection and re-check.
+            p.roller_tol.set(p.tol);
+            state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, it)?;
+            continue;
         }
+        // Inexact Newton: rollers to 1e-3 of the ring residual (never below the tolerance).
+        p.roller_tol.set(p.tol.max(1e-3 * ring_res));
         stats.iterations = it + 1;
         let step = newton_step2(&k, &g);
         let len = (step[0].powi(2) + step[1].powi(2)).sqrt();
@@ -649,7 +675,9 @@ pub fn solve(
         let mut accepted = None;
         for _ in 0..40 {
             let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
-            let mut qt = qs.clone();
+            // Predict each roller at the trial from its sensitivity (first-order warm start).
+            let du = Vector2::new(trial[0] - u[0], trial[1] - u[1]);
+            let mut qt: Vec<Vector3<f64>> = qs.iter().zip(&state.sens).map(|(q, x)| q + x * du).collect();
             let st = p.solve_rollers(
                 trial,
                 &mut qt,
@@ -657,8 +685,8 @@ pub fn solve(
                 &mut trace,
                 it + 1,
             )?;
-            let ok_energy = st.0 < energy + 1e-4 * lambda * slope;
-            let ok_grad = st.1[0].abs().max(st.1[1].abs()) < 0.5 * ring_res;
+            let ok_energy = st.energy < energy + 1e-4 * lambda * slope;
+            let ok_grad = st.g[0].abs().max(st.g[1].abs()) < 0.5 * ring_res;
             if ok_energy || ok_grad {
                 accepted = Some((trial, qt, st));
                 break;
@@ -690,7 +718,7 @@ pub fn solve(
         }
     }
     if !converged {
-        let g = state.1;
+        let g = state.g;
         ring_res = g[0].abs().max(g[1].abs());
         if ring_res > p.tol {
             return Err(SolveError::NotConverged {
@@ -701,7 +729,7 @@ pub fn solve(
         }
     }
     stats.lamina_evaluations = p.evals.get();
-    let g = state.1;
+    let g = state.g;
     let residuals = Residuals {
         bearing_axial_n: g[0].abs(),
         bearing_radial_n: g[1].abs(),
