@@ -26,12 +26,17 @@ pub fn to_string(a: &Analysis, units: ReportUnits) -> String {
     let rpm = 30.0 / std::f64::consts::PI;
     let _ = writeln!(
         s,
-        "Speeds: inner {:.0} rpm, outer {:.0} rpm, cage (App. C) {:.0} rpm, roller spin {:.0} rpm",
+        "Speeds: inner {:.0} rpm, outer {:.0} rpm; cage {:.1} rpm (§7, {} controlling rollers; App. C estimate {:.1} rpm, {:+.2} %); dynamic loads from {:?} speeds after {} iteration(s)",
         b.operating.inner_speed_rad_s * rpm,
         b.operating.outer_speed_rad_s * rpm,
-        ld.speeds.cage_rad_s * rpm,
-        ld.speeds.roller_spin_rad_s * rpm
+        a.speeds.cage_rpm,
+        a.speeds.controlling_rollers,
+        a.speeds.cage_rpm_estimate,
+        100.0 * a.speeds.cage_difference,
+        b.solver.dynamic_loads,
+        a.speeds.iterations
     );
+    let _ = rpm;
     let _ = writeln!(
         s,
         "Loads: radial {:.1} {f}, axial {:.1} {f}",
@@ -86,6 +91,141 @@ pub fn to_string(a: &Analysis, units: ReportUnits) -> String {
             r.inner.loaded_laminae,
             r.outer.loaded_laminae
         );
+    }
+    if let Some(st) = &a.stresses {
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "CONTACT STRESSES, ELLIPSE, SUBSURFACE SHEAR, FILM (§4-5; edge laminae x {:.2})",
+            b.life.edge_stress_factor
+        );
+        let _ = writeln!(
+            s,
+            "{:>3} {:>4} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+            "j",
+            "race",
+            format!("Smax {}", d.stress.1),
+            format!("Smean {}", d.stress.1),
+            format!("2a {}", d.len.1),
+            format!("2b {}", d.len.1),
+            format!("ecc {}", d.len.1),
+            format!("tau {}", d.stress.1),
+            format!("z {}", d.small_len.1),
+            format!("h {}", d.small_len.1),
+            format!("Pe {}", d.force.1)
+        );
+        for (j, r) in st.rollers.iter().enumerate() {
+            for (k, race) in ["in", "out"].iter().enumerate() {
+                let rs = &r[k];
+                let h = a
+                    .films
+                    .as_ref()
+                    .and_then(|f| f.min_film[j][k])
+                    .map_or("-".to_string(), |h| format!("{:.3}", h * d.small_len.0));
+                let pe = a.life.as_ref().map_or(0.0, |l| l.equivalent_loads_n[j][k]);
+                let _ = writeln!(
+                    s,
+                    "{:>3} {:>4} {:>9.1} {:>9.1} {:>9.4} {:>9.5} {:>9.4} {:>9.1} {:>9.1} {:>9} {:>9.1}",
+                    j + 1,
+                    race,
+                    rs.max_stress_pa * d.stress.0,
+                    rs.mean_stress_pa * d.stress.0,
+                    rs.contact_major_axis_m * d.len.0,
+                    rs.contact_minor_axis_m * d.len.0,
+                    rs.eccentricity_m * d.len.0,
+                    rs.subsurface_shear_pa * d.stress.0,
+                    rs.subsurface_depth_m * d.small_len.0,
+                    h,
+                    pe * d.force.0
+                );
+            }
+        }
+        let _ = writeln!(s, "(tau = max principal (Tresca) subsurface shear under the equivalent Hertz ellipse, z its depth)");
+    }
+    if let Some(l) = &a.life {
+        let r = &l.result;
+        let opt = |x: Option<f64>| x.map_or("unloaded".to_string(), |v| format!("{v:.4e}"));
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "FATIGUE LIFE (§6, {:?} lubrication factor)",
+            b.life.method
+        );
+        let _ = writeln!(s, "  capacity inner {:.1} {f}, outer {:.1} {f}; mean load inner {:.1} {f}, outer {:.1} {f}", r.capacity_inner_n * d.force.0, r.capacity_outer_n * d.force.0, r.mean_load_inner_n * d.force.0, r.mean_load_outer_n * d.force.0, f = d.force.1);
+        let _ = writeln!(
+            s,
+            "  L-10 inner {} Mrev, outer {} Mrev, bearing {} Mrev ({} h)",
+            opt(r.l10_inner_mrev),
+            opt(r.l10_outer_mrev),
+            opt(r.l10_bearing_mrev),
+            opt(r.l10_bearing_h)
+        );
+        let _ = writeln!(s, "  film parameter inner {:.3}, outer {:.3}; lubrication factor inner {:.3}, outer {:.3}; material factor {:.2}", r.lambda_inner, r.lambda_outer, r.lubrication_factor_inner, r.lubrication_factor_outer, r.material_factor);
+        let _ = writeln!(
+            s,
+            "  adjusted L-10 inner {} Mrev, outer {} Mrev, bearing {} Mrev",
+            opt(r.adjusted_l10_inner_mrev),
+            opt(r.adjusted_l10_outer_mrev),
+            opt(r.adjusted_l10_bearing_mrev)
+        );
+    }
+    if let Some(fr) = &a.friction {
+        let h = &fr.heat;
+        let _ = writeln!(s);
+        let _ = writeln!(s, "HEAT GENERATION (§9)");
+        let _ = writeln!(
+            s,
+            "  inner contacts {:.1} {p}, outer contacts {:.1} {p}, cage rails {:.1} {p}, viscous drag {:.1} {p}; total {:.1} {p}; friction torque {:.4} {m}",
+            h.inner_contacts_w * d.power.0,
+            h.outer_contacts_w * d.power.0,
+            h.cage_rails_w * d.power.0,
+            h.viscous_drag_w * d.power.0,
+            h.total_w * d.power.0,
+            h.friction_torque_nm * d.moment.0,
+            p = d.power.1,
+            m = d.moment.1
+        );
+    }
+    if let Some(th) = &a.thermal {
+        let temp = |c: f64| match units {
+            ReportUnits::Si => format!("{c:.1} °C"),
+            ReportUnits::Us => format!("{:.1} °F", c * 1.8 + 32.0),
+        };
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "THERMAL NETWORK, STEADY STATE (§10.2): heat in {:.1} W, out {:.1} W, balance {:.2e} W",
+            th.steady.heat_in_w, th.steady.heat_out_w, th.steady.balance_w
+        );
+        for n in &th.steady.nodes {
+            let _ = writeln!(
+                s,
+                "  {:<18} {:>10}{}",
+                n.name,
+                temp(n.temperature_c),
+                if n.fixed { "  (fixed)" } else { "" }
+            );
+        }
+        if let Some(tr) = &th.transient {
+            let _ = writeln!(
+                s,
+                "LOSS-OF-OIL TRANSIENT (§10.3): {:.1} W lost-lubrication heat, {:.0} s simulated",
+                th.transient_heat_w.unwrap_or(0.0),
+                tr.time_s.last().copied().unwrap_or(0.0)
+            );
+            for n in tr.nodes.iter().filter(|n| n.limit_c.is_some()) {
+                let t = n
+                    .time_to_limit_s
+                    .map_or("not reached".to_string(), |t| format!("{t:.1} s"));
+                let _ = writeln!(
+                    s,
+                    "  {:<18} limit {:>10}: {}",
+                    n.name,
+                    temp(n.limit_c.unwrap_or(0.0)),
+                    t
+                );
+            }
+        }
     }
     let _ = writeln!(s);
     let _ = writeln!(

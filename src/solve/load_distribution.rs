@@ -554,7 +554,13 @@ impl Problem {
             // dq/du = −H_qq⁻¹ H_qu: predicts each roller's equilibrium at a trial ring step.
             sens.push(-x);
         }
-        Ok(RingState { energy, g, k, sens, _worst: worst })
+        Ok(RingState {
+            energy,
+            g,
+            k,
+            sens,
+            _worst: worst,
+        })
     }
 }
 
@@ -677,7 +683,11 @@ pub fn solve(
             let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
             // Predict each roller at the trial from its sensitivity (first-order warm start).
             let du = Vector2::new(trial[0] - u[0], trial[1] - u[1]);
-            let mut qt: Vec<Vector3<f64>> = qs.iter().zip(&state.sens).map(|(q, x)| q + x * du).collect();
+            let mut qt: Vec<Vector3<f64>> = qs
+                .iter()
+                .zip(&state.sens)
+                .map(|(q, x)| q + x * du)
+                .collect();
             let st = p.solve_rollers(
                 trial,
                 &mut qt,
