@@ -135,10 +135,24 @@ mod tests {
         for (l, lam) in g.laminae.iter().enumerate() {
             let (ci, co) = g.initial_clearance(l);
             let d = lam.offset_m;
-            let ei = sag_clearance(b.geometry.inner_crown_radius_m, b.geometry.roller_crown_radius_m, d);
-            let eo = sag_clearance(b.geometry.outer_crown_radius_m, b.geometry.roller_crown_radius_m, d);
-            assert!((ci - ei).abs() < 0.01 * ei.abs() + 1e-9, "inner l={l}: {ci} vs {ei}");
-            assert!((co - eo).abs() < 0.01 * eo.abs() + 1e-9, "outer l={l}: {co} vs {eo}");
+            let ei = sag_clearance(
+                b.geometry.inner_crown_radius_m,
+                b.geometry.roller_crown_radius_m,
+                d,
+            );
+            let eo = sag_clearance(
+                b.geometry.outer_crown_radius_m,
+                b.geometry.roller_crown_radius_m,
+                d,
+            );
+            assert!(
+                (ci - ei).abs() < 0.01 * ei.abs() + 1e-9,
+                "inner l={l}: {ci} vs {ei}"
+            );
+            assert!(
+                (co - eo).abs() < 0.01 * eo.abs() + 1e-9,
+                "outer l={l}: {co} vs {eo}"
+            );
         }
         // Middle lamina of an odd count touches both raceways exactly (round-off).
         let (ci, co) = g.initial_clearance(10);

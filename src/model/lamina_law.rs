@@ -78,7 +78,11 @@ impl LaminaLaw {
         }
         let d19 = delta.powf(1.0 / 9.0);
         let q = self.stiffness * delta * d19;
-        (q, self.stiffness * (10.0 / 9.0) * d19, q * delta * (9.0 / 19.0))
+        (
+            q,
+            self.stiffness * (10.0 / 9.0) * d19,
+            q * delta * (9.0 / 19.0),
+        )
     }
 }
 

@@ -31,5 +31,8 @@ pub enum SolveError {
     Cancelled,
     /// A stage failed for a reason the model reports.
     #[error("{stage}: {message}")]
-    Stage { stage: &'static str, message: String },
+    Stage {
+        stage: &'static str,
+        message: String,
+    },
 }

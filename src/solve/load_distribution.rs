@@ -65,7 +65,10 @@ impl DynamicSpeeds {
 pub fn gyroscopic_moment(mass: &RollerMass, speeds: &DynamicSpeeds, beta: f64) -> f64 {
     let a = [beta.cos(), -beta.sin()];
     let wc = speeds.cage_rad_s;
-    let w = [wc + speeds.roller_spin_rad_s * a[0], speeds.roller_spin_rad_s * a[1]];
+    let w = [
+        wc + speeds.roller_spin_rad_s * a[0],
+        speeds.roller_spin_rad_s * a[1],
+    ];
     let wa = w[0] * a[0] + w[1] * a[1];
     let ip = mass.polar_inertia_kg_m2;
     let it = mass.transverse_inertia_kg_m2;
@@ -241,8 +244,18 @@ impl Problem {
         let laminae = b.solver.laminae.max(1);
         let geom = LaminaGeometry::new(g, laminae);
         let w = g.effective_length_m / laminae as f64;
-        let law_in = LaminaLaw::new(w, g.effective_length_m, &b.materials.roller, &b.materials.inner_ring);
-        let law_out = LaminaLaw::new(w, g.effective_length_m, &b.materials.roller, &b.materials.outer_ring);
+        let law_in = LaminaLaw::new(
+            w,
+            g.effective_length_m,
+            &b.materials.roller,
+            &b.materials.inner_ring,
+        );
+        let law_out = LaminaLaw::new(
+            w,
+            g.effective_length_m,
+            &b.materials.roller,
+            &b.materials.outer_ring,
+        );
         let mass = roller_mass(g, b.materials.roller.density_kg_m3);
         // CF at the pitch radius with the cage orbit speed (eq. 3.10, App. C).
         let cf = mass.mass_kg * speeds.cage_rad_s.powi(2) * 0.5 * g.pitch_diameter_m;
@@ -310,7 +323,12 @@ impl Problem {
                 let (p0, c, r, law) = if inner {
                     (lam.inner_point, ci, g.inner_radius_m, &self.law_in)
                 } else {
-                    (lam.outer_point, g.outer_centre, g.outer_radius_m, &self.law_out)
+                    (
+                        lam.outer_point,
+                        g.outer_centre,
+                        g.outer_radius_m,
+                        &self.law_out,
+                    )
                 };
                 let p = rot(q[2], p0);
                 let d = [q[0] + p[0] - c[0], q[1] + p[1] - c[1]];
@@ -334,7 +352,12 @@ impl Problem {
                     continue;
                 }
                 // Projector (I − n nᵀ)/ρ: curvature of |P − C|.
-                let pm = Matrix2::new(1.0 - nh[0] * nh[0], -nh[0] * nh[1], -nh[0] * nh[1], 1.0 - nh[1] * nh[1]) / rho;
+                let pm = Matrix2::new(
+                    1.0 - nh[0] * nh[0],
+                    -nh[0] * nh[1],
+                    -nh[0] * nh[1],
+                    1.0 - nh[1] * nh[1],
+                ) / rho;
                 let j = Matrix2x3::new(1.0, 0.0, t[0], 0.0, 1.0, t[1]);
                 let mut hq = dq * gd * gd.transpose() + qq * (j.transpose() * pm * j);
                 // ∂²P/∂α² = −p
@@ -355,7 +378,11 @@ impl Problem {
         let a = g.axis;
         let s = q[0] * a[0] + q[1] * a[1];
         ev.energy += 0.5 * self.k_cage * s * s + 0.5 * self.k_tilt * q[2] * q[2];
-        ev.g_q += Vector3::new(self.k_cage * s * a[0], self.k_cage * s * a[1], self.k_tilt * q[2]);
+        ev.g_q += Vector3::new(
+            self.k_cage * s * a[0],
+            self.k_cage * s * a[1],
+            self.k_tilt * q[2],
+        );
         if hessian {
             ev.h_qq[(0, 0)] += self.k_cage * a[0] * a[0];
             ev.h_qq[(0, 1)] += self.k_cage * a[0] * a[1];
@@ -403,14 +430,19 @@ impl Problem {
             let step = newton_step3(&ev.h_qq, &ev.g_q, self.l_ref);
             // Trust region in the scaled norm (translation m, pitch × l_ref).
             let len = (step[0].powi(2) + step[1].powi(2) + (step[2] * self.l_ref).powi(2)).sqrt();
-            let (step, capped) = if len > trust { (step * (trust / len), true) } else { (step, false) };
+            let (step, capped) = if len > trust {
+                (step * (trust / len), true)
+            } else {
+                (step, false)
+            };
             let slope = ev.g_q.dot(&step);
             let mut lambda = 1.0;
             let mut accepted = false;
             for _ in 0..40 {
                 let trial = *q + lambda * step;
                 let e2 = self.eval(cphi, u, &trial, false);
-                let ok_energy = e2.energy <= ev.energy + 1e-4 * lambda * slope + 1e-14 * ev.energy.abs();
+                let ok_energy =
+                    e2.energy <= ev.energy + 1e-4 * lambda * slope + 1e-14 * ev.energy.abs();
                 let ok_grad = self.roller_residual(&e2.g_q) < 0.5 * res;
                 if ok_energy || ok_grad {
                     *q = trial;
@@ -452,7 +484,15 @@ impl Problem {
         })
     }
 
-    fn trace_step(&self, ring_it: usize, it: usize, cphi: f64, u: [f64; 2], q: &Vector3<f64>, g: &Vector3<f64>) -> TraceStep {
+    fn trace_step(
+        &self,
+        ring_it: usize,
+        it: usize,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+        g: &Vector3<f64>,
+    ) -> TraceStep {
         let (ia, oa, il, ol) = self.lamina_state(cphi, u, q);
         TraceStep {
             ring_iteration: ring_it,
@@ -469,16 +509,28 @@ impl Problem {
 
     /// Approaches and loads of every lamina (inner and outer).
     #[allow(clippy::type_complexity)]
-    fn lamina_state(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>) -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>) {
+    fn lamina_state(
+        &self,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+    ) -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>) {
         let g = &self.geom;
         let ci = [g.inner_centre[0] + u[0], g.inner_centre[1] + u[1] * cphi];
         let n = g.laminae.len();
-        let (mut ia, mut oa, mut il, mut ol) = (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n));
+        let (mut ia, mut oa, mut il, mut ol) = (
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+        );
         for lam in &g.laminae {
             let pi = rot(q[2], lam.inner_point);
             let po = rot(q[2], lam.outer_point);
-            let di = crate::model::geometry::dist([q[0] + pi[0], q[1] + pi[1]], ci) - g.inner_radius_m;
-            let d_o = crate::model::geometry::dist([q[0] + po[0], q[1] + po[1]], g.outer_centre) - g.outer_radius_m;
+            let di =
+                crate::model::geometry::dist([q[0] + pi[0], q[1] + pi[1]], ci) - g.inner_radius_m;
+            let d_o = crate::model::geometry::dist([q[0] + po[0], q[1] + po[1]], g.outer_centre)
+                - g.outer_radius_m;
             ia.push(di);
             oa.push(d_o);
             il.push(self.law_in.eval(di).0);
@@ -539,7 +591,11 @@ fn newton_step3(h: &Matrix3<f64>, g: &Vector3<f64>, l_ref: f64) -> Vector3<f64> 
 }
 
 /// X = H⁻¹B for the condensation, with the same regularisation as the Newton step.
-fn solve3_mat(h: &Matrix3<f64>, b: &nalgebra::Matrix3x2<f64>, l_ref: f64) -> nalgebra::Matrix3x2<f64> {
+fn solve3_mat(
+    h: &Matrix3<f64>,
+    b: &nalgebra::Matrix3x2<f64>,
+    l_ref: f64,
+) -> nalgebra::Matrix3x2<f64> {
     let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
     let hs = s * h * s;
     let tr = hs.trace().abs().max(1e-300);
@@ -565,10 +621,18 @@ pub fn solve(
     let p = Problem::new(b, speeds);
     let n_unique = p.unique.len();
     let (mut u, mut qs) = match &options.warm_start {
-        Some(w) if w.rollers.len() == n_unique => (w.ring, w.rollers.iter().map(|r| Vector3::new(r[0], r[1], r[2])).collect::<Vec<_>>()),
+        Some(w) if w.rollers.len() == n_unique => (
+            w.ring,
+            w.rollers
+                .iter()
+                .map(|r| Vector3::new(r[0], r[1], r[2]))
+                .collect::<Vec<_>>(),
+        ),
         _ => ([0.0, 0.0], vec![Vector3::zeros(); n_unique]),
     };
-    let mut trace = options.trace_roller.map(|r| (unique_index(r, b.geometry.roller_count), Vec::new()));
+    let mut trace = options
+        .trace_roller
+        .map(|r| (unique_index(r, b.geometry.roller_count), Vec::new()));
     let mut stats = SolveStats::default();
     let d = b.geometry.roller_diameter_m;
     let mut trust = 1e-3 * d;
@@ -583,7 +647,10 @@ pub fn solve(
         let (energy, g, k, _) = state;
         ring_res = g[0].abs().max(g[1].abs());
         if !ring_res.is_finite() {
-            return Err(SolveError::NonFinite { stage: "ring equilibrium", what: "ring force residual".into() });
+            return Err(SolveError::NonFinite {
+                stage: "ring equilibrium",
+                what: "ring force residual".into(),
+            });
         }
         if ring_res <= p.tol {
             converged = true;
@@ -592,14 +659,24 @@ pub fn solve(
         stats.iterations = it + 1;
         let step = newton_step2(&k, &g);
         let len = (step[0].powi(2) + step[1].powi(2)).sqrt();
-        let (step, capped) = if len > trust { (step * (trust / len), true) } else { (step, false) };
+        let (step, capped) = if len > trust {
+            (step * (trust / len), true)
+        } else {
+            (step, false)
+        };
         let slope = g.dot(&step);
         let mut lambda = 1.0;
         let mut accepted = None;
         for _ in 0..40 {
             let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
             let mut qt = qs.clone();
-            let st = p.solve_rollers(trial, &mut qt, &mut stats.roller_iterations, &mut trace, it + 1)?;
+            let st = p.solve_rollers(
+                trial,
+                &mut qt,
+                &mut stats.roller_iterations,
+                &mut trace,
+                it + 1,
+            )?;
             let ok_energy = st.0 <= energy + 1e-4 * lambda * slope + 1e-14 * energy.abs();
             let ok_grad = st.1[0].abs().max(st.1[1].abs()) < 0.5 * ring_res;
             if ok_energy || ok_grad {
@@ -619,7 +696,11 @@ pub fn solve(
                     converged = true;
                     break;
                 }
-                return Err(SolveError::NotConverged { iterations: it + 1, residual_n: ring_res, tolerance_n: p.tol });
+                return Err(SolveError::NotConverged {
+                    iterations: it + 1,
+                    residual_n: ring_res,
+                    tolerance_n: p.tol,
+                });
             }
         }
         if lambda == 1.0 && capped {
@@ -632,7 +713,11 @@ pub fn solve(
         let g = state.1;
         ring_res = g[0].abs().max(g[1].abs());
         if ring_res > p.tol {
-            return Err(SolveError::NotConverged { iterations: max_it, residual_n: ring_res, tolerance_n: p.tol });
+            return Err(SolveError::NotConverged {
+                iterations: max_it,
+                residual_n: ring_res,
+                tolerance_n: p.tol,
+            });
         }
     }
     stats.lamina_evaluations = p.evals.get();
@@ -664,12 +749,23 @@ fn newton_step2(k: &Matrix2<f64>, g: &Vector2<f64>) -> Vector2<f64> {
         if let Some(ch) = m.cholesky() {
             return -ch.solve(g);
         }
-        mu = if mu == 0.0 { (1e-10 * tr).max(1e-30) } else { mu * 10.0 };
+        mu = if mu == 0.0 {
+            (1e-10 * tr).max(1e-30)
+        } else {
+            mu * 10.0
+        };
     }
     -g / tr.max(1e-30)
 }
 
-fn assemble(b: &Bearing, p: &Problem, u: [f64; 2], qs: &[Vector3<f64>], mut residuals: Residuals, speeds: &DynamicSpeeds) -> LoadDistribution {
+fn assemble(
+    b: &Bearing,
+    p: &Problem,
+    u: [f64; 2],
+    qs: &[Vector3<f64>],
+    mut residuals: Residuals,
+    speeds: &DynamicSpeeds,
+) -> LoadDistribution {
     let z = b.geometry.roller_count;
     let g = &p.geom;
     let beta_deg = b.geometry.contact_angle_rad.to_degrees();
@@ -679,7 +775,9 @@ fn assemble(b: &Bearing, p: &Problem, u: [f64; 2], qs: &[Vector3<f64>], mut resi
         let (cphi, _) = p.unique[uj];
         let q = qs[uj];
         let ev = p.eval(cphi, u, &q, false);
-        residuals.roller_force_n = residuals.roller_force_n.max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
+        residuals.roller_force_n = residuals
+            .roller_force_n
+            .max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
         residuals.roller_moment_nm = residuals.roller_moment_nm.max(ev.g_q[2].abs());
         let ci = [g.inner_centre[0] + u[0], g.inner_centre[1] + u[1] * cphi];
         let centre = [q[0], q[1] + g.pitch_radius_m];
@@ -697,7 +795,10 @@ fn assemble(b: &Bearing, p: &Problem, u: [f64; 2], qs: &[Vector3<f64>], mut resi
                 let d_o = ro - g.outer_radius_m;
                 // Inner: force on the roller along (C − P); angle of that direction from the radial plane.
                 let ni = [(ci[0] - pin[0]) / ri, (ci[1] - pin[1]) / ri];
-                let no = [(pout[0] - g.outer_centre[0]) / ro, (pout[1] - g.outer_centre[1]) / ro];
+                let no = [
+                    (pout[0] - g.outer_centre[0]) / ro,
+                    (pout[1] - g.outer_centre[1]) / ro,
+                ];
                 LaminaResult {
                     offset_m: lam.offset_m,
                     width_m: lam.width_m,
@@ -740,15 +841,30 @@ fn assemble(b: &Bearing, p: &Problem, u: [f64; 2], qs: &[Vector3<f64>], mut resi
         rollers,
         residuals,
         stats: SolveStats::default(),
-        warm: WarmStart { ring: u, rollers: qs.iter().map(|q| [q[0], q[1], q[2]]).collect() },
+        warm: WarmStart {
+            ring: u,
+            rollers: qs.iter().map(|q| [q[0], q[1], q[2]]).collect(),
+        },
         trace: Vec::new(),
     }
 }
 
 /// §4.5: normal load = Σ lamina loads projected on the most loaded lamina's normal.
 fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> RacewayContact {
-    let load = |l: &LaminaResult| if inner { l.inner_load_n } else { l.outer_load_n };
-    let angle = |l: &LaminaResult| if inner { l.inner_angle_deg } else { l.outer_angle_deg };
+    let load = |l: &LaminaResult| {
+        if inner {
+            l.inner_load_n
+        } else {
+            l.outer_load_n
+        }
+    };
+    let angle = |l: &LaminaResult| {
+        if inner {
+            l.inner_angle_deg
+        } else {
+            l.outer_angle_deg
+        }
+    };
     let loaded = laminae.iter().filter(|l| load(l) > 0.0).count();
     let max = laminae
         .iter()
@@ -757,11 +873,24 @@ fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> Race
         .max_by(|a, b| load(a.1).total_cmp(&load(b.1)))
         .map(|(i, _)| i);
     match max {
-        None => RacewayContact { normal_load_n: 0.0, contact_angle_deg: beta_deg, loaded_laminae: 0, max_lamina: None },
+        None => RacewayContact {
+            normal_load_n: 0.0,
+            contact_angle_deg: beta_deg,
+            loaded_laminae: 0,
+            max_lamina: None,
+        },
         Some(m) => {
             let a0 = angle(&laminae[m]).to_radians();
-            let total = laminae.iter().map(|l| load(l) * (angle(l).to_radians() - a0).cos()).sum();
-            RacewayContact { normal_load_n: total, contact_angle_deg: angle(&laminae[m]), loaded_laminae: loaded, max_lamina: Some(m) }
+            let total = laminae
+                .iter()
+                .map(|l| load(l) * (angle(l).to_radians() - a0).cos())
+                .sum();
+            RacewayContact {
+                normal_load_n: total,
+                contact_angle_deg: angle(&laminae[m]),
+                loaded_laminae: loaded,
+                max_lamina: Some(m),
+            }
         }
     }
 }
@@ -799,7 +928,16 @@ mod tests {
     #[test]
     fn stribeck_distribution() {
         // NASA/TM-2012-217115 Table I (exponent 10/9), roller at ψ = 0.
-        let table = [(5, 4.281), (6, 4.100), (7, 4.027), (8, 4.076), (9, 4.111), (10, 4.087), (20, 4.084), (30, 4.084)];
+        let table = [
+            (5, 4.281),
+            (6, 4.100),
+            (7, 4.027),
+            (8, 4.076),
+            (9, 4.111),
+            (10, 4.087),
+            (20, 4.084),
+            (30, 4.084),
+        ];
         for (z, st) in table {
             let b = stribeck_bearing(z);
             let r = run(&b);
@@ -815,14 +953,24 @@ mod tests {
             let got = z as f64 * qmax / b.operating.radial_load_n;
             // The exact geometry's approach of an off-centre lamina is e·h/R + O(e²d²/R³), so the
             // roller law is e^(10/9) to ~1e-6 relative (not exactly): 1e-5 tolerance.
-            assert!((got / exact - 1.0).abs() < 1e-5, "Z={z}: {got} vs exact {exact}");
+            assert!(
+                (got / exact - 1.0).abs() < 1e-5,
+                "Z={z}: {got} vs exact {exact}"
+            );
             // Published table: 4 digits (0.2 % band, references.md).
             assert!((got / st - 1.0).abs() < 2e-3, "Z={z}: {got} vs table {st}");
             // Each roller follows Q_max cos^(10/9) φ (1e-5 relative, same reason).
             for (j, qj) in q.iter().enumerate() {
                 let c = (2.0 * std::f64::consts::PI * j as f64 / z as f64).cos();
-                let expect = if c > 0.0 { qmax * c.powf(10.0 / 9.0) } else { 0.0 };
-                assert!((qj - expect).abs() < 1e-5 * qmax, "Z={z} j={j}: {qj} vs {expect}");
+                let expect = if c > 0.0 {
+                    qmax * c.powf(10.0 / 9.0)
+                } else {
+                    0.0
+                };
+                assert!(
+                    (qj - expect).abs() < 1e-5 * qmax,
+                    "Z={z} j={j}: {qj} vs {expect}"
+                );
             }
         }
     }
@@ -839,7 +987,11 @@ mod tests {
         for x in &r.rollers {
             // All rollers equal: symmetric problem, 1e-9 relative.
             assert!((x.inner.normal_load_n / q0 - 1.0).abs() < 1e-9);
-            fa += x.laminae.iter().map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().sin()).sum::<f64>();
+            fa += x
+                .laminae
+                .iter()
+                .map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().sin())
+                .sum::<f64>();
         }
         // Axial components sum to F_a (equilibrium to the solver tolerance, 1e-8).
         assert!((fa / 5_000.0 - 1.0).abs() < 1e-8, "{fa}");
@@ -861,15 +1013,32 @@ mod tests {
             }
             // Radial balance along r: Q_o cos β_o − Q_i cos β_i = CF (the pitch moment and
             // the cage spring change this only through the small cage reaction: 1e-3·CF).
-            let fo: f64 = x.laminae.iter().map(|l| l.outer_load_n * l.outer_angle_deg.to_radians().cos()).sum();
-            let fi: f64 = x.laminae.iter().map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().cos()).sum();
+            let fo: f64 = x
+                .laminae
+                .iter()
+                .map(|l| l.outer_load_n * l.outer_angle_deg.to_radians().cos())
+                .sum();
+            let fi: f64 = x
+                .laminae
+                .iter()
+                .map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().cos())
+                .sum();
             // The cage force acts along the roller axis a = (cos β, −sin β).
             let cage_r = -x.cage_force_n * b.geometry.contact_angle_rad.sin();
-            assert!((fo - fi - cf - cage_r).abs() < 1e-6 * cf.max(fo), "roller {}: {fo} {fi} {cf}", x.index);
+            assert!(
+                (fo - fi - cf - cage_r).abs() < 1e-6 * cf.max(fo),
+                "roller {}: {fo} {fi} {cf}",
+                x.index
+            );
             assert!(x.outer.normal_load_n > x.inner.normal_load_n);
             // The cage carries a negligible share of a two-sided roller (default ratio 1e-7:
             // below 1e-3 of the roller load).
-            assert!(x.cage_force_n.abs() < 1e-3 * x.inner.normal_load_n, "cage {} vs {}", x.cage_force_n, x.inner.normal_load_n);
+            assert!(
+                x.cage_force_n.abs() < 1e-3 * x.inner.normal_load_n,
+                "cage {} vs {}",
+                x.cage_force_n,
+                x.inner.normal_load_n
+            );
         }
     }
 
@@ -882,10 +1051,16 @@ mod tests {
         let gm = r.rollers[0].gyroscopic_moment_nm;
         assert!(gm.abs() > 1e-3, "gm {gm}");
         for x in &r.rollers {
-            let c = [x.axial_displacement_m, x.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m];
+            let c = [
+                x.axial_displacement_m,
+                x.radial_displacement_m + 0.5 * b.geometry.pitch_diameter_m,
+            ];
             let mut m = 0.0;
             for l in &x.laminae {
-                for (pt, q, ang) in [(l.inner_point_m, l.inner_load_n, l.inner_angle_deg), (l.outer_point_m, -l.outer_load_n, l.outer_angle_deg)] {
+                for (pt, q, ang) in [
+                    (l.inner_point_m, l.inner_load_n, l.inner_angle_deg),
+                    (l.outer_point_m, -l.outer_load_n, l.outer_angle_deg),
+                ] {
                     let a = ang.to_radians();
                     let f = [q * a.sin(), q * a.cos()];
                     let p = [pt[0] - c[0], pt[1] - c[1]];
@@ -893,7 +1068,12 @@ mod tests {
                 }
             }
             let err = m + x.cage_moment_nm - gm;
-            assert!(err.abs() < 1e-6 * (gm.abs() + 1.0), "roller {}: {m} + {} vs {gm}", x.index, x.cage_moment_nm);
+            assert!(
+                err.abs() < 1e-6 * (gm.abs() + 1.0),
+                "roller {}: {m} + {} vs {gm}",
+                x.index,
+                x.cage_moment_nm
+            );
         }
     }
 
@@ -932,14 +1112,26 @@ mod tests {
             qm[k] -= hs[k];
             let (ep, em) = (p.eval(cphi, u, &qp, true), p.eval(cphi, u, &qm, true));
             let fd_g = (ep.energy - em.energy) / (2.0 * hs[k]);
-            assert!((fd_g - ev.g_q[k]).abs() < 1e-5 * ev.g_q.amax().max(1.0), "g_q[{k}] {fd_g} vs {}", ev.g_q[k]);
+            assert!(
+                (fd_g - ev.g_q[k]).abs() < 1e-5 * ev.g_q.amax().max(1.0),
+                "g_q[{k}] {fd_g} vs {}",
+                ev.g_q[k]
+            );
             for i in 0..3 {
                 let fd = (ep.g_q[i] - em.g_q[i]) / (2.0 * hs[k]);
-                assert!((fd - ev.h_qq[(i, k)]).abs() < 1e-5 * ev.h_qq.amax(), "h_qq[{i},{k}] {fd} vs {}", ev.h_qq[(i, k)]);
+                assert!(
+                    (fd - ev.h_qq[(i, k)]).abs() < 1e-5 * ev.h_qq.amax(),
+                    "h_qq[{i},{k}] {fd} vs {}",
+                    ev.h_qq[(i, k)]
+                );
             }
             for i in 0..2 {
                 let fd = (ep.g_u[i] - em.g_u[i]) / (2.0 * hs[k]);
-                assert!((fd - ev.h_uq[(i, k)]).abs() < 1e-5 * ev.h_uq.amax(), "h_uq[{i},{k}] {fd} vs {}", ev.h_uq[(i, k)]);
+                assert!(
+                    (fd - ev.h_uq[(i, k)]).abs() < 1e-5 * ev.h_uq.amax(),
+                    "h_uq[{i},{k}] {fd} vs {}",
+                    ev.h_uq[(i, k)]
+                );
             }
         }
         for k in 0..2 {
@@ -952,7 +1144,11 @@ mod tests {
             assert!((fd_g - ev.g_u[k]).abs() < 1e-5 * ev.g_u.amax(), "g_u[{k}]");
             for i in 0..2 {
                 let fd = (ep.g_u[i] - em.g_u[i]) / 2e-9;
-                assert!((fd - ev.h_uu[(i, k)]).abs() < 1e-5 * ev.h_uu.amax(), "h_uu[{i},{k}] {fd} vs {}", ev.h_uu[(i, k)]);
+                assert!(
+                    (fd - ev.h_uu[(i, k)]).abs() < 1e-5 * ev.h_uu.amax(),
+                    "h_uu[{i},{k}] {fd} vs {}",
+                    ev.h_uu[(i, k)]
+                );
             }
         }
     }

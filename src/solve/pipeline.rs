@@ -31,7 +31,11 @@ pub struct Analysis {
 }
 
 /// Run the pipeline on `bearing`.
-pub fn run(bearing: &Bearing, request: &Request, cancel: Option<&AtomicBool>) -> Result<Analysis, SolveError> {
+pub fn run(
+    bearing: &Bearing,
+    request: &Request,
+    cancel: Option<&AtomicBool>,
+) -> Result<Analysis, SolveError> {
     let speeds = DynamicSpeeds::app_c_estimate(bearing);
     let opts = SolveOptions {
         warm_start: None,

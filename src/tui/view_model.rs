@@ -1,0 +1,393 @@
+//! The one place where the TUI reads an [`Analysis`].
+//!
+//! Every function here turns solver output into plain rows and series (strings with
+//! fixed precision, or `f64` pairs for charts) in the chosen display [`Units`]. Panes
+//! never touch `Analysis` directly, so when a new pipeline stage lands (stresses, film,
+//! spin, heat, thermal) only this module changes: fill the matching `—` cell or the
+//! [`ThermalView`].
+
+use crate::solve::load_distribution::TraceStep;
+use crate::solve::pipeline::Analysis;
+
+use super::deck_io::Units;
+
+/// Placeholder for a value that the current pipeline does not compute yet.
+pub const DASH: &str = "—";
+
+/// Newtons per pound-force.
+const LBF_N: f64 = 4.448_221_615_260_5;
+/// Metres per inch.
+const IN_M: f64 = 0.0254;
+/// Pascals per psi.
+const PSI_PA: f64 = 6_894.757_293_168_361;
+
+/// A force in display units (N or lbf).
+pub fn force(value_n: f64, u: Units) -> f64 {
+    match u {
+        Units::Si => value_n,
+        Units::Us => value_n / LBF_N,
+    }
+}
+
+/// Unit label of [`force`].
+pub fn force_unit(u: Units) -> &'static str {
+    match u {
+        Units::Si => "N",
+        Units::Us => "lbf",
+    }
+}
+
+/// A small length (deflection, approach, lamina offset) in display units: mm or mil
+/// (0.001 in), which keep lamina offsets and deflections readable.
+pub fn small_length(value_m: f64, u: Units) -> f64 {
+    match u {
+        Units::Si => value_m * 1e3,
+        Units::Us => value_m / IN_M * 1e3,
+    }
+}
+
+/// Unit label of [`small_length`].
+pub fn small_length_unit(u: Units) -> &'static str {
+    match u {
+        Units::Si => "mm",
+        Units::Us => "mil",
+    }
+}
+
+/// Unit label of contact stress (MPa or ksi).
+pub fn stress_unit(u: Units) -> &'static str {
+    match u {
+        Units::Si => "MPa",
+        Units::Us => "ksi",
+    }
+}
+
+/// A contact stress in display units (MPa or ksi).
+pub fn stress(value_pa: f64, u: Units) -> f64 {
+    match u {
+        Units::Si => value_pa / 1e6,
+        Units::Us => value_pa / PSI_PA / 1e3,
+    }
+}
+
+/// Unit label of film thickness (µm or µin).
+pub fn film_unit(u: Units) -> &'static str {
+    match u {
+        Units::Si => "µm",
+        Units::Us => "µin",
+    }
+}
+
+/// One column of the rollers table: header (with unit) and width in cells.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Column {
+    /// Header text, unit included.
+    pub header: String,
+    /// Column width, cells.
+    pub width: u16,
+}
+
+/// Columns of the rollers table, in display units.
+///
+/// Order: index, azimuth, inner and outer normal load, inner and outer contact angle,
+/// max stress, film, Λ, spin speed, heat. [`roller_rows`] fills the same order.
+pub fn roller_columns(u: Units) -> Vec<Column> {
+    let f = force_unit(u);
+    let col = |h: String, w: u16| Column {
+        header: h,
+        width: w,
+    };
+    vec![
+        col("#".into(), 3),
+        col("ψ deg".into(), 6),
+        col(format!("Qi {f}"), 8),
+        col(format!("Qo {f}"), 8),
+        col("αi °".into(), 5),
+        col("αo °".into(), 5),
+        col(format!("σ {}", stress_unit(u)), 6),
+        col(format!("h {}", film_unit(u)), 6),
+        col("Λ".into(), 4),
+        col("spin rpm".into(), 8),
+        col("heat W".into(), 6),
+    ]
+}
+
+/// One row per roller, same order as [`roller_columns`]; `—` for stages not yet solved.
+///
+/// Lead: when stresses, film, Λ, spin and heat land in `Analysis`, fill cells 6..=10 here.
+pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
+    a.load
+        .rollers
+        .iter()
+        .map(|r| {
+            vec![
+                format!("{}", r.index),
+                format!("{:.1}", r.azimuth_deg),
+                format!("{:.1}", force(r.inner.normal_load_n, u)),
+                format!("{:.1}", force(r.outer.normal_load_n, u)),
+                format!("{:.2}", r.inner.contact_angle_deg),
+                format!("{:.2}", r.outer.contact_angle_deg),
+                DASH.to_string(), // max stress: stresses stage
+                DASH.to_string(), // film thickness: film stage
+                DASH.to_string(), // Λ: film stage
+                DASH.to_string(), // spin speed: kinematics stage
+                DASH.to_string(), // heat: sliding/heat stage
+            ]
+        })
+        .collect()
+}
+
+/// Number of rollers in the solution.
+pub fn roller_count(a: &Analysis) -> usize {
+    a.load.rollers.len()
+}
+
+/// Series for the load chart: `(x, y)` pairs, display units.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LoadSeries {
+    /// Chart title.
+    pub title: String,
+    /// X axis label with unit.
+    pub x_label: String,
+    /// Y axis label with unit.
+    pub y_label: String,
+    /// Inner-raceway series.
+    pub inner: Vec<(f64, f64)>,
+    /// Outer-raceway series.
+    pub outer: Vec<(f64, f64)>,
+    /// X bounds.
+    pub x_bounds: [f64; 2],
+    /// Y bounds (0 to a rounded-up maximum).
+    pub y_bounds: [f64; 2],
+}
+
+/// Rounds a positive maximum up to 1, 2 or 5 × 10ⁿ so axis labels are short and stable.
+fn nice_ceiling(v: f64) -> f64 {
+    if !(v.is_finite() && v > 0.0) {
+        return 1.0;
+    }
+    let p = 10f64.powf(v.log10().floor());
+    for m in [1.0, 2.0, 5.0, 10.0] {
+        if v <= m * p * (1.0 + 1e-9) {
+            return m * p;
+        }
+    }
+    10.0 * p
+}
+
+/// Roller normal loads (inner and outer) against azimuth, 0–360°.
+pub fn load_vs_azimuth(a: &Analysis, u: Units) -> LoadSeries {
+    let inner: Vec<(f64, f64)> = a
+        .load
+        .rollers
+        .iter()
+        .map(|r| (r.azimuth_deg, force(r.inner.normal_load_n, u)))
+        .collect();
+    let outer: Vec<(f64, f64)> = a
+        .load
+        .rollers
+        .iter()
+        .map(|r| (r.azimuth_deg, force(r.outer.normal_load_n, u)))
+        .collect();
+    let ymax = inner.iter().chain(&outer).map(|p| p.1).fold(0.0, f64::max);
+    LoadSeries {
+        title: "roller load vs azimuth".into(),
+        x_label: "ψ deg".into(),
+        y_label: force_unit(u).into(),
+        inner,
+        outer,
+        x_bounds: [0.0, 360.0],
+        y_bounds: [0.0, nice_ceiling(ymax)],
+    }
+}
+
+/// Lamina loads along roller `roller` (0-based), against lamina offset from the roller
+/// centre; edge loading shows as a rise at the ends. `None` if there is no such roller.
+pub fn lamina_loads(a: &Analysis, roller: usize, u: Units) -> Option<LoadSeries> {
+    let r = a.load.rollers.get(roller)?;
+    let inner: Vec<(f64, f64)> = r
+        .laminae
+        .iter()
+        .map(|l| (small_length(l.offset_m, u), force(l.inner_load_n, u)))
+        .collect();
+    let outer: Vec<(f64, f64)> = r
+        .laminae
+        .iter()
+        .map(|l| (small_length(l.offset_m, u), force(l.outer_load_n, u)))
+        .collect();
+    let ymax = inner.iter().chain(&outer).map(|p| p.1).fold(0.0, f64::max);
+    let xmax = inner.iter().map(|p| p.0.abs()).fold(0.0, f64::max);
+    let xmax = if xmax > 0.0 { xmax } else { 1.0 };
+    Some(LoadSeries {
+        title: format!("lamina loads, roller {}", r.index),
+        x_label: format!("x {}", small_length_unit(u)),
+        y_label: force_unit(u).into(),
+        inner,
+        outer,
+        x_bounds: [-xmax, xmax],
+        y_bounds: [0.0, nice_ceiling(ymax)],
+    })
+}
+
+/// What the thermal pane shows. Built by [`thermal_view`]; `None` means the deck has
+/// no thermal model (or the thermal stage has not landed yet).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ThermalView {
+    /// Steady-state temperatures: node name and temperature in display units.
+    pub steady: Vec<(String, f64)>,
+    /// Temperature unit label (°C or °F).
+    pub temperature_unit: String,
+    /// Name of the node whose transient is plotted (the hottest by default).
+    pub series_name: String,
+    /// Transient temperature samples of that node, display units, evenly spaced in time.
+    pub series: Vec<f64>,
+    /// Time span of `series`, s.
+    pub series_span_s: f64,
+    /// Time for that node to reach its limit, s (`None`: not reached or no limit).
+    pub time_to_limit_s: Option<f64>,
+}
+
+/// The thermal pane's data.
+///
+/// Lead: when `Analysis` gains thermal steady/transient results, build the view here.
+pub fn thermal_view(_a: &Analysis, _u: Units) -> Option<ThermalView> {
+    None
+}
+
+/// Solver work counters for the status bar.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolveSummary {
+    /// Ring (outer Newton) iterations.
+    pub iterations: usize,
+    /// Roller Newton iterations.
+    pub roller_iterations: usize,
+    /// Lamina contact evaluations.
+    pub lamina_evaluations: usize,
+    /// Wall time, ms.
+    pub wall_ms: f64,
+    /// True if the load distribution converged.
+    pub converged: bool,
+}
+
+/// Counters of a solve.
+pub fn solve_summary(a: &Analysis) -> SolveSummary {
+    let s = &a.load.stats;
+    SolveSummary {
+        iterations: s.iterations,
+        roller_iterations: s.roller_iterations,
+        lamina_evaluations: s.lamina_evaluations,
+        wall_ms: s.wall_time_s * 1e3,
+        converged: a.load.converged,
+    }
+}
+
+/// Bearing-level results as label/value lines (ring deflections, residuals).
+pub fn bearing_lines(a: &Analysis, u: Units) -> Vec<(String, String)> {
+    let l = &a.load;
+    let su = small_length_unit(u);
+    let fu = force_unit(u);
+    vec![
+        (
+            format!("axial deflection {su}"),
+            format!("{:.4}", small_length(l.axial_deflection_m, u)),
+        ),
+        (
+            format!("radial deflection {su}"),
+            format!("{:.4}", small_length(l.radial_deflection_m, u)),
+        ),
+        (
+            format!("residual radial {fu}"),
+            format!("{:.1e}", force(l.residuals.bearing_radial_n, u)),
+        ),
+        (
+            format!("residual axial {fu}"),
+            format!("{:.1e}", force(l.residuals.bearing_axial_n, u)),
+        ),
+    ]
+}
+
+/// One step of the roller stepper, formatted.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StepView {
+    /// Label/value lines: iteration numbers, displacements, residuals.
+    pub lines: Vec<(String, String)>,
+    /// Inner lamina loads, display units (for the bar row).
+    pub inner_load: Vec<f64>,
+    /// Outer lamina loads, display units.
+    pub outer_load: Vec<f64>,
+    /// Inner lamina approaches, display small-length units.
+    pub inner_approach: Vec<f64>,
+    /// Outer lamina approaches, display small-length units.
+    pub outer_approach: Vec<f64>,
+    /// Force unit label.
+    pub force_unit: String,
+    /// Approach unit label.
+    pub approach_unit: String,
+}
+
+/// Number of recorded trace steps.
+pub fn trace_len(a: &Analysis) -> usize {
+    a.trace.len()
+}
+
+/// Formats trace step `step` (0-based); `None` when out of range or nothing recorded.
+pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
+    let t: &TraceStep = a.trace.get(step)?;
+    let su = small_length_unit(u);
+    let fu = force_unit(u);
+    let lines = vec![
+        (
+            "ring / roller iteration".to_string(),
+            format!("{} / {}", t.ring_iteration, t.roller_iteration),
+        ),
+        (
+            format!("ring axial, radial {su}"),
+            format!(
+                "{:+.5}, {:+.5}",
+                small_length(t.ring[0], u),
+                small_length(t.ring[1], u)
+            ),
+        ),
+        (
+            format!("roller axial, radial {su}"),
+            format!(
+                "{:+.5}, {:+.5}",
+                small_length(t.roller[0], u),
+                small_length(t.roller[1], u)
+            ),
+        ),
+        (
+            "roller pitch mrad".to_string(),
+            format!("{:+.5}", t.roller[2] * 1e3),
+        ),
+        (
+            format!("residual axial, radial {fu}"),
+            format!(
+                "{:+.2e}, {:+.2e}",
+                force(t.residual[0], u),
+                force(t.residual[1], u)
+            ),
+        ),
+        (
+            "residual moment N·m".to_string(),
+            format!("{:+.2e}", t.residual[2]),
+        ),
+    ];
+    Some(StepView {
+        lines,
+        inner_load: t.inner_load_n.iter().map(|&v| force(v, u)).collect(),
+        outer_load: t.outer_load_n.iter().map(|&v| force(v, u)).collect(),
+        inner_approach: t
+            .inner_approach_m
+            .iter()
+            .map(|&v| small_length(v, u))
+            .collect(),
+        outer_approach: t
+            .outer_approach_m
+            .iter()
+            .map(|&v| small_length(v, u))
+            .collect(),
+        force_unit: fu.into(),
+        approach_unit: su.into(),
+    })
+}
