@@ -5,6 +5,8 @@
 //! these depend on the terminal UI.
 #![forbid(unsafe_code)]
 
+pub mod deck;
 pub mod model;
 pub mod solve;
 pub mod tui;
+pub mod units;

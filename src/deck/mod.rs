@@ -1,0 +1,292 @@
+//! TOML input decks: parse (US customary or SI) into the SI [`Bearing`], validate with
+//! key/line/column diagnostics, edit values in place keeping comments, convert between
+//! unit systems, and save atomically.
+//!
+//! The key layout is a contract (see [`template`] for every key, its unit and range):
+//! top-level `units` ("us" | "si") and `name`, then the tables `[geometry]`,
+//! `[materials]`, `[operating]`, `[lubricant]`, `[surfaces]`, `[life]`, `[cage]`,
+//! optional `[solver]`, and an optional `[thermal]` table kept opaque for the thermal
+//! module. Every editable scalar is described once in [`fields()`]: parsing,
+//! validation, the template, [`Deck::get`]/[`Deck::set`] and the TUI read that table.
+#![warn(missing_docs)]
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+
+mod error;
+mod io;
+mod schema;
+mod template;
+mod validate;
+
+pub use crate::units::Units;
+pub use error::{DeckError, DeckErrors, Location};
+pub use schema::{
+    field, fields, material_preset, FieldKind, FieldSpec, Presence, FILM_MODELS, GROUPS,
+    GUIDING_RINGS, LIFE_METHODS, MATERIAL_BODIES, MATERIAL_PRESETS,
+};
+pub use template::template;
+
+use std::path::Path;
+
+use toml_edit::{DocumentMut, Item, Value};
+
+use crate::model::Bearing;
+
+/// The aerospace example deck (US units), shipped as `decks/aerospace.toml`.
+pub const DEFAULT_DECK: &str = include_str!("../../decks/aerospace.toml");
+
+/// A parsed, validated deck: its unit system, the resolved SI [`Bearing`], the opaque
+/// `[thermal]` table, and the source document (comments kept) for edits and saving.
+#[derive(Debug, Clone)]
+pub struct Deck {
+    /// Unit system the deck is written in.
+    pub units: Units,
+    /// The resolved bearing, SI units.
+    pub bearing: Bearing,
+    /// The `[thermal]` table as written, not interpreted here.
+    pub thermal: Option<toml::Table>,
+    source_name: String,
+    doc: DocumentMut,
+}
+
+impl Deck {
+    /// Parses and validates deck text; `source_name` (e.g. a file name) prefixes every
+    /// error location. All errors found are returned together.
+    pub fn parse(text: &str, source_name: &str) -> Result<Deck, DeckErrors> {
+        let parsed = validate::parse_text(text, source_name)?;
+        let doc = text
+            .parse::<DocumentMut>()
+            .map_err(|e| validate::syntax_error(&e, text, source_name))?;
+        Ok(Deck {
+            units: parsed.units,
+            bearing: parsed.bearing,
+            thermal: parsed.thermal,
+            source_name: source_name.to_string(),
+            doc,
+        })
+    }
+
+    /// Reads and parses a deck file; errors name the file.
+    pub fn load(path: impl AsRef<Path>) -> Result<Deck, DeckErrors> {
+        let path = path.as_ref();
+        let text = std::fs::read_to_string(path).map_err(|source| DeckError::Io {
+            path: path.to_path_buf(),
+            action: "cannot read deck",
+            source,
+        })?;
+        let name = path.display().to_string();
+        Deck::parse(&text, &name)
+    }
+
+    /// The source name given to [`Deck::parse`] (file path for [`Deck::load`]).
+    pub fn source_name(&self) -> &str {
+        &self.source_name
+    }
+
+    /// The deck as TOML text, comments and layout preserved.
+    pub fn to_toml_string(&self) -> String {
+        self.doc.to_string()
+    }
+
+    /// Sets one value, written in the deck's own units (`"3.4"` for
+    /// `geometry.pitch_diameter` in inches in a US deck; `"iso281"` for `life.method`).
+    /// Comments are kept; the whole deck is re-validated and `bearing` updated. On error
+    /// the deck is unchanged.
+    pub fn set(&mut self, key_path: &str, value: &str) -> Result<(), DeckErrors> {
+        let not_editable = |reason: &str| {
+            DeckErrors::from(DeckError::NotEditable {
+                key: key_path.to_string(),
+                reason: reason.to_string(),
+            })
+        };
+        if key_path == "units" {
+            return Err(not_editable(
+                "the unit system changes the meaning of every number; use Deck::converted",
+            ));
+        }
+        let parts: Vec<&str> = key_path.split('.').collect();
+        if parts.iter().any(|p| p.is_empty()) {
+            return Err(not_editable("empty key segment"));
+        }
+        let spec = field(key_path);
+        let is_body = parts.len() == 2
+            && parts.first() == Some(&"materials")
+            && parts.get(1).is_some_and(|b| MATERIAL_BODIES.contains(b));
+        let is_thermal = parts.len() > 1 && parts.first() == Some(&"thermal");
+        if !(key_path == "name" || spec.is_some() || is_body || is_thermal) {
+            return Err(not_editable(
+                "unknown key (see rollbench::deck::fields() for the editable keys)",
+            ));
+        }
+        let wants_string = key_path == "name"
+            || is_body
+            || spec.is_some_and(|s| matches!(s.kind, FieldKind::Choice(_)));
+        // The two ways of giving α are exclusive: setting one removes the other.
+        let exclusive_other = match spec.map(|s| s.presence) {
+            Some(Presence::OneOf(other)) => Some(other),
+            _ => None,
+        };
+        let trimmed = value.trim();
+        let mut new_value = match trimmed.parse::<Value>() {
+            Ok(v) if !wants_string || v.is_str() => v,
+            _ => Value::from(trimmed),
+        };
+
+        let mut doc = self.doc.clone();
+        // A material given as a preset name becomes an inline table before one of its
+        // properties is edited.
+        if parts.len() == 3 && parts.first() == Some(&"materials") {
+            let body = parts.get(1).copied().unwrap_or("");
+            let is_preset = doc
+                .get("materials")
+                .and_then(|m| m.get(body))
+                .is_some_and(Item::is_str);
+            if is_preset {
+                let mut t = toml_edit::InlineTable::new();
+                for f in fields()
+                    .iter()
+                    .filter(|f| f.group == format!("materials.{body}"))
+                {
+                    // 15 significant digits: hides the last-bit noise of the conversion
+                    let v = f.from_si(f.get_si(&self.bearing), self.units);
+                    let v: f64 = template::fmt_real(v).parse().unwrap_or(v);
+                    t.insert(f.name(), Value::from(v));
+                }
+                if let Some(slot) = doc.get_mut("materials").and_then(|m| m.get_mut(body)) {
+                    let decor = slot.as_value().map(|v| v.decor().clone());
+                    let mut v = Value::InlineTable(t);
+                    if let Some(d) = decor {
+                        *v.decor_mut() = d;
+                    }
+                    *slot = Item::Value(v);
+                }
+            }
+        }
+        let mut item: &mut Item = doc.as_item_mut();
+        let (last, path) = match parts.split_last() {
+            Some(x) => x,
+            None => return Err(not_editable("empty key")),
+        };
+        for p in path {
+            let Some(t) = item.as_table_like_mut() else {
+                return Err(not_editable("a parent of this key is not a table"));
+            };
+            item = t.entry(p).or_insert(Item::Table(toml_edit::Table::new()));
+        }
+        let Some(t) = item.as_table_like_mut() else {
+            return Err(not_editable("the parent of this key is not a table"));
+        };
+        match t.get_mut(last) {
+            Some(Item::Value(old)) => {
+                *new_value.decor_mut() = old.decor().clone();
+                *old = new_value;
+            }
+            Some(other) => *other = Item::Value(new_value),
+            None => {
+                t.insert(last, Item::Value(new_value));
+            }
+        }
+        if let Some(other) = exclusive_other {
+            let mut it = other.split('.');
+            if let (Some(g), Some(k)) = (it.next(), it.next()) {
+                if let Some(t) = doc.get_mut(g).and_then(Item::as_table_like_mut) {
+                    t.remove(k);
+                }
+            }
+        }
+        let text = doc.to_string();
+        let parsed = validate::parse_text(&text, &self.source_name)?;
+        self.units = parsed.units;
+        self.bearing = parsed.bearing;
+        self.thermal = parsed.thermal;
+        self.doc = doc;
+        Ok(())
+    }
+
+    /// Applies a command-line assignment `key.path=value` (as for `--set`), in deck
+    /// units; see [`Deck::set`].
+    pub fn set_assignment(&mut self, assignment: &str) -> Result<(), DeckErrors> {
+        match assignment.split_once('=') {
+            Some((k, v)) => self.set(k.trim(), v),
+            None => Err(DeckError::NotEditable {
+                key: assignment.to_string(),
+                reason: "expected key.path=value".into(),
+            }
+            .into()),
+        }
+    }
+
+    /// The value of `key_path` as written in the deck (deck units; strings unquoted).
+    /// For registry fields not written in the file (defaults, material presets) the
+    /// value in effect is returned, formatted in deck units. `None` for unknown keys.
+    pub fn get(&self, key_path: &str) -> Option<String> {
+        let mut item: &Item = self.doc.as_item();
+        let mut found = true;
+        for p in key_path.split('.') {
+            match item.get(p) {
+                Some(i) => item = i,
+                None => {
+                    found = false;
+                    break;
+                }
+            }
+        }
+        if found {
+            if let Some(v) = item.as_value() {
+                return Some(match v.as_str() {
+                    Some(s) => s.to_string(),
+                    None => {
+                        let mut v = v.clone();
+                        v.decor_mut().clear();
+                        v.to_string()
+                    }
+                });
+            }
+        }
+        let spec = field(key_path)?;
+        let si = spec.get_si(&self.bearing);
+        Some(match spec.kind {
+            FieldKind::Choice(list) => list.get(si as usize).copied().unwrap_or("").to_string(),
+            FieldKind::Integer => format!("{}", si.round() as i64),
+            FieldKind::Real => template::fmt_real(spec.from_si(si, self.units)),
+        })
+    }
+
+    /// The same bearing written in `units`: a clean regenerated deck (comments other
+    /// than unit hints are not carried over; `[thermal]` is).
+    pub fn converted(&self, units: Units) -> Deck {
+        let header = format!(
+            "{}\nConverted by rollbench from a deck in {} units.",
+            self.bearing.name,
+            self.units.as_str()
+        );
+        let text =
+            template::write_deck(&self.bearing, units, self.thermal.as_ref(), &header, false);
+        let doc = text.parse::<DocumentMut>().unwrap_or_default();
+        Deck {
+            units,
+            bearing: self.bearing.clone(),
+            thermal: self.thermal.clone(),
+            source_name: self.source_name.clone(),
+            doc,
+        }
+    }
+
+    /// Saves the deck atomically: temporary file in the same directory, fsync, the
+    /// previous file kept as `<file name>.bak`, then rename. A failure leaves the
+    /// existing file untouched.
+    pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
+        io::save_atomic(path.as_ref(), &self.to_toml_string()).map_err(DeckErrors::from)
+    }
+}
+
+/// Writes `bearing` as a clean deck in `units` (unit comments only). Parsing it gives
+/// back the same bearing to round-off (about 1e-15 relative).
+pub fn write_bearing(bearing: &Bearing, units: Units) -> String {
+    template::write_deck(bearing, units, None, &bearing.name, false)
+}
+
+#[cfg(test)]
+mod tests;

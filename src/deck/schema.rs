@@ -1,0 +1,593 @@
+//! The field registry: one table of every editable scalar deck key, with its unit in
+//! each system, its allowed range (SI) and how it maps onto [`Bearing`]. Parsing,
+//! validation, the template, `Deck::get`/`set` and the TUI all read this table.
+//!
+//! Ranges (SI; shown to users in deck units):
+//!
+//! | key | allowed |
+//! |---|---|
+//! | geometry.roller_count | 3 ≤ Z ≤ 500 |
+//! | geometry lengths (D, L, L_eff) | 0 < x ≤ 1 m |
+//! | geometry crown radii | 0 < x ≤ 100 m |
+//! | geometry.pitch_diameter | 0 < x ≤ 10 m |
+//! | geometry.contact_angle | 0 ≤ β < 45° |
+//! | geometry.diametral_clearance | −0.01 m ≤ c ≤ 0.01 m (and \|c\| < D) |
+//! | materials.*.youngs_modulus | 0 < E ≤ 1e13 Pa |
+//! | materials.*.poisson_ratio | 0 ≤ ν < 0.5 |
+//! | materials.*.density | 0 < ρ ≤ 1e5 kg/m³ |
+//! | materials.*.specific_heat | 0 < c ≤ 1e5 J/(kg·K) |
+//! | materials.*.conductivity | 0 < k ≤ 1e4 W/(m·K) |
+//! | operating speeds | −1e6 ≤ n ≤ 1e6 rpm |
+//! | operating loads | 0 ≤ F ≤ 1e9 N |
+//! | lubricant.viscosity | 0 < η ≤ 1e4 Pa·s |
+//! | lubricant.pressure_viscosity | 0 < α ≤ 1e-6 1/Pa |
+//! | lubricant.lubricant_parameter | 0 < LP ≤ 1e6 (s ×1e11) |
+//! | lubricant density, specific heat | 0 < x ≤ 1e5 |
+//! | lubricant.transition_shear_stress | 0 < τ ≤ 1e10 Pa |
+//! | traction coefficients | 0 ≤ μ ≤ 1 |
+//! | surfaces.*_rms | 0 < σ ≤ 100 µm |
+//! | life.capacity_reduction | 0.3 ≤ ξ ≤ 1 |
+//! | life.material_factor | 0 < x ≤ 100 |
+//! | life.edge_stress_factor | 1 ≤ x ≤ 10 |
+//! | life.iso_contamination_factor | 0 ≤ e_C ≤ 1 |
+//! | life.iso_fatigue_load_limit | 0 ≤ C_u ≤ 1e9 N (> 0 needed for iso281) |
+//! | life.iso_reference_viscosity | 0 ≤ ν₁ ≤ 1e5 cSt (0 = computed) |
+//! | cage.rail_width | 0 < x ≤ 1 m |
+//! | cage.mean_diameter | 0 < x ≤ 10 m |
+//! | cage.diametral_clearance | 0 ≤ x ≤ 0.1 m |
+//! | cage.drag_factor | 0 ≤ Ψ ≤ 100 |
+//! | cage.mass | 0 ≤ m ≤ 1e4 kg |
+//! | solver.laminae | 1 ≤ Γ ≤ 2000 |
+//! | solver.force_tolerance | 1e-16 ≤ x ≤ 0.1 |
+//! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
+//! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
+
+use crate::model::{Bearing, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings};
+use crate::units::{Quantity, Units, PSI_PA};
+
+/// What TOML value a field takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FieldKind {
+    /// A real number (TOML float or integer).
+    Real,
+    /// A whole number (TOML integer); the SI value is the number itself.
+    Integer,
+    /// A string from a fixed list; the "SI value" is the index in the list.
+    Choice(&'static [&'static str]),
+}
+
+/// Whether a key must be given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Presence {
+    /// Must be present.
+    Required,
+    /// May be omitted; then this SI value (or choice index) is used.
+    Default(f64),
+    /// Exactly one of this key and the named other key must be present.
+    OneOf(&'static str),
+}
+
+/// One editable scalar deck key.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldSpec {
+    /// Full key path, e.g. `geometry.roller_count`.
+    pub key: &'static str,
+    /// Table the key lives in, e.g. `geometry` (or `materials.roller`).
+    pub group: &'static str,
+    /// Short human label, with the symbol used in the seed report.
+    pub label: &'static str,
+    /// Physical quantity (decides units and conversion).
+    pub quantity: Quantity,
+    /// TOML value kind.
+    pub kind: FieldKind,
+    /// Lower bound, SI.
+    pub min: f64,
+    /// True if `min` itself is not allowed.
+    pub min_exclusive: bool,
+    /// Upper bound, SI.
+    pub max: f64,
+    /// True if `max` itself is not allowed.
+    pub max_exclusive: bool,
+    /// Required, defaulted, or one of two alternatives.
+    pub presence: Presence,
+    /// One-line explanation for templates and help.
+    pub help: &'static str,
+    /// Unit display string in SI decks.
+    pub unit_si: &'static str,
+    /// Unit display string in US decks.
+    pub unit_us: &'static str,
+    get: fn(&Bearing) -> f64,
+    set: fn(&mut Bearing, f64),
+}
+
+impl FieldSpec {
+    /// Unit display string in `units`.
+    pub fn unit(&self, units: Units) -> &'static str {
+        match units {
+            Units::Si => self.unit_si,
+            Units::Us => self.unit_us,
+        }
+    }
+
+    /// Converts a value in deck `units` to SI.
+    pub fn to_si(&self, value: f64, units: Units) -> f64 {
+        self.quantity.to_si(value, units)
+    }
+
+    /// Converts an SI value to deck `units`.
+    pub fn from_si(&self, value_si: f64, units: Units) -> f64 {
+        self.quantity.from_si(value_si, units)
+    }
+
+    /// Reads this field's SI value from a bearing (choice index for choices).
+    pub fn get_si(&self, bearing: &Bearing) -> f64 {
+        (self.get)(bearing)
+    }
+
+    /// Writes an SI value (already range-checked) into a bearing.
+    pub fn set_si(&self, bearing: &mut Bearing, value_si: f64) {
+        (self.set)(bearing, value_si)
+    }
+
+    /// True if the SI value lies in the allowed range (and is finite).
+    pub fn in_range(&self, value_si: f64) -> bool {
+        if !value_si.is_finite() {
+            return false;
+        }
+        let lo = if self.min_exclusive {
+            value_si > self.min
+        } else {
+            value_si >= self.min
+        };
+        let hi = if self.max_exclusive {
+            value_si < self.max
+        } else {
+            value_si <= self.max
+        };
+        lo && hi
+    }
+
+    /// The allowed range in deck units, e.g. `0 < value ≤ 39.3701 in`.
+    pub fn allowed(&self, units: Units) -> String {
+        let lo = format_short(self.from_si(self.min, units));
+        let hi = format_short(self.from_si(self.max, units));
+        let lo_op = if self.min_exclusive { "<" } else { "≤" };
+        let hi_op = if self.max_exclusive { "<" } else { "≤" };
+        let unit = self.unit(units);
+        let unit = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        format!("{lo} {lo_op} value {hi_op} {hi}{unit}")
+    }
+
+    /// The last path segment (the key inside its table).
+    pub fn name(&self) -> &'static str {
+        self.key.rsplit('.').next().unwrap_or(self.key)
+    }
+}
+
+/// Formats a number to 6 significant digits without trailing zeros (for messages).
+pub fn format_short(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if (1e-4..1e7).contains(&a) {
+        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.digits$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let s = format!("{v:.5e}");
+        match s.split_once('e') {
+            Some((m, e)) => {
+                let m = if m.contains('.') {
+                    m.trim_end_matches('0').trim_end_matches('.')
+                } else {
+                    m
+                };
+                format!("{m}e{e}")
+            }
+            None => s,
+        }
+    }
+}
+
+/// Film-model choices, in [`FilmModel`] order.
+pub const FILM_MODELS: &[&str] = &["grubin", "dowson-higginson", "pan-hamrock"];
+/// Life-method choices, in [`LifeMethod`] order.
+pub const LIFE_METHODS: &[&str] = &["asme", "iso281"];
+/// Cage-guidance choices, in [`GuidingRing`] order.
+pub const GUIDING_RINGS: &[&str] = &["inner", "outer"];
+/// Material presets accepted as `materials.<body> = "<name>"`.
+pub const MATERIAL_PRESETS: &[(&str, Material)] = &[
+    ("steel", Material::STEEL),
+    ("silicon-nitride", Material::SILICON_NITRIDE),
+];
+/// The bodies under `[materials]`.
+pub const MATERIAL_BODIES: &[&str] = &["roller", "inner_ring", "outer_ring"];
+/// Top-level tables, in file order.
+pub const GROUPS: &[&str] = &[
+    "geometry",
+    "materials",
+    "operating",
+    "lubricant",
+    "surfaces",
+    "life",
+    "cage",
+    "solver",
+    "thermal",
+];
+
+fn film_index(m: FilmModel) -> f64 {
+    match m {
+        FilmModel::Grubin => 0.0,
+        FilmModel::DowsonHigginson => 1.0,
+        FilmModel::PanHamrock => 2.0,
+    }
+}
+fn film_from(v: f64) -> FilmModel {
+    match v as usize {
+        1 => FilmModel::DowsonHigginson,
+        2 => FilmModel::PanHamrock,
+        _ => FilmModel::Grubin,
+    }
+}
+fn method_index(m: LifeMethod) -> f64 {
+    match m {
+        LifeMethod::Asme => 0.0,
+        LifeMethod::Iso281 => 1.0,
+    }
+}
+fn method_from(v: f64) -> LifeMethod {
+    if v as usize == 1 {
+        LifeMethod::Iso281
+    } else {
+        LifeMethod::Asme
+    }
+}
+fn guide_index(g: GuidingRing) -> f64 {
+    match g {
+        GuidingRing::Inner => 0.0,
+        GuidingRing::Outer => 1.0,
+    }
+}
+fn guide_from(v: f64) -> GuidingRing {
+    if v as usize == 0 {
+        GuidingRing::Inner
+    } else {
+        GuidingRing::Outer
+    }
+}
+fn to_count(v: f64) -> usize {
+    if v.is_finite() && v >= 0.0 {
+        v.round() as usize
+    } else {
+        0
+    }
+}
+
+const DEG: f64 = std::f64::consts::PI / 180.0;
+const RPM: f64 = std::f64::consts::PI / 30.0;
+
+macro_rules! field {
+    ($key:expr, $group:expr, $label:expr, $q:ident, $kind:expr,
+     $min:expr, $minx:expr, $max:expr, $maxx:expr, $pres:expr, $help:expr,
+     get: $get:expr, set: $set:expr) => {
+        FieldSpec {
+            key: $key,
+            group: $group,
+            label: $label,
+            quantity: Quantity::$q,
+            kind: $kind,
+            min: $min,
+            min_exclusive: $minx,
+            max: $max,
+            max_exclusive: $maxx,
+            presence: $pres,
+            help: $help,
+            unit_si: unit_of(Quantity::$q, Units::Si),
+            unit_us: unit_of(Quantity::$q, Units::Us),
+            get: $get,
+            set: $set,
+        }
+    };
+}
+
+/// `const` version of [`Quantity::unit`] for the static table.
+const fn unit_of(q: Quantity, units: Units) -> &'static str {
+    use Quantity::*;
+    match (q, units) {
+        (Dimensionless | Count, _) => "",
+        (Speed, _) => "rpm",
+        (Angle, _) => "deg",
+        (KinematicViscosityCst, _) => "cSt",
+        (Time, _) => "s",
+        (Length, Units::Si) => "m",
+        (Length, Units::Us) => "in",
+        (Roughness, Units::Si) => "µm",
+        (Roughness, Units::Us) => "µin",
+        (Force, Units::Si) => "N",
+        (Force, Units::Us) => "lbf",
+        (Pressure, Units::Si) => "Pa",
+        (Pressure, Units::Us) => "psi",
+        (Viscosity, Units::Si) => "Pa·s",
+        (Viscosity, Units::Us) => "reyn",
+        (PressureViscosity, Units::Si) => "1/Pa",
+        (PressureViscosity, Units::Us) => "in²/lbf",
+        (Density, Units::Si) => "kg/m³",
+        (Density, Units::Us) => "lbm/in³",
+        (SpecificHeat, Units::Si) => "J/(kg·K)",
+        (SpecificHeat, Units::Us) => "Btu/(lbm·°F)",
+        (Conductivity, Units::Si) => "W/(m·K)",
+        (Conductivity, Units::Us) => "Btu/(hr·ft·°F)",
+        (Mass, Units::Si) => "kg",
+        (Mass, Units::Us) => "lbm",
+        (Temperature, Units::Si) => "°C",
+        (Temperature, Units::Us) => "°F",
+    }
+}
+
+const R: FieldKind = FieldKind::Real;
+const I: FieldKind = FieldKind::Integer;
+const REQ: Presence = Presence::Required;
+
+macro_rules! material_fields {
+    ($body:ident, $bodystr:literal, $label:literal) => {
+        [
+            field!(concat!("materials.", $bodystr, ".youngs_modulus"), concat!("materials.", $bodystr),
+                concat!($label, " Young's modulus E"), Pressure, R, 0.0, true, 1e13, false, REQ,
+                "Young's modulus",
+                get: |b| b.materials.$body.youngs_modulus_pa,
+                set: |b, v| b.materials.$body.youngs_modulus_pa = v),
+            field!(concat!("materials.", $bodystr, ".poisson_ratio"), concat!("materials.", $bodystr),
+                concat!($label, " Poisson's ratio ν"), Dimensionless, R, 0.0, false, 0.5, true, REQ,
+                "Poisson's ratio",
+                get: |b| b.materials.$body.poisson_ratio,
+                set: |b, v| b.materials.$body.poisson_ratio = v),
+            field!(concat!("materials.", $bodystr, ".density"), concat!("materials.", $bodystr),
+                concat!($label, " density ρ"), Density, R, 0.0, true, 1e5, false, REQ,
+                "mass density",
+                get: |b| b.materials.$body.density_kg_m3,
+                set: |b, v| b.materials.$body.density_kg_m3 = v),
+            field!(concat!("materials.", $bodystr, ".specific_heat"), concat!("materials.", $bodystr),
+                concat!($label, " specific heat c"), SpecificHeat, R, 0.0, true, 1e5, false, REQ,
+                "specific heat capacity",
+                get: |b| b.materials.$body.specific_heat_j_kg_k,
+                set: |b, v| b.materials.$body.specific_heat_j_kg_k = v),
+            field!(concat!("materials.", $bodystr, ".conductivity"), concat!("materials.", $bodystr),
+                concat!($label, " conductivity k"), Conductivity, R, 0.0, true, 1e4, false, REQ,
+                "thermal conductivity",
+                get: |b| b.materials.$body.conductivity_w_m_k,
+                set: |b, v| b.materials.$body.conductivity_w_m_k = v),
+        ]
+    };
+}
+
+const MAT_ROLLER: [FieldSpec; 5] = material_fields!(roller, "roller", "Roller");
+const MAT_INNER: [FieldSpec; 5] = material_fields!(inner_ring, "inner_ring", "Inner ring");
+const MAT_OUTER: [FieldSpec; 5] = material_fields!(outer_ring, "outer_ring", "Outer ring");
+
+const fn defaults() -> SolverSettings {
+    SolverSettings {
+        laminae: 21,
+        force_tolerance: 1e-9,
+        max_iterations: 100,
+        max_roller_iterations: 60,
+        cage_stiffness_ratio: 1e-4,
+    }
+}
+const SOLVER_DEFAULTS: SolverSettings = defaults();
+
+static FIELDS: [FieldSpec; 59] = [
+    // --- geometry ---
+    field!("geometry.roller_count", "geometry", "Roller count Z", Count, I, 3.0, false, 500.0, false, REQ,
+        "number of rollers", get: |b| b.geometry.roller_count as f64, set: |b, v| b.geometry.roller_count = to_count(v)),
+    field!("geometry.roller_diameter", "geometry", "Roller diameter D", Length, R, 0.0, true, 1.0, false, REQ,
+        "roller maximum diameter", get: |b| b.geometry.roller_diameter_m, set: |b, v| b.geometry.roller_diameter_m = v),
+    field!("geometry.roller_length", "geometry", "Roller length L", Length, R, 0.0, true, 1.0, false, REQ,
+        "roller overall length", get: |b| b.geometry.roller_length_m, set: |b, v| b.geometry.roller_length_m = v),
+    field!("geometry.effective_length", "geometry", "Effective length L_eff", Length, R, 0.0, true, 1.0, false, REQ,
+        "roller contacting length (≤ roller_length, ≤ 2·roller_crown_radius)",
+        get: |b| b.geometry.effective_length_m, set: |b, v| b.geometry.effective_length_m = v),
+    field!("geometry.roller_crown_radius", "geometry", "Roller crown radius R_o", Length, R, 0.0, true, 100.0, false, REQ,
+        "roller crown radius (≥ roller_diameter/2)",
+        get: |b| b.geometry.roller_crown_radius_m, set: |b, v| b.geometry.roller_crown_radius_m = v),
+    field!("geometry.inner_crown_radius", "geometry", "Inner raceway crown radius", Length, R, 0.0, true, 100.0, false, REQ,
+        "inner raceway crown radius (≥ roller_crown_radius)",
+        get: |b| b.geometry.inner_crown_radius_m, set: |b, v| b.geometry.inner_crown_radius_m = v),
+    field!("geometry.outer_crown_radius", "geometry", "Outer raceway crown radius", Length, R, 0.0, true, 100.0, false, REQ,
+        "outer raceway crown radius (≥ roller_crown_radius; spherical race: P_t/(2 cos β) + D/2)",
+        get: |b| b.geometry.outer_crown_radius_m, set: |b, v| b.geometry.outer_crown_radius_m = v),
+    field!("geometry.pitch_diameter", "geometry", "Pitch diameter P_t", Length, R, 0.0, true, 10.0, false, REQ,
+        "pitch diameter (> roller_diameter; Z·D < π·P_t)",
+        get: |b| b.geometry.pitch_diameter_m, set: |b, v| b.geometry.pitch_diameter_m = v),
+    field!("geometry.contact_angle", "geometry", "Contact angle β", Angle, R, 0.0, false, 45.0 * DEG, true, REQ,
+        "initial contact angle from the radial plane",
+        get: |b| b.geometry.contact_angle_rad, set: |b, v| b.geometry.contact_angle_rad = v),
+    field!("geometry.diametral_clearance", "geometry", "Diametral clearance", Length, R, -0.01, false, 0.01, false, REQ,
+        "diametral clearance, negative = preload (|c| < roller_diameter)",
+        get: |b| b.geometry.diametral_clearance_m, set: |b, v| b.geometry.diametral_clearance_m = v),
+    // --- materials ---
+    MAT_ROLLER[0],
+    MAT_ROLLER[1],
+    MAT_ROLLER[2],
+    MAT_ROLLER[3],
+    MAT_ROLLER[4],
+    MAT_INNER[0],
+    MAT_INNER[1],
+    MAT_INNER[2],
+    MAT_INNER[3],
+    MAT_INNER[4],
+    MAT_OUTER[0],
+    MAT_OUTER[1],
+    MAT_OUTER[2],
+    MAT_OUTER[3],
+    MAT_OUTER[4],
+    // --- operating ---
+    field!("operating.inner_speed", "operating", "Inner ring speed Ω₁", Speed, R, -1e6 * RPM, false, 1e6 * RPM, false, REQ,
+        "inner ring speed", get: |b| b.operating.inner_speed_rad_s, set: |b, v| b.operating.inner_speed_rad_s = v),
+    field!("operating.outer_speed", "operating", "Outer ring speed Ω₂", Speed, R, -1e6 * RPM, false, 1e6 * RPM, false, REQ,
+        "outer ring speed", get: |b| b.operating.outer_speed_rad_s, set: |b, v| b.operating.outer_speed_rad_s = v),
+    field!("operating.radial_load", "operating", "Radial load F_r", Force, R, 0.0, false, 1e9, false, REQ,
+        "radial load", get: |b| b.operating.radial_load_n, set: |b, v| b.operating.radial_load_n = v),
+    field!("operating.axial_load", "operating", "Axial load F_a", Force, R, 0.0, false, 1e9, false, REQ,
+        "axial load (presses the rings together)", get: |b| b.operating.axial_load_n, set: |b, v| b.operating.axial_load_n = v),
+    // --- lubricant ---
+    field!("lubricant.viscosity", "lubricant", "Viscosity η₀", Viscosity, R, 0.0, true, 1e4, false, REQ,
+        "absolute viscosity at operating temperature", get: |b| b.lubricant.viscosity_pa_s, set: |b, v| b.lubricant.viscosity_pa_s = v),
+    field!("lubricant.pressure_viscosity", "lubricant", "Pressure-viscosity coefficient α", PressureViscosity, R, 0.0, true, 1e-6, false,
+        Presence::OneOf("lubricant.lubricant_parameter"),
+        "pressure-viscosity coefficient (give this OR lubricant_parameter)",
+        get: |b| b.lubricant.pressure_viscosity_pa_inv, set: |b, v| b.lubricant.pressure_viscosity_pa_inv = v),
+    field!("lubricant.lubricant_parameter", "lubricant", "Lubricant parameter LP = 1e11·η·α", Dimensionless, R, 0.0, true, 1e6, false,
+        Presence::OneOf("lubricant.pressure_viscosity"),
+        "LP = 1e11·η·α, η·α in s, same number in both unit systems (seed eq. 5.3; give this OR pressure_viscosity)",
+        get: |b| 1e11 * b.lubricant.viscosity_pa_s * b.lubricant.pressure_viscosity_pa_inv,
+        set: |b, v| b.lubricant.pressure_viscosity_pa_inv = if b.lubricant.viscosity_pa_s > 0.0 { v / (1e11 * b.lubricant.viscosity_pa_s) } else { 0.0 }),
+    field!("lubricant.density", "lubricant", "Lubricant density", Density, R, 0.0, true, 1e5, false, REQ,
+        "lubricant density", get: |b| b.lubricant.density_kg_m3, set: |b, v| b.lubricant.density_kg_m3 = v),
+    field!("lubricant.specific_heat", "lubricant", "Lubricant specific heat", SpecificHeat, R, 0.0, true, 1e5, false, REQ,
+        "lubricant specific heat", get: |b| b.lubricant.specific_heat_j_kg_k, set: |b, v| b.lubricant.specific_heat_j_kg_k = v),
+    field!("lubricant.transition_shear_stress", "lubricant", "Transition shear stress τ_tr", Pressure, R, 0.0, true, 1e10, false,
+        Presence::Default(1000.0 * PSI_PA),
+        "Allen–Townsend–Zaretsky transition shear stress",
+        get: |b| b.lubricant.transition_shear_stress_pa, set: |b, v| b.lubricant.transition_shear_stress_pa = v),
+    field!("lubricant.limiting_traction_coefficient", "lubricant", "Limiting traction coefficient μ_fl", Dimensionless, R, 0.0, false, 1.0, false,
+        Presence::Default(0.06), "limiting (pseudo) traction coefficient",
+        get: |b| b.lubricant.limiting_traction_coefficient, set: |b, v| b.lubricant.limiting_traction_coefficient = v),
+    field!("lubricant.lost_lubrication_traction_coefficient", "lubricant", "Lost-lubrication traction coefficient", Dimensionless, R, 0.0, false, 1.0, false,
+        Presence::Default(0.1), "constant traction coefficient when lubrication is lost",
+        get: |b| b.lubricant.lost_lubrication_traction_coefficient, set: |b, v| b.lubricant.lost_lubrication_traction_coefficient = v),
+    field!("lubricant.film_model", "lubricant", "Film model", Dimensionless, FieldKind::Choice(FILM_MODELS), 0.0, false, 2.0, false,
+        Presence::Default(0.0), "film-thickness formula",
+        get: |b| film_index(b.lubricant.film_model), set: |b, v| b.lubricant.film_model = film_from(v)),
+    // --- surfaces ---
+    field!("surfaces.roller_rms", "surfaces", "Roller RMS finish", Roughness, R, 0.0, true, 1e-4, false, REQ,
+        "roller RMS surface finish", get: |b| b.surfaces.roller_rms_m, set: |b, v| b.surfaces.roller_rms_m = v),
+    field!("surfaces.inner_rms", "surfaces", "Inner race RMS finish", Roughness, R, 0.0, true, 1e-4, false, REQ,
+        "inner raceway RMS surface finish", get: |b| b.surfaces.inner_rms_m, set: |b, v| b.surfaces.inner_rms_m = v),
+    field!("surfaces.outer_rms", "surfaces", "Outer race RMS finish", Roughness, R, 0.0, true, 1e-4, false, REQ,
+        "outer raceway RMS surface finish", get: |b| b.surfaces.outer_rms_m, set: |b, v| b.surfaces.outer_rms_m = v),
+    // --- life ---
+    field!("life.capacity_reduction", "life", "Capacity reduction ξ", Dimensionless, R, 0.3, false, 1.0, false, REQ,
+        "basic dynamic capacity reduction factor", get: |b| b.life.capacity_reduction, set: |b, v| b.life.capacity_reduction = v),
+    field!("life.material_factor", "life", "Material life factor", Dimensionless, R, 0.0, true, 100.0, false, REQ,
+        "material life-adjustment factor", get: |b| b.life.material_factor, set: |b, v| b.life.material_factor = v),
+    field!("life.edge_stress_factor", "life", "Edge stress factor", Dimensionless, R, 1.0, false, 10.0, false, REQ,
+        "stress-concentration factor on loaded edge laminae", get: |b| b.life.edge_stress_factor, set: |b, v| b.life.edge_stress_factor = v),
+    field!("life.method", "life", "Life method", Dimensionless, FieldKind::Choice(LIFE_METHODS), 0.0, false, 1.0, false,
+        Presence::Default(0.0), "lubrication life-adjustment method",
+        get: |b| method_index(b.life.method), set: |b, v| b.life.method = method_from(v)),
+    field!("life.iso_contamination_factor", "life", "ISO contamination factor e_C", Dimensionless, R, 0.0, false, 1.0, false,
+        Presence::Default(1.0), "ISO 281 contamination factor",
+        get: |b| b.life.iso_contamination_factor, set: |b, v| b.life.iso_contamination_factor = v),
+    field!("life.iso_fatigue_load_limit", "life", "ISO fatigue load limit C_u", Force, R, 0.0, false, 1e9, false,
+        Presence::Default(0.0), "ISO 281 fatigue load limit (> 0 required when method = \"iso281\")",
+        get: |b| b.life.iso_fatigue_load_limit_n, set: |b, v| b.life.iso_fatigue_load_limit_n = v),
+    field!("life.iso_reference_viscosity", "life", "ISO reference viscosity ν₁", KinematicViscosityCst, R, 0.0, false, 0.1, false,
+        Presence::Default(0.0), "ISO 281 reference kinematic viscosity, 0 = computed",
+        get: |b| b.life.iso_reference_viscosity_m2_s, set: |b, v| b.life.iso_reference_viscosity_m2_s = v),
+    // --- cage ---
+    field!("cage.rail_width", "cage", "Cage rail width W_cr", Length, R, 0.0, true, 1.0, false, REQ,
+        "total width of the cage rails", get: |b| b.cage.rail_width_m, set: |b, v| b.cage.rail_width_m = v),
+    field!("cage.mean_diameter", "cage", "Cage rail diameter D_cr", Length, R, 0.0, true, 10.0, false, REQ,
+        "mean rail/land interface diameter", get: |b| b.cage.mean_diameter_m, set: |b, v| b.cage.mean_diameter_m = v),
+    field!("cage.diametral_clearance", "cage", "Cage rail clearance", Length, R, 0.0, false, 0.1, false, REQ,
+        "diametral clearance between lands and rails", get: |b| b.cage.diametral_clearance_m, set: |b, v| b.cage.diametral_clearance_m = v),
+    field!("cage.guided_by", "cage", "Guiding ring", Dimensionless, FieldKind::Choice(GUIDING_RINGS), 0.0, false, 1.0, false, REQ,
+        "ring whose lands guide the cage", get: |b| guide_index(b.cage.guided_by), set: |b, v| b.cage.guided_by = guide_from(v)),
+    field!("cage.drag_factor", "cage", "Drag factor Ψ", Dimensionless, R, 0.0, false, 100.0, false, Presence::Default(5.0),
+        "viscous-drag factor of eq. 9.5", get: |b| b.cage.drag_factor, set: |b, v| b.cage.drag_factor = v),
+    field!("cage.mass", "cage", "Cage mass", Mass, R, 0.0, false, 1e4, false, Presence::Default(0.0),
+        "cage mass", get: |b| b.cage.mass_kg, set: |b, v| b.cage.mass_kg = v),
+    // --- solver ---
+    field!("solver.laminae", "solver", "Laminae Γ", Count, I, 1.0, false, 2000.0, false, Presence::Default(SOLVER_DEFAULTS.laminae as f64),
+        "laminae per roller", get: |b| b.solver.laminae as f64, set: |b, v| b.solver.laminae = to_count(v)),
+    field!("solver.force_tolerance", "solver", "Force tolerance", Dimensionless, R, 1e-16, false, 0.1, false,
+        Presence::Default(SOLVER_DEFAULTS.force_tolerance),
+        "equilibrium force tolerance relative to the reference load",
+        get: |b| b.solver.force_tolerance, set: |b, v| b.solver.force_tolerance = v),
+    field!("solver.max_iterations", "solver", "Bearing iteration limit", Count, I, 1.0, false, 1e5, false,
+        Presence::Default(SOLVER_DEFAULTS.max_iterations as f64), "Newton iteration limit of the bearing equilibrium",
+        get: |b| b.solver.max_iterations as f64, set: |b, v| b.solver.max_iterations = to_count(v)),
+    field!("solver.max_roller_iterations", "solver", "Roller iteration limit", Count, I, 1.0, false, 1e5, false,
+        Presence::Default(SOLVER_DEFAULTS.max_roller_iterations as f64), "Newton iteration limit of one roller's equilibrium",
+        get: |b| b.solver.max_roller_iterations as f64, set: |b, v| b.solver.max_roller_iterations = to_count(v)),
+    field!("solver.cage_stiffness_ratio", "solver", "Cage stiffness ratio", Dimensionless, R, 0.0, false, 1.0, false,
+        Presence::Default(SOLVER_DEFAULTS.cage_stiffness_ratio), "cage pocket stiffness as a fraction of contact stiffness",
+        get: |b| b.solver.cage_stiffness_ratio, set: |b, v| b.solver.cage_stiffness_ratio = v),
+    // padding rows are not allowed: the array length is exact
+];
+
+/// The registry of editable scalar deck fields, in file order.
+pub fn fields() -> &'static [FieldSpec] {
+    &FIELDS
+}
+
+/// Looks a field up by its full key path.
+pub fn field(key: &str) -> Option<&'static FieldSpec> {
+    FIELDS.iter().find(|f| f.key == key)
+}
+
+/// Preset material by name.
+pub fn material_preset(name: &str) -> Option<Material> {
+    MATERIAL_PRESETS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, m)| *m)
+}
+
+/// Name of the preset equal to `m`, if any.
+pub fn preset_name(m: &Material) -> Option<&'static str> {
+    MATERIAL_PRESETS
+        .iter()
+        .find(|(_, p)| p == m)
+        .map(|(n, _)| *n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_is_consistent() {
+        let mut keys: Vec<_> = fields().iter().map(|f| f.key).collect();
+        let n = keys.len();
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), n, "duplicate keys");
+        for f in fields() {
+            assert!(f.key.starts_with(f.group), "{}", f.key);
+            assert_eq!(f.unit_si, f.quantity.unit(Units::Si));
+            assert_eq!(f.unit_us, f.quantity.unit(Units::Us));
+            assert!(f.min < f.max, "{}", f.key);
+        }
+        // get/set are inverse on the example bearing (exact: plain stores and loads,
+        // except the derived lubricant parameter which divides by η: 1e-15 relative).
+        let b = Bearing::example_aerospace();
+        for f in fields() {
+            let mut c = b.clone();
+            f.set_si(&mut c, f.get_si(&b));
+            let (x, y) = (f.get_si(&c), f.get_si(&b));
+            assert!((x - y).abs() <= 1e-15 * y.abs(), "{}", f.key);
+        }
+    }
+
+    #[test]
+    fn allowed_text() {
+        let f = field("geometry.roller_count").map(|f| f.allowed(Units::Us));
+        assert_eq!(f.as_deref(), Some("3 ≤ value ≤ 500"));
+        let f = field("geometry.contact_angle").map(|f| f.allowed(Units::Si));
+        assert_eq!(f.as_deref(), Some("0 ≤ value < 45 deg"));
+        let f = field("geometry.roller_diameter").map(|f| f.allowed(Units::Us));
+        assert_eq!(f.as_deref(), Some("0 < value ≤ 39.3701 in"));
+        assert_eq!(format_short(1.0e-6), "1e-6");
+        assert_eq!(format_short(6894.757), "6894.76");
+    }
+}

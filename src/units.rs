@@ -1,0 +1,285 @@
+//! Unit systems of the deck and the one table of exact conversion factors.
+//!
+//! Physics works in SI throughout; deck values are converted here, at the boundary, and
+//! nowhere else. Every factor is exact by definition (international inch, pound, BTU_IT).
+#![warn(missing_docs)]
+
+use std::fmt;
+use std::str::FromStr;
+
+/// 1 in in m (exact, international inch).
+pub const INCH_M: f64 = 0.0254;
+/// 1 ft in m (exact).
+pub const FOOT_M: f64 = 0.3048;
+/// 1 lbf in N (exact: 0.45359237 kg × 9.80665 m/s²).
+pub const LBF_N: f64 = 4.448_221_615_260_5;
+/// 1 psi in Pa (exact: lbf/in²).
+pub const PSI_PA: f64 = 6_894.757_293_168_361;
+/// 1 lbm in kg (exact).
+pub const LBM_KG: f64 = 0.453_592_37;
+/// 1 Btu (International Table) in J (exact).
+pub const BTU_J: f64 = 1_055.055_852_62;
+/// 1 °F (or °R) temperature difference in K (exact: 5/9).
+pub const FAHRENHEIT_DEGREE_K: f64 = 5.0 / 9.0;
+/// 1 rpm in rad/s (exact: π/30).
+pub const RPM_RAD_S: f64 = std::f64::consts::PI / 30.0;
+/// 1 hour in s.
+pub const HOUR_S: f64 = 3_600.0;
+/// 0 °C in K.
+pub const CELSIUS_ZERO_K: f64 = 273.15;
+
+/// The unit system a deck is written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Units {
+    /// SI: m, N, Pa, rpm, Pa·s, kg, J/(kg·K), W/(m·K), °C, µm for surface finish.
+    #[default]
+    Si,
+    /// US customary: in, lbf, psi, rpm, reyn, lbm, Btu/(lbm·°F), Btu/(hr·ft·°F), °F, µin for finish.
+    Us,
+}
+
+impl Units {
+    /// The deck spelling: `"si"` or `"us"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Units::Si => "si",
+            Units::Us => "us",
+        }
+    }
+}
+
+impl fmt::Display for Units {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for Units {
+    type Err = String;
+    /// Parses `"si"` or `"us"` (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.to_ascii_lowercase().as_str() {
+            "si" => Ok(Units::Si),
+            "us" => Ok(Units::Us),
+            other => Err(format!(
+                "unknown unit system \"{other}\" (expected \"si\" or \"us\")"
+            )),
+        }
+    }
+}
+
+/// A physical quantity as it appears in a deck: knows its unit in each system and the
+/// factor to SI. Conversions are linear (v_SI = v·factor) except [`Quantity::Temperature`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// Pure number (ratios, coefficients), same in both systems.
+    Dimensionless,
+    /// A count (rollers, laminae, iterations), same in both systems.
+    Count,
+    /// Length: in | m.
+    Length,
+    /// Surface finish (RMS): µin | µm, SI value in m.
+    Roughness,
+    /// Force: lbf | N.
+    Force,
+    /// Pressure, stress or modulus: psi | Pa.
+    Pressure,
+    /// Rotational speed: rpm in both systems, SI value in rad/s.
+    Speed,
+    /// Angle: degrees in both systems, SI value in rad.
+    Angle,
+    /// Absolute (dynamic) viscosity: reyn (lbf·s/in²) | Pa·s.
+    Viscosity,
+    /// Pressure-viscosity coefficient: in²/lbf | 1/Pa.
+    PressureViscosity,
+    /// Mass density: lbm/in³ | kg/m³.
+    Density,
+    /// Specific heat capacity: Btu/(lbm·°F) | J/(kg·K).
+    SpecificHeat,
+    /// Thermal conductivity: Btu/(hr·ft·°F) | W/(m·K).
+    Conductivity,
+    /// Mass: lbm | kg.
+    Mass,
+    /// Kinematic viscosity given in cSt in both systems, SI value in m²/s.
+    KinematicViscosityCst,
+    /// Time in s in both systems (e.g. the lubricant parameter 1e11·η·α is in these units ×1e11).
+    Time,
+    /// Temperature: °F | °C, SI value in K (affine).
+    Temperature,
+}
+
+impl Quantity {
+    /// Multiplicative factor from one deck unit to SI (for temperature, the size of one degree in K).
+    pub fn factor(self, units: Units) -> f64 {
+        use Quantity::*;
+        match (self, units) {
+            (Dimensionless | Count | Time, _) => 1.0,
+            (Speed, _) => RPM_RAD_S,
+            (Angle, _) => std::f64::consts::PI / 180.0,
+            (KinematicViscosityCst, _) => 1e-6,
+            (Temperature, Units::Si) => 1.0,
+            (Temperature, Units::Us) => FAHRENHEIT_DEGREE_K,
+            (_, Units::Si) => match self {
+                Roughness => 1e-6,
+                _ => 1.0,
+            },
+            (Length, Units::Us) => INCH_M,
+            (Roughness, Units::Us) => 1e-6 * INCH_M,
+            (Force, Units::Us) => LBF_N,
+            (Pressure, Units::Us) => PSI_PA,
+            (Viscosity, Units::Us) => PSI_PA,
+            (PressureViscosity, Units::Us) => 1.0 / PSI_PA,
+            (Density, Units::Us) => LBM_KG / (INCH_M * INCH_M * INCH_M),
+            (SpecificHeat, Units::Us) => BTU_J / (LBM_KG * FAHRENHEIT_DEGREE_K),
+            (Conductivity, Units::Us) => BTU_J / (HOUR_S * FOOT_M * FAHRENHEIT_DEGREE_K),
+            (Mass, Units::Us) => LBM_KG,
+        }
+    }
+
+    /// Converts a value written in `units` to SI.
+    pub fn to_si(self, value: f64, units: Units) -> f64 {
+        match (self, units) {
+            (Quantity::Temperature, Units::Si) => value + CELSIUS_ZERO_K,
+            (Quantity::Temperature, Units::Us) => {
+                (value - 32.0) * FAHRENHEIT_DEGREE_K + CELSIUS_ZERO_K
+            }
+            _ => value * self.factor(units),
+        }
+    }
+
+    /// Converts an SI value to the unit of `units` (inverse of [`Quantity::to_si`]).
+    pub fn from_si(self, value_si: f64, units: Units) -> f64 {
+        match (self, units) {
+            (Quantity::Temperature, Units::Si) => value_si - CELSIUS_ZERO_K,
+            (Quantity::Temperature, Units::Us) => {
+                (value_si - CELSIUS_ZERO_K) / FAHRENHEIT_DEGREE_K + 32.0
+            }
+            _ => value_si / self.factor(units),
+        }
+    }
+
+    /// Display string of the unit in `units` ("" for pure numbers).
+    pub fn unit(self, units: Units) -> &'static str {
+        use Quantity::*;
+        match (self, units) {
+            (Dimensionless | Count, _) => "",
+            (Speed, _) => "rpm",
+            (Angle, _) => "deg",
+            (KinematicViscosityCst, _) => "cSt",
+            (Time, _) => "s",
+            (Length, Units::Si) => "m",
+            (Length, Units::Us) => "in",
+            (Roughness, Units::Si) => "µm",
+            (Roughness, Units::Us) => "µin",
+            (Force, Units::Si) => "N",
+            (Force, Units::Us) => "lbf",
+            (Pressure, Units::Si) => "Pa",
+            (Pressure, Units::Us) => "psi",
+            (Viscosity, Units::Si) => "Pa·s",
+            (Viscosity, Units::Us) => "reyn",
+            (PressureViscosity, Units::Si) => "1/Pa",
+            (PressureViscosity, Units::Us) => "in²/lbf",
+            (Density, Units::Si) => "kg/m³",
+            (Density, Units::Us) => "lbm/in³",
+            (SpecificHeat, Units::Si) => "J/(kg·K)",
+            (SpecificHeat, Units::Us) => "Btu/(lbm·°F)",
+            (Conductivity, Units::Si) => "W/(m·K)",
+            (Conductivity, Units::Us) => "Btu/(hr·ft·°F)",
+            (Mass, Units::Si) => "kg",
+            (Mass, Units::Us) => "lbm",
+            (Temperature, Units::Si) => "°C",
+            (Temperature, Units::Us) => "°F",
+        }
+    }
+}
+
+/// Converts °F to °C.
+pub fn fahrenheit_to_celsius(f: f64) -> f64 {
+    (f - 32.0) * FAHRENHEIT_DEGREE_K
+}
+
+/// Converts °C to °F.
+pub fn celsius_to_fahrenheit(c: f64) -> f64 {
+    c / FAHRENHEIT_DEGREE_K + 32.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ALL: [Quantity; 17] = [
+        Quantity::Dimensionless,
+        Quantity::Count,
+        Quantity::Length,
+        Quantity::Roughness,
+        Quantity::Force,
+        Quantity::Pressure,
+        Quantity::Speed,
+        Quantity::Angle,
+        Quantity::Viscosity,
+        Quantity::PressureViscosity,
+        Quantity::Density,
+        Quantity::SpecificHeat,
+        Quantity::Conductivity,
+        Quantity::Mass,
+        Quantity::KinematicViscosityCst,
+        Quantity::Time,
+        Quantity::Temperature,
+    ];
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
+    }
+
+    /// SI → US → SI and US → SI → US are identities to 1e-12 relative (a few ulps of
+    /// round-off from one multiply and one divide). For the affine temperature the
+    /// error is measured against the offset size (~500 degrees), since adding and
+    /// removing 273.15 costs ~1e-13 K absolute however small the value.
+    #[test]
+    fn round_trip_both_ways() {
+        for q in ALL {
+            let scale = if q == Quantity::Temperature {
+                500.0
+            } else {
+                0.0
+            };
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(scale);
+            for v in [
+                1e-9, 0.0127, 1.0, 3.3, 17_000.0, 6.5e-7, 2.9e11, -40.0, 300.0,
+            ] {
+                let us = q.from_si(v, Units::Us);
+                assert!(close(q.to_si(us, Units::Us), v), "{q:?} {v}");
+                let si = q.to_si(v, Units::Us);
+                assert!(close(q.from_si(si, Units::Us), v), "{q:?} {v}");
+                assert!(close(q.from_si(q.to_si(v, Units::Si), Units::Si), v));
+            }
+        }
+    }
+
+    /// Hand-checked numbers (textbook conversion values), 1e-9 relative because the
+    /// reference values are quoted to ~10 significant digits.
+    #[test]
+    fn hand_checked_values() {
+        let u = Units::Us;
+        assert!(rel(Quantity::Length.to_si(3.3, u), 0.08382) < 1e-12);
+        assert!(rel(Quantity::Force.to_si(1000.0, u), 4_448.221_615_260_5) < 1e-12);
+        assert!(rel(Quantity::Pressure.to_si(29.0e6, u), 1.999_479_615e11) < 1e-9);
+        // 1 Btu/(lbm·°F) = 4186.8 J/(kg·K) exactly (IT calorie definition).
+        assert!(rel(Quantity::SpecificHeat.to_si(1.0, u), 4_186.8) < 1e-12);
+        // 1 Btu/(hr·ft·°F) = 1.730 734 666 W/(m·K).
+        assert!(rel(Quantity::Conductivity.to_si(1.0, u), 1.730_734_666) < 1e-9);
+        // 1 lbm/in³ = 27 679.904 71 kg/m³.
+        assert!(rel(Quantity::Density.to_si(1.0, u), 27_679.904_71) < 1e-9);
+        // 1 reyn = 6894.757 Pa·s; 1 in²/lbf = 1.450 377 377e-4 1/Pa.
+        assert!(rel(Quantity::Viscosity.to_si(1.0, u), 6_894.757_293_168_361) < 1e-12);
+        assert!(rel(Quantity::PressureViscosity.to_si(1.0, u), 1.450_377_377e-4) < 1e-9);
+        assert!(rel(Quantity::Roughness.to_si(4.0, u), 1.016e-7) < 1e-12);
+        assert!(rel(Quantity::Speed.to_si(30.0, u), std::f64::consts::PI) < 1e-15);
+        assert!(rel(Quantity::Temperature.to_si(212.0, u), 373.15) < 1e-12);
+        assert!(rel(Quantity::Temperature.to_si(-40.0, Units::Si), 233.15) < 1e-12);
+        assert!(rel(fahrenheit_to_celsius(-40.0), -40.0) < 1e-12);
+        assert!(rel(celsius_to_fahrenheit(100.0), 212.0) < 1e-12);
+        assert_eq!("US".parse::<Units>(), Ok(Units::Us));
+        assert!("cgs".parse::<Units>().is_err());
+    }
+}
