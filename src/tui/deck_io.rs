@@ -1,30 +1,22 @@
-//! Thin adapter between the TUI and the deck module: the only TUI file that knows how a
+//! Thin adapter between the TUI and [`crate::deck`]: the only TUI file that knows how a
 //! deck is parsed, edited, converted and saved.
 //!
-//! STUB until branch `deck` is merged: the deck is a TOML serialisation of [`Bearing`]
-//! and a small field table stands in for `deck::fields()`.
+//! Values are shown and typed in *display* units, which the `u` key flips between SI
+//! and US without touching the deck: an edit typed in the other system is converted to
+//! the deck's own units before [`Deck::set`] validates and applies it.
 
 use std::path::Path;
 
+use crate::deck::{self, Deck, DeckError, DeckErrors, FieldKind, FieldSpec};
 use crate::model::Bearing;
 
-/// Unit system for display and for deck values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum Units {
-    /// SI.
-    #[default]
-    Si,
-    /// US customary.
-    Us,
-}
+pub use crate::units::Units;
 
-impl Units {
-    /// `"SI"` or `"US"`.
-    pub fn label(self) -> &'static str {
-        match self {
-            Units::Si => "SI",
-            Units::Us => "US",
-        }
+/// `"SI"` or `"US"`.
+pub fn units_label(u: Units) -> &'static str {
+    match u {
+        Units::Si => "SI",
+        Units::Us => "US",
     }
 }
 
@@ -34,189 +26,6 @@ pub fn other_units(u: Units) -> Units {
         Units::Si => Units::Us,
         Units::Us => Units::Si,
     }
-}
-
-#[derive(Clone, Copy)]
-enum Q {
-    Length,
-    Angle,
-    Speed,
-    Force,
-    Count,
-    Plain,
-}
-
-impl Q {
-    fn factor(self, u: Units) -> f64 {
-        match (self, u) {
-            (Q::Length, Units::Si) => 1.0,
-            (Q::Length, Units::Us) => 0.0254,
-            (Q::Angle, _) => std::f64::consts::PI / 180.0,
-            (Q::Speed, _) => std::f64::consts::PI / 30.0,
-            (Q::Force, Units::Si) => 1.0,
-            (Q::Force, Units::Us) => 4.448_221_615_260_5,
-            (Q::Count | Q::Plain, _) => 1.0,
-        }
-    }
-    fn unit(self, u: Units) -> &'static str {
-        match (self, u) {
-            (Q::Length, Units::Si) => "m",
-            (Q::Length, Units::Us) => "in",
-            (Q::Angle, _) => "deg",
-            (Q::Speed, _) => "rpm",
-            (Q::Force, Units::Si) => "N",
-            (Q::Force, Units::Us) => "lbf",
-            (Q::Count | Q::Plain, _) => "",
-        }
-    }
-}
-
-struct Spec {
-    key: &'static str,
-    group: &'static str,
-    label: &'static str,
-    q: Q,
-    min: f64,
-    max: f64,
-    get: fn(&Bearing) -> f64,
-    set: fn(&mut Bearing, f64),
-}
-
-const SPECS: &[Spec] = &[
-    Spec {
-        key: "geometry.roller_count",
-        group: "geometry",
-        label: "Z rollers",
-        q: Q::Count,
-        min: 3.0,
-        max: 200.0,
-        get: |b| b.geometry.roller_count as f64,
-        set: |b, v| b.geometry.roller_count = v.round() as usize,
-    },
-    Spec {
-        key: "geometry.roller_diameter",
-        group: "geometry",
-        label: "D roller dia.",
-        q: Q::Length,
-        min: 1e-4,
-        max: 1.0,
-        get: |b| b.geometry.roller_diameter_m,
-        set: |b, v| b.geometry.roller_diameter_m = v,
-    },
-    Spec {
-        key: "geometry.effective_length",
-        group: "geometry",
-        label: "L_eff eff. length",
-        q: Q::Length,
-        min: 1e-4,
-        max: 1.0,
-        get: |b| b.geometry.effective_length_m,
-        set: |b, v| b.geometry.effective_length_m = v,
-    },
-    Spec {
-        key: "geometry.pitch_diameter",
-        group: "geometry",
-        label: "P_t pitch dia.",
-        q: Q::Length,
-        min: 1e-3,
-        max: 5.0,
-        get: |b| b.geometry.pitch_diameter_m,
-        set: |b, v| b.geometry.pitch_diameter_m = v,
-    },
-    Spec {
-        key: "geometry.contact_angle",
-        group: "geometry",
-        label: "β contact angle",
-        q: Q::Angle,
-        min: 0.0,
-        max: 45.0_f64 * 0.017_453_292_519_943_295,
-        get: |b| b.geometry.contact_angle_rad,
-        set: |b, v| b.geometry.contact_angle_rad = v,
-    },
-    Spec {
-        key: "geometry.diametral_clearance",
-        group: "geometry",
-        label: "diametral clearance",
-        q: Q::Length,
-        min: -1e-3,
-        max: 1e-3,
-        get: |b| b.geometry.diametral_clearance_m,
-        set: |b, v| b.geometry.diametral_clearance_m = v,
-    },
-    Spec {
-        key: "operating.inner_speed",
-        group: "operating",
-        label: "Ω₁ inner speed",
-        q: Q::Speed,
-        min: -1e5,
-        max: 1e5,
-        get: |b| b.operating.inner_speed_rad_s,
-        set: |b, v| b.operating.inner_speed_rad_s = v,
-    },
-    Spec {
-        key: "operating.outer_speed",
-        group: "operating",
-        label: "Ω₂ outer speed",
-        q: Q::Speed,
-        min: -1e5,
-        max: 1e5,
-        get: |b| b.operating.outer_speed_rad_s,
-        set: |b, v| b.operating.outer_speed_rad_s = v,
-    },
-    Spec {
-        key: "operating.radial_load",
-        group: "operating",
-        label: "F_r radial load",
-        q: Q::Force,
-        min: 0.0,
-        max: 1e7,
-        get: |b| b.operating.radial_load_n,
-        set: |b, v| b.operating.radial_load_n = v,
-    },
-    Spec {
-        key: "operating.axial_load",
-        group: "operating",
-        label: "F_a axial load",
-        q: Q::Force,
-        min: -1e7,
-        max: 1e7,
-        get: |b| b.operating.axial_load_n,
-        set: |b, v| b.operating.axial_load_n = v,
-    },
-    Spec {
-        key: "solver.laminae",
-        group: "solver",
-        label: "Γ laminae",
-        q: Q::Count,
-        min: 1.0,
-        max: 2000.0,
-        get: |b| b.solver.laminae as f64,
-        set: |b, v| b.solver.laminae = v.round() as usize,
-    },
-    Spec {
-        key: "solver.max_iterations",
-        group: "solver",
-        label: "max iterations",
-        q: Q::Count,
-        min: 1.0,
-        max: 1e5,
-        get: |b| b.solver.max_iterations as f64,
-        set: |b, v| b.solver.max_iterations = v.round() as usize,
-    },
-    Spec {
-        key: "solver.force_tolerance",
-        group: "solver",
-        label: "force tolerance",
-        q: Q::Plain,
-        min: 1e-16,
-        max: 0.1,
-        get: |b| b.solver.force_tolerance,
-        set: |b, v| b.solver.force_tolerance = v,
-    },
-];
-
-fn spec(key: &str) -> Option<&'static Spec> {
-    SPECS.iter().find(|s| s.key == key)
 }
 
 /// One editable deck field as the inputs pane lists it.
@@ -232,7 +41,7 @@ pub struct FieldInfo {
 
 /// Every editable field, in deck order.
 pub fn field_list() -> Vec<FieldInfo> {
-    SPECS
+    deck::fields()
         .iter()
         .map(|s| FieldInfo {
             key: s.key,
@@ -242,135 +51,199 @@ pub fn field_list() -> Vec<FieldInfo> {
         .collect()
 }
 
-/// Unit label of `key` in `units` (empty for dimensionless).
+/// Unit label of `key` in `units` (empty for dimensionless and choices).
 pub fn unit(key: &str, units: Units) -> &'static str {
-    spec(key).map(|s| s.q.unit(units)).unwrap_or("")
+    match deck::field(key) {
+        Some(s) if matches!(s.kind, FieldKind::Real) => s.unit(units),
+        _ => "",
+    }
 }
 
-/// Allowed range of `key` in `units`, for inline validation messages.
+/// Allowed values of `key` in `units`, for inline validation messages.
 pub fn allowed(key: &str, units: Units) -> String {
-    match spec(key) {
-        Some(s) => {
-            let f = s.q.factor(units);
-            let u = s.q.unit(units);
-            format!(
-                "{} ≤ value ≤ {} {u}",
-                fmt_num(s.min / f),
-                fmt_num(s.max / f)
-            )
-            .trim_end()
-            .to_string()
-        }
+    match deck::field(key) {
+        Some(FieldSpec {
+            kind: FieldKind::Choice(list),
+            ..
+        }) => format!("one of {}", list.join(", ")),
+        Some(s) => s.allowed(units),
         None => String::new(),
     }
 }
 
-fn fmt_num(v: f64) -> String {
-    let a = v.abs();
+/// Formats a number to 6 significant digits without trailing zeros.
+pub fn fmt_num(v: f64) -> String {
     if v == 0.0 {
-        "0".into()
-    } else if (1e-3..1e6).contains(&a) {
-        let s = format!("{v:.6}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
+        return "0".into();
+    }
+    let a = v.abs();
+    if (1e-4..1e7).contains(&a) {
+        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.digits$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
     } else {
-        format!("{v:.4e}")
+        let s = format!("{v:.5e}");
+        match s.split_once('e') {
+            Some((m, e)) if m.contains('.') => {
+                format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+            }
+            _ => s,
+        }
     }
 }
 
-/// Default deck text (the aerospace example).
+/// Default deck text (the shipped aerospace deck).
 pub fn default_text() -> String {
-    toml::to_string(&Bearing::example_aerospace()).unwrap_or_default()
+    deck::DEFAULT_DECK.to_string()
+}
+
+/// One compact line per error, for the status bar and the inline edit error.
+fn describe(errors: &DeckErrors) -> String {
+    errors
+        .errors()
+        .iter()
+        .map(|e| match e {
+            DeckError::OutOfRange { allowed, .. } => format!("out of range: {allowed}"),
+            DeckError::Invalid { rule, .. } => rule.clone(),
+            DeckError::WrongType { expected, .. } => format!("expected {expected}"),
+            other => other.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// A deck under edit.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct DeckDoc {
-    units: Units,
-    bearing: Bearing,
-    source_name: String,
+    deck: Deck,
+}
+
+impl PartialEq for DeckDoc {
+    fn eq(&self, other: &Self) -> bool {
+        self.deck.units == other.deck.units && self.text() == other.text()
+    }
 }
 
 impl DeckDoc {
-    /// Parses and validates deck text; errors are one readable message.
+    /// Parses and validates deck text; errors are readable lines with key and line.
     pub fn parse(text: &str, source_name: &str) -> Result<DeckDoc, String> {
-        let bearing: Bearing = toml::from_str(text).map_err(|e| format!("{source_name}: {e}"))?;
-        Ok(DeckDoc {
-            units: Units::Us,
-            bearing,
-            source_name: source_name.to_string(),
-        })
+        Deck::parse(text, source_name)
+            .map(|deck| DeckDoc { deck })
+            .map_err(|e| e.to_string())
     }
 
     /// Reads and parses a deck file.
     pub fn load(path: &Path) -> Result<DeckDoc, String> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-        DeckDoc::parse(&text, &path.display().to_string())
+        Deck::load(path)
+            .map(|deck| DeckDoc { deck })
+            .map_err(|e| e.to_string())
     }
 
     /// Saves atomically (temporary file then rename; previous file kept as `.bak`).
+    /// On failure the existing file is untouched.
     pub fn save(&self, path: &Path) -> Result<(), String> {
-        let tmp = path.with_extension("toml.tmp");
-        std::fs::write(&tmp, self.text())
-            .map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
-        if path.exists() {
-            let _ = std::fs::copy(path, path.with_extension("toml.bak"));
-        }
-        std::fs::rename(&tmp, path).map_err(|e| format!("cannot save {}: {e}", path.display()))
+        self.deck.save(path).map_err(|e| e.to_string())
     }
 
     /// Unit system the deck is written in.
     pub fn units(&self) -> Units {
-        self.units
+        self.deck.units
     }
 
     /// The resolved SI bearing.
     pub fn bearing(&self) -> &Bearing {
-        &self.bearing
+        &self.deck.bearing
+    }
+
+    /// The wrapped deck.
+    pub fn deck(&self) -> &Deck {
+        &self.deck
     }
 
     /// Bearing name.
     pub fn name(&self) -> &str {
-        &self.bearing.name
+        &self.deck.bearing.name
     }
 
-    /// True if the deck has a thermal model.
+    /// True if the deck has a `[thermal]` model.
     pub fn has_thermal(&self) -> bool {
-        false
+        self.deck.thermal.is_some()
     }
 
     /// The deck as text (what a save writes).
     pub fn text(&self) -> String {
-        toml::to_string(&self.bearing).unwrap_or_default()
+        self.deck.to_toml_string()
     }
 
-    /// The value of `key` formatted in `display` units (`—` for unknown keys).
+    /// The value of `key` in `display` units: as written when those are the deck's
+    /// units, else converted to 6 significant digits. `—` for unknown keys.
     pub fn value(&self, key: &str, display: Units) -> String {
-        match spec(key) {
-            Some(s) => {
-                let v = (s.get)(&self.bearing) / s.q.factor(display);
-                match s.q {
-                    Q::Count => format!("{}", v.round() as i64),
-                    _ => fmt_num(v),
+        let Some(spec) = deck::field(key) else {
+            return "—".into();
+        };
+        match spec.kind {
+            FieldKind::Real if display != self.deck.units => {
+                fmt_num(spec.from_si(spec.get_si(&self.deck.bearing), display))
+            }
+            _ => self.deck.get(key).unwrap_or_else(|| "—".into()),
+        }
+    }
+
+    /// The value of `key` for the inputs pane: like [`DeckDoc::value`] but reals are
+    /// always shown to 6 significant digits so the column lines up.
+    pub fn display_value(&self, key: &str, display: Units) -> String {
+        match deck::field(key) {
+            Some(spec) if matches!(spec.kind, FieldKind::Real) => {
+                fmt_num(spec.from_si(spec.get_si(&self.deck.bearing), display))
+            }
+            _ => self.value(key, display),
+        }
+    }
+
+    /// Sets `key` from `text` written in `display` units. Validates the range and the
+    /// whole deck; on error the deck is unchanged and the message names the allowed
+    /// range in `display` units.
+    pub fn set_value(&mut self, key: &str, text: &str, display: Units) -> Result<(), String> {
+        let spec = deck::field(key).ok_or_else(|| format!("{key}: not editable"))?;
+        let text = text.trim();
+        let deck_text = match spec.kind {
+            FieldKind::Choice(list) => {
+                if !list.contains(&text) {
+                    return Err(format!("expected one of {}", list.join(", ")));
+                }
+                text.to_string()
+            }
+            FieldKind::Integer | FieldKind::Real => {
+                let v: f64 = text
+                    .parse()
+                    .map_err(|_| format!("not a number: {text:?}"))?;
+                let integer = matches!(spec.kind, FieldKind::Integer);
+                if integer && v.fract() != 0.0 {
+                    return Err(format!(
+                        "expected a whole number; {}",
+                        allowed(key, display)
+                    ));
+                }
+                let si = if integer { v } else { spec.to_si(v, display) };
+                if !spec.in_range(si) {
+                    return Err(format!("out of range: {}", allowed(key, display)));
+                }
+                if integer {
+                    format!("{}", v as i64)
+                } else if display == self.deck.units {
+                    text.to_string()
+                } else {
+                    // 12 significant digits: drops conversion noise (3.5000000000000004).
+                    let v = spec.from_si(si, self.deck.units);
+                    let rounded: f64 = format!("{v:.11e}").parse().unwrap_or(v);
+                    format!("{rounded:?}")
                 }
             }
-            None => "—".into(),
-        }
-    }
-
-    /// Sets `key` from `text` written in `display` units. Validates; on error the deck
-    /// is unchanged and the message includes the allowed range.
-    pub fn set_value(&mut self, key: &str, text: &str, display: Units) -> Result<(), String> {
-        let s = spec(key).ok_or_else(|| format!("{key}: not editable"))?;
-        let v: f64 = text
-            .trim()
-            .parse()
-            .map_err(|_| format!("not a number: {:?}", text.trim()))?;
-        let si = v * s.q.factor(display);
-        if !(si.is_finite() && si >= s.min && si <= s.max) {
-            return Err(format!("out of range: {}", allowed(key, display)));
-        }
-        (s.set)(&mut self.bearing, si);
-        Ok(())
+        };
+        self.deck.set(key, &deck_text).map_err(|e| describe(&e))
     }
 }

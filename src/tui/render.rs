@@ -39,8 +39,10 @@ impl Widget for &App {
                 Layout::horizontal([Constraint::Length(46), Constraint::Min(0)]).areas(body);
             let [top, bottom] =
                 Layout::vertical([Constraint::Percentage(45), Constraint::Min(0)]).areas(right);
+            let split = if self.focus == Pane::Stepper { 40 } else { 55 };
             let [chart, side] =
-                Layout::horizontal([Constraint::Percentage(55), Constraint::Min(0)]).areas(bottom);
+                Layout::horizontal([Constraint::Percentage(split), Constraint::Min(0)])
+                    .areas(bottom);
             render_pane(self, Pane::Inputs, left, buf);
             render_pane(self, Pane::Rollers, top, buf);
             render_pane(self, Pane::Load, chart, buf);
@@ -86,13 +88,17 @@ fn too_small(area: Rect, buf: &mut Buffer) {
 }
 
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
-    let mut spans = vec![Span::styled(
-        " rollbench ",
-        Style::default()
-            .fg(Color::Black)
-            .bg(ACCENT)
-            .add_modifier(Modifier::BOLD),
-    )];
+    let wide = area.width >= 100;
+    let mut spans = Vec::new();
+    if wide {
+        spans.push(Span::styled(
+            " rollbench ",
+            Style::default()
+                .fg(Color::Black)
+                .bg(ACCENT)
+                .add_modifier(Modifier::BOLD),
+        ));
+    }
     for (i, p) in Pane::ALL.iter().enumerate() {
         let label = format!(" {}:{} ", i + 1, p.title());
         let style = if *p == app.focus {
@@ -104,19 +110,35 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         };
         spans.push(Span::styled(label, style));
     }
+    Line::from(spans).render(area, buf);
     let file = app
         .path
         .as_ref()
         .and_then(|p| p.file_name())
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "(no file)".into());
-    spans.push(Span::raw(format!(
-        " {} · {} · {}",
-        file,
-        app.deck.name(),
-        app.display_units.label()
-    )));
-    Line::from(spans).render(area, buf);
+    let mut right = vec![Span::raw(file)];
+    if app.unsaved() {
+        right.push(Span::styled("[+]", Style::default().fg(Color::Yellow)));
+    }
+    if wide {
+        right.push(Span::raw(format!(" · {}", app.deck.name())));
+    }
+    right.push(Span::styled(
+        format!(" {} ", deck_io::units_label(app.display_units)),
+        Style::default().fg(Color::Black).bg(Color::Gray),
+    ));
+    let line = Line::from(right);
+    let w = (line.width() as u16).min(area.width);
+    let used = if wide { 11 + 50 } else { 50 };
+    if area.width >= used + w + 1 {
+        let r = Rect {
+            x: area.x + area.width - w,
+            width: w,
+            ..area
+        };
+        line.render(r, buf);
+    }
 }
 
 fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
@@ -156,13 +178,13 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
     let block = pane_block(
         app,
         Pane::Inputs,
-        &format!(" [{}]", app.display_units.label()),
+        &format!(" [{}]", deck_io::units_label(app.display_units)),
     );
     let inner = block.inner(area);
     block.render(area, buf);
     let w = inner.width as usize;
-    let label_w = (w * 9 / 20).clamp(8, 26);
-    let value_w = 12usize;
+    let label_w = (w * 9 / 20).clamp(8, 26).max(w.saturating_sub(20).min(22));
+    let value_w = 10usize;
     let mut lines: Vec<Line> = Vec::new();
     let mut sel_line = 0usize;
     let mut group = "";
@@ -228,7 +250,7 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
                 }
             }
             _ => {
-                let value = app.deck.value(f.key, app.display_units);
+                let value = app.deck.display_value(f.key, app.display_units);
                 let style = if selected {
                     let s = Style::default().add_modifier(Modifier::REVERSED);
                     if app.focus == Pane::Inputs {
@@ -467,7 +489,7 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
             .render(inner, buf);
         return;
     };
-    let lw = 28usize;
+    let lw = 18usize;
     let mut lines: Vec<Line> = v
         .lines
         .iter()
@@ -492,29 +514,23 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
         .fold(0.0, f64::max);
     lines.push(Line::raw(""));
     lines.push(Line::from(vec![
-        Span::styled(
-            format!("{:<lw$}", "inner lamina load"),
-            Style::default().fg(DIM),
-        ),
+        Span::styled(format!("{:<lw$}", "inner load"), Style::default().fg(DIM)),
         Span::styled(bar_row(&v.inner_load, lmax), Style::default().fg(INNER)),
     ]));
     lines.push(Line::from(vec![
-        Span::styled(
-            format!("{:<lw$}", "outer lamina load"),
-            Style::default().fg(DIM),
-        ),
+        Span::styled(format!("{:<lw$}", "outer load"), Style::default().fg(DIM)),
         Span::styled(bar_row(&v.outer_load, lmax), Style::default().fg(OUTER)),
     ]));
     lines.push(Line::from(vec![
         Span::styled(
-            format!("{:<lw$}", "inner approach (>0 contact)"),
+            format!("{:<lw$}", "inner approach"),
             Style::default().fg(DIM),
         ),
         Span::styled(bar_row(&v.inner_approach, amax), Style::default().fg(INNER)),
     ]));
     lines.push(Line::from(vec![
         Span::styled(
-            format!("{:<lw$}", "outer approach (>0 contact)"),
+            format!("{:<lw$}", "outer approach"),
             Style::default().fg(DIM),
         ),
         Span::styled(bar_row(&v.outer_approach, amax), Style::default().fg(OUTER)),
@@ -522,7 +538,7 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
     lines.push(Line::styled(
         format!(
             "{:<lw$}{:.1} {} / {:.5} {}",
-            "bar full scale", lmax, v.force_unit, amax, v.approach_unit
+            "full scale", lmax, v.force_unit, amax, v.approach_unit
         ),
         Style::default().fg(DIM),
     ));

@@ -99,9 +99,9 @@ pub fn roller_columns(u: Units) -> Vec<Column> {
     };
     vec![
         col("#".into(), 3),
-        col("ψ deg".into(), 6),
-        col(format!("Qi {f}"), 8),
-        col(format!("Qo {f}"), 8),
+        col("ψ deg".into(), 5),
+        col(format!("Qi {f}"), 7),
+        col(format!("Qo {f}"), 7),
         col("αi °".into(), 5),
         col("αo °".into(), 5),
         col(format!("σ {}", stress_unit(u)), 6),
@@ -337,11 +337,11 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
     let fu = force_unit(u);
     let lines = vec![
         (
-            "ring / roller iteration".to_string(),
+            "ring/roller iter".to_string(),
             format!("{} / {}", t.ring_iteration, t.roller_iteration),
         ),
         (
-            format!("ring axial, radial {su}"),
+            format!("ring ax,rad {su}"),
             format!(
                 "{:+.5}, {:+.5}",
                 small_length(t.ring[0], u),
@@ -349,7 +349,7 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
             ),
         ),
         (
-            format!("roller axial, radial {su}"),
+            format!("roller ax,rad {su}"),
             format!(
                 "{:+.5}, {:+.5}",
                 small_length(t.roller[0], u),
@@ -361,7 +361,7 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
             format!("{:+.5}", t.roller[2] * 1e3),
         ),
         (
-            format!("residual axial, radial {fu}"),
+            format!("resid ax,rad {fu}"),
             format!(
                 "{:+.2e}, {:+.2e}",
                 force(t.residual[0], u),
@@ -369,7 +369,7 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
             ),
         ),
         (
-            "residual moment N·m".to_string(),
+            "resid moment N·m".to_string(),
             format!("{:+.2e}", t.residual[2]),
         ),
     ];
