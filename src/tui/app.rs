@@ -101,7 +101,7 @@ pub struct SolveJob {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Command {
     /// Submit a solve to the worker.
-    Solve(SolveJob),
+    Solve(Box<SolveJob>),
     /// Save this deck to this path (atomic), then report [`AppEvent::Saved`].
     Save {
         /// Target path.
@@ -311,11 +311,11 @@ impl App {
         self.generation += 1;
         self.last_request = self.wanted_request();
         self.solve = SolveState::Running;
-        Command::Solve(SolveJob {
+        Command::Solve(Box::new(SolveJob {
             generation: self.generation,
             bearing: self.deck.bearing().clone(),
             request: self.last_request.clone(),
-        })
+        }))
     }
 
     /// Re-solves if the visible panes now need more than the last request gave.

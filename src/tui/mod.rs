@@ -134,7 +134,7 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
     while let Some(cmd) = queue.pop_front() {
         let more = match cmd {
             Command::Solve(job) => {
-                worker.submit(job);
+                worker.submit(*job);
                 Vec::new()
             }
             Command::Save { path, deck } => {

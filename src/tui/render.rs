@@ -131,7 +131,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let line = Line::from(right);
     let w = (line.width() as u16).min(area.width);
     let used = if wide { 11 + 50 } else { 50 };
-    if area.width >= used + w + 1 {
+    if area.width > used + w {
         let r = Rect {
             x: area.x + area.width - w,
             width: w,
