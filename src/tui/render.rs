@@ -228,10 +228,11 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
                 let at = rest_chars.next().map_or(" ".to_string(), String::from);
                 let after: String = rest_chars.collect();
                 let edit = Style::default().fg(Color::Black).bg(Color::Yellow);
+                let pad = value_w.saturating_sub(buffer.chars().count() + 1);
                 lines.push(Line::from(vec![
                     marker,
                     label,
-                    Span::raw(" "),
+                    Span::raw(" ".repeat(pad + 1)),
                     Span::styled(before.to_string(), edit),
                     Span::styled(at, edit.add_modifier(Modifier::REVERSED)),
                     Span::styled(after, edit),
@@ -363,7 +364,27 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
         .style(Style::default().fg(OUTER))
         .data(&s.outer);
     let x_prec = if app.chart_laminae { 2 } else { 0 };
-    let chart = Chart::new(vec![inner_ds, outer_ds])
+    let mut datasets = vec![inner_ds, outer_ds];
+    let marked: Vec<(f64, f64)> = if app.chart_laminae {
+        Vec::new()
+    } else {
+        [&s.inner, &s.outer]
+            .iter()
+            .filter_map(|v| v.get(app.roller_sel).copied())
+            .collect()
+    };
+    if !marked.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name(format!("roller {}", app.roller_sel + 1))
+                .marker(Marker::Block)
+                .graph_type(GraphType::Scatter)
+                .style(Style::default().fg(Color::White))
+                .data(&marked),
+        );
+    }
+    let chart = Chart::new(datasets)
+        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
         .block(block)
         .x_axis(
             Axis::default()
@@ -542,7 +563,35 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
         ),
         Style::default().fg(DIM),
     ));
-    Paragraph::new(lines).render(inner, buf);
+    let used = lines.len() as u16 + 1;
+    let [top, history] =
+        Layout::vertical([Constraint::Length(used), Constraint::Min(0)]).areas(inner);
+    Paragraph::new(lines).render(top, buf);
+    if history.height < 3 {
+        return;
+    }
+    let Some(a) = app.analysis.as_deref() else {
+        return;
+    };
+    let rows = view_model::trace_rows(a, app.display_units);
+    let shown = history.height.saturating_sub(1) as usize;
+    let first = app
+        .step
+        .saturating_sub(shown / 2)
+        .min(rows.len().saturating_sub(shown));
+    let mut hist: Vec<Line> = vec![Line::styled(
+        view_model::trace_header(app.display_units),
+        Style::default().fg(ACCENT),
+    )];
+    for (i, r) in rows.iter().enumerate().skip(first).take(shown) {
+        let style = if i == app.step {
+            Style::default().fg(Color::Black).bg(Color::Yellow)
+        } else {
+            Style::default()
+        };
+        hist.push(Line::styled(r.clone(), style));
+    }
+    Paragraph::new(hist).render(history, buf);
 }
 
 fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
@@ -553,7 +602,7 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             iterations,
             wall_ms,
         } => (
-            format!("✓ solved in {iterations} iterations, {wall_ms:.0} ms"),
+            format!("✓ solved in {iterations} iterations, {wall_ms:.1} ms"),
             Color::Green,
         ),
         SolveState::Failed(r) => (format!("✗ failed: {r}"), Color::Red),

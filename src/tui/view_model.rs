@@ -330,6 +330,39 @@ pub fn trace_len(a: &Analysis) -> usize {
     a.trace.len()
 }
 
+/// One line per recorded step for the stepper's history list: step number (1-based),
+/// ring/roller iteration and the three residuals (axial N or lbf, radial, moment N·m).
+pub fn trace_rows(a: &Analysis, u: Units) -> Vec<String> {
+    a.trace
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            format!(
+                "{:>3}  {:>2}/{:<2}  {:>+10.2e} {:>+10.2e} {:>+10.2e}",
+                i + 1,
+                t.ring_iteration,
+                t.roller_iteration,
+                force(t.residual[0], u),
+                force(t.residual[1], u),
+                t.residual[2]
+            )
+        })
+        .collect()
+}
+
+/// Header of [`trace_rows`].
+pub fn trace_header(u: Units) -> String {
+    let f = force_unit(u);
+    format!(
+        "{:>3}  {:<5}  {:>10} {:>10} {:>10}",
+        "#",
+        "it",
+        format!("ax {f}"),
+        format!("rad {f}"),
+        "mom N·m"
+    )
+}
+
 /// Formats trace step `step` (0-based); `None` when out of range or nothing recorded.
 pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
     let t: &TraceStep = a.trace.get(step)?;
