@@ -287,8 +287,16 @@ fn no_solution_text(app: &App) -> String {
     }
 }
 
+/// Title note when the panes show an older solution than the deck (last solve failed).
+fn stale_note(app: &App) -> &'static str {
+    match (&app.solve, &app.analysis) {
+        (SolveState::Failed(_), Some(_)) => " · last good solve",
+        _ => "",
+    }
+}
+
 fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
-    let block = pane_block(app, Pane::Rollers, "");
+    let block = pane_block(app, Pane::Rollers, stale_note(app));
     let inner = block.inner(area);
     block.render(area, buf);
     let Some(a) = app.analysis.as_deref() else {
@@ -329,7 +337,7 @@ fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
     let mid = 0.5 * (b[0] + b[1]);
     [b[0], mid, b[1]]
         .iter()
-        .map(|v| Line::from(format!("{v:.prec$}")))
+        .map(|v| Line::from(view_model::fixed(*v, prec)))
         .collect()
 }
 
@@ -350,7 +358,11 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
         pane_block(app, Pane::Load, "").render(area, buf);
         return;
     };
-    let block = pane_block(app, Pane::Load, &format!(" · {}", s.title));
+    let block = pane_block(
+        app,
+        Pane::Load,
+        &format!(" · {}{}", s.title, stale_note(app)),
+    );
     let inner_ds = Dataset::default()
         .name("inner")
         .marker(Marker::Braille)
@@ -451,7 +463,7 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     let rows = t.steady.iter().map(|(n, v)| {
         Row::new(vec![
             Cell::from(n.clone()),
-            Cell::from(Line::from(format!("{v:.1}")).right_aligned()),
+            Cell::from(Line::from(view_model::fixed(*v, 1)).right_aligned()),
         ])
     });
     let steady = Table::new(rows, [Constraint::Min(10), Constraint::Length(10)]).header(

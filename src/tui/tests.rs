@@ -597,3 +597,56 @@ fn tui_event_loop_end_to_end_on_test_backend() {
     let screen = terminal.backend().to_string();
     assert!(screen.contains("Rollers"), "{screen}");
 }
+
+/// Every shipped deck opens, solves (or shows why not) and draws its rollers table and
+/// load chart at 80×24, and the overview at 120×40.
+#[test]
+fn tui_snapshot_shipped_decks() {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))
+        .expect("decks dir")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    assert!(!paths.is_empty());
+    for path in paths {
+        let stem = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let deck = DeckDoc::load(&path).expect("shipped deck loads");
+        for (pane, w, h) in [
+            (Pane::Rollers, 80, 24),
+            (Pane::Load, 80, 24),
+            (Pane::Rollers, 120, 40),
+        ] {
+            let mut app = App::new(
+                deck.clone(),
+                Some(PathBuf::from(format!("decks/{stem}.toml"))),
+            );
+            app.handle(AppEvent::Resize(w, h));
+            let cmds = app.start();
+            for c in cmds {
+                if let Command::Solve(job) = c {
+                    let outcome = pipeline::run(&job.bearing, &job.request, None)
+                        .map(|mut a| {
+                            a.load.stats.wall_time_s = 0.0;
+                            Arc::new(a)
+                        })
+                        .map_err(|e| e.to_string());
+                    app.handle(AppEvent::Solved {
+                        generation: job.generation,
+                        outcome,
+                    });
+                }
+            }
+            app.focus = pane;
+            snap(
+                &format!("deck_{stem}_{}", pane.title().to_lowercase()),
+                &app,
+                w,
+                h,
+            );
+        }
+    }
+}

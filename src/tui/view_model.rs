@@ -78,6 +78,36 @@ pub fn film_unit(u: Units) -> &'static str {
     }
 }
 
+/// `v` with `prec` decimals; a result that rounds to zero prints without a sign, so
+/// last-bit noise (−0.00 vs 0.00) never reaches a pane or a snapshot.
+pub fn fixed(v: f64, prec: usize) -> String {
+    let s = format!("{v:.prec$}");
+    if s.chars().all(|c| matches!(c, '-' | '0' | '.')) {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+/// Like [`fixed`] with an explicit `+` on positive values.
+pub fn signed(v: f64, prec: usize) -> String {
+    let s = fixed(v, prec);
+    if s.starts_with('-') {
+        s
+    } else {
+        format!("+{s}")
+    }
+}
+
+/// A residual in engineering form with sign; below 1e-6 (solver noise) prints `≈0`.
+pub fn residual(v: f64) -> String {
+    if v.abs() < 1e-6 {
+        "≈0".to_string()
+    } else {
+        format!("{v:+.2e}")
+    }
+}
+
 /// One column of the rollers table: header (with unit) and width in cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
@@ -122,11 +152,11 @@ pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
         .map(|r| {
             vec![
                 format!("{}", r.index),
-                format!("{:.1}", r.azimuth_deg),
-                format!("{:.1}", force(r.inner.normal_load_n, u)),
-                format!("{:.1}", force(r.outer.normal_load_n, u)),
-                format!("{:.2}", r.inner.contact_angle_deg),
-                format!("{:.2}", r.outer.contact_angle_deg),
+                fixed(r.azimuth_deg, 1),
+                fixed(force(r.inner.normal_load_n, u), 1),
+                fixed(force(r.outer.normal_load_n, u), 1),
+                fixed(r.inner.contact_angle_deg, 2),
+                fixed(r.outer.contact_angle_deg, 2),
                 DASH.to_string(), // max stress: stresses stage
                 DASH.to_string(), // film thickness: film stage
                 DASH.to_string(), // Λ: film stage
@@ -289,19 +319,19 @@ pub fn bearing_lines(a: &Analysis, u: Units) -> Vec<(String, String)> {
     vec![
         (
             format!("axial deflection {su}"),
-            format!("{:.4}", small_length(l.axial_deflection_m, u)),
+            fixed(small_length(l.axial_deflection_m, u), 4),
         ),
         (
             format!("radial deflection {su}"),
-            format!("{:.4}", small_length(l.radial_deflection_m, u)),
+            fixed(small_length(l.radial_deflection_m, u), 4),
         ),
         (
             format!("residual radial {fu}"),
-            format!("{:.1e}", force(l.residuals.bearing_radial_n, u)),
+            residual(force(l.residuals.bearing_radial_n, u)),
         ),
         (
             format!("residual axial {fu}"),
-            format!("{:.1e}", force(l.residuals.bearing_axial_n, u)),
+            residual(force(l.residuals.bearing_axial_n, u)),
         ),
     ]
 }
@@ -338,13 +368,13 @@ pub fn trace_rows(a: &Analysis, u: Units) -> Vec<String> {
         .enumerate()
         .map(|(i, t)| {
             format!(
-                "{:>3}  {:>2}/{:<2}  {:>+10.2e} {:>+10.2e} {:>+10.2e}",
+                "{:>3}  {:>2}/{:<2}  {:>10} {:>10} {:>10}",
                 i + 1,
                 t.ring_iteration,
                 t.roller_iteration,
-                force(t.residual[0], u),
-                force(t.residual[1], u),
-                t.residual[2]
+                residual(force(t.residual[0], u)),
+                residual(force(t.residual[1], u)),
+                residual(t.residual[2])
             )
         })
         .collect()
@@ -376,35 +406,32 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
         (
             format!("ring ax,rad {su}"),
             format!(
-                "{:+.5}, {:+.5}",
-                small_length(t.ring[0], u),
-                small_length(t.ring[1], u)
+                "{}, {}",
+                signed(small_length(t.ring[0], u), 5),
+                signed(small_length(t.ring[1], u), 5)
             ),
         ),
         (
             format!("roller ax,rad {su}"),
             format!(
-                "{:+.5}, {:+.5}",
-                small_length(t.roller[0], u),
-                small_length(t.roller[1], u)
+                "{}, {}",
+                signed(small_length(t.roller[0], u), 5),
+                signed(small_length(t.roller[1], u), 5)
             ),
         ),
         (
             "roller pitch mrad".to_string(),
-            format!("{:+.5}", t.roller[2] * 1e3),
+            signed(t.roller[2] * 1e3, 5),
         ),
         (
             format!("resid ax,rad {fu}"),
             format!(
-                "{:+.2e}, {:+.2e}",
-                force(t.residual[0], u),
-                force(t.residual[1], u)
+                "{}, {}",
+                residual(force(t.residual[0], u)),
+                residual(force(t.residual[1], u))
             ),
         ),
-        (
-            "resid moment N·m".to_string(),
-            format!("{:+.2e}", t.residual[2]),
-        ),
+        ("resid moment N·m".to_string(), residual(t.residual[2])),
     ];
     Some(StepView {
         lines,
