@@ -35,8 +35,9 @@ impl Widget for &App {
         .areas(area);
         render_header(self, header, buf);
         if self.wide() {
+            let inputs_w = (body.width * 38 / 100).max(46);
             let [left, right] =
-                Layout::horizontal([Constraint::Length(46), Constraint::Min(0)]).areas(body);
+                Layout::horizontal([Constraint::Length(inputs_w), Constraint::Min(0)]).areas(body);
             let [top, bottom] =
                 Layout::vertical([Constraint::Percentage(45), Constraint::Min(0)]).areas(right);
             let split = if self.focus == Pane::Stepper { 40 } else { 55 };
@@ -375,7 +376,7 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
         .graph_type(GraphType::Line)
         .style(Style::default().fg(OUTER))
         .data(&s.outer);
-    let x_prec = if app.chart_laminae { 2 } else { 0 };
+    let x_prec = if app.chart_laminae && s.x_bounds[1] < 10.0 { 2 } else { 0 };
     let mut datasets = vec![inner_ds, outer_ds];
     let marked: Vec<(f64, f64)> = if app.chart_laminae {
         Vec::new()
