@@ -381,7 +381,11 @@ impl App {
             }
             AppEvent::Opened(Ok((deck, path))) => {
                 let before = std::mem::replace(&mut self.deck, *deck);
-                self.undo.push((before, None));
+                if self.path.as_ref() == Some(&path) {
+                    self.undo.push((before, None)); // revert: undoable
+                } else {
+                    self.undo.clear(); // another file: old edits do not apply to it
+                }
                 self.redo.clear();
                 self.saved_text = self.deck.text();
                 self.display_units = self.deck.units();
@@ -626,6 +630,10 @@ impl App {
         let byte_at = |s: &str, c: usize| s.char_indices().nth(c).map_or(s.len(), |(i, _)| i);
         match key.code {
             KeyCode::Esc => {
+                self.mode = Mode::Normal;
+                return Vec::new();
+            }
+            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
                 self.mode = Mode::Normal;
                 return Vec::new();
             }

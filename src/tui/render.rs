@@ -376,7 +376,11 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
         .graph_type(GraphType::Line)
         .style(Style::default().fg(OUTER))
         .data(&s.outer);
-    let x_prec = if app.chart_laminae && s.x_bounds[1] < 10.0 { 2 } else { 0 };
+    let x_prec = if app.chart_laminae && s.x_bounds[1] < 10.0 {
+        2
+    } else {
+        0
+    };
     let mut datasets = vec![inner_ds, outer_ds];
     let marked: Vec<(f64, f64)> = if app.chart_laminae {
         Vec::new()

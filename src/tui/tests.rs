@@ -650,3 +650,13 @@ fn tui_snapshot_shipped_decks() {
         }
     }
 }
+
+#[test]
+fn tui_docs_list_every_key() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/workbench.md"))
+        .expect("docs/workbench.md");
+    for (k, ctx, what) in KEYS {
+        let row = format!("| `{k}` | {ctx} | {what} |");
+        assert!(doc.contains(&row), "docs/workbench.md lacks {row}");
+    }
+}
