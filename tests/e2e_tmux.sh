@@ -112,11 +112,26 @@ wait_for "0.013208 m"
 keys u
 wait_for "Inputs [US]"
 
-# 6. q asks because of the unsaved edit; n stays; q then y quits cleanly.
+# 6. q asks because of the unsaved edit; n stays.
 keys q
 wait_for "Unsaved changes"
 keys n
 absent "Unsaved changes"
+
+# 7. Save as (S): the prompt offers deck.toml in the working directory; the saved
+#    deck holds the edit and the unsaved marker goes away.
+keys S
+wait_for "Save deck as"
+keys Enter
+wait_for "saved deck.toml"
+absent "[+] unsaved"
+[ -f "$WORK/deck.toml" ] || fail "deck.toml was not written"
+grep -q "roller_length = 0.52" "$WORK/deck.toml" || fail "saved deck lacks the edit"
+
+# 8. Undo makes the deck differ from the file again; q asks, y quits cleanly.
+keys C-z
+wait_for "[+] unsaved"
+wait_for "0.5 in"
 keys q
 wait_for "Unsaved changes"
 keys y

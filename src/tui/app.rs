@@ -126,6 +126,8 @@ pub enum SolveState {
     Solved {
         /// Ring iterations.
         iterations: usize,
+        /// Roller Newton iterations (all rollers, all ring iterations).
+        roller_iterations: usize,
         /// Wall time, ms.
         wall_ms: f64,
     },
@@ -356,6 +358,7 @@ impl App {
                         let s = view_model::solve_summary(&a);
                         self.solve = SolveState::Solved {
                             iterations: s.iterations,
+                            roller_iterations: s.roller_iterations,
                             wall_ms: s.wall_ms,
                         };
                         self.roller_sel = self
@@ -651,6 +654,23 @@ impl App {
             KeyCode::Delete if cursor < buffer.chars().count() => {
                 let at = byte_at(&buffer, cursor);
                 buffer.remove(at);
+            }
+            KeyCode::Up | KeyCode::Down => {
+                // choice fields: cycle through the allowed values
+                let key_path = self.fields.get(self.input_sel).map(|f| f.key);
+                if let Some(list) = key_path.and_then(deck_io::choices) {
+                    let n = list.len();
+                    if n > 0 {
+                        let cur = list.iter().position(|c| *c == buffer.trim());
+                        let next = match (cur, key.code) {
+                            (Some(i), KeyCode::Down) => (i + 1) % n,
+                            (Some(i), _) => (i + n - 1) % n,
+                            (None, _) => 0,
+                        };
+                        buffer = list.get(next).map(|c| c.to_string()).unwrap_or_default();
+                        cursor = buffer.chars().count();
+                    }
+                }
             }
             KeyCode::Left => cursor = cursor.saturating_sub(1),
             KeyCode::Right => cursor = (cursor + 1).min(buffer.chars().count()),

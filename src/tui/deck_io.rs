@@ -59,6 +59,14 @@ pub fn unit(key: &str, units: Units) -> &'static str {
     }
 }
 
+/// The allowed values of a choice field (`None` for numbers).
+pub fn choices(key: &str) -> Option<&'static [&'static str]> {
+    match deck::field(key)?.kind {
+        FieldKind::Choice(list) => Some(list),
+        _ => None,
+    }
+}
+
 /// Allowed values of `key` in `units`, for inline validation messages.
 pub fn allowed(key: &str, units: Units) -> String {
     match deck::field(key) {

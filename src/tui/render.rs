@@ -617,9 +617,12 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
         SolveState::Running => ("● solving…".to_string(), Color::Yellow),
         SolveState::Solved {
             iterations,
+            roller_iterations,
             wall_ms,
         } => (
-            format!("✓ solved in {iterations} iterations, {wall_ms:.1} ms"),
+            format!(
+                "✓ solved in {iterations} iterations ({roller_iterations} roller), {wall_ms:.1} ms"
+            ),
             Color::Green,
         ),
         SolveState::Failed(r) => (format!("✗ failed: {r}"), Color::Red),
@@ -648,7 +651,7 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
 
 fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
     let hints = match &app.mode {
-        Mode::Editing { .. } => "Enter commit · Esc cancel · ←→ move · Backspace/Del erase",
+        Mode::Editing { .. } => "Enter commit · Esc cancel · ←→ move · ↑↓ cycle choices · Backspace/Del erase",
         Mode::Prompt { .. } => "type a path · Enter confirm · Esc cancel",
         Mode::ConfirmQuit | Mode::ConfirmRevert => "answer the prompt",
         Mode::Help => "any key closes help",

@@ -660,3 +660,29 @@ fn tui_docs_list_every_key() {
         assert!(doc.contains(&row), "docs/workbench.md lacks {row}");
     }
 }
+
+#[test]
+fn tui_choice_field_cycles_with_arrows() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    select_field(&mut app, "lubricant.film_model");
+    assert_eq!(
+        app.deck.value("lubricant.film_model", app.display_units),
+        "grubin"
+    );
+    app.handle(key(KeyCode::Enter));
+    app.handle(key(KeyCode::Down));
+    match &app.mode {
+        Mode::Editing { buffer, .. } => assert_eq!(buffer, "dowson-higginson"),
+        m => panic!("{m:?}"),
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    assert!(matches!(cmds.as_slice(), [Command::Solve(_)]));
+    assert_eq!(
+        app.deck.value("lubricant.film_model", app.display_units),
+        "dowson-higginson"
+    );
+    assert_eq!(
+        app.deck.bearing().lubricant.film_model,
+        crate::model::FilmModel::DowsonHigginson
+    );
+}
