@@ -214,6 +214,8 @@ pub struct App {
     pub chart_laminae: bool,
     /// Stepper position (0-based trace step).
     pub step: usize,
+    /// Thermal node chosen for the sparkline (`None`: the hottest).
+    pub thermal_node: Option<usize>,
     /// One-line message for the status bar (saved, errors).
     pub message: Option<String>,
     /// Set when the app should exit.
@@ -252,6 +254,7 @@ impl App {
             roller_sel: 0,
             chart_laminae: false,
             step: 0,
+            thermal_node: None,
             message: None,
             quit: false,
         }
@@ -527,6 +530,14 @@ impl App {
                     None => Vec::new(),
                 }
             }
+            KeyCode::PageDown if self.focus == Pane::Stepper => self.sideways(PAGE as isize),
+            KeyCode::PageUp if self.focus == Pane::Stepper => self.sideways(-(PAGE as isize)),
+            KeyCode::Home | KeyCode::Char('g') if self.focus == Pane::Stepper => {
+                self.sideways(isize::MIN / 2)
+            }
+            KeyCode::End | KeyCode::Char('G') if self.focus == Pane::Stepper => {
+                self.sideways(isize::MAX / 2)
+            }
             KeyCode::Down | KeyCode::Char('j') => self.move_sel(1),
             KeyCode::Up | KeyCode::Char('k') => self.move_sel(-1),
             KeyCode::PageDown => self.move_sel(PAGE as isize),
@@ -575,7 +586,12 @@ impl App {
                 }
                 self.resolve_if_needed()
             }
-            Pane::Thermal => Vec::new(),
+            Pane::Thermal => {
+                // node whose transient is plotted; None = the hottest (view_model decides)
+                let next = self.thermal_node.map_or(0, |n| n as isize + by);
+                self.thermal_node = if next < 0 { None } else { Some(next as usize) };
+                Vec::new()
+            }
         }
     }
 
@@ -585,7 +601,9 @@ impl App {
             Pane::Stepper => {
                 let n = self.trace_len();
                 if n > 0 {
-                    self.step = (self.step as isize + by).clamp(0, n as isize - 1) as usize;
+                    self.step = (self.step as isize)
+                        .saturating_add(by)
+                        .clamp(0, n as isize - 1) as usize;
                 }
                 Vec::new()
             }
@@ -801,14 +819,23 @@ impl App {
 /// Every key binding, for the help overlay and the README: (keys, context, action).
 pub const KEYS: &[(&str, &str, &str)] = &[
     ("Tab / Shift-Tab", "any", "next / previous pane"),
-    (
-        "1..5",
-        "any",
-        "jump to Inputs, Rollers, Load, Thermal, Stepper",
-    ),
+    ("1..5", "any", "jump to a pane (numbers in the tab bar)"),
     ("j k / ↓ ↑", "any", "move selection (field or roller)"),
-    ("PgDn PgUp", "any", "move selection by 10"),
-    ("g G / Home End", "any", "first / last"),
+    (
+        "PgDn PgUp",
+        "any",
+        "move selection by 10 (Stepper: 10 steps)",
+    ),
+    (
+        "g G / Home End",
+        "any",
+        "first / last (Stepper: first / last step)",
+    ),
+    (
+        "j k / ↓ ↑",
+        "Thermal",
+        "plotted node (above the first: hottest)",
+    ),
     ("Enter", "Inputs", "edit field; Enter commits, Esc cancels"),
     (
         "Enter",

@@ -427,7 +427,7 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     let view = app
         .analysis
         .as_deref()
-        .and_then(|a| view_model::thermal_view(a, app.display_units));
+        .and_then(|a| view_model::thermal_view(a, app.display_units, app.thermal_node));
     let Some(t) = view else {
         let msg = if app.deck.has_thermal() {
             "thermal results not available in this build"
@@ -658,8 +658,8 @@ fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Normal => match app.focus {
             Pane::Inputs => "Tab pane · jk move · Enter edit · u units · ^z/^y undo/redo · ^s save · ? help · q quit",
             Pane::Rollers | Pane::Load => "Tab pane · jk roller · Enter stepper · c chart · u units · ^s save · ? help · q quit",
-            Pane::Stepper => "Tab pane · hl step · jk roller · u units · ^s save · ? help · q quit",
-            Pane::Thermal => "Tab pane · u units · ^s save · ? help · q quit",
+            Pane::Stepper => "Tab pane · hl step · PgUp/PgDn ±10 · jk roller · u units · ? help · q quit",
+            Pane::Thermal => "Tab pane · jk node · u units · ^s save · ? help · q quit",
         },
     };
     Paragraph::new(hints)

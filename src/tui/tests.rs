@@ -262,6 +262,14 @@ fn tui_stepper_navigation() {
         app.handle(ch('l'));
     }
     assert_eq!(app.step, n - 1);
+    app.handle(key(KeyCode::Home));
+    assert_eq!(app.step, 0);
+    app.handle(key(KeyCode::PageDown));
+    assert_eq!(app.step, 10.min(n - 1));
+    app.handle(ch('G'));
+    assert_eq!(app.step, n - 1);
+    app.handle(key(KeyCode::PageUp));
+    assert_eq!(app.step, n - 1 - 10.min(n - 1));
     // another roller: new trace requested, step reset
     let cmds = app.handle(ch('j'));
     assert_eq!(app.step, 0);

@@ -277,10 +277,11 @@ pub struct ThermalView {
     pub time_to_limit_s: Option<f64>,
 }
 
-/// The thermal pane's data.
+/// The thermal pane's data; `node` picks the node whose transient is plotted (`None`
+/// or out of range: the hottest).
 ///
 /// Lead: when `Analysis` gains thermal steady/transient results, build the view here.
-pub fn thermal_view(_a: &Analysis, _u: Units) -> Option<ThermalView> {
+pub fn thermal_view(_a: &Analysis, _u: Units, _node: Option<usize>) -> Option<ThermalView> {
     None
 }
 
