@@ -369,10 +369,12 @@ impl App {
                             .min(view_model::roller_count(&a).saturating_sub(1));
                         self.step = self.step.min(view_model::trace_len(&a).saturating_sub(1));
                         self.analysis = Some(a);
+                        // these edits are now reflected in the results
+                        self.dirty_keys.retain(|_, g| *g > generation);
                     }
+                    // a failed solve leaves the edits unsolved (still marked)
                     Err(reason) => self.solve = SolveState::Failed(reason),
                 }
-                self.dirty_keys.retain(|_, g| *g > generation);
                 Vec::new()
             }
             AppEvent::Saved(Ok(path)) => {

@@ -297,6 +297,7 @@ fn tui_stale_result_is_dropped() {
         outcome: Err("boom".into()),
     });
     assert_eq!(app.solve, SolveState::Failed("boom".into()));
+    assert!(app.dirty_keys.contains_key("operating.axial_load"));
 }
 
 #[test]
