@@ -289,10 +289,15 @@ impl App {
     }
 
     /// What the visible panes need from the solver.
+    ///
+    /// Lead: stages added to `Request` later (contact, heat, …) default to off through
+    /// `..Request::default()`; switch them on here for the panes that show them.
+    #[allow(clippy::needless_update)] // future Request fields take their defaults
     pub fn wanted_request(&self) -> Request {
         Request {
             trace_roller: self.visible(Pane::Stepper).then_some(self.roller_sel),
             thermal_transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
+            ..Request::default()
         }
     }
 
