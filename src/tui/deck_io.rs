@@ -144,6 +144,11 @@ impl DeckDoc {
             .map_err(|e| e.to_string())
     }
 
+    /// Wraps an already parsed deck (e.g. the CLI's, with `--set` overrides applied).
+    pub fn from_deck(deck: Deck) -> DeckDoc {
+        DeckDoc { deck }
+    }
+
     /// Reads and parses a deck file.
     pub fn load(path: &Path) -> Result<DeckDoc, String> {
         Deck::load(path)

@@ -41,7 +41,28 @@ pub fn run_workbench(deck_text: &str, source_path: Option<PathBuf>) -> color_eyr
         .map(|p| p.display().to_string())
         .unwrap_or_else(|| "default deck".to_string());
     let deck = DeckDoc::parse(deck_text, &name).map_err(|e| eyre!(e))?;
-    let app = App::new(deck, source_path);
+    run_app(App::new(deck, source_path))
+}
+
+/// Like [`run_workbench`] for a deck the caller already parsed (the CLI's, with any
+/// `--set` overrides). If the deck differs from the file at `source_path` (overrides
+/// applied), it starts marked unsaved.
+pub fn run_workbench_deck(
+    deck: crate::deck::Deck,
+    source_path: Option<PathBuf>,
+) -> color_eyre::Result<()> {
+    let on_disk = source_path
+        .as_ref()
+        .and_then(|p| std::fs::read_to_string(p).ok());
+    let mut app = App::new(DeckDoc::from_deck(deck), source_path);
+    if let Some(text) = on_disk {
+        app.saved_text = text;
+    }
+    run_app(app)
+}
+
+/// Takes over the terminal, runs the loop, restores the terminal on every exit path.
+fn run_app(app: App) -> color_eyre::Result<()> {
     let mut terminal = ratatui::try_init()?;
     install_solver_panic_filter();
     let (tx, rx) = mpsc::channel();

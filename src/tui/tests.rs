@@ -695,3 +695,12 @@ fn tui_choice_field_cycles_with_arrows() {
         crate::model::FilmModel::DowsonHigginson
     );
 }
+
+#[test]
+fn tui_parsed_deck_text_round_trips_unchanged() {
+    // run_workbench_deck compares the file text with the deck's text to decide
+    // "unsaved": an unmodified deck must give back its file byte for byte.
+    let deck = crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "x").expect("deck");
+    let doc = DeckDoc::from_deck(deck);
+    assert_eq!(doc.text(), crate::deck::DEFAULT_DECK);
+}
