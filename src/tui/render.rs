@@ -440,6 +440,11 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
             .render(inner, buf);
         return;
     };
+    render_thermal_view(&t, inner, buf);
+}
+
+/// The thermal pane's contents (inside the border) for a given view.
+pub fn render_thermal_view(t: &view_model::ThermalView, inner: Rect, buf: &mut Buffer) {
     let [title, spark, table] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Length(4),
@@ -447,19 +452,24 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     ])
     .areas(inner);
     let limit = match t.time_to_limit_s {
-        Some(s) => format!("limit in {s:.1} s"),
+        Some(s) => format!("limit in {} s", view_model::fixed(s, 1)),
         None => "limit not reached".into(),
     };
     Paragraph::new(format!(
-        "{} over {:.0} s · {}",
-        t.series_name, t.series_span_s, limit
+        "{} over {} s · {}",
+        t.series_name,
+        view_model::fixed(t.series_span_s, 0),
+        limit
     ))
     .render(title, buf);
+    // Sparkline bars are integers: map the series onto 1..=1000 between its extremes.
     let lo = t.series.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = t.series.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let span = if hi > lo { hi - lo } else { 1.0 };
     let data: Vec<u64> = t
         .series
         .iter()
-        .map(|v| ((v - lo).max(0.0) * 10.0).round() as u64)
+        .map(|v| (1.0 + (v - lo).max(0.0) / span * 999.0).round() as u64)
         .collect();
     Sparkline::default()
         .data(&data)

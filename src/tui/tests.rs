@@ -704,3 +704,48 @@ fn tui_parsed_deck_text_round_trips_unchanged() {
     let doc = DeckDoc::from_deck(deck);
     assert_eq!(doc.text(), crate::deck::DEFAULT_DECK);
 }
+
+/// The thermal pane's drawing, with a made-up view (the thermal stage is wired by the
+/// lead in `view_model::thermal_view`), plus degenerate series that must not panic.
+#[test]
+fn tui_thermal_view_renders() {
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    let view = view_model::ThermalView {
+        steady: vec![
+            ("inner ring".into(), 121.5),
+            ("outer ring".into(), 98.25),
+            ("oil out".into(), 104.0),
+        ],
+        temperature_unit: "°C".into(),
+        series_name: "inner ring".into(),
+        series: (0..40)
+            .map(|i| 40.0 + 80.0 * (1.0 - (-(i as f64) / 10.0).exp()))
+            .collect(),
+        series_span_s: 600.0,
+        time_to_limit_s: Some(312.25),
+    };
+    let area = Rect::new(0, 0, 40, 10);
+    let mut buf = Buffer::empty(area);
+    render::render_thermal_view(&view, area, &mut buf);
+    let text: String = (0..area.height)
+        .map(|y| {
+            (0..area.width)
+                .map(|x| buf[(x, y)].symbol().to_string())
+                .collect::<String>()
+                + "\n"
+        })
+        .collect();
+    assert_snapshot!("thermal_view_40x10", text);
+    for series in [vec![], vec![5.0], vec![f64::NAN, 1.0], vec![3.0; 10]] {
+        let v = view_model::ThermalView {
+            series,
+            ..view.clone()
+        };
+        for (w, h) in [(1, 1), (10, 3), (40, 10)] {
+            let r = Rect::new(0, 0, w, h);
+            let mut b = Buffer::empty(r);
+            render::render_thermal_view(&v, r, &mut b);
+        }
+    }
+}
