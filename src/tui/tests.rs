@@ -749,3 +749,38 @@ fn tui_thermal_view_renders() {
         }
     }
 }
+
+/// The whole loop with a solver that panics: the frame shows a failed solve and the
+/// app keeps handling keys.
+#[test]
+fn tui_event_loop_survives_solver_panic() {
+    install_solver_panic_filter();
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
+    let (tx, rx) = mpsc::channel();
+    let solver: Solver = Arc::new(|_, _, _| panic!("deliberate solver panic"));
+    let mut worker = Worker::spawn(tx.clone(), solver).expect("spawn");
+    // Keys arrive well after the first (panicking) solve has been reported.
+    let forward = std::thread::spawn({
+        let tx = tx.clone();
+        move || {
+            std::thread::sleep(Duration::from_millis(300));
+            for ev in [key(KeyCode::Tab), ch('q')] {
+                let _ = tx.send(ev);
+            }
+        }
+    });
+    let app = run_loop(&mut terminal, deck_app(), &rx, &tx, &mut worker).expect("loop");
+    let _ = forward.join();
+    drop(worker);
+    assert!(app.quit);
+    assert_eq!(app.focus, Pane::Rollers);
+    match &app.solve {
+        SolveState::Failed(m) => assert!(m.contains("deliberate solver panic"), "{m}"),
+        s => panic!("expected a failed solve, got {s:?}"),
+    }
+    terminal
+        .draw(|f| f.render_widget(&app, f.area()))
+        .expect("draw");
+    let screen = terminal.backend().to_string();
+    assert!(screen.contains("failed: solver panicked"), "{screen}");
+}
