@@ -69,7 +69,7 @@ fn run_app(app: App) -> color_eyre::Result<()> {
     spawn_input_thread(tx.clone())?;
     let result = (|| -> color_eyre::Result<()> {
         let mut worker = Worker::spawn(tx.clone(), pipeline_solver())?;
-        run_loop(&mut terminal, app, &rx, &tx, &mut worker)?;
+        run_loop(&mut terminal, app, &rx, &mut worker)?;
         Ok(())
     })();
     let restored = ratatui::try_restore();
@@ -113,13 +113,12 @@ fn spawn_input_thread(tx: Sender<AppEvent>) -> std::io::Result<()> {
 }
 
 /// The event loop, generic over the backend so tests can run it on `TestBackend`.
-/// Draws, then blocks on the channel; returns the final app state on quit or when
-/// every sender is gone.
+/// Draws, then blocks on `rx` (fed by the input thread and the worker); returns the
+/// final app state on quit or when every sender is gone.
 pub fn run_loop<B: Backend>(
     terminal: &mut Terminal<B>,
     mut app: App,
     rx: &Receiver<AppEvent>,
-    tx: &Sender<AppEvent>,
     worker: &mut Worker,
 ) -> color_eyre::Result<App>
 where
@@ -129,7 +128,6 @@ where
     app.size = (size.width, size.height);
     let first = app.start();
     perform(&mut app, first, worker);
-    let _ = tx; // the loop's own sender keeps the channel open for the worker
     loop {
         if app.quit {
             break;

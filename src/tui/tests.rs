@@ -597,7 +597,7 @@ fn tui_event_loop_end_to_end_on_test_backend() {
             }
         }
     });
-    let app = run_loop(&mut terminal, app, &rx, &tx, &mut worker).expect("loop");
+    let app = run_loop(&mut terminal, app, &rx, &mut worker).expect("loop");
     let _ = script.join();
     assert!(app.quit);
     assert_eq!(app.focus, Pane::Rollers);
@@ -769,7 +769,7 @@ fn tui_event_loop_survives_solver_panic() {
             }
         }
     });
-    let app = run_loop(&mut terminal, deck_app(), &rx, &tx, &mut worker).expect("loop");
+    let app = run_loop(&mut terminal, deck_app(), &rx, &mut worker).expect("loop");
     let _ = forward.join();
     drop(worker);
     assert!(app.quit);
