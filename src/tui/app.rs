@@ -220,6 +220,8 @@ pub struct App {
     pub message: Option<String>,
     /// Set when the app should exit.
     pub quit: bool,
+    /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
+    pub quit_after_save: bool,
 }
 
 /// Terminal size at or above which all panes are shown together.
@@ -257,6 +259,7 @@ impl App {
             thermal_node: None,
             message: None,
             quit: false,
+            quit_after_save: false,
         }
     }
 
@@ -386,10 +389,15 @@ impl App {
                 self.message = Some(format!("saved {}", path.display()));
                 self.saved_text = self.deck.text();
                 self.path = Some(path);
+                if std::mem::take(&mut self.quit_after_save) {
+                    self.quit = true;
+                    return vec![Command::Quit];
+                }
                 Vec::new()
             }
             AppEvent::Saved(Err(e)) => {
                 self.message = Some(format!("save failed: {e}"));
+                self.quit_after_save = false;
                 Vec::new()
             }
             AppEvent::Opened(Ok((deck, path))) => {
@@ -442,6 +450,7 @@ impl App {
                         }
                         None => {
                             self.open_prompt(PromptKind::SaveAs);
+                            self.quit_after_save = true;
                             Vec::new()
                         }
                     }
@@ -796,6 +805,7 @@ impl App {
         match key.code {
             KeyCode::Esc => {
                 self.mode = Mode::Normal;
+                self.quit_after_save = false;
                 return Vec::new();
             }
             KeyCode::Enter => {

@@ -784,3 +784,40 @@ fn tui_event_loop_survives_solver_panic() {
     let screen = terminal.backend().to_string();
     assert!(screen.contains("failed: solver panicked"), "{screen}");
 }
+
+#[test]
+fn tui_quit_prompt_save_without_file_asks_for_a_name_then_quits() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut app = deck_app();
+    app.path = None;
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1250");
+    run_sync(&mut app, c);
+    app.handle(ch('q'));
+    assert_eq!(app.mode, Mode::ConfirmQuit);
+    assert!(app.handle(ch('s')).is_empty());
+    assert!(matches!(
+        app.mode,
+        Mode::Prompt {
+            kind: PromptKind::SaveAs,
+            ..
+        }
+    ));
+    for _ in 0..20 {
+        app.handle(key(KeyCode::Backspace));
+    }
+    let target = dir.path().join("new.toml");
+    for c in target.display().to_string().chars() {
+        app.handle(ch(c));
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    let (tx, _rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    perform(&mut app, cmds, &mut worker);
+    assert!(app.quit, "{:?}", app.message);
+    assert!(target.exists());
+    assert_eq!(
+        DeckDoc::load(&target).expect("load").bearing(),
+        app.deck.bearing()
+    );
+}
