@@ -11,4 +11,5 @@ pub mod model;
 pub mod report;
 pub mod solve;
 pub mod thermal;
+pub mod tui;
 pub mod units;

@@ -20,7 +20,6 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         None => {
-            // Until the workbench lands: print the text report of the deck.
             let deck = match load_deck(cli.deck.as_deref(), &cli.set) {
                 Ok(d) => d,
                 Err(e) => {
@@ -28,14 +27,14 @@ fn main() -> ExitCode {
                     return ExitCode::from(1);
                 }
             };
-            match pipeline::run(&deck.bearing, &Request::default(), None) {
-                Ok(a) => {
-                    print!("{}", report::text::to_string(&a, report_units(deck.units)));
-                    ExitCode::SUCCESS
-                }
+            if let Err(e) = color_eyre::install() {
+                eprintln!("{e}");
+            }
+            match rollbench::tui::run_workbench_deck(deck, cli.deck.clone()) {
+                Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
-                    eprintln!("solve failed: {e}");
-                    ExitCode::from(2)
+                    eprintln!("workbench: {e:?}");
+                    ExitCode::from(1)
                 }
             }
         }

@@ -25,6 +25,8 @@ pub struct Request {
     pub heat: bool,
     /// Run the thermal transient (expensive; only when shown or reported).
     pub thermal_transient: bool,
+    /// The deck's thermal network, if any (§10); used by [`run`] and the workbench.
+    pub thermal: Option<ThermalModel>,
 }
 
 impl Default for Request {
@@ -34,6 +36,7 @@ impl Default for Request {
             contact: true,
             heat: true,
             thermal_transient: false,
+            thermal: None,
         }
     }
 }
@@ -99,13 +102,13 @@ const DYNAMIC_TOL_FACTOR: f64 = 10.0;
 /// Iteration limit of the dynamic-load iteration.
 const DYNAMIC_MAX: usize = 30;
 
-/// Run the pipeline on `bearing` (no thermal network).
+/// Run the pipeline on `bearing` with the thermal network of `request.thermal`, if any.
 pub fn run(
     bearing: &Bearing,
     request: &Request,
     cancel: Option<&AtomicBool>,
 ) -> Result<Analysis, SolveError> {
-    run_with_thermal(bearing, None, request, cancel)
+    run_with_thermal(bearing, request.thermal.as_ref(), request, cancel)
 }
 
 /// Run the pipeline on `bearing` with an optional thermal network (§10): steady state with

@@ -1,0 +1,879 @@
+//! Plain application state and its pure transitions (`App::handle`).
+//!
+//! `handle` never does I/O and never blocks: it mutates the state and returns
+//! [`Command`]s (solve, save, open, quit) that the runtime loop in `tui/mod.rs`
+//! performs, feeding the outcome back as another [`AppEvent`]. Tests drive it directly.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+use crate::model::Bearing;
+use crate::solve::pipeline::{Analysis, Request};
+
+use super::deck_io::{self, DeckDoc, FieldInfo, Units};
+use super::view_model;
+
+/// The panes, in Tab order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Pane {
+    /// Deck fields.
+    Inputs,
+    /// Per-roller table.
+    Rollers,
+    /// Load chart.
+    Load,
+    /// Thermal pane.
+    Thermal,
+    /// Roller stepper.
+    Stepper,
+}
+
+impl Pane {
+    /// All panes in Tab order.
+    pub const ALL: [Pane; 5] = [
+        Pane::Inputs,
+        Pane::Rollers,
+        Pane::Load,
+        Pane::Thermal,
+        Pane::Stepper,
+    ];
+
+    /// Title shown on the pane border and the switcher.
+    pub fn title(self) -> &'static str {
+        match self {
+            Pane::Inputs => "Inputs",
+            Pane::Rollers => "Rollers",
+            Pane::Load => "Load",
+            Pane::Thermal => "Thermal",
+            Pane::Stepper => "Stepper",
+        }
+    }
+
+    fn index(self) -> usize {
+        Pane::ALL.iter().position(|p| *p == self).unwrap_or(0)
+    }
+
+    fn offset(self, by: isize) -> Pane {
+        let n = Pane::ALL.len() as isize;
+        let i = (self.index() as isize + by).rem_euclid(n) as usize;
+        Pane::ALL.get(i).copied().unwrap_or(Pane::Inputs)
+    }
+}
+
+/// Outcome of a solve as delivered to the UI.
+pub type SolveOutcome = Result<Arc<Analysis>, String>;
+
+/// Everything that can happen to the app.
+#[derive(Debug, Clone)]
+pub enum AppEvent {
+    /// A key press.
+    Key(KeyEvent),
+    /// The terminal was resized to (width, height).
+    Resize(u16, u16),
+    /// The solver finished job `generation` (stale generations are ignored).
+    Solved {
+        /// Job generation.
+        generation: u64,
+        /// Result or failure reason.
+        outcome: SolveOutcome,
+    },
+    /// A save finished.
+    Saved(Result<PathBuf, String>),
+    /// An open (or revert) finished.
+    Opened(Result<(Box<DeckDoc>, PathBuf), String>),
+}
+
+/// One solve request for the worker.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolveJob {
+    /// Generation; the newest wins.
+    pub generation: u64,
+    /// The bearing to solve (SI).
+    pub bearing: Bearing,
+    /// What to compute (trace roller, thermal transient).
+    pub request: Request,
+}
+
+/// Side effects requested by [`App::handle`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// Submit a solve to the worker.
+    Solve(Box<SolveJob>),
+    /// Save this deck to this path (atomic), then report [`AppEvent::Saved`].
+    Save {
+        /// Target path.
+        path: PathBuf,
+        /// The deck to write.
+        deck: Box<DeckDoc>,
+    },
+    /// Load a deck from this path, then report [`AppEvent::Opened`].
+    Open(PathBuf),
+    /// Leave the workbench.
+    Quit,
+}
+
+/// State of the solver as shown in the status bar.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SolveState {
+    /// Nothing requested yet.
+    Idle,
+    /// A solve of this generation is in flight.
+    Running,
+    /// Last solve succeeded.
+    Solved {
+        /// Ring iterations.
+        iterations: usize,
+        /// Roller Newton iterations (all rollers, all ring iterations).
+        roller_iterations: usize,
+        /// Wall time, ms.
+        wall_ms: f64,
+    },
+    /// Last solve failed.
+    Failed(String),
+}
+
+/// What a text prompt is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PromptKind {
+    /// Save under a new path.
+    SaveAs,
+    /// Open a deck file.
+    Open,
+}
+
+/// Input mode (which keys mean what).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Mode {
+    /// Navigation.
+    Normal,
+    /// Editing the selected input field in place.
+    Editing {
+        /// Text typed so far.
+        buffer: String,
+        /// Cursor position (chars).
+        cursor: usize,
+        /// Validation error of the last commit attempt.
+        error: Option<String>,
+    },
+    /// A path prompt.
+    Prompt {
+        /// Purpose.
+        kind: PromptKind,
+        /// Text typed so far.
+        buffer: String,
+    },
+    /// Quit requested with unsaved changes.
+    ConfirmQuit,
+    /// Revert requested with unsaved changes.
+    ConfirmRevert,
+    /// Help overlay.
+    Help,
+}
+
+/// The whole UI state. Rendering reads it through `&App`; nothing is locked.
+#[derive(Debug, Clone)]
+pub struct App {
+    /// The deck under edit.
+    pub deck: DeckDoc,
+    /// File the deck came from / is saved to.
+    pub path: Option<PathBuf>,
+    /// Deck text at the last open/save (unsaved = differs).
+    pub saved_text: String,
+    /// Units used to display and type values.
+    pub display_units: Units,
+    /// Focused pane.
+    pub focus: Pane,
+    /// Terminal size (width, height).
+    pub size: (u16, u16),
+    /// Editable fields (cached list).
+    pub fields: Vec<FieldInfo>,
+    /// Selected field index.
+    pub input_sel: usize,
+    /// Input mode.
+    pub mode: Mode,
+    /// Keys edited but not yet reflected in a solution, with the generation that will.
+    pub dirty_keys: BTreeMap<&'static str, u64>,
+    /// Undo stack: deck before each edit, and the key edited.
+    pub undo: Vec<(DeckDoc, Option<&'static str>)>,
+    /// Redo stack.
+    pub redo: Vec<(DeckDoc, Option<&'static str>)>,
+    /// Last submitted solve generation.
+    pub generation: u64,
+    /// Request of the last submitted solve.
+    pub last_request: Request,
+    /// Solver state.
+    pub solve: SolveState,
+    /// Newest accepted solution.
+    pub analysis: Option<Arc<Analysis>>,
+    /// Selected roller (0-based).
+    pub roller_sel: usize,
+    /// Load chart shows lamina loads of the selected roller instead of roller loads.
+    pub chart_laminae: bool,
+    /// Stepper position (0-based trace step).
+    pub step: usize,
+    /// Thermal node chosen for the sparkline (`None`: the hottest).
+    pub thermal_node: Option<usize>,
+    /// One-line message for the status bar (saved, errors).
+    pub message: Option<String>,
+    /// Set when the app should exit.
+    pub quit: bool,
+    /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
+    pub quit_after_save: bool,
+}
+
+/// Terminal size at or above which all panes are shown together.
+pub const WIDE: (u16, u16) = (120, 36);
+/// Below this the app shows only a "terminal too small" message.
+pub const MIN_SIZE: (u16, u16) = (60, 16);
+/// Rows moved by PgUp/PgDn.
+const PAGE: usize = 10;
+
+impl App {
+    /// A new app on `deck` (from `path` if given). Call [`App::start`] for the first solve.
+    pub fn new(deck: DeckDoc, path: Option<PathBuf>) -> App {
+        let saved_text = deck.text();
+        let display_units = deck.units();
+        App {
+            deck,
+            path,
+            saved_text,
+            display_units,
+            focus: Pane::Inputs,
+            size: (80, 24),
+            fields: deck_io::field_list(),
+            input_sel: 0,
+            mode: Mode::Normal,
+            dirty_keys: BTreeMap::new(),
+            undo: Vec::new(),
+            redo: Vec::new(),
+            generation: 0,
+            last_request: Request::default(),
+            solve: SolveState::Idle,
+            analysis: None,
+            roller_sel: 0,
+            chart_laminae: false,
+            step: 0,
+            thermal_node: None,
+            message: None,
+            quit: false,
+            quit_after_save: false,
+        }
+    }
+
+    /// The first solve.
+    pub fn start(&mut self) -> Vec<Command> {
+        vec![self.submit()]
+    }
+
+    /// True if the deck differs from the last saved/opened text.
+    pub fn unsaved(&self) -> bool {
+        self.deck.text() != self.saved_text
+    }
+
+    /// True if all panes are laid out together at the current size.
+    pub fn wide(&self) -> bool {
+        self.size.0 >= WIDE.0 && self.size.1 >= WIDE.1
+    }
+
+    /// True if `pane` is on screen at the current size and focus.
+    pub fn visible(&self, pane: Pane) -> bool {
+        if self.wide() {
+            match pane {
+                Pane::Thermal => self.focus != Pane::Stepper,
+                Pane::Stepper => self.focus == Pane::Stepper,
+                _ => true,
+            }
+        } else {
+            self.focus == pane
+        }
+    }
+
+    /// What the visible panes need from the solver.
+    ///
+    /// Lead: stages added to `Request` later (contact, heat, …) default to off through
+    /// `..Request::default()`; switch them on here for the panes that show them.
+    #[allow(clippy::needless_update)] // future Request fields take their defaults
+    pub fn wanted_request(&self) -> Request {
+        Request {
+            trace_roller: self.visible(Pane::Stepper).then_some(self.roller_sel),
+            thermal_transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
+            thermal: self.deck.thermal_model(),
+            ..Request::default()
+        }
+    }
+
+    /// Number of rollers in the newest solution (or the deck).
+    pub fn roller_count(&self) -> usize {
+        self.analysis
+            .as_deref()
+            .map(view_model::roller_count)
+            .unwrap_or(self.deck.bearing().geometry.roller_count)
+    }
+
+    /// Number of recorded stepper steps.
+    pub fn trace_len(&self) -> usize {
+        self.analysis
+            .as_deref()
+            .map(view_model::trace_len)
+            .unwrap_or(0)
+    }
+
+    fn submit(&mut self) -> Command {
+        self.generation += 1;
+        self.last_request = self.wanted_request();
+        self.solve = SolveState::Running;
+        Command::Solve(Box::new(SolveJob {
+            generation: self.generation,
+            bearing: self.deck.bearing().clone(),
+            request: self.last_request.clone(),
+        }))
+    }
+
+    /// Re-solves if the visible panes now need more than the last request gave.
+    fn resolve_if_needed(&mut self) -> Vec<Command> {
+        let want = self.wanted_request();
+        let have = &self.last_request;
+        let need_trace = want.trace_roller.is_some() && want.trace_roller != have.trace_roller;
+        let need_thermal = want.thermal_transient && !have.thermal_transient;
+        if need_trace || need_thermal {
+            vec![self.submit()]
+        } else {
+            Vec::new()
+        }
+    }
+
+    /// Applies one event; returns the side effects to perform.
+    pub fn handle(&mut self, event: AppEvent) -> Vec<Command> {
+        match event {
+            AppEvent::Key(key) => {
+                if key.kind == KeyEventKind::Release {
+                    return Vec::new();
+                }
+                self.on_key(key)
+            }
+            AppEvent::Resize(w, h) => {
+                self.size = (w, h);
+                self.resolve_if_needed()
+            }
+            AppEvent::Solved {
+                generation,
+                outcome,
+            } => {
+                if generation != self.generation {
+                    return Vec::new(); // stale: a newer job is pending
+                }
+                match outcome {
+                    Ok(a) => {
+                        let s = view_model::solve_summary(&a);
+                        self.solve = SolveState::Solved {
+                            iterations: s.iterations,
+                            roller_iterations: s.roller_iterations,
+                            wall_ms: s.wall_ms,
+                        };
+                        self.roller_sel = self
+                            .roller_sel
+                            .min(view_model::roller_count(&a).saturating_sub(1));
+                        self.step = self.step.min(view_model::trace_len(&a).saturating_sub(1));
+                        self.analysis = Some(a);
+                        // these edits are now reflected in the results
+                        self.dirty_keys.retain(|_, g| *g > generation);
+                    }
+                    // a failed solve leaves the edits unsolved (still marked)
+                    Err(reason) => self.solve = SolveState::Failed(reason),
+                }
+                Vec::new()
+            }
+            AppEvent::Saved(Ok(path)) => {
+                self.message = Some(format!("saved {}", path.display()));
+                self.saved_text = self.deck.text();
+                self.path = Some(path);
+                if std::mem::take(&mut self.quit_after_save) {
+                    self.quit = true;
+                    return vec![Command::Quit];
+                }
+                Vec::new()
+            }
+            AppEvent::Saved(Err(e)) => {
+                self.message = Some(format!("save failed: {e}"));
+                self.quit_after_save = false;
+                Vec::new()
+            }
+            AppEvent::Opened(Ok((deck, path))) => {
+                let before = std::mem::replace(&mut self.deck, *deck);
+                if self.path.as_ref() == Some(&path) {
+                    self.undo.push((before, None)); // revert: undoable
+                } else {
+                    self.undo.clear(); // another file: old edits do not apply to it
+                }
+                self.redo.clear();
+                self.saved_text = self.deck.text();
+                self.display_units = self.deck.units();
+                self.message = Some(format!("opened {}", path.display()));
+                self.path = Some(path);
+                self.dirty_keys.clear();
+                self.input_sel = 0;
+                vec![self.submit()]
+            }
+            AppEvent::Opened(Err(e)) => {
+                self.message = Some(format!("open failed: {e}"));
+                Vec::new()
+            }
+        }
+    }
+
+    fn on_key(&mut self, key: KeyEvent) -> Vec<Command> {
+        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+        match self.mode.clone() {
+            Mode::Help => {
+                self.mode = Mode::Normal;
+                Vec::new()
+            }
+            Mode::ConfirmQuit => match key.code {
+                KeyCode::Char('y') | KeyCode::Char('Y') => {
+                    self.quit = true;
+                    vec![Command::Quit]
+                }
+                KeyCode::Char('s') | KeyCode::Char('S') => {
+                    self.mode = Mode::Normal;
+                    match &self.path {
+                        Some(p) => {
+                            self.quit = true;
+                            vec![
+                                Command::Save {
+                                    path: p.clone(),
+                                    deck: Box::new(self.deck.clone()),
+                                },
+                                Command::Quit,
+                            ]
+                        }
+                        None => {
+                            self.open_prompt(PromptKind::SaveAs);
+                            self.quit_after_save = true;
+                            Vec::new()
+                        }
+                    }
+                }
+                _ => {
+                    self.mode = Mode::Normal;
+                    Vec::new()
+                }
+            },
+            Mode::ConfirmRevert => {
+                self.mode = Mode::Normal;
+                match (key.code, &self.path) {
+                    (KeyCode::Char('y') | KeyCode::Char('Y'), Some(p)) => {
+                        vec![Command::Open(p.clone())]
+                    }
+                    _ => Vec::new(),
+                }
+            }
+            Mode::Prompt { kind, buffer } => self.on_prompt_key(key, kind, buffer),
+            Mode::Editing {
+                buffer,
+                cursor,
+                error,
+            } => self.on_edit_key(key, buffer, cursor, error),
+            Mode::Normal => self.on_normal_key(key, ctrl),
+        }
+    }
+
+    fn open_prompt(&mut self, kind: PromptKind) {
+        let buffer = match (kind, &self.path) {
+            (PromptKind::SaveAs, Some(p)) => p.display().to_string(),
+            (PromptKind::SaveAs, None) => "deck.toml".to_string(),
+            (PromptKind::Open, _) => String::new(),
+        };
+        self.mode = Mode::Prompt { kind, buffer };
+    }
+
+    fn on_normal_key(&mut self, key: KeyEvent, ctrl: bool) -> Vec<Command> {
+        self.message = None;
+        match key.code {
+            KeyCode::Char('c') if ctrl => self.request_quit(),
+            KeyCode::Char('q') | KeyCode::Esc => self.request_quit(),
+            KeyCode::Char('s') if ctrl => match &self.path {
+                Some(p) => vec![Command::Save {
+                    path: p.clone(),
+                    deck: Box::new(self.deck.clone()),
+                }],
+                None => {
+                    self.open_prompt(PromptKind::SaveAs);
+                    Vec::new()
+                }
+            },
+            KeyCode::Char('z') if ctrl => self.undo_edit(),
+            KeyCode::Char('y') | KeyCode::Char('r') if ctrl => self.redo_edit(),
+            KeyCode::Char('S') => {
+                self.open_prompt(PromptKind::SaveAs);
+                Vec::new()
+            }
+            KeyCode::Char('o') => {
+                self.open_prompt(PromptKind::Open);
+                Vec::new()
+            }
+            KeyCode::Char('R') => match &self.path {
+                None => {
+                    self.message = Some("nothing to revert to: the deck has no file".into());
+                    Vec::new()
+                }
+                Some(p) if !self.unsaved() => vec![Command::Open(p.clone())],
+                Some(_) => {
+                    self.mode = Mode::ConfirmRevert;
+                    Vec::new()
+                }
+            },
+            KeyCode::Char('?') => {
+                self.mode = Mode::Help;
+                Vec::new()
+            }
+            KeyCode::Char('u') => {
+                self.display_units = deck_io::other_units(self.display_units);
+                Vec::new()
+            }
+            KeyCode::Char('r') => vec![self.submit()],
+            KeyCode::Char('c') => {
+                self.chart_laminae = !self.chart_laminae;
+                Vec::new()
+            }
+            KeyCode::Tab => self.focus_to(self.focus.offset(1)),
+            KeyCode::BackTab => self.focus_to(self.focus.offset(-1)),
+            KeyCode::Char(d @ '1'..='5') => {
+                let i = (d as usize).saturating_sub('1' as usize);
+                match Pane::ALL.get(i) {
+                    Some(p) => self.focus_to(*p),
+                    None => Vec::new(),
+                }
+            }
+            KeyCode::PageDown if self.focus == Pane::Stepper => self.sideways(PAGE as isize),
+            KeyCode::PageUp if self.focus == Pane::Stepper => self.sideways(-(PAGE as isize)),
+            KeyCode::Home | KeyCode::Char('g') if self.focus == Pane::Stepper => {
+                self.sideways(isize::MIN / 2)
+            }
+            KeyCode::End | KeyCode::Char('G') if self.focus == Pane::Stepper => {
+                self.sideways(isize::MAX / 2)
+            }
+            KeyCode::Down | KeyCode::Char('j') => self.move_sel(1),
+            KeyCode::Up | KeyCode::Char('k') => self.move_sel(-1),
+            KeyCode::PageDown => self.move_sel(PAGE as isize),
+            KeyCode::PageUp => self.move_sel(-(PAGE as isize)),
+            KeyCode::Home | KeyCode::Char('g') => self.move_sel(isize::MIN / 2),
+            KeyCode::End | KeyCode::Char('G') => self.move_sel(isize::MAX / 2),
+            KeyCode::Right | KeyCode::Char('l') => self.sideways(1),
+            KeyCode::Left | KeyCode::Char('h') => self.sideways(-1),
+            KeyCode::Enter => self.enter(),
+            _ => Vec::new(),
+        }
+    }
+
+    fn request_quit(&mut self) -> Vec<Command> {
+        if self.unsaved() {
+            self.mode = Mode::ConfirmQuit;
+            Vec::new()
+        } else {
+            self.quit = true;
+            vec![Command::Quit]
+        }
+    }
+
+    fn focus_to(&mut self, pane: Pane) -> Vec<Command> {
+        self.focus = pane;
+        self.resolve_if_needed()
+    }
+
+    fn move_sel(&mut self, by: isize) -> Vec<Command> {
+        let step = |cur: usize, len: usize| -> usize {
+            if len == 0 {
+                return 0;
+            }
+            (cur as isize).saturating_add(by).clamp(0, len as isize - 1) as usize
+        };
+        match self.focus {
+            Pane::Inputs => {
+                self.input_sel = step(self.input_sel, self.fields.len());
+                Vec::new()
+            }
+            Pane::Rollers | Pane::Load | Pane::Stepper => {
+                let before = self.roller_sel;
+                self.roller_sel = step(self.roller_sel, self.roller_count());
+                if before != self.roller_sel {
+                    self.step = 0;
+                }
+                self.resolve_if_needed()
+            }
+            Pane::Thermal => {
+                // node whose transient is plotted; None = the hottest (view_model decides)
+                let next = self.thermal_node.map_or(0, |n| n as isize + by);
+                self.thermal_node = if next < 0 { None } else { Some(next as usize) };
+                Vec::new()
+            }
+        }
+    }
+
+    /// Left/right: stepper steps; load chart rollers.
+    fn sideways(&mut self, by: isize) -> Vec<Command> {
+        match self.focus {
+            Pane::Stepper => {
+                let n = self.trace_len();
+                if n > 0 {
+                    self.step = (self.step as isize)
+                        .saturating_add(by)
+                        .clamp(0, n as isize - 1) as usize;
+                }
+                Vec::new()
+            }
+            Pane::Load | Pane::Rollers => {
+                let n = self.roller_count();
+                if n > 0 {
+                    self.roller_sel =
+                        (self.roller_sel as isize + by).rem_euclid(n as isize) as usize;
+                    self.step = 0;
+                }
+                self.resolve_if_needed()
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    fn enter(&mut self) -> Vec<Command> {
+        match self.focus {
+            Pane::Inputs => {
+                if let Some(f) = self.fields.get(self.input_sel) {
+                    let buffer = self.deck.value(f.key, self.display_units);
+                    self.mode = Mode::Editing {
+                        cursor: buffer.chars().count(),
+                        buffer,
+                        error: None,
+                    };
+                }
+                Vec::new()
+            }
+            Pane::Rollers | Pane::Load => {
+                self.step = 0;
+                self.focus_to(Pane::Stepper)
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    fn on_edit_key(
+        &mut self,
+        key: KeyEvent,
+        mut buffer: String,
+        mut cursor: usize,
+        error: Option<String>,
+    ) -> Vec<Command> {
+        let byte_at = |s: &str, c: usize| s.char_indices().nth(c).map_or(s.len(), |(i, _)| i);
+        match key.code {
+            KeyCode::Esc => {
+                self.mode = Mode::Normal;
+                return Vec::new();
+            }
+            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                self.mode = Mode::Normal;
+                return Vec::new();
+            }
+            KeyCode::Enter => return self.commit_edit(buffer),
+            KeyCode::Char(ch) if !key.modifiers.contains(KeyModifiers::CONTROL) => {
+                let at = byte_at(&buffer, cursor);
+                buffer.insert(at, ch);
+                cursor += 1;
+            }
+            KeyCode::Backspace if cursor > 0 => {
+                let at = byte_at(&buffer, cursor - 1);
+                buffer.remove(at);
+                cursor -= 1;
+            }
+            KeyCode::Delete if cursor < buffer.chars().count() => {
+                let at = byte_at(&buffer, cursor);
+                buffer.remove(at);
+            }
+            KeyCode::Up | KeyCode::Down => {
+                // choice fields: cycle through the allowed values
+                let key_path = self.fields.get(self.input_sel).map(|f| f.key);
+                if let Some(list) = key_path.and_then(deck_io::choices) {
+                    let n = list.len();
+                    if n > 0 {
+                        let cur = list.iter().position(|c| *c == buffer.trim());
+                        let next = match (cur, key.code) {
+                            (Some(i), KeyCode::Down) => (i + 1) % n,
+                            (Some(i), _) => (i + n - 1) % n,
+                            (None, _) => 0,
+                        };
+                        buffer = list.get(next).map(|c| c.to_string()).unwrap_or_default();
+                        cursor = buffer.chars().count();
+                    }
+                }
+            }
+            KeyCode::Left => cursor = cursor.saturating_sub(1),
+            KeyCode::Right => cursor = (cursor + 1).min(buffer.chars().count()),
+            KeyCode::Home => cursor = 0,
+            KeyCode::End => cursor = buffer.chars().count(),
+            _ => {}
+        }
+        self.mode = Mode::Editing {
+            buffer,
+            cursor,
+            error,
+        };
+        Vec::new()
+    }
+
+    fn commit_edit(&mut self, buffer: String) -> Vec<Command> {
+        let Some(field) = self.fields.get(self.input_sel).copied() else {
+            self.mode = Mode::Normal;
+            return Vec::new();
+        };
+        if buffer.trim() == self.deck.value(field.key, self.display_units) {
+            self.mode = Mode::Normal; // unchanged: no edit, no solve
+            return Vec::new();
+        }
+        let mut next = self.deck.clone();
+        match next.set_value(field.key, &buffer, self.display_units) {
+            Ok(()) => {
+                let before = std::mem::replace(&mut self.deck, next);
+                self.undo.push((before, Some(field.key)));
+                self.redo.clear();
+                self.mode = Mode::Normal;
+                let cmd = self.submit();
+                self.dirty_keys.insert(field.key, self.generation);
+                vec![cmd]
+            }
+            Err(e) => {
+                let cursor = buffer.chars().count();
+                self.mode = Mode::Editing {
+                    buffer,
+                    cursor,
+                    error: Some(e),
+                };
+                Vec::new()
+            }
+        }
+    }
+
+    fn undo_edit(&mut self) -> Vec<Command> {
+        match self.undo.pop() {
+            Some((deck, key)) => {
+                let cur = std::mem::replace(&mut self.deck, deck);
+                self.redo.push((cur, key));
+                let cmd = self.submit();
+                if let Some(k) = key {
+                    self.dirty_keys.insert(k, self.generation);
+                }
+                self.message = Some(format!(
+                    "undo{}",
+                    key.map(|k| format!(" {k}")).unwrap_or_default()
+                ));
+                vec![cmd]
+            }
+            None => {
+                self.message = Some("nothing to undo".into());
+                Vec::new()
+            }
+        }
+    }
+
+    fn redo_edit(&mut self) -> Vec<Command> {
+        match self.redo.pop() {
+            Some((deck, key)) => {
+                let cur = std::mem::replace(&mut self.deck, deck);
+                self.undo.push((cur, key));
+                let cmd = self.submit();
+                if let Some(k) = key {
+                    self.dirty_keys.insert(k, self.generation);
+                }
+                self.message = Some(format!(
+                    "redo{}",
+                    key.map(|k| format!(" {k}")).unwrap_or_default()
+                ));
+                vec![cmd]
+            }
+            None => {
+                self.message = Some("nothing to redo".into());
+                Vec::new()
+            }
+        }
+    }
+
+    fn on_prompt_key(
+        &mut self,
+        key: KeyEvent,
+        kind: PromptKind,
+        mut buffer: String,
+    ) -> Vec<Command> {
+        match key.code {
+            KeyCode::Esc => {
+                self.mode = Mode::Normal;
+                self.quit_after_save = false;
+                return Vec::new();
+            }
+            KeyCode::Enter => {
+                self.mode = Mode::Normal;
+                let path = PathBuf::from(buffer.trim());
+                if buffer.trim().is_empty() {
+                    return Vec::new();
+                }
+                return match kind {
+                    PromptKind::SaveAs => vec![Command::Save {
+                        path,
+                        deck: Box::new(self.deck.clone()),
+                    }],
+                    PromptKind::Open => vec![Command::Open(path)],
+                };
+            }
+            KeyCode::Char(ch) if !key.modifiers.contains(KeyModifiers::CONTROL) => buffer.push(ch),
+            KeyCode::Backspace => {
+                buffer.pop();
+            }
+            _ => {}
+        }
+        self.mode = Mode::Prompt { kind, buffer };
+        Vec::new()
+    }
+}
+
+/// Every key binding, for the help overlay and the README: (keys, context, action).
+pub const KEYS: &[(&str, &str, &str)] = &[
+    ("Tab / Shift-Tab", "any", "next / previous pane"),
+    ("1..5", "any", "jump to a pane (numbers in the tab bar)"),
+    ("j k / ↓ ↑", "any", "move selection (field or roller)"),
+    (
+        "PgDn PgUp",
+        "any",
+        "move selection by 10 (Stepper: 10 steps)",
+    ),
+    (
+        "g G / Home End",
+        "any",
+        "first / last (Stepper: first / last step)",
+    ),
+    (
+        "j k / ↓ ↑",
+        "Thermal",
+        "plotted node (above the first: hottest)",
+    ),
+    ("Enter", "Inputs", "edit field; Enter commits, Esc cancels"),
+    (
+        "Enter",
+        "Rollers, Load",
+        "open the stepper on the selected roller",
+    ),
+    (
+        "h l / ← →",
+        "Stepper",
+        "step back / forward through iterations",
+    ),
+    ("h l / ← →", "Rollers, Load", "previous / next roller"),
+    ("c", "any", "load chart: roller loads ↔ lamina loads"),
+    ("u", "any", "display units SI ↔ US"),
+    ("r", "any", "re-solve now"),
+    ("Ctrl-z / Ctrl-y", "any", "undo / redo an edit"),
+    ("Ctrl-s", "any", "save (atomic, keeps .bak)"),
+    ("S", "any", "save as…"),
+    ("o", "any", "open a deck…"),
+    ("R", "any", "revert to the saved file"),
+    ("?", "any", "this help (any key closes)"),
+    ("q / Esc / Ctrl-c", "any", "quit (asks if unsaved)"),
+];

@@ -1,0 +1,179 @@
+//! The workbench: a live terminal UI over the pipeline (issue 6).
+//!
+//! Elm-style: [`App`] is plain state, [`App::handle`] a pure transition returning
+//! [`Command`]s, and drawing is `impl Widget for &App`. One [`AppEvent`] channel is fed
+//! by an input thread and the solver thread ([`worker`]); the loop blocks on it and
+//! redraws only after events, so an idle workbench uses no CPU.
+//!
+//! Modules: [`app`] (state, transitions, key table), [`render`] (panes), [`view_model`]
+//! (the only reader of `Analysis`), [`deck_io`] (the only user of the deck module),
+//! [`worker`] (solver thread).
+
+pub mod app;
+pub mod deck_io;
+pub mod render;
+pub mod view_model;
+pub mod worker;
+
+#[cfg(test)]
+mod tests;
+
+use std::collections::VecDeque;
+use std::path::PathBuf;
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::sync::Once;
+use std::thread;
+
+use color_eyre::eyre::eyre;
+use ratatui::backend::Backend;
+use ratatui::Terminal;
+
+pub use app::{App, AppEvent, Command, Pane, KEYS};
+pub use deck_io::DeckDoc;
+pub use worker::{pipeline_solver, Solver, Worker};
+
+/// Opens the workbench on `deck_text` (read from `source_path`, if any) in the current
+/// terminal, and restores the terminal on every exit path. `color_eyre::install()` must
+/// have been called first (main does), so ratatui's restore hook runs before its report.
+pub fn run_workbench(deck_text: &str, source_path: Option<PathBuf>) -> color_eyre::Result<()> {
+    let name = source_path
+        .as_ref()
+        .map(|p| p.display().to_string())
+        .unwrap_or_else(|| "default deck".to_string());
+    let deck = DeckDoc::parse(deck_text, &name).map_err(|e| eyre!(e))?;
+    run_app(App::new(deck, source_path))
+}
+
+/// Like [`run_workbench`] for a deck the caller already parsed (the CLI's, with any
+/// `--set` overrides). If the deck differs from the file at `source_path` (overrides
+/// applied), it starts marked unsaved.
+pub fn run_workbench_deck(
+    deck: crate::deck::Deck,
+    source_path: Option<PathBuf>,
+) -> color_eyre::Result<()> {
+    let on_disk = source_path
+        .as_ref()
+        .and_then(|p| std::fs::read_to_string(p).ok());
+    let mut app = App::new(DeckDoc::from_deck(deck), source_path);
+    if let Some(text) = on_disk {
+        app.saved_text = text;
+    }
+    run_app(app)
+}
+
+/// Takes over the terminal, runs the loop, restores the terminal on every exit path.
+fn run_app(app: App) -> color_eyre::Result<()> {
+    let mut terminal = ratatui::try_init()?;
+    install_solver_panic_filter();
+    let (tx, rx) = mpsc::channel();
+    spawn_input_thread(tx.clone())?;
+    let result = (|| -> color_eyre::Result<()> {
+        let mut worker = Worker::spawn(tx.clone(), pipeline_solver())?;
+        run_loop(&mut terminal, app, &rx, &mut worker)?;
+        Ok(())
+    })();
+    let restored = ratatui::try_restore();
+    result?;
+    restored?;
+    Ok(())
+}
+
+/// Panics on the solver thread are caught by the worker and shown as a failed solve;
+/// keep them from reaching ratatui's hook, which would restore (leave) the terminal
+/// while the UI keeps running. Panics anywhere else go to the previous hooks.
+pub fn install_solver_panic_filter() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if thread::current().name() == Some(worker::SOLVER_THREAD) {
+                return;
+            }
+            previous(info);
+        }));
+    });
+}
+
+/// Reads terminal events forever and forwards keys and resizes.
+fn spawn_input_thread(tx: Sender<AppEvent>) -> std::io::Result<()> {
+    thread::Builder::new().name("input".into()).spawn(move || {
+        use crossterm::event::{self, Event};
+        while let Ok(ev) = event::read() {
+            let msg = match ev {
+                Event::Key(k) => AppEvent::Key(k),
+                Event::Resize(w, h) => AppEvent::Resize(w, h),
+                _ => continue,
+            };
+            if tx.send(msg).is_err() {
+                break;
+            }
+        }
+    })?;
+    Ok(())
+}
+
+/// The event loop, generic over the backend so tests can run it on `TestBackend`.
+/// Draws, then blocks on `rx` (fed by the input thread and the worker); returns the
+/// final app state on quit or when every sender is gone.
+pub fn run_loop<B: Backend>(
+    terminal: &mut Terminal<B>,
+    mut app: App,
+    rx: &Receiver<AppEvent>,
+    worker: &mut Worker,
+) -> color_eyre::Result<App>
+where
+    B::Error: std::error::Error + Send + Sync + 'static,
+{
+    let size = terminal.size()?;
+    app.size = (size.width, size.height);
+    let first = app.start();
+    perform(&mut app, first, worker);
+    loop {
+        if app.quit {
+            break;
+        }
+        terminal.draw(|f| f.render_widget(&app, f.area()))?;
+        let Ok(ev) = rx.recv() else { break };
+        let cmds = app.handle(ev);
+        perform(&mut app, cmds, worker);
+        // Coalesce whatever else is already queued before the next frame.
+        while let Ok(ev) = rx.try_recv() {
+            let cmds = app.handle(ev);
+            perform(&mut app, cmds, worker);
+        }
+    }
+    Ok(app)
+}
+
+/// Carries out commands; file I/O is synchronous (small files) and its outcome is fed
+/// back through [`App::handle`].
+pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
+    let mut queue: VecDeque<Command> = cmds.into();
+    let mut save_failed = false;
+    while let Some(cmd) = queue.pop_front() {
+        let more = match cmd {
+            Command::Solve(job) => {
+                worker.submit(*job);
+                Vec::new()
+            }
+            Command::Save { path, deck } => {
+                let r = deck.save(&path).map(|()| path);
+                save_failed |= r.is_err();
+                app.handle(AppEvent::Saved(r))
+            }
+            Command::Open(path) => {
+                let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));
+                app.handle(AppEvent::Opened(r))
+            }
+            Command::Quit => {
+                if save_failed {
+                    app.quit = false; // never lose a deck: stay when the save failed
+                } else {
+                    app.quit = true;
+                }
+                Vec::new()
+            }
+        };
+        queue.extend(more);
+    }
+}

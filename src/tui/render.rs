@@ -1,0 +1,750 @@
+//! Drawing: `impl Widget for &App`. Reads the state only; all solver data goes through
+//! [`view_model`]. Named 16-colour palette only, so it looks the same over any SSH link.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{
+    Axis, Block, Borders, Cell, Chart, Clear, Dataset, GraphType, Paragraph, Row, Sparkline,
+    StatefulWidget, Table, TableState, Widget, Wrap,
+};
+
+use super::app::{App, Mode, Pane, PromptKind, SolveState, KEYS, MIN_SIZE};
+use super::deck_io;
+use super::view_model::{self, DASH};
+
+const ACCENT: Color = Color::Cyan;
+const INNER: Color = Color::Cyan;
+const OUTER: Color = Color::Yellow;
+const DIM: Color = Color::DarkGray;
+
+impl Widget for &App {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
+            too_small(area, buf);
+            return;
+        }
+        let [header, body, status, hints] = Layout::vertical([
+            Constraint::Length(1),
+            Constraint::Min(0),
+            Constraint::Length(1),
+            Constraint::Length(1),
+        ])
+        .areas(area);
+        render_header(self, header, buf);
+        if self.wide() {
+            let inputs_w = (body.width * 38 / 100).max(46);
+            let [left, right] =
+                Layout::horizontal([Constraint::Length(inputs_w), Constraint::Min(0)]).areas(body);
+            let [top, bottom] =
+                Layout::vertical([Constraint::Percentage(45), Constraint::Min(0)]).areas(right);
+            let split = if self.focus == Pane::Stepper { 40 } else { 55 };
+            let [chart, side] =
+                Layout::horizontal([Constraint::Percentage(split), Constraint::Min(0)])
+                    .areas(bottom);
+            render_pane(self, Pane::Inputs, left, buf);
+            render_pane(self, Pane::Rollers, top, buf);
+            render_pane(self, Pane::Load, chart, buf);
+            if self.focus == Pane::Stepper {
+                render_pane(self, Pane::Stepper, side, buf);
+            } else {
+                render_pane(self, Pane::Thermal, side, buf);
+            }
+        } else {
+            render_pane(self, self.focus, body, buf);
+        }
+        render_status(self, status, buf);
+        render_hints(self, hints, buf);
+        match &self.mode {
+            Mode::Help => render_help(area, buf),
+            Mode::Prompt { kind, buffer } => render_prompt(*kind, buffer, area, buf),
+            Mode::ConfirmQuit => render_confirm(
+                "Unsaved changes",
+                "s save and quit · y quit without saving · any other key: stay",
+                area,
+                buf,
+            ),
+            Mode::ConfirmRevert => render_confirm(
+                "Revert",
+                "y discard unsaved changes and reload the file · any other key: keep",
+                area,
+                buf,
+            ),
+            _ => {}
+        }
+    }
+}
+
+fn too_small(area: Rect, buf: &mut Buffer) {
+    let text = format!(
+        "terminal too small: {}×{}, need {}×{}",
+        area.width, area.height, MIN_SIZE.0, MIN_SIZE.1
+    );
+    Paragraph::new(text)
+        .wrap(Wrap { trim: true })
+        .style(Style::default().fg(Color::Yellow))
+        .render(area, buf);
+}
+
+fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
+    let wide = area.width >= 100;
+    let mut spans = Vec::new();
+    if wide {
+        spans.push(Span::styled(
+            " rollbench ",
+            Style::default()
+                .fg(Color::Black)
+                .bg(ACCENT)
+                .add_modifier(Modifier::BOLD),
+        ));
+    }
+    for (i, p) in Pane::ALL.iter().enumerate() {
+        let label = format!(" {}:{} ", i + 1, p.title());
+        let style = if *p == app.focus {
+            Style::default().fg(Color::Black).bg(Color::White)
+        } else if app.visible(*p) {
+            Style::default().fg(Color::White)
+        } else {
+            Style::default().fg(DIM)
+        };
+        spans.push(Span::styled(label, style));
+    }
+    Line::from(spans).render(area, buf);
+    let file = app
+        .path
+        .as_ref()
+        .and_then(|p| p.file_name())
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "(no file)".into());
+    let mut right = vec![Span::raw(file)];
+    if app.unsaved() {
+        right.push(Span::styled("[+]", Style::default().fg(Color::Yellow)));
+    }
+    if wide {
+        right.push(Span::raw(format!(" · {}", app.deck.name())));
+    }
+    right.push(Span::styled(
+        format!(" {} ", deck_io::units_label(app.display_units)),
+        Style::default().fg(Color::Black).bg(Color::Gray),
+    ));
+    let line = Line::from(right);
+    let w = (line.width() as u16).min(area.width);
+    let used = if wide { 11 + 50 } else { 50 };
+    if area.width > used + w {
+        let r = Rect {
+            x: area.x + area.width - w,
+            width: w,
+            ..area
+        };
+        line.render(r, buf);
+    }
+}
+
+fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
+    let focused = app.focus == pane;
+    let style = if focused {
+        Style::default().fg(ACCENT).add_modifier(Modifier::BOLD)
+    } else {
+        Style::default().fg(DIM)
+    };
+    Block::default()
+        .borders(Borders::ALL)
+        .border_style(style)
+        .title(Span::styled(format!(" {}{} ", pane.title(), extra), style))
+}
+
+fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
+    match pane {
+        Pane::Inputs => render_inputs(app, area, buf),
+        Pane::Rollers => render_rollers(app, area, buf),
+        Pane::Load => render_load(app, area, buf),
+        Pane::Thermal => render_thermal(app, area, buf),
+        Pane::Stepper => render_stepper(app, area, buf),
+    }
+}
+
+fn truncate(s: &str, w: usize) -> String {
+    if s.chars().count() <= w {
+        format!("{s:<w$}")
+    } else {
+        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
+        t.push('…');
+        t
+    }
+}
+
+fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
+    let block = pane_block(
+        app,
+        Pane::Inputs,
+        &format!(" [{}]", deck_io::units_label(app.display_units)),
+    );
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let w = inner.width as usize;
+    let label_w = (w * 9 / 20).clamp(8, 26).max(w.saturating_sub(20).min(22));
+    let value_w = 10usize;
+    let mut lines: Vec<Line> = Vec::new();
+    let mut sel_line = 0usize;
+    let mut group = "";
+    for (i, f) in app.fields.iter().enumerate() {
+        if f.group != group {
+            group = f.group;
+            lines.push(Line::styled(
+                format!("[{group}]"),
+                Style::default()
+                    .fg(Color::Magenta)
+                    .add_modifier(Modifier::BOLD),
+            ));
+        }
+        let selected = i == app.input_sel;
+        if selected {
+            sel_line = lines.len();
+        }
+        let dirty = app.dirty_keys.contains_key(f.key);
+        let marker = Span::styled(
+            if dirty { "•" } else { " " },
+            Style::default().fg(Color::Yellow),
+        );
+        let unit = deck_io::unit(f.key, app.display_units);
+        let label = Span::raw(truncate(f.label, label_w));
+        match (&app.mode, selected && app.focus == Pane::Inputs) {
+            (
+                Mode::Editing {
+                    buffer,
+                    cursor,
+                    error,
+                },
+                true,
+            ) => {
+                let (before, rest) = buffer.split_at(
+                    buffer
+                        .char_indices()
+                        .nth(*cursor)
+                        .map_or(buffer.len(), |(b, _)| b),
+                );
+                let mut rest_chars = rest.chars();
+                let at = rest_chars.next().map_or(" ".to_string(), String::from);
+                let after: String = rest_chars.collect();
+                let edit = Style::default().fg(Color::Black).bg(Color::Yellow);
+                let pad = value_w.saturating_sub(buffer.chars().count() + 1);
+                lines.push(Line::from(vec![
+                    marker,
+                    label,
+                    Span::raw(" ".repeat(pad + 1)),
+                    Span::styled(before.to_string(), edit),
+                    Span::styled(at, edit.add_modifier(Modifier::REVERSED)),
+                    Span::styled(after, edit),
+                    Span::raw(format!(" {unit}")),
+                ]));
+                let allowed = deck_io::allowed(f.key, app.display_units);
+                match error {
+                    Some(e) => lines.push(Line::styled(
+                        format!("  ✗ {e}"),
+                        Style::default().fg(Color::Red),
+                    )),
+                    None => lines.push(Line::styled(
+                        format!("  allowed: {allowed}"),
+                        Style::default().fg(DIM),
+                    )),
+                }
+            }
+            _ => {
+                let value = app.deck.display_value(f.key, app.display_units);
+                let style = if selected {
+                    let s = Style::default().add_modifier(Modifier::REVERSED);
+                    if app.focus == Pane::Inputs {
+                        s.fg(ACCENT)
+                    } else {
+                        s
+                    }
+                } else {
+                    Style::default()
+                };
+                lines.push(Line::from(vec![
+                    marker,
+                    Span::styled(
+                        format!("{} {:>value_w$} {unit}", truncate(f.label, label_w), value),
+                        style,
+                    ),
+                ]));
+            }
+        }
+    }
+    let h = inner.height as usize;
+    let want_bottom = sel_line + 2; // keep the edit/allowed line visible too
+    let offset = want_bottom.saturating_sub(h);
+    Paragraph::new(lines)
+        .scroll((offset.min(u16::MAX as usize) as u16, 0))
+        .render(inner, buf);
+}
+
+fn no_solution_text(app: &App) -> String {
+    match &app.solve {
+        SolveState::Failed(r) => format!("no solution: {r}"),
+        _ => "solving…".into(),
+    }
+}
+
+/// Title note when the panes show an older solution than the deck (last solve failed).
+fn stale_note(app: &App) -> &'static str {
+    match (&app.solve, &app.analysis) {
+        (SolveState::Failed(_), Some(_)) => " · last good solve",
+        _ => "",
+    }
+}
+
+fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
+    let block = pane_block(app, Pane::Rollers, stale_note(app));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let Some(a) = app.analysis.as_deref() else {
+        Paragraph::new(no_solution_text(app)).render(inner, buf);
+        return;
+    };
+    let [table_area, foot] =
+        Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(inner);
+    let cols = view_model::roller_columns(app.display_units);
+    let header = Row::new(cols.iter().map(|c| Cell::from(c.header.clone())))
+        .style(Style::default().fg(ACCENT).add_modifier(Modifier::BOLD));
+    let rows = view_model::roller_rows(a, app.display_units)
+        .into_iter()
+        .map(|r| {
+            Row::new(r.into_iter().map(|c| {
+                let style = if c == DASH {
+                    Style::default().fg(DIM)
+                } else {
+                    Style::default()
+                };
+                Cell::from(Line::from(c).right_aligned()).style(style)
+            }))
+        });
+    let widths: Vec<Constraint> = cols.iter().map(|c| Constraint::Length(c.width)).collect();
+    let table = Table::new(rows, widths)
+        .header(header)
+        .row_highlight_style(Style::default().fg(Color::Black).bg(Color::Yellow));
+    let mut state = TableState::default().with_selected(Some(app.roller_sel));
+    StatefulWidget::render(table, table_area, buf, &mut state);
+    let bl = view_model::bearing_lines(a, app.display_units);
+    let text: Vec<String> = bl.iter().take(2).map(|(k, v)| format!("{k} {v}")).collect();
+    Paragraph::new(text.join("  "))
+        .style(Style::default().fg(DIM))
+        .render(foot, buf);
+}
+
+fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
+    let mid = 0.5 * (b[0] + b[1]);
+    [b[0], mid, b[1]]
+        .iter()
+        .map(|v| Line::from(view_model::fixed(*v, prec)))
+        .collect()
+}
+
+fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
+    let Some(a) = app.analysis.as_deref() else {
+        let block = pane_block(app, Pane::Load, "");
+        let inner = block.inner(area);
+        block.render(area, buf);
+        Paragraph::new(no_solution_text(app)).render(inner, buf);
+        return;
+    };
+    let series = if app.chart_laminae {
+        view_model::lamina_loads(a, app.roller_sel, app.display_units)
+    } else {
+        Some(view_model::load_vs_azimuth(a, app.display_units))
+    };
+    let Some(s) = series else {
+        pane_block(app, Pane::Load, "").render(area, buf);
+        return;
+    };
+    let block = pane_block(
+        app,
+        Pane::Load,
+        &format!(" · {}{}", s.title, stale_note(app)),
+    );
+    let inner_ds = Dataset::default()
+        .name("inner")
+        .marker(Marker::Braille)
+        .graph_type(GraphType::Line)
+        .style(Style::default().fg(INNER))
+        .data(&s.inner);
+    let outer_ds = Dataset::default()
+        .name("outer")
+        .marker(Marker::Braille)
+        .graph_type(GraphType::Line)
+        .style(Style::default().fg(OUTER))
+        .data(&s.outer);
+    let x_prec = if app.chart_laminae && s.x_bounds[1] < 10.0 {
+        2
+    } else {
+        0
+    };
+    let mut datasets = vec![inner_ds, outer_ds];
+    let marked: Vec<(f64, f64)> = if app.chart_laminae {
+        Vec::new()
+    } else {
+        [&s.inner, &s.outer]
+            .iter()
+            .filter_map(|v| v.get(app.roller_sel).copied())
+            .collect()
+    };
+    if !marked.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name(format!("roller {}", app.roller_sel + 1))
+                .marker(Marker::Block)
+                .graph_type(GraphType::Scatter)
+                .style(Style::default().fg(Color::White))
+                .data(&marked),
+        );
+    }
+    let chart = Chart::new(datasets)
+        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
+        .block(block)
+        .x_axis(
+            Axis::default()
+                .title(s.x_label.clone())
+                .style(Style::default().fg(DIM))
+                .bounds(s.x_bounds)
+                .labels(axis_labels(s.x_bounds, x_prec)),
+        )
+        .y_axis(
+            Axis::default()
+                .title(s.y_label.clone())
+                .style(Style::default().fg(DIM))
+                .bounds(s.y_bounds)
+                .labels(axis_labels(s.y_bounds, 0)),
+        );
+    chart.render(area, buf);
+}
+
+fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
+    let block = pane_block(app, Pane::Thermal, "");
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let view = app
+        .analysis
+        .as_deref()
+        .and_then(|a| view_model::thermal_view(a, app.display_units, app.thermal_node));
+    let Some(t) = view else {
+        let msg = if app.deck.has_thermal() {
+            "thermal results not available in this build"
+        } else {
+            "no thermal model in this deck"
+        };
+        Paragraph::new(msg)
+            .style(Style::default().fg(DIM))
+            .wrap(Wrap { trim: true })
+            .render(inner, buf);
+        return;
+    };
+    render_thermal_view(&t, inner, buf);
+}
+
+/// The thermal pane's contents (inside the border) for a given view.
+pub fn render_thermal_view(t: &view_model::ThermalView, inner: Rect, buf: &mut Buffer) {
+    let [title, spark, table] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Length(4),
+        Constraint::Min(0),
+    ])
+    .areas(inner);
+    let limit = match t.time_to_limit_s {
+        Some(s) => format!("limit in {} s", view_model::fixed(s, 1)),
+        None => "limit not reached".into(),
+    };
+    Paragraph::new(format!(
+        "{} over {} s · {}",
+        t.series_name,
+        view_model::fixed(t.series_span_s, 0),
+        limit
+    ))
+    .render(title, buf);
+    // Sparkline bars are integers: map the series onto 1..=1000 between its extremes.
+    let lo = t.series.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = t.series.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let data: Vec<u64> = t
+        .series
+        .iter()
+        .map(|v| (1.0 + (v - lo).max(0.0) / span * 999.0).round() as u64)
+        .collect();
+    Sparkline::default()
+        .data(&data)
+        .style(Style::default().fg(Color::Red))
+        .render(spark, buf);
+    let rows = t.steady.iter().map(|(n, v)| {
+        Row::new(vec![
+            Cell::from(n.clone()),
+            Cell::from(Line::from(view_model::fixed(*v, 1)).right_aligned()),
+        ])
+    });
+    let steady = Table::new(rows, [Constraint::Min(10), Constraint::Length(10)]).header(
+        Row::new(vec![
+            Cell::from("node"),
+            Cell::from(format!("T {}", t.temperature_unit)),
+        ])
+        .style(Style::default().fg(ACCENT)),
+    );
+    Widget::render(steady, table, buf);
+}
+
+/// One cell per value, ▁..█ scaled to `max`.
+fn bar_row(values: &[f64], max: f64) -> String {
+    const BARS: [char; 9] = [' ', '▁', '▂', '▃', '▄', '▅', '▆', '▇', '█'];
+    values
+        .iter()
+        .map(|&v| {
+            if max > 0.0 && v > 0.0 {
+                let i = ((v / max) * 8.0).round().clamp(1.0, 8.0) as usize;
+                BARS.get(i).copied().unwrap_or('█')
+            } else {
+                '·'
+            }
+        })
+        .collect()
+}
+
+fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
+    let n = app.trace_len();
+    let extra = if n > 0 {
+        format!(
+            " · roller {} · step {}/{}",
+            app.roller_sel + 1,
+            app.step + 1,
+            n
+        )
+    } else {
+        format!(" · roller {}", app.roller_sel + 1)
+    };
+    let block = pane_block(app, Pane::Stepper, &extra);
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let view = app
+        .analysis
+        .as_deref()
+        .and_then(|a| view_model::trace_step(a, app.step, app.display_units));
+    let Some(v) = view else {
+        let msg = match &app.solve {
+            SolveState::Failed(r) => format!("no trace: {r}"),
+            SolveState::Running => "recording the equilibrium iterations…".into(),
+            _ => "no trace recorded (r re-solves)".into(),
+        };
+        Paragraph::new(msg)
+            .wrap(Wrap { trim: true })
+            .render(inner, buf);
+        return;
+    };
+    let lw = 18usize;
+    let mut lines: Vec<Line> = v
+        .lines
+        .iter()
+        .map(|(k, val)| {
+            Line::from(vec![
+                Span::styled(format!("{k:<lw$}"), Style::default().fg(DIM)),
+                Span::raw(val.clone()),
+            ])
+        })
+        .collect();
+    let lmax = v
+        .inner_load
+        .iter()
+        .chain(&v.outer_load)
+        .copied()
+        .fold(0.0, f64::max);
+    let amax = v
+        .inner_approach
+        .iter()
+        .chain(&v.outer_approach)
+        .copied()
+        .fold(0.0, f64::max);
+    lines.push(Line::raw(""));
+    lines.push(Line::from(vec![
+        Span::styled(format!("{:<lw$}", "inner load"), Style::default().fg(DIM)),
+        Span::styled(bar_row(&v.inner_load, lmax), Style::default().fg(INNER)),
+    ]));
+    lines.push(Line::from(vec![
+        Span::styled(format!("{:<lw$}", "outer load"), Style::default().fg(DIM)),
+        Span::styled(bar_row(&v.outer_load, lmax), Style::default().fg(OUTER)),
+    ]));
+    lines.push(Line::from(vec![
+        Span::styled(
+            format!("{:<lw$}", "inner approach"),
+            Style::default().fg(DIM),
+        ),
+        Span::styled(bar_row(&v.inner_approach, amax), Style::default().fg(INNER)),
+    ]));
+    lines.push(Line::from(vec![
+        Span::styled(
+            format!("{:<lw$}", "outer approach"),
+            Style::default().fg(DIM),
+        ),
+        Span::styled(bar_row(&v.outer_approach, amax), Style::default().fg(OUTER)),
+    ]));
+    lines.push(Line::styled(
+        format!(
+            "{:<lw$}{:.1} {} / {:.5} {}",
+            "full scale", lmax, v.force_unit, amax, v.approach_unit
+        ),
+        Style::default().fg(DIM),
+    ));
+    let used = lines.len() as u16 + 1;
+    let [top, history] =
+        Layout::vertical([Constraint::Length(used), Constraint::Min(0)]).areas(inner);
+    Paragraph::new(lines).render(top, buf);
+    if history.height < 3 {
+        return;
+    }
+    let Some(a) = app.analysis.as_deref() else {
+        return;
+    };
+    let rows = view_model::trace_rows(a, app.display_units);
+    let shown = history.height.saturating_sub(1) as usize;
+    let first = app
+        .step
+        .saturating_sub(shown / 2)
+        .min(rows.len().saturating_sub(shown));
+    let mut hist: Vec<Line> = vec![Line::styled(
+        view_model::trace_header(app.display_units),
+        Style::default().fg(ACCENT),
+    )];
+    for (i, r) in rows.iter().enumerate().skip(first).take(shown) {
+        let style = if i == app.step {
+            Style::default().fg(Color::Black).bg(Color::Yellow)
+        } else {
+            Style::default()
+        };
+        hist.push(Line::styled(r.clone(), style));
+    }
+    Paragraph::new(hist).render(history, buf);
+}
+
+fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
+    let (text, color) = match &app.solve {
+        SolveState::Idle => ("idle".to_string(), DIM),
+        SolveState::Running => ("● solving…".to_string(), Color::Yellow),
+        SolveState::Solved {
+            iterations,
+            roller_iterations,
+            wall_ms,
+        } => (
+            format!(
+                "✓ solved in {iterations} iterations ({roller_iterations} roller), {wall_ms:.1} ms"
+            ),
+            Color::Green,
+        ),
+        SolveState::Failed(r) => (format!("✗ failed: {r}"), Color::Red),
+    };
+    let mut spans = vec![Span::styled(
+        text,
+        Style::default().fg(color).add_modifier(Modifier::BOLD),
+    )];
+    if app.unsaved() {
+        spans.push(Span::styled(
+            " │ [+] unsaved",
+            Style::default().fg(Color::Yellow),
+        ));
+    }
+    if !app.dirty_keys.is_empty() {
+        spans.push(Span::styled(
+            format!(" │ • {} edited, not solved", app.dirty_keys.len()),
+            Style::default().fg(Color::Yellow),
+        ));
+    }
+    if let Some(m) = &app.message {
+        spans.push(Span::raw(format!(" │ {m}")));
+    }
+    Line::from(spans).render(area, buf);
+}
+
+fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
+    let hints = match &app.mode {
+        Mode::Editing { .. } => "Enter commit · Esc cancel · ←→ move · ↑↓ cycle choices · Backspace/Del erase",
+        Mode::Prompt { .. } => "type a path · Enter confirm · Esc cancel",
+        Mode::ConfirmQuit | Mode::ConfirmRevert => "answer the prompt",
+        Mode::Help => "any key closes help",
+        Mode::Normal => match app.focus {
+            Pane::Inputs => "Tab pane · jk move · Enter edit · u units · ^z/^y undo/redo · ^s save · ? help · q quit",
+            Pane::Rollers | Pane::Load => "Tab pane · jk roller · Enter stepper · c chart · u units · ^s save · ? help · q quit",
+            Pane::Stepper => "Tab pane · hl step · PgUp/PgDn ±10 · jk roller · u units · ? help · q quit",
+            Pane::Thermal => "Tab pane · jk node · u units · ^s save · ? help · q quit",
+        },
+    };
+    Paragraph::new(hints)
+        .style(Style::default().fg(Color::Black).bg(Color::Gray))
+        .render(area, buf);
+}
+
+fn centered(area: Rect, w: u16, h: u16) -> Rect {
+    let w = w.min(area.width);
+    let h = h.min(area.height);
+    Rect {
+        x: area.x + (area.width - w) / 2,
+        y: area.y + (area.height - h) / 2,
+        width: w,
+        height: h,
+    }
+}
+
+fn render_help(area: Rect, buf: &mut Buffer) {
+    let r = centered(area, 78, KEYS.len() as u16 + 3);
+    Clear.render(r, buf);
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .border_style(Style::default().fg(ACCENT))
+        .title(" Keys (any key closes) ");
+    let rows = KEYS.iter().map(|(k, ctx, what)| {
+        Row::new(vec![
+            Cell::from(*k).style(Style::default().fg(Color::Yellow)),
+            Cell::from(*ctx).style(Style::default().fg(DIM)),
+            Cell::from(*what),
+        ])
+    });
+    let help = Table::new(
+        rows,
+        [
+            Constraint::Length(17),
+            Constraint::Length(13),
+            Constraint::Min(10),
+        ],
+    )
+    .header(Row::new(vec!["key", "where", "action"]).style(Style::default().fg(ACCENT)))
+    .block(block);
+    Widget::render(help, r, buf);
+}
+
+fn render_prompt(kind: PromptKind, text: &str, area: Rect, buf: &mut Buffer) {
+    let title = match kind {
+        PromptKind::SaveAs => " Save deck as (Enter save, Esc cancel) ",
+        PromptKind::Open => " Open deck (Enter open, Esc cancel) ",
+    };
+    let r = centered(area, 64, 3);
+    Clear.render(r, buf);
+    Paragraph::new(Line::from(vec![
+        Span::raw(text.to_string()),
+        Span::styled(" ", Style::default().add_modifier(Modifier::REVERSED)),
+    ]))
+    .block(
+        Block::default()
+            .borders(Borders::ALL)
+            .border_style(Style::default().fg(Color::Yellow))
+            .title(title),
+    )
+    .render(r, buf);
+}
+
+fn render_confirm(title: &str, text: &str, area: Rect, buf: &mut Buffer) {
+    let r = centered(area, 56, 4);
+    Clear.render(r, buf);
+    Paragraph::new(text.to_string())
+        .wrap(Wrap { trim: true })
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_style(Style::default().fg(Color::Yellow))
+                .title(format!(" {title} ")),
+        )
+        .render(r, buf);
+}

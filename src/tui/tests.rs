@@ -1,0 +1,823 @@
+//! TUI tests: pure transitions, pane snapshots (solved synchronously), tiny sizes,
+//! the worker's supersede/panic behaviour, deck save/load through the app, and a
+//! scripted run of the whole event loop on `TestBackend`.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+use std::sync::Arc;
+use std::time::Duration;
+
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use insta::assert_snapshot;
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+
+use super::app::{Mode, PromptKind, SolveState};
+use super::*;
+use crate::solve::pipeline::{self, Analysis, Request};
+use crate::solve::SolveError;
+
+fn key(c: KeyCode) -> AppEvent {
+    AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
+}
+fn ch(c: char) -> AppEvent {
+    key(KeyCode::Char(c))
+}
+fn ctrl(c: char) -> AppEvent {
+    AppEvent::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL))
+}
+
+/// Solves a job synchronously, with the wall time zeroed so snapshots are stable.
+fn solve_now(job: &app::SolveJob) -> Analysis {
+    let mut a = pipeline::run(&job.bearing, &job.request, None).expect("aerospace solves");
+    a.load.stats.wall_time_s = 0.0;
+    a
+}
+
+/// Feeds every solve command back as a result, like the worker would (but inline).
+fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
+    let mut other = Vec::new();
+    for c in cmds {
+        match c {
+            Command::Solve(job) => {
+                let a = solve_now(&job);
+                let more = app.handle(AppEvent::Solved {
+                    generation: job.generation,
+                    outcome: Ok(Arc::new(a)),
+                });
+                other.extend(run_sync(app, more));
+            }
+            c => other.push(c),
+        }
+    }
+    other
+}
+
+fn deck_app() -> App {
+    let deck = DeckDoc::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml").expect("deck");
+    App::new(deck, Some(PathBuf::from("decks/aerospace.toml")))
+}
+
+/// The shipped aerospace deck, solved, at `w`×`h`, focused on `pane`.
+fn solved_app(pane: Pane, w: u16, h: u16) -> App {
+    let mut app = deck_app();
+    app.handle(AppEvent::Resize(w, h));
+    let cmds = app.start();
+    run_sync(&mut app, cmds);
+    app.focus = pane;
+    let cmds = app.handle(AppEvent::Resize(w, h)); // re-request what the pane needs
+    run_sync(&mut app, cmds);
+    app
+}
+
+fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
+    t.draw(|f| f.render_widget(app, f.area())).expect("draw");
+    t
+}
+
+fn field_index(app: &App, key: &str) -> usize {
+    app.fields
+        .iter()
+        .position(|f| f.key == key)
+        .expect("field exists")
+}
+
+fn select_field(app: &mut App, key: &str) {
+    app.focus = Pane::Inputs;
+    app.input_sel = field_index(app, key);
+}
+
+fn type_value(app: &mut App, text: &str) -> Vec<Command> {
+    app.handle(key(KeyCode::Enter));
+    for _ in 0..40 {
+        app.handle(key(KeyCode::Backspace));
+    }
+    for c in text.chars() {
+        app.handle(ch(c));
+    }
+    app.handle(key(KeyCode::Enter))
+}
+
+// ---------------------------------------------------------------- transitions
+
+#[test]
+fn tui_edit_commits_marks_and_solves() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    select_field(&mut app, "operating.radial_load");
+    let cmds = type_value(&mut app, "4000");
+    assert_eq!(app.mode, Mode::Normal);
+    assert_eq!(
+        app.deck.value("operating.radial_load", app.display_units),
+        "4000"
+    );
+    assert!(app.unsaved());
+    assert!(app.dirty_keys.contains_key("operating.radial_load"));
+    assert!(matches!(app.solve, SolveState::Running));
+    let [Command::Solve(job)] = cmds.as_slice() else {
+        panic!("expected one solve, got {cmds:?}");
+    };
+    assert_eq!(job.generation, app.generation);
+    assert!((job.bearing.operating.radial_load_n - 4000.0 * 4.448_221_615_260_5).abs() < 1e-6);
+    run_sync(&mut app, cmds);
+    assert!(app.dirty_keys.is_empty());
+    assert!(matches!(app.solve, SolveState::Solved { .. }));
+}
+
+#[test]
+fn tui_invalid_edit_shows_allowed_range_and_keeps_deck() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    let before = app.deck.clone();
+    select_field(&mut app, "geometry.contact_angle");
+    let cmds = type_value(&mut app, "95");
+    assert!(cmds.is_empty());
+    match &app.mode {
+        Mode::Editing { error: Some(e), .. } => assert!(e.contains("value"), "{e}"),
+        m => panic!("expected an edit error, got {m:?}"),
+    }
+    assert_eq!(app.deck, before);
+    app.handle(key(KeyCode::Esc));
+    assert_eq!(app.mode, Mode::Normal);
+    let cmds = type_value(&mut app, "abc");
+    assert!(cmds.is_empty());
+    assert!(matches!(app.mode, Mode::Editing { error: Some(_), .. }));
+}
+
+#[test]
+fn tui_unchanged_edit_does_not_solve() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    let g = app.generation;
+    app.handle(key(KeyCode::Enter));
+    let cmds = app.handle(key(KeyCode::Enter));
+    assert!(cmds.is_empty());
+    assert_eq!(app.generation, g);
+}
+
+#[test]
+fn tui_undo_redo() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    let original = app.deck.clone();
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1500");
+    run_sync(&mut app, c);
+    let edited = app.deck.clone();
+    assert_ne!(edited, original);
+    let cmds = app.handle(ctrl('z'));
+    assert!(matches!(cmds.as_slice(), [Command::Solve(_)]));
+    assert_eq!(app.deck, original);
+    assert!(!app.unsaved());
+    run_sync(&mut app, cmds);
+    app.handle(ctrl('y'));
+    assert_eq!(app.deck, edited);
+    assert!(app.handle(ctrl('y')).is_empty());
+    assert_eq!(app.message.as_deref(), Some("nothing to redo"));
+}
+
+#[test]
+fn tui_units_toggle_and_edit_in_other_units() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    assert_eq!(app.display_units, crate::units::Units::Us);
+    app.handle(ch('u'));
+    assert_eq!(app.display_units, crate::units::Units::Si);
+    assert_eq!(
+        app.deck.value("geometry.pitch_diameter", app.display_units),
+        "0.08382"
+    );
+    select_field(&mut app, "geometry.pitch_diameter");
+    let c = type_value(&mut app, "0.0889");
+    run_sync(&mut app, c);
+    // stored in the deck's own units (in): 0.0889 m = 3.5 in
+    assert_eq!(
+        app.deck
+            .value("geometry.pitch_diameter", crate::units::Units::Us),
+        "3.5"
+    );
+}
+
+#[test]
+fn tui_save_prompt_and_quit_prompt() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    app.path = None;
+    assert_eq!(app.handle(ctrl('s')), vec![]);
+    assert!(matches!(
+        app.mode,
+        Mode::Prompt {
+            kind: PromptKind::SaveAs,
+            ..
+        }
+    ));
+    for _ in 0..20 {
+        app.handle(key(KeyCode::Backspace));
+    }
+    for c in "out.toml".chars() {
+        app.handle(ch(c));
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    match cmds.as_slice() {
+        [Command::Save { path, .. }] => assert_eq!(path, &PathBuf::from("out.toml")),
+        c => panic!("expected save, got {c:?}"),
+    }
+    // quit with unsaved changes asks; any other key stays; y quits
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1200");
+    run_sync(&mut app, c);
+    assert!(app.handle(ch('q')).is_empty());
+    assert_eq!(app.mode, Mode::ConfirmQuit);
+    app.handle(ch('n'));
+    assert_eq!(app.mode, Mode::Normal);
+    assert!(!app.quit);
+    app.handle(key(KeyCode::Esc));
+    assert_eq!(app.handle(ch('y')), vec![Command::Quit]);
+    assert!(app.quit);
+}
+
+#[test]
+fn tui_quit_without_changes_is_immediate() {
+    let mut app = solved_app(Pane::Rollers, 80, 24);
+    assert_eq!(app.handle(ch('q')), vec![Command::Quit]);
+}
+
+#[test]
+fn tui_stepper_navigation() {
+    let mut app = solved_app(Pane::Rollers, 80, 24);
+    app.handle(ch('j'));
+    assert_eq!(app.roller_sel, 1);
+    let cmds = app.handle(key(KeyCode::Enter));
+    assert_eq!(app.focus, Pane::Stepper);
+    match cmds.as_slice() {
+        [Command::Solve(job)] => assert_eq!(job.request.trace_roller, Some(1)),
+        c => panic!("expected a traced solve, got {c:?}"),
+    }
+    run_sync(&mut app, cmds);
+    let n = app.trace_len();
+    assert!(n > 2, "trace has {n} steps");
+    assert_eq!(app.step, 0);
+    app.handle(ch('l'));
+    app.handle(key(KeyCode::Right));
+    assert_eq!(app.step, 2);
+    app.handle(ch('h'));
+    assert_eq!(app.step, 1);
+    for _ in 0..(n + 5) {
+        app.handle(ch('l'));
+    }
+    assert_eq!(app.step, n - 1);
+    app.handle(key(KeyCode::Home));
+    assert_eq!(app.step, 0);
+    app.handle(key(KeyCode::PageDown));
+    assert_eq!(app.step, 10.min(n - 1));
+    app.handle(ch('G'));
+    assert_eq!(app.step, n - 1);
+    app.handle(key(KeyCode::PageUp));
+    assert_eq!(app.step, n - 1 - 10.min(n - 1));
+    // another roller: new trace requested, step reset
+    let cmds = app.handle(ch('j'));
+    assert_eq!(app.step, 0);
+    assert!(matches!(cmds.as_slice(), [Command::Solve(j)] if j.request.trace_roller == Some(2)));
+}
+
+#[test]
+fn tui_stale_result_is_dropped() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    select_field(&mut app, "operating.axial_load");
+    let first = type_value(&mut app, "1100");
+    let second = type_value(&mut app, "1200");
+    let (Some(Command::Solve(j1)), Some(Command::Solve(j2))) = (first.first(), second.first())
+    else {
+        panic!("expected solves");
+    };
+    let stale = solve_now(j1);
+    app.handle(AppEvent::Solved {
+        generation: j1.generation,
+        outcome: Ok(Arc::new(stale)),
+    });
+    assert!(matches!(app.solve, SolveState::Running));
+    app.handle(AppEvent::Solved {
+        generation: j2.generation,
+        outcome: Err("boom".into()),
+    });
+    assert_eq!(app.solve, SolveState::Failed("boom".into()));
+    assert!(app.dirty_keys.contains_key("operating.axial_load"));
+}
+
+#[test]
+fn tui_thermal_pane_requests_transient_only_when_visible() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    assert!(!app.last_request.thermal_transient);
+    assert_eq!(app.last_request.trace_roller, None);
+    // the aerospace deck has no [thermal] table: nothing extra requested
+    let cmds = app.handle(ch('4'));
+    assert_eq!(app.focus, Pane::Thermal);
+    assert_eq!(
+        app.wanted_request().thermal_transient,
+        app.deck.has_thermal()
+    );
+    if !app.deck.has_thermal() {
+        assert!(cmds.is_empty());
+    }
+}
+
+// ---------------------------------------------------------------- decks
+
+#[test]
+fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("deck.toml");
+    std::fs::write(&path, crate::deck::DEFAULT_DECK).expect("write");
+    let deck = DeckDoc::load(&path).expect("load");
+    let mut app = App::new(deck, Some(path.clone()));
+    let (tx, _rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let cmds = app.start();
+    perform(&mut app, cmds, &mut worker);
+    select_field(&mut app, "operating.radial_load");
+    let cmds = type_value(&mut app, "3500");
+    perform(&mut app, cmds, &mut worker);
+    assert!(app.unsaved());
+    let cmds = app.handle(ctrl('s'));
+    perform(&mut app, cmds, &mut worker);
+    assert!(!app.unsaved(), "{:?}", app.message);
+    let back = DeckDoc::load(&path).expect("reload");
+    assert_eq!(back.bearing(), app.deck.bearing());
+    assert_eq!(back, app.deck);
+    assert!(dir.path().join("deck.toml.bak").exists());
+
+    // A failed save (temporary file cannot be created) leaves the file intact and the
+    // quit that followed it is cancelled.
+    let before = std::fs::read_to_string(&path).expect("read");
+    std::fs::create_dir(
+        dir.path()
+            .join(format!(".deck.toml.tmp-{}", std::process::id())),
+    )
+    .expect("block tmp");
+    let cmds = type_value(&mut app, "3600");
+    perform(&mut app, cmds, &mut worker);
+    app.handle(ch('q'));
+    let cmds = app.handle(ch('s'));
+    assert!(matches!(cmds.first(), Some(Command::Save { .. })));
+    perform(&mut app, cmds, &mut worker);
+    assert!(!app.quit, "must not quit after a failed save");
+    assert!(app.unsaved());
+    assert!(app.message.as_deref().unwrap_or("").contains("save failed"));
+    assert_eq!(std::fs::read_to_string(&path).expect("read"), before);
+}
+
+#[test]
+fn tui_open_and_revert() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("a.toml");
+    std::fs::write(&path, crate::deck::DEFAULT_DECK).expect("write");
+    let mut app = deck_app();
+    app.handle(ch('o'));
+    for c in path.display().to_string().chars() {
+        app.handle(ch(c));
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    assert_eq!(cmds, vec![Command::Open(path.clone())]);
+    let (tx, _rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    perform(&mut app, cmds, &mut worker);
+    assert_eq!(app.path.as_deref(), Some(path.as_path()));
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1300");
+    perform(&mut app, c, &mut worker);
+    assert!(app.unsaved());
+    assert!(app.handle(ch('R')).is_empty());
+    assert_eq!(app.mode, Mode::ConfirmRevert);
+    let cmds = app.handle(ch('y'));
+    perform(&mut app, cmds, &mut worker);
+    assert!(!app.unsaved());
+    // open of a missing file reports, keeps the deck
+    let cmds = vec![Command::Open(dir.path().join("missing.toml"))];
+    perform(&mut app, cmds, &mut worker);
+    assert!(app.message.as_deref().unwrap_or("").contains("open failed"));
+}
+
+// ---------------------------------------------------------------- snapshots
+
+fn snap(name: &str, app: &App, w: u16, h: u16) {
+    let t = draw(app, w, h);
+    assert_snapshot!(format!("{name}_{w}x{h}"), t.backend());
+}
+
+#[test]
+fn tui_snapshot_every_pane() {
+    for (w, h) in [(80, 24), (120, 40)] {
+        for pane in Pane::ALL {
+            let app = solved_app(pane, w, h);
+            snap(&format!("pane_{}", pane.title().to_lowercase()), &app, w, h);
+        }
+    }
+}
+
+#[test]
+fn tui_snapshot_overlays_and_modes() {
+    for (w, h) in [(80, 24), (120, 40)] {
+        let mut app = solved_app(Pane::Inputs, w, h);
+        app.handle(ch('?'));
+        snap("help", &app, w, h);
+
+        let mut app = solved_app(Pane::Inputs, w, h);
+        select_field(&mut app, "geometry.contact_angle");
+        type_value(&mut app, "95");
+        snap("edit_error", &app, w, h);
+
+        let mut app = solved_app(Pane::Inputs, w, h);
+        select_field(&mut app, "operating.radial_load");
+        app.handle(key(KeyCode::Enter));
+        snap("editing", &app, w, h);
+
+        let mut app = solved_app(Pane::Load, w, h);
+        app.handle(ch('j'));
+        app.handle(ch('c'));
+        snap("lamina_chart", &app, w, h);
+
+        let mut app = solved_app(Pane::Rollers, w, h);
+        app.handle(ch('u'));
+        snap("rollers_si", &app, w, h);
+
+        let mut app = solved_app(Pane::Stepper, w, h);
+        for _ in 0..3 {
+            app.handle(ch('l'));
+        }
+        snap("stepper_step4", &app, w, h);
+    }
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    select_field(&mut app, "operating.axial_load");
+    type_value(&mut app, "1234");
+    snap("unsolved_edit", &app, 80, 24);
+    app.handle(ch('q'));
+    snap("quit_prompt", &app, 80, 24);
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    app.handle(ch('S'));
+    snap("save_as_prompt", &app, 80, 24);
+    app.handle(AppEvent::Solved {
+        generation: app.generation,
+        outcome: Err("solver panicked: deliberate".into()),
+    });
+    app.handle(key(KeyCode::Esc));
+    app.analysis = None;
+    app.focus = Pane::Rollers;
+    snap("failed_solve", &app, 80, 24);
+}
+
+#[test]
+fn tui_tiny_sizes_do_not_panic() {
+    for pane in Pane::ALL {
+        let mut app = solved_app(pane, 80, 24);
+        for (w, h) in [
+            (1, 1),
+            (20, 5),
+            (40, 10),
+            (59, 15),
+            (60, 16),
+            (61, 17),
+            (119, 35),
+        ] {
+            app.handle(AppEvent::Resize(w, h));
+            let _ = draw(&app, w, h);
+            app.handle(ch('?'));
+            let _ = draw(&app, w, h);
+            app.handle(ch('?'));
+        }
+    }
+    assert_snapshot!("too_small_40x10", draw(&deck_app(), 40, 10).backend());
+}
+
+// ---------------------------------------------------------------- worker
+
+fn job(generation: u64) -> app::SolveJob {
+    app::SolveJob {
+        generation,
+        bearing: crate::model::Bearing::example_aerospace(),
+        request: Request::default(),
+    }
+}
+
+#[test]
+fn tui_worker_two_quick_edits_yield_one_result_for_the_second() {
+    let template = Arc::new(solve_now(&job(0)));
+    let t2 = Arc::clone(&template);
+    // A slow solver that honours the cancel flag between "iterations".
+    let solver: Solver = Arc::new(move |_, _, cancel: &AtomicBool| {
+        for _ in 0..40 {
+            if cancel.load(Ordering::Acquire) {
+                return Err(SolveError::Cancelled);
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        Ok((*t2).clone())
+    });
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, solver).expect("spawn");
+    worker.submit(job(1));
+    std::thread::sleep(Duration::from_millis(20)); // first is in flight
+    worker.submit(job(2));
+    match rx.recv_timeout(Duration::from_secs(10)) {
+        Ok(AppEvent::Solved {
+            generation,
+            outcome,
+        }) => {
+            assert_eq!(generation, 2);
+            assert!(outcome.is_ok());
+        }
+        other => panic!("expected a result, got {other:?}"),
+    }
+    assert!(rx.recv_timeout(Duration::from_millis(400)).is_err());
+}
+
+#[test]
+fn tui_worker_queued_burst_runs_only_newest() {
+    let calls = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    let c2 = Arc::clone(&calls);
+    let template = Arc::new(solve_now(&job(0)));
+    let solver: Solver = Arc::new(move |_, _, _| {
+        c2.fetch_add(1, Ordering::SeqCst);
+        std::thread::sleep(Duration::from_millis(30));
+        Ok((*template).clone())
+    });
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, solver).expect("spawn");
+    for g in 1..=5 {
+        worker.submit(job(g));
+    }
+    let mut got = Vec::new();
+    while let Ok(AppEvent::Solved { generation, .. }) = rx.recv_timeout(Duration::from_millis(800))
+    {
+        got.push(generation);
+    }
+    assert_eq!(got, vec![5]);
+    assert!(calls.load(Ordering::SeqCst) <= 2);
+}
+
+#[test]
+fn tui_worker_panic_becomes_failed_solve() {
+    install_solver_panic_filter(); // keeps the test output quiet, as in the app
+    let solver: Solver = Arc::new(|_, _, _| panic!("deliberate solver panic"));
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, solver).expect("spawn");
+    worker.submit(job(7));
+    let ev = rx.recv_timeout(Duration::from_secs(10)).expect("a message");
+    let mut app = deck_app();
+    app.generation = 7;
+    let AppEvent::Solved { outcome, .. } = &ev else {
+        panic!("expected Solved, got {ev:?}");
+    };
+    let msg = outcome.as_ref().err().cloned().unwrap_or_default();
+    assert!(msg.contains("deliberate solver panic"), "{msg}");
+    app.handle(ev);
+    assert!(matches!(app.solve, SolveState::Failed(ref m) if m.contains("panicked")));
+    // the worker survives and solves the next job
+    let ok: Solver = pipeline_solver();
+    drop(worker);
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, ok).expect("spawn");
+    worker.submit(job(8));
+    assert!(matches!(
+        rx.recv_timeout(Duration::from_secs(10)),
+        Ok(AppEvent::Solved {
+            generation: 8,
+            outcome: Ok(_)
+        })
+    ));
+}
+
+#[test]
+fn tui_event_loop_end_to_end_on_test_backend() {
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx.clone(), pipeline_solver()).expect("spawn");
+    let app = deck_app();
+    let script = std::thread::spawn({
+        let tx = tx.clone();
+        move || {
+            std::thread::sleep(Duration::from_millis(200)); // let the first solve land
+            for ev in [key(KeyCode::Tab), ch('j'), ch('j'), ch('q')] {
+                let _ = tx.send(ev);
+            }
+        }
+    });
+    let app = run_loop(&mut terminal, app, &rx, &mut worker).expect("loop");
+    let _ = script.join();
+    assert!(app.quit);
+    assert_eq!(app.focus, Pane::Rollers);
+    assert_eq!(app.roller_sel, 2);
+    assert!(app.analysis.is_some());
+    let screen = terminal.backend().to_string();
+    assert!(screen.contains("Rollers"), "{screen}");
+}
+
+/// Every shipped deck opens, solves (or shows why not) and draws its rollers table and
+/// load chart at 80×24, and the overview at 120×40.
+#[test]
+fn tui_snapshot_shipped_decks() {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))
+        .expect("decks dir")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    assert!(!paths.is_empty());
+    for path in paths {
+        let stem = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let deck = DeckDoc::load(&path).expect("shipped deck loads");
+        for (pane, w, h) in [
+            (Pane::Rollers, 80, 24),
+            (Pane::Load, 80, 24),
+            (Pane::Rollers, 120, 40),
+        ] {
+            let mut app = App::new(
+                deck.clone(),
+                Some(PathBuf::from(format!("decks/{stem}.toml"))),
+            );
+            app.handle(AppEvent::Resize(w, h));
+            let cmds = app.start();
+            for c in cmds {
+                if let Command::Solve(job) = c {
+                    let outcome = pipeline::run(&job.bearing, &job.request, None)
+                        .map(|mut a| {
+                            a.load.stats.wall_time_s = 0.0;
+                            Arc::new(a)
+                        })
+                        .map_err(|e| e.to_string());
+                    app.handle(AppEvent::Solved {
+                        generation: job.generation,
+                        outcome,
+                    });
+                }
+            }
+            app.focus = pane;
+            snap(
+                &format!("deck_{stem}_{}", pane.title().to_lowercase()),
+                &app,
+                w,
+                h,
+            );
+        }
+    }
+}
+
+#[test]
+fn tui_docs_list_every_key() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/workbench.md"))
+        .expect("docs/workbench.md");
+    for (k, ctx, what) in KEYS {
+        let row = format!("| `{k}` | {ctx} | {what} |");
+        assert!(doc.contains(&row), "docs/workbench.md lacks {row}");
+    }
+}
+
+#[test]
+fn tui_choice_field_cycles_with_arrows() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    select_field(&mut app, "lubricant.film_model");
+    assert_eq!(
+        app.deck.value("lubricant.film_model", app.display_units),
+        "grubin"
+    );
+    app.handle(key(KeyCode::Enter));
+    app.handle(key(KeyCode::Down));
+    match &app.mode {
+        Mode::Editing { buffer, .. } => assert_eq!(buffer, "dowson-higginson"),
+        m => panic!("{m:?}"),
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    assert!(matches!(cmds.as_slice(), [Command::Solve(_)]));
+    assert_eq!(
+        app.deck.value("lubricant.film_model", app.display_units),
+        "dowson-higginson"
+    );
+    assert_eq!(
+        app.deck.bearing().lubricant.film_model,
+        crate::model::FilmModel::DowsonHigginson
+    );
+}
+
+#[test]
+fn tui_parsed_deck_text_round_trips_unchanged() {
+    // run_workbench_deck compares the file text with the deck's text to decide
+    // "unsaved": an unmodified deck must give back its file byte for byte.
+    let deck = crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "x").expect("deck");
+    let doc = DeckDoc::from_deck(deck);
+    assert_eq!(doc.text(), crate::deck::DEFAULT_DECK);
+}
+
+/// The thermal pane's drawing, with a made-up view (the thermal stage is wired by the
+/// lead in `view_model::thermal_view`), plus degenerate series that must not panic.
+#[test]
+fn tui_thermal_view_renders() {
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    let view = view_model::ThermalView {
+        steady: vec![
+            ("inner ring".into(), 121.5),
+            ("outer ring".into(), 98.25),
+            ("oil out".into(), 104.0),
+        ],
+        temperature_unit: "°C".into(),
+        series_name: "inner ring".into(),
+        series: (0..40)
+            .map(|i| 40.0 + 80.0 * (1.0 - (-(i as f64) / 10.0).exp()))
+            .collect(),
+        series_span_s: 600.0,
+        time_to_limit_s: Some(312.25),
+    };
+    let area = Rect::new(0, 0, 40, 10);
+    let mut buf = Buffer::empty(area);
+    render::render_thermal_view(&view, area, &mut buf);
+    let text: String = (0..area.height)
+        .map(|y| {
+            (0..area.width)
+                .map(|x| buf[(x, y)].symbol().to_string())
+                .collect::<String>()
+                + "\n"
+        })
+        .collect();
+    assert_snapshot!("thermal_view_40x10", text);
+    for series in [vec![], vec![5.0], vec![f64::NAN, 1.0], vec![3.0; 10]] {
+        let v = view_model::ThermalView {
+            series,
+            ..view.clone()
+        };
+        for (w, h) in [(1, 1), (10, 3), (40, 10)] {
+            let r = Rect::new(0, 0, w, h);
+            let mut b = Buffer::empty(r);
+            render::render_thermal_view(&v, r, &mut b);
+        }
+    }
+}
+
+/// The whole loop with a solver that panics: the frame shows a failed solve and the
+/// app keeps handling keys.
+#[test]
+fn tui_event_loop_survives_solver_panic() {
+    install_solver_panic_filter();
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
+    let (tx, rx) = mpsc::channel();
+    let solver: Solver = Arc::new(|_, _, _| panic!("deliberate solver panic"));
+    let mut worker = Worker::spawn(tx.clone(), solver).expect("spawn");
+    // Keys arrive well after the first (panicking) solve has been reported.
+    let forward = std::thread::spawn({
+        let tx = tx.clone();
+        move || {
+            std::thread::sleep(Duration::from_millis(300));
+            for ev in [key(KeyCode::Tab), ch('q')] {
+                let _ = tx.send(ev);
+            }
+        }
+    });
+    let app = run_loop(&mut terminal, deck_app(), &rx, &mut worker).expect("loop");
+    let _ = forward.join();
+    drop(worker);
+    assert!(app.quit);
+    assert_eq!(app.focus, Pane::Rollers);
+    match &app.solve {
+        SolveState::Failed(m) => assert!(m.contains("deliberate solver panic"), "{m}"),
+        s => panic!("expected a failed solve, got {s:?}"),
+    }
+    terminal
+        .draw(|f| f.render_widget(&app, f.area()))
+        .expect("draw");
+    let screen = terminal.backend().to_string();
+    assert!(screen.contains("failed: solver panicked"), "{screen}");
+}
+
+#[test]
+fn tui_quit_prompt_save_without_file_asks_for_a_name_then_quits() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut app = deck_app();
+    app.path = None;
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1250");
+    run_sync(&mut app, c);
+    app.handle(ch('q'));
+    assert_eq!(app.mode, Mode::ConfirmQuit);
+    assert!(app.handle(ch('s')).is_empty());
+    assert!(matches!(
+        app.mode,
+        Mode::Prompt {
+            kind: PromptKind::SaveAs,
+            ..
+        }
+    ));
+    for _ in 0..20 {
+        app.handle(key(KeyCode::Backspace));
+    }
+    let target = dir.path().join("new.toml");
+    for c in target.display().to_string().chars() {
+        app.handle(ch(c));
+    }
+    let cmds = app.handle(key(KeyCode::Enter));
+    let (tx, _rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    perform(&mut app, cmds, &mut worker);
+    assert!(app.quit, "{:?}", app.message);
+    assert!(target.exists());
+    assert_eq!(
+        DeckDoc::load(&target).expect("load").bearing(),
+        app.deck.bearing()
+    );
+}

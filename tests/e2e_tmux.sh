@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# End-to-end run of the real workbench binary in an 80×24 tmux session: switch panes,
+# move the roller selection, open the stepper, edit a deck value (valid and invalid),
+# then quit through the unsaved-changes prompt. Asserts on `tmux capture-pane` text.
+# Exits non-zero on the first failed expectation, printing the screen.
+#
+# Usage: tests/e2e_tmux.sh            (from anywhere; builds the release binary)
+#        ROLLBENCH_BIN=path tests/e2e_tmux.sh   (use an already built binary)
+set -euo pipefail
+
+cd "$(dirname "$0")/.."
+
+if ! command -v tmux >/dev/null 2>&1; then
+    echo "e2e: tmux missing, installing it" >&2
+    if command -v apt-get >/dev/null 2>&1; then
+        SUDO=""
+        if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then SUDO=sudo; fi
+        $SUDO apt-get update -qq >/dev/null
+        DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq tmux >/dev/null
+    fi
+    command -v tmux >/dev/null 2>&1 || { echo "e2e: cannot install tmux" >&2; exit 1; }
+fi
+
+if [ -z "${ROLLBENCH_BIN:-}" ]; then
+    cargo build --release --quiet --bin rollbench
+    TARGET_DIR="${CARGO_TARGET_DIR:-target}"
+    ROLLBENCH_BIN="$(pwd)/$TARGET_DIR/release/rollbench"
+fi
+[ -x "$ROLLBENCH_BIN" ] || { echo "e2e: no binary at $ROLLBENCH_BIN" >&2; exit 1; }
+
+SOCK="rollbench-e2e-$$"           # private tmux server: never touches the user's sessions
+SESSION="e2e"
+WORK="$(mktemp -d)"
+cleanup() {
+    tmux -L "$SOCK" kill-server >/dev/null 2>&1 || true
+    rm -rf "$WORK"
+}
+trap cleanup EXIT
+
+tm() { tmux -L "$SOCK" "$@"; }
+screen() { tm capture-pane -p -t "$SESSION"; }
+fail() {
+    echo "e2e FAILED: $*" >&2
+    echo "----- screen -----" >&2
+    screen >&2 || true
+    echo "------------------" >&2
+    exit 1
+}
+# wait_for TEXT [SECONDS]: polls the screen until TEXT (fixed string) appears.
+wait_for() {
+    local text="$1" limit="${2:-15}" i
+    for ((i = 0; i < limit * 10; i++)); do
+        if screen | grep -qF -- "$text"; then return 0; fi
+        sleep 0.1
+    done
+    fail "expected \"$text\" on screen"
+}
+# absent TEXT: the screen must not show TEXT.
+absent() {
+    if screen | grep -qF -- "$1"; then fail "did not expect \"$1\" on screen"; fi
+}
+keys() { tm send-keys -t "$SESSION" "$@"; sleep 0.15; }
+
+tm new-session -d -s "$SESSION" -x 80 -y 24 \
+    "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN'; echo \"EXITED:\$?\"; sleep 60"
+
+# 1. Opens on the Inputs pane and solves the default deck.
+wait_for "Inputs [US]"
+wait_for "solved in"
+wait_for "Roller count Z"
+
+# 2. Tab to the Rollers table; j j selects roller 3; Enter opens its stepper.
+keys Tab
+wait_for "Qi lbf"
+wait_for "337.5"
+keys j j
+keys Enter
+wait_for "Stepper · roller 3 · step 1/"
+keys l l
+wait_for "step 3/"
+wait_for "resid ax,rad lbf"
+
+# 3. Help overlay lists the keys; any key closes it.
+keys '?'
+wait_for "Keys (any key closes)"
+wait_for "revert to the saved file"
+keys Space
+absent "Keys (any key closes)"
+
+# 4. Back to Inputs, j j selects "Roller length L"; an out-of-range value is refused
+#    with the allowed range inline, then a valid one is accepted and solved.
+keys 1
+keys j j
+keys Enter
+wait_for "allowed:"
+keys End BSpace BSpace BSpace BSpace BSpace BSpace 9 9
+keys Enter
+wait_for "out of range"
+keys Escape
+absent "out of range"
+keys Enter
+keys End BSpace BSpace BSpace BSpace BSpace BSpace 0 . 5 2
+keys Enter
+wait_for "0.52 in"
+wait_for "[+] unsaved"
+wait_for "solved in"
+
+# 5. Units toggle shows SI values.
+keys u
+wait_for "Inputs [SI]"
+wait_for "0.013208 m"
+keys u
+wait_for "Inputs [US]"
+
+# 6. q asks because of the unsaved edit; n stays.
+keys q
+wait_for "Unsaved changes"
+keys n
+absent "Unsaved changes"
+
+# 7. Save as (S): the prompt offers deck.toml in the working directory; the saved
+#    deck holds the edit and the unsaved marker goes away.
+keys S
+wait_for "Save deck as"
+keys Enter
+wait_for "saved deck.toml"
+absent "[+] unsaved"
+[ -f "$WORK/deck.toml" ] || fail "deck.toml was not written"
+grep -q "roller_length = 0.52" "$WORK/deck.toml" || fail "saved deck lacks the edit"
+
+# 8. Undo makes the deck differ from the file again; q asks, y quits cleanly.
+keys C-z
+wait_for "[+] unsaved"
+wait_for "0.5 in"
+keys q
+wait_for "Unsaved changes"
+keys y
+wait_for "EXITED:0"
+absent "Inputs [US]"      # the alternate screen is gone: terminal restored
+
+echo "e2e: ok"
