@@ -7,8 +7,10 @@
 
 pub mod cli;
 pub mod deck;
+pub mod fidelity;
 pub mod model;
 pub mod report;
 pub mod solve;
 pub mod thermal;
 pub mod units;
+pub mod validate;
