@@ -316,28 +316,220 @@ fn random_bearings_are_stable_heavy() {
     let strategy = params();
     let (mut solved, mut typed, mut invalid) = (0usize, 0usize, 0usize);
     let mut failures = Vec::new();
+    // Typed errors by feature, to show the solver's weak regions: (feature, errors, cases).
+    let mut by_feature: Vec<(&str, usize, usize)> = Vec::new();
+    let mut tally = |name: &'static str, hit: bool, err: bool| {
+        if !hit {
+            return;
+        }
+        match by_feature.iter_mut().find(|f| f.0 == name) {
+            Some(f) => {
+                f.1 += usize::from(err);
+                f.2 += 1;
+            }
+            None => by_feature.push((name, usize::from(err), 1)),
+        }
+    };
+    let mut shown = 0;
     for _ in 0..2000 {
         let Ok(tree) = strategy.new_tree(&mut runner) else {
             continue;
         };
-        let Some(b) = valid(&bearing(&tree.current())) else {
+        let p = tree.current();
+        let Some(b) = valid(&bearing(&p)) else {
             invalid += 1;
             continue;
         };
-        match check_no_panic(&b) {
+        let outcome = check_no_panic(&b);
+        let err = matches!(outcome, Ok(Outcome::TypedError));
+        let speed = p.dn > 0.0;
+        let loaded = p.radial_capacity > 0.0 || p.axial_capacity > 0.0;
+        let load = p.radial_capacity.max(p.axial_capacity);
+        tally("all", true, err);
+        tally("zero speed", !speed, err);
+        tally("DN > 1.5e6", p.dn > 1.5e6, err);
+        tally("unloaded", !loaded, err);
+        tally("unloaded at speed", !loaded && speed, err);
+        tally("load > 1 C", load > 1.0, err);
+        tally("0 < load < 0.1 C", loaded && load < 0.1, err);
+        tally("preload", p.clearance_ratio < 0.0, err);
+        tally("clearance > 1e-3 D", p.clearance_ratio > 1e-3, err);
+        tally("angle < 5 deg", p.contact_angle_deg < 5.0, err);
+        tally("angle > 20 deg", p.contact_angle_deg > 20.0, err);
+        tally(
+            "pure radial",
+            p.axial_capacity == 0.0 && p.radial_capacity > 0.0,
+            err,
+        );
+        tally(
+            "pure axial",
+            p.radial_capacity == 0.0 && p.axial_capacity > 0.0,
+            err,
+        );
+        tally("crown > 100 x", p.crown_log > 2.0, err);
+        tally("spherical outer", p.spherical_outer, err);
+        tally("outer ring turns", p.rotation > 0, err);
+        tally("App. C estimate only", p.estimate_only, err);
+        tally("ceramic rollers", p.ceramic_rollers, err);
+        match outcome {
             Ok(Outcome::Solved) => solved += 1,
             Ok(Outcome::TypedError) => {
                 typed += 1;
                 if let Err(e) = pipeline::run(&b, &Request::default(), None) {
-                    println!("typed error: {e}");
+                    if shown < 8 {
+                        shown += 1;
+                        println!("typed error: {e}\n{p:?}");
+                    }
                 }
             }
             Err(e) => failures.push((e, write_bearing(&b, Units::Si))),
         }
+    }
+    for (name, e, n) in &by_feature {
+        println!(
+            "{name:>22}: {e:>4} typed errors of {n:>4} ({:.0} %)",
+            100.0 * *e as f64 / (*n).max(1) as f64
+        );
     }
     println!("stability: 2000 cases, {solved} solved, {typed} typed errors, {invalid} invalid decks, {} failures", failures.len());
     for (e, deck) in &failures {
         println!("---- {e}\n{deck}");
     }
     assert!(failures.is_empty(), "{} failures", failures.len());
+}
+
+// ---- regressions: valid bearings that end in a typed non-convergence today -------------
+// Not contract violations (the error is typed), but solver robustness targets found by the
+// campaign and shrunk by proptest. Ignored until the solver handles them; each asserts a
+// successful solve. Run: cargo test --release --test stability regression_ -- --ignored
+
+fn must_solve(b: &Bearing) {
+    let b = valid(b).unwrap_or_else(|| panic!("regression deck is invalid"));
+    if let Err(e) = pipeline::run(&b, &Request::default(), None) {
+        panic!("{e}\n{}", write_bearing(&b, Units::Si));
+    }
+}
+
+/// The shrunk parameters shared by the regressions (overridden per case).
+fn base_params() -> Params {
+    Params {
+        roller_count: 6,
+        roller_diameter_mm: 3.0,
+        pitch_factor: 1.15,
+        length_ratio: 0.6,
+        effective_ratio: 0.7,
+        crown_log: 0.0,
+        inner_conformity: 1.0,
+        outer_conformity: 1.0,
+        spherical_outer: false,
+        contact_angle_deg: 0.0,
+        clearance_ratio: 0.0,
+        radial_capacity: 0.0,
+        axial_capacity: 0.0,
+        dn: 0.0,
+        rotation: 0,
+        ceramic_rollers: false,
+        laminae: 5,
+        estimate_only: false,
+    }
+}
+
+/// Pure radial load at rest on an angular-contact bearing (β = 14.552°, non-conforming
+/// crowns): Z = 29, D = 38.113 mm, P_t = 1039.53 mm, L = 22.868 mm, L_eff = 16.007 mm,
+/// crowns 952.41 (roller) / 1031.73 (inner) / 1053.0 mm (outer), zero clearance, steel,
+/// Γ = 5, F_r = 360.27 kN (0.72 C), F_a = 0. Fails with "roller 1 equilibrium did not
+/// converge after 60 iterations (residual 6.5e-1, tolerance 3.6e-4)"; also at F_r = 1 kN,
+/// with Γ = 21, and for β = 10–14° (β = 8° fails at 100 kN); β ≤ 5° and F_a = 0.5·F_r
+/// solve. The campaign's worst feature: ~70 % of pure radial cases end in a typed error.
+#[test]
+#[ignore = "solver robustness: fails today (typed RollerNotConverged)"]
+fn regression_pure_radial_at_rest_with_contact_angle() {
+    let p = Params {
+        roller_count: 29,
+        roller_diameter_mm: 38.11254230827307,
+        pitch_factor: 2.9547446752715514,
+        crown_log: 1.6987844240717331,
+        inner_conformity: 1.0832874763168918,
+        outer_conformity: 1.1056143438598058,
+        contact_angle_deg: 14.552005848855146,
+        radial_capacity: 0.7234094567017523,
+        ..base_params()
+    };
+    must_solve(&bearing(&p));
+}
+
+/// A spherical roller (crown radius = D/2 = 1.5 mm) in fully conforming raceways (crown
+/// radii 1.5 mm): Z = 6, D = 3 mm, L_eff = 1.26 mm, β = 0, zero clearance, at rest, pure
+/// radial 2.8 kN (2.27 C; fails from 10 N up). Pitch about the roller centre has no contact
+/// stiffness (only the 1e-7 cage spring): Newton converges linearly (residual 1.2e-6 vs
+/// 5e-7 after 1000 iterations). Raceway crowns of 1.6 mm solve.
+#[test]
+#[ignore = "solver robustness: fails today (typed RollerNotConverged)"]
+fn regression_conforming_sphere_at_rest() {
+    let p = Params {
+        radial_capacity: 2.2693179358215456,
+        ..base_params()
+    };
+    must_solve(&bearing(&p));
+}
+
+/// Unloaded at 1.2 million DN with clearance, β = 0, conforming crowns (crown 50.1 mm on
+/// roller and raceways): Z = 6, D = 3 mm, P_t = 13.1 mm, L = 5.52 mm, L_eff = 4.50 mm,
+/// clearance 5.19 µm, inner ring 119 360 rpm, Γ = 5. Fails with "roller 1 equilibrium did
+/// not converge after 2 iterations (residual 45, tolerance 2.7e-7)". Persisted by proptest
+/// in tests/stability.proptest-regressions (`every_valid_bearing_solves`).
+#[test]
+#[ignore = "solver robustness: fails today (typed RollerNotConverged)"]
+fn regression_unloaded_at_speed_conforming() {
+    let p = Params {
+        pitch_factor: 2.2865215163248815,
+        length_ratio: 1.8412920047916337,
+        effective_ratio: 0.8137890721726657,
+        crown_log: 1.3482609573838493,
+        clearance_ratio: 0.0017297871283576492,
+        dn: 1205632.0916079418,
+        ..base_params()
+    };
+    must_solve(&bearing(&p));
+}
+
+/// The shipped aerospace deck (US units, decks/aerospace.toml) at Γ = 41 with its own
+/// tolerance 1e-9 (found by `rollbench bench`): "load distribution did not converge after
+/// 100 iterations (residual 1.478e-5 N, tolerance 1.334e-5 N)" — the ring Newton stalls
+/// just above tolerance. Γ = 31 and 61 converge, and so does the same bearing from
+/// `Bearing::example_aerospace()` or decks/aerospace_si.toml, which differ from the US deck
+/// only by unit-conversion round-off: the stall is at round-off level.
+#[test]
+#[ignore = "solver robustness: fails today (typed NotConverged)"]
+fn regression_aerospace_41_laminae() {
+    let deck = Deck::parse(rollbench::deck::DEFAULT_DECK, "aerospace.toml");
+    let mut b = deck.map(|d| d.bearing).unwrap_or_else(|e| panic!("{e}"));
+    b.solver.laminae = 41;
+    assert_eq!(b.solver.force_tolerance, 1e-9);
+    if let Err(e) = pipeline::run(&b, &Request::default(), None) {
+        panic!("{e}");
+    }
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 2000, ..Config::default() })]
+    /// Stronger than the contract: every valid bearing should solve. Fails today (about 30 %
+    /// of random bearings end in a typed non-convergence); ignored, so that proptest shrinks
+    /// new failures into tests/stability.proptest-regressions for the solver work:
+    /// `cargo test --release --test stability every_valid -- --ignored`.
+    #[test]
+    #[ignore = "solver robustness target, fails today: see the regression tests above"]
+    fn every_valid_bearing_solves(p in params()) {
+        let Some(b) = valid(&bearing(&p)) else {
+            return Err(TestCaseError::reject("generator made an invalid deck"));
+        };
+        let r = pipeline::run(&b, &Request::default(), None);
+        prop_assert!(
+            r.is_ok(),
+            "{}\n{:?}\n{}",
+            r.err().map(|e| e.to_string()).unwrap_or_default(),
+            p,
+            write_bearing(&b, Units::Si)
+        );
+    }
 }
