@@ -331,6 +331,8 @@ fn random_bearings_are_stable_heavy() {
         }
     };
     let mut shown = 0;
+    // Slowest case (s) and its parameters: time is bounded by the iteration limits.
+    let mut slowest = (0.0f64, String::new());
     for _ in 0..2000 {
         let Ok(tree) = strategy.new_tree(&mut runner) else {
             continue;
@@ -340,7 +342,12 @@ fn random_bearings_are_stable_heavy() {
             invalid += 1;
             continue;
         };
+        let t = std::time::Instant::now();
         let outcome = check_no_panic(&b);
+        let dt = t.elapsed().as_secs_f64();
+        if dt > slowest.0 {
+            slowest = (dt, format!("{p:?}"));
+        }
         let err = matches!(outcome, Ok(Outcome::TypedError));
         let speed = p.dn > 0.0;
         let loaded = p.radial_capacity > 0.0 || p.axial_capacity > 0.0;
@@ -391,6 +398,7 @@ fn random_bearings_are_stable_heavy() {
             100.0 * *e as f64 / (*n).max(1) as f64
         );
     }
+    println!("slowest case: {:.1} ms\n{}", 1e3 * slowest.0, slowest.1);
     println!("stability: 2000 cases, {solved} solved, {typed} typed errors, {invalid} invalid decks, {} failures", failures.len());
     for (e, deck) in &failures {
         println!("---- {e}\n{deck}");
