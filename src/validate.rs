@@ -249,6 +249,32 @@ fn contact_cases(out: &mut Vec<Case>) {
         "closed form",
     ));
     out.push(case(
+        "line contact max von Mises σ_vM/p₀",
+        0.557,
+        j,
+        line.von_mises,
+        1e-3 / 0.557,
+        "published as ≈ 0.557; computes to 0.5575",
+    ));
+    out.push(case(
+        "line contact von Mises depth z/b",
+        0.70,
+        j,
+        line.von_mises_depth,
+        5e-3 / 0.70,
+        "half a unit of the last digit",
+    ));
+    // Circle end of τ₀: (t²−1)(2t−1) = 1 ⇒ t = (1 + √17)/4 exactly.
+    let t = (1.0 + 17f64.sqrt()) / 4.0;
+    out.push(case(
+        "circular contact orthogonal shear τ₀/p₀",
+        (2.0 * t - 1.0).sqrt() / (2.0 * t * (t + 1.0)),
+        "Lundberg–Palmgren 1947, t = (1+√17)/4",
+        circ.orthogonal_shear,
+        1e-12,
+        "bisection to round-off",
+    ));
+    out.push(case(
         "circular contact τ₁/p₀",
         0.31,
         j,
@@ -347,6 +373,62 @@ fn life_cases(out: &mut Vec<Case>) {
         1e-12,
         "round-off only",
     ));
+    out.push(case(
+        "bearing L-10 of two equal raceway lives L = 50 Mrev, Mrev",
+        50.0 * 2f64.powf(-8.0 / 9.0),
+        "seed 000 eq. 6.6, e = 9/8: L·2^(−1/e)",
+        life::bearing_l10(Some(50.0), Some(50.0)).unwrap_or(f64::NAN),
+        1e-12,
+        "round-off only",
+    ));
+    // Lundberg–Palmgren capacity: SI constant 552 (N, mm) against 49 500 (lbf, in).
+    let g = life::CapacityGeometry::from_geometry(&Bearing::example_aerospace().geometry);
+    let (d_in, l_in) = (g.roller_diameter_m / IN, g.effective_length_m / IN);
+    let inch = life::CAPACITY_CONSTANT_LBF_IN * 0.75 * (1.0 - g.theta).powf(29.0 / 27.0)
+        / (1.0 + g.theta).powf(0.25)
+        * (g.theta / g.contact_angle_rad.cos()).powf(2.0 / 9.0)
+        * d_in.powf(29.0 / 27.0)
+        * l_in.powf(7.0 / 9.0)
+        * (g.roller_count as f64).powf(-0.25)
+        * 4.448_221_615_260_5;
+    out.push(case(
+        "inner raceway capacity, aerospace bearing, ξ = 0.75, N",
+        inch,
+        "seed 000 eq. 6.2a with 49 500 (lbf, in)",
+        life::raceway_capacity(life::Raceway::Inner, 0.75, &g),
+        2e-3,
+        "552 and 49 500 are each rounded to 3 figures (±0.1 %)",
+    ));
+    out.push(case(
+        "ISO 281 reference viscosity ν₁, 500 rpm, d_m = 100 mm, mm²/s",
+        25.886,
+        "ISO 281:2007; hand calculation",
+        life::iso_reference_viscosity_m2_s(500.0, 0.1) * 1e6,
+        1e-4,
+        "hand value to 5 figures",
+    ));
+    out.push(case(
+        "ISO 281 reference viscosity ν₁, 3000 rpm, d_m = 100 mm, mm²/s",
+        8.2158,
+        "ISO 281:2007; hand calculation",
+        life::iso_reference_viscosity_m2_s(3000.0, 0.1) * 1e6,
+        1e-4,
+        "hand value to 5 figures",
+    ));
+    for (kappa, x, want) in [
+        (0.2, 0.3, 0.140_320),
+        (0.5, 0.1, 0.195_215),
+        (2.0, 0.5, 3.081_30),
+    ] {
+        out.push(case(
+            &format!("a_ISO radial roller, κ = {kappa}, e_C·C_u/P = {x}"),
+            want,
+            "ISO 281:2007 a_ISO; hand calculation",
+            life::a_iso_radial_roller(kappa, x),
+            1e-5,
+            "hand value to 6 figures",
+        ));
+    }
     out.push(case(
         "ASME lubrication factor at Λ ≤ 0.1",
         0.27,
@@ -460,6 +542,16 @@ fn heat_cases(out: &mut Vec<Case>) {
         1e-12,
         "same physics, independent arithmetic",
     ));
+    // Eq. 9.4 in its own units: H = 0.1928·D[in]·f[lbf]·|ΔΩ| Btu/hr.
+    let f = heat::cage_rail_friction_force_n(eta, w, d, dc, dw).unwrap_or(f64::NAN);
+    out.push(case(
+        "Petroff cage-rail heat, Btu/hr",
+        0.1928 * 3.75 * (f / 4.448_221_615_260_5) * dw,
+        "seed 000 eq. 9.4 (in, lbf)",
+        heat::watts_to_btu_per_hour(heat::cage_rail_power_w(eta, w, d, dc, dw).unwrap_or(f64::NAN)),
+        1e-3,
+        "the seed's 2.5933 in-lb/s per Btu/hr is 2.5939 today; 4-digit 0.1928",
+    ));
     let b = Bearing::example_aerospace();
     let nu = heat::kinematic_viscosity_m2_s(&b.lubricant);
     let m = heat::viscous_drag_torque_nm(
@@ -475,6 +567,21 @@ fn heat_cases(out: &mut Vec<Case>) {
         m,
         5e-3,
         "hand value rounded to 3 digits",
+    ));
+    // The seed's in-lb form T = 1.42e-5·Ψ·(νN)^(2/3)·d³ (in·lbf), Ψ = 5, 10 cSt, 12 000 rpm, 3.3 in.
+    let t_inlb = 1.42e-5 * 5.0 * f64::powf(10.0 * 12_000.0, 2.0 / 3.0) * 3.3f64.powi(3);
+    out.push(case(
+        "Palmgren drag torque vs the seed's inch form, in·lbf",
+        t_inlb,
+        "seed 000 eq. 9.5 (in·lbf)",
+        heat::newton_metres_to_inch_pounds(heat::viscous_drag_torque_nm(
+            5.0,
+            10e-6,
+            12_000.0 * RPM,
+            3.3 * IN,
+        )),
+        0.025,
+        "the seed's 1.42e-5 is 2.1 % below the exact conversion 1.4504e-5",
     ));
 }
 
@@ -652,8 +759,8 @@ mod tests {
     #[test]
     fn every_validation_case_passes() {
         let cases = cases();
-        // At least the cases the brief lists (8 Z × 2 Stribeck rows and 30 others).
-        assert!(cases.len() >= 40, "{}", cases.len());
+        // At least the cases the brief lists (8 Z × 2 Stribeck rows and 41 others).
+        assert!(cases.len() >= 57, "{}", cases.len());
         let failed: Vec<&Case> = cases.iter().filter(|c| !c.pass).collect();
         assert!(failed.is_empty(), "{failed:#?}");
     }
