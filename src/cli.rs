@@ -46,6 +46,27 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = UnitsArg::Us)]
         units: UnitsArg,
     },
+    /// Run every reference case through the library and print the validation table; exit 1 if any fails.
+    Validate {
+        /// Table format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Text)]
+        format: TableFormat,
+    },
+    /// Run time against error over laminae × force tolerance (default: every deck in decks/).
+    Bench {
+        /// Deck file (TOML); default: every deck in ./decks, or the embedded aerospace deck.
+        deck: Option<PathBuf>,
+        /// Table format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Text)]
+        format: TableFormat,
+    },
+}
+
+/// Formats of the validate and bench tables.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TableFormat {
+    Text,
+    Json,
 }
 
 /// Report formats.

@@ -7,9 +7,11 @@
 
 pub mod cli;
 pub mod deck;
+pub mod fidelity;
 pub mod model;
 pub mod report;
 pub mod solve;
 pub mod thermal;
 pub mod tui;
 pub mod units;
+pub mod validate;

@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use rollbench::cli::{load_deck, thermal_model, write_atomic, Cli, Command, Format, UnitsArg};
+use rollbench::cli::{load_deck, thermal_model, write_atomic, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::Units;
 use rollbench::report::{self, ReportUnits};
 use rollbench::solve::pipeline::{self, Request};
@@ -100,6 +100,26 @@ fn main() -> ExitCode {
             };
             print!("{}", rollbench::deck::template(u));
             ExitCode::SUCCESS
+        }
+        Some(Command::Validate { format }) => {
+            let cases = rollbench::validate::cases();
+            match format {
+                TableFormat::Text => print!("{}", rollbench::validate::to_text(&cases)),
+                TableFormat::Json => println!("{:#}", rollbench::validate::to_json(&cases)),
+            }
+            ExitCode::from(if rollbench::validate::all_pass(&cases) { 0 } else { 1 })
+        }
+        Some(Command::Bench { deck, format }) => {
+            match rollbench::fidelity::bench_command(deck.as_deref(), &cli.set, format == TableFormat::Json) {
+                Ok(text) => {
+                    print!("{text}");
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("{e}");
+                    ExitCode::from(1)
+                }
+            }
         }
     }
 }
