@@ -4,7 +4,9 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use rollbench::cli::{load_deck, thermal_model, write_atomic, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::cli::{
+    load_deck, thermal_model, write_atomic, Cli, Command, Format, TableFormat, UnitsArg,
+};
 use rollbench::deck::Units;
 use rollbench::report::{self, ReportUnits};
 use rollbench::solve::pipeline::{self, Request};
@@ -107,10 +109,18 @@ fn main() -> ExitCode {
                 TableFormat::Text => print!("{}", rollbench::validate::to_text(&cases)),
                 TableFormat::Json => println!("{:#}", rollbench::validate::to_json(&cases)),
             }
-            ExitCode::from(if rollbench::validate::all_pass(&cases) { 0 } else { 1 })
+            ExitCode::from(if rollbench::validate::all_pass(&cases) {
+                0
+            } else {
+                1
+            })
         }
         Some(Command::Bench { deck, format }) => {
-            match rollbench::fidelity::bench_command(deck.as_deref(), &cli.set, format == TableFormat::Json) {
+            match rollbench::fidelity::bench_command(
+                deck.as_deref(),
+                &cli.set,
+                format == TableFormat::Json,
+            ) {
                 Ok(text) => {
                     print!("{text}");
                     ExitCode::SUCCESS

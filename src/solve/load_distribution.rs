@@ -221,6 +221,8 @@ struct Problem {
     /// Roller tolerance of the current ring iteration (inexact Newton: loose while the ring
     /// residual is large, the full tolerance at the end).
     roller_tol: std::cell::Cell<f64>,
+    /// Largest roller step (trust radius), m: 0.1·D.
+    max_step: f64,
 }
 
 /// Everything one roller contributes at (u, q).
@@ -290,6 +292,7 @@ impl Problem {
             unique,
             evals: std::cell::Cell::new(0),
             roller_tol: std::cell::Cell::new(0.0),
+            max_step: 0.1 * g.roller_diameter_m,
         }
     }
 
@@ -453,9 +456,13 @@ impl Problem {
                 });
             }
             if lambda == 1.0 && capped {
-                trust *= 4.0;
+                // Grow the trust radius, but never beyond a tenth of the roller diameter:
+                // a roller out of contact has no stiffness along its normal, and an
+                // unbounded radius lets one Newton step throw it metres away.
+                trust = (trust * 4.0).min(self.max_step);
             } else if lambda < 1.0 {
-                trust = (lambda * len).max(1e-9 * scale_t);
+                // Shrink to the step actually taken (len is the uncapped Newton length).
+                trust = (lambda * len.min(trust)).max(1e-9 * scale_t);
             }
         }
         let ev = self.eval(cphi, u, q, true);
@@ -722,9 +729,9 @@ pub fn solve(
             }
         }
         if lambda == 1.0 && capped {
-            trust *= 4.0;
+            trust = (trust * 4.0).min(0.1 * d);
         } else if lambda < 1.0 {
-            trust = (lambda * len).max(1e-12 * d);
+            trust = (lambda * len.min(trust)).max(1e-12 * d);
         }
     }
     if !converged {
