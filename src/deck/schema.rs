@@ -43,7 +43,7 @@
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
 use crate::model::{
-    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, SolverSettings,
+    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, Slicing, SolverSettings,
 };
 use crate::units::{Quantity, Units, PSI_PA};
 
@@ -206,6 +206,8 @@ pub const FILM_MODELS: &[&str] = &["grubin", "dowson-higginson", "pan-hamrock"];
 pub const LIFE_METHODS: &[&str] = &["asme", "iso281"];
 /// Dynamic-load choices, in [`DynamicLoads`] order.
 pub const DYNAMIC_LOADS: &[&str] = &["iterated", "estimate"];
+/// Slicing choices, in [`Slicing`] order.
+pub const SLICINGS: &[&str] = &["uniform", "cosine"];
 /// Cage-guidance choices, in [`GuidingRing`] order.
 pub const GUIDING_RINGS: &[&str] = &["inner", "outer"];
 /// Material presets accepted as `materials.<body> = "<name>"`.
@@ -266,6 +268,19 @@ fn dynamic_from(v: f64) -> DynamicLoads {
         DynamicLoads::Estimate
     } else {
         DynamicLoads::Iterated
+    }
+}
+fn slicing_index(d: Slicing) -> f64 {
+    match d {
+        Slicing::Uniform => 0.0,
+        Slicing::Cosine => 1.0,
+    }
+}
+fn slicing_from(v: f64) -> Slicing {
+    if v as usize == 1 {
+        Slicing::Cosine
+    } else {
+        Slicing::Uniform
     }
 }
 fn guide_index(g: GuidingRing) -> f64 {
@@ -392,7 +407,7 @@ const MAT_OUTER: [FieldSpec; 5] = material_fields!(outer_ring, "outer_ring", "Ou
 
 const SOLVER_DEFAULTS: SolverSettings = SolverSettings::DEFAULT;
 
-static FIELDS: [FieldSpec; 60] = [
+static FIELDS: [FieldSpec; 61] = [
     // --- geometry ---
     field!("geometry.roller_count", "geometry", "Roller count Z", Count, I, 3.0, false, 500.0, false, REQ,
         "number of rollers", get: |b| b.geometry.roller_count as f64, set: |b, v| b.geometry.roller_count = to_count(v)),
@@ -533,6 +548,9 @@ static FIELDS: [FieldSpec; 60] = [
     field!("solver.dynamic_loads", "solver", "Dynamic loads from", Dimensionless, FieldKind::Choice(DYNAMIC_LOADS), 0.0, false, 1.0, false,
         Presence::Default(0.0), "speeds for CF and gyroscopic moment: iterated with §7, or App. C estimate",
         get: |b| dynamic_index(b.solver.dynamic_loads), set: |b, v| b.solver.dynamic_loads = dynamic_from(v)),
+    field!("solver.slicing", "solver", "Lamina slicing", Dimensionless, FieldKind::Choice(SLICINGS), 0.0, false, 1.0, false,
+        Presence::Default(1.0), "lamina spacing: uniform (the seed's) or cosine (thin laminae at the roller ends)",
+        get: |b| slicing_index(b.solver.slicing), set: |b, v| b.solver.slicing = slicing_from(v)),
     // padding rows are not allowed: the array length is exact
 ];
 

@@ -25,6 +25,9 @@ pub struct Lamina {
     pub offset_m: f64,
     /// w, lamina width, m.
     pub width_m: f64,
+    /// Width relative to the mean width L_eff/Γ (1 for uniform slicing): scales the lamina's
+    /// stiffness, since the law Q = k·δ^(10/9) is per unit width (eq. 3.3).
+    pub weight: f64,
     /// Surface point facing the inner raceway, relative to the roller centre (nominal), m.
     pub inner_point: V2,
     /// Surface point facing the outer raceway, relative to the roller centre (nominal), m.
@@ -91,6 +94,11 @@ pub struct LaminaGeometry {
 impl LaminaGeometry {
     /// Build the lamina geometry for `laminae` slices of the effective length.
     pub fn new(g: &Geometry, laminae: usize) -> Self {
+        Self::with_slicing(g, laminae, super::bearing::Slicing::Uniform)
+    }
+
+    /// Build the lamina geometry with the chosen spacing.
+    pub fn with_slicing(g: &Geometry, laminae: usize, slicing: super::bearing::Slicing) -> Self {
         let beta = g.contact_angle_rad;
         let n = [beta.sin(), beta.cos()];
         let a = [beta.cos(), -beta.sin()];
@@ -98,12 +106,31 @@ impl LaminaGeometry {
         let r0 = g.roller_crown_radius_m;
         let count = laminae.max(1);
         let w = g.effective_length_m / count as f64;
+        let half_l = 0.5 * g.effective_length_m;
+        // Lamina boundaries along the roller axis.
+        let bounds: Vec<f64> = (0..=count)
+            .map(|k| match slicing {
+                super::bearing::Slicing::Uniform => -half_l + w * k as f64,
+                super::bearing::Slicing::Cosine => {
+                    -half_l * (std::f64::consts::PI * k as f64 / count as f64).cos()
+                }
+            })
+            .collect();
         // Roller crown centres (App. A: y₀ = −(R₀ − D/2) below the centre for the outer side).
         let sag = r0 - half_d;
         let laminae = (0..count)
             .map(|l| {
-                // d_l = w·(l − l_m) with l_m the middle (possibly half-integer) lamina.
-                let d = w * (l as f64 - 0.5 * (count as f64 - 1.0));
+                // Uniform: d_l = w·(l − l_m) with l_m the middle (possibly half-integer) lamina;
+                // in general the lamina's mid-point.
+                let (lo, hi) = (bounds[l], bounds[l + 1]);
+                let d = match slicing {
+                    super::bearing::Slicing::Uniform => w * (l as f64 - 0.5 * (count as f64 - 1.0)),
+                    super::bearing::Slicing::Cosine => 0.5 * (lo + hi),
+                };
+                let width = match slicing {
+                    super::bearing::Slicing::Uniform => w,
+                    super::bearing::Slicing::Cosine => hi - lo,
+                };
                 let h = (r0 * r0 - d * d).max(0.0).sqrt();
                 // Outer side: crown centre at −sag·n, point at centre + h·n + d·a.
                 let outer = [(h - sag) * n[0] + d * a[0], (h - sag) * n[1] + d * a[1]];
@@ -124,7 +151,8 @@ impl LaminaGeometry {
                 ];
                 Lamina {
                     offset_m: d,
-                    width_m: w,
+                    width_m: width,
+                    weight: width / w,
                     inner_point: inner,
                     outer_point: outer,
                     inner_v0: vi,

@@ -239,7 +239,7 @@ impl Problem {
     fn new(b: &Bearing, speeds: &DynamicSpeeds) -> Self {
         let g = &b.geometry;
         let laminae = b.solver.laminae.max(1);
-        let geom = LaminaGeometry::new(g, laminae);
+        let geom = LaminaGeometry::with_slicing(g, laminae, b.solver.slicing);
         let w = g.effective_length_m / laminae as f64;
         let law_in = LaminaLaw::new(
             w,
@@ -327,6 +327,7 @@ impl Problem {
                     continue;
                 }
                 let (qq, dq, uu) = law.eval(delta);
+                let (qq, dq, uu) = (qq * lam.weight, dq * lam.weight, uu * lam.weight);
                 let nh = ap.normal;
                 // ∂P/∂α = e_t × p = (−p_r, p_x)
                 let t = [-p[1], p[0]];
@@ -524,8 +525,8 @@ impl Problem {
             let d_o = g.approach(lam, false, qa, shift).delta;
             ia.push(di);
             oa.push(d_o);
-            il.push(self.law_in.eval(di).0);
-            ol.push(self.law_out.eval(d_o).0);
+            il.push(self.law_in.eval(di).0 * lam.weight);
+            ol.push(self.law_out.eval(d_o).0 * lam.weight);
         }
         (ia, oa, il, ol)
     }
@@ -822,8 +823,8 @@ fn assemble(
                 LaminaResult {
                     offset_m: lam.offset_m,
                     width_m: lam.width_m,
-                    inner_load_n: p.law_in.eval(di).0,
-                    outer_load_n: p.law_out.eval(d_o).0,
+                    inner_load_n: p.law_in.eval(di).0 * lam.weight,
+                    outer_load_n: p.law_out.eval(d_o).0 * lam.weight,
                     inner_approach_m: di,
                     outer_approach_m: d_o,
                     inner_angle_deg: ni[0].atan2(ni[1]).to_degrees(),

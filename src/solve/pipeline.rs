@@ -233,7 +233,7 @@ impl Pipeline {
             life: bearing.life,
         };
         if need_contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
-            let st = stages::stresses(bearing, &ls.contacts);
+            let st = stages::stresses(bearing, &ls.load, &ls.contacts);
             let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
             let li = stages::life(bearing, &ls.load, &fi);
             self.counters.contact += 1;

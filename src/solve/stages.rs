@@ -74,7 +74,7 @@ pub struct Stresses {
 
 /// §4: line-contact Hertz per lamina (eq. 4.1–4.3), edge factor (§4.2), ellipse (§4.3),
 /// subsurface shear from the elastic field under the equivalent ellipse (§4.4).
-pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
+pub fn stresses(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts]) -> Stresses {
     let e_star = reduced_moduli(b);
     let edge_factor = b.life.edge_stress_factor;
     let nu = [
@@ -83,7 +83,7 @@ pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
     ];
     let mut rollers = Vec::with_capacity(contacts.len());
     let mut laminae = Vec::with_capacity(contacts.len());
-    for rc in contacts {
+    for (j, rc) in contacts.iter().enumerate() {
         let lam: LaminaHertz = rc
             .iter()
             .map(|pair| {
@@ -134,7 +134,7 @@ pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
                 mean_stress_pa: p_mean,
                 contact_major_axis_m: major,
                 contact_minor_axis_m: 2.0 * half_b,
-                eccentricity_m: offset_of(rc, imax, b),
+                eccentricity_m: ld.rollers[j].laminae[imax].offset_m,
                 subsurface_shear_pa: sub.principal_shear_pa,
                 subsurface_depth_m: sub.principal_shear_depth_m,
                 orthogonal_shear_pa: sub.orthogonal_shear_pa,
@@ -147,12 +147,6 @@ pub fn stresses(b: &Bearing, contacts: &[RollerContacts]) -> Stresses {
         laminae.push(lam);
     }
     Stresses { rollers, laminae }
-}
-
-/// Lamina offset d_l (eq. 3.4's d_l = w·(l − l_m)).
-fn offset_of(rc: &RollerContacts, i: usize, _b: &Bearing) -> f64 {
-    let n = rc.len() as f64;
-    rc[i][0].width_m * (i as f64 - 0.5 * (n - 1.0))
 }
 
 // ---------------------------------------------------------------- §7 speeds
@@ -380,18 +374,39 @@ pub fn iso_equivalent_load(b: &Bearing) -> f64 {
     }
 }
 
+/// Eq. 6.1 for laminae of any widths w_l: P_e = L^(7/9)·[Σ w_l·(Q_l/w_l)^4.5]^(2/9) with
+/// L = Σ w_l — the product law over line-load slices. For equal widths it is exactly
+/// eq. 6.1's Γ^(7/9)·(Σ Q_l^4.5)^(2/9) (the library's [`life::equivalent_roller_load`]).
+pub fn equivalent_load(loads_n: &[f64], widths_m: &[f64]) -> f64 {
+    let uniform = widths_m
+        .windows(2)
+        .all(|p| (p[0] - p[1]).abs() <= 1e-12 * p[0].abs());
+    if uniform {
+        return life::equivalent_roller_load(loads_n);
+    }
+    let l: f64 = widths_m.iter().sum();
+    let s: f64 = loads_n
+        .iter()
+        .zip(widths_m)
+        .filter(|(q, w)| **q > 0.0 && **w > 0.0)
+        .map(|(q, w)| w * (q / w).powf(4.5))
+        .sum();
+    if s <= 0.0 {
+        return 0.0;
+    }
+    l.powf(7.0 / 9.0) * s.powf(2.0 / 9.0)
+}
+
 /// §6: equivalent loads (eq. 6.1), capacities, mean loads, L-10 (eq. 6.2–6.6), adjustments.
 pub fn life(b: &Bearing, ld: &LoadDistribution, films: &Films) -> Life {
     let eq: Vec<[f64; 2]> = ld
         .rollers
         .iter()
         .map(|r| {
+            let w: Vec<f64> = r.laminae.iter().map(|l| l.width_m).collect();
             let qi: Vec<f64> = r.laminae.iter().map(|l| l.inner_load_n).collect();
             let qo: Vec<f64> = r.laminae.iter().map(|l| l.outer_load_n).collect();
-            [
-                life::equivalent_roller_load(&qi),
-                life::equivalent_roller_load(&qo),
-            ]
+            [equivalent_load(&qi, &w), equivalent_load(&qo, &w)]
         })
         .collect();
     let inner: Vec<f64> = eq.iter().map(|e| e[0]).collect();
