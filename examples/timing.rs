@@ -13,6 +13,13 @@ fn main() {
         }
         t.sort_by(|a, b| a.total_cmp(b));
         let a = last.unwrap();
-        println!("{name}: median {:.2} ms, dyn its {}, ring its {}, roller its {}, lamina evals {}", t[50] * 1e3, a.speeds.iterations, a.load.stats.iterations, a.load.stats.roller_iterations, a.load.stats.lamina_evaluations);
+        println!(
+            "{name}: median {:.2} ms, dyn its {}, ring its {}, roller its {}, lamina evals {}",
+            t[50] * 1e3,
+            a.speeds.iterations,
+            a.load.stats.iterations,
+            a.load.stats.roller_iterations,
+            a.load.stats.lamina_evaluations
+        );
     }
 }
