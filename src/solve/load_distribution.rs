@@ -671,7 +671,9 @@ pub fn solve(
             }
             // Converged with loose rollers: tighten them at this ring deflection and re-check.
             p.roller_tol.set(p.tol);
-            state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, it)?;
+            state = p
+                .solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, it)
+                .map_err(|e| unrestrained(b, u).unwrap_or(e))?;
             continue;
         }
         // Inexact Newton: rollers to 1e-3 of the ring residual (never below the tolerance).
@@ -696,13 +698,17 @@ pub fn solve(
                 .zip(&state.sens)
                 .map(|(q, x)| q + x * du)
                 .collect();
-            let st = p.solve_rollers(
-                trial,
-                &mut qt,
-                &mut stats.roller_iterations,
-                &mut trace,
-                it + 1,
-            )?;
+            // A roller that fails while the rings have already drifted beyond D/2 is a
+            // symptom of the missing restraint: report that.
+            let st = p
+                .solve_rollers(
+                    trial,
+                    &mut qt,
+                    &mut stats.roller_iterations,
+                    &mut trace,
+                    it + 1,
+                )
+                .map_err(|e| unrestrained(b, trial).unwrap_or(e))?;
             let ok_energy = st.energy < energy + 1e-4 * lambda * slope;
             let ok_grad = st.g[0].abs().max(st.g[1].abs()) < 0.5 * ring_res;
             if ok_energy || ok_grad {
