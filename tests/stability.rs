@@ -468,8 +468,9 @@ fn base_params() -> Params {
 /// converge after 60 iterations (residual 6.5e-1, tolerance 3.6e-4)"; also at F_r = 1 kN,
 /// with Γ = 21, and for β = 10–14° (β = 8° fails at 100 kN); β ≤ 5° and F_a = 0.5·F_r
 /// solve. The campaign's worst feature: ~70 % of pure radial cases end in a typed error.
+/// Resolved as a diagnosis: with F_a = 0 the spherical outer raceway gives no axial
+/// restraint and the inner ring walks off (> D/2); the solver now says so with the numbers.
 #[test]
-#[ignore = "solver robustness: fails today (typed RollerNotConverged)"]
 fn regression_pure_radial_at_rest_with_contact_angle() {
     let p = Params {
         roller_count: 29,
@@ -482,7 +483,11 @@ fn regression_pure_radial_at_rest_with_contact_angle() {
         radial_capacity: 0.7234094567017523,
         ..base_params()
     };
-    must_solve(&bearing(&p));
+    let b = valid(&bearing(&p)).unwrap_or_else(|| panic!("regression deck is invalid"));
+    match pipeline::run(&b, &Request::default(), None) {
+        Err(e) => assert!(format!("{e}").contains("axial load or preload"), "{e}"),
+        Ok(_) => panic!("expected the missing-restraint diagnostic"),
+    }
 }
 
 /// A spherical roller (crown radius = D/2 = 1.5 mm) in fully conforming raceways (crown
