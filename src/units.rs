@@ -158,8 +158,9 @@ impl Quantity {
         }
     }
 
-    /// Display string of the unit in `units` ("" for pure numbers).
-    pub fn unit(self, units: Units) -> &'static str {
+    /// Display string of the unit in `units` ("" for pure numbers). `const` so that the
+    /// deck's static field table can use it.
+    pub const fn unit(self, units: Units) -> &'static str {
         use Quantity::*;
         match (self, units) {
             (Dimensionless | Count, _) => "",

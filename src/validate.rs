@@ -80,7 +80,7 @@ const IN: f64 = 0.0254;
 const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// NASA/TM-2012-217115 Table I, roller at ψ = 0 (exponent 10/9).
-const STRIBECK_TABLE: [(usize, f64); 8] = [
+pub(crate) const STRIBECK_TABLE: [(usize, f64); 8] = [
     (5, 4.281),
     (6, 4.100),
     (7, 4.027),
@@ -93,7 +93,7 @@ const STRIBECK_TABLE: [(usize, f64); 8] = [
 
 /// The Stribeck bearing: the aerospace bearing with fully conforming crowns, zero angle,
 /// zero clearance, zero speed, pure radial load 20 kN.
-fn stribeck_bearing(z: usize) -> Bearing {
+pub(crate) fn stribeck_bearing(z: usize) -> Bearing {
     let mut b = Bearing::example_aerospace();
     let g = &mut b.geometry;
     g.roller_count = z;

@@ -23,8 +23,8 @@ mod validate;
 pub use crate::units::Units;
 pub use error::{DeckError, DeckErrors, Location};
 pub use schema::{
-    field, fields, material_preset, FieldKind, FieldSpec, Presence, FILM_MODELS, GROUPS,
-    GUIDING_RINGS, LIFE_METHODS, MATERIAL_BODIES, MATERIAL_PRESETS,
+    field, fields, format_short, material_preset, FieldKind, FieldSpec, Presence, FILM_MODELS,
+    GROUPS, GUIDING_RINGS, LIFE_METHODS, MATERIAL_BODIES, MATERIAL_PRESETS,
 };
 pub use template::template;
 

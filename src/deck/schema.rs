@@ -323,46 +323,12 @@ macro_rules! field {
             max_exclusive: $maxx,
             presence: $pres,
             help: $help,
-            unit_si: unit_of(Quantity::$q, Units::Si),
-            unit_us: unit_of(Quantity::$q, Units::Us),
+            unit_si: Quantity::$q.unit(Units::Si),
+            unit_us: Quantity::$q.unit(Units::Us),
             get: $get,
             set: $set,
         }
     };
-}
-
-/// `const` version of [`Quantity::unit`] for the static table.
-const fn unit_of(q: Quantity, units: Units) -> &'static str {
-    use Quantity::*;
-    match (q, units) {
-        (Dimensionless | Count, _) => "",
-        (Speed, _) => "rpm",
-        (Angle, _) => "deg",
-        (KinematicViscosityCst, _) => "cSt",
-        (Time, _) => "s",
-        (Length, Units::Si) => "m",
-        (Length, Units::Us) => "in",
-        (Roughness, Units::Si) => "µm",
-        (Roughness, Units::Us) => "µin",
-        (Force, Units::Si) => "N",
-        (Force, Units::Us) => "lbf",
-        (Pressure, Units::Si) => "Pa",
-        (Pressure, Units::Us) => "psi",
-        (Viscosity, Units::Si) => "Pa·s",
-        (Viscosity, Units::Us) => "reyn",
-        (PressureViscosity, Units::Si) => "1/Pa",
-        (PressureViscosity, Units::Us) => "in²/lbf",
-        (Density, Units::Si) => "kg/m³",
-        (Density, Units::Us) => "lbm/in³",
-        (SpecificHeat, Units::Si) => "J/(kg·K)",
-        (SpecificHeat, Units::Us) => "Btu/(lbm·°F)",
-        (Conductivity, Units::Si) => "W/(m·K)",
-        (Conductivity, Units::Us) => "Btu/(hr·ft·°F)",
-        (Mass, Units::Si) => "kg",
-        (Mass, Units::Us) => "lbm",
-        (Temperature, Units::Si) => "°C",
-        (Temperature, Units::Us) => "°F",
-    }
 }
 
 const R: FieldKind = FieldKind::Real;

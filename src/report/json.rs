@@ -164,16 +164,6 @@ pub fn to_value(a: &Analysis) -> Value {
             }),
         );
     }
-    if let Some(th) = &a.thermal {
-        doc.insert(
-            "thermal".into(),
-            json!({
-                "steady": serde_json::to_value(&th.steady).unwrap_or(Value::Null),
-                "transient": th.transient.as_ref().map(|t| serde_json::to_value(t).unwrap_or(Value::Null)),
-                "transient_heat_w": th.transient_heat_w,
-            }),
-        );
-    }
     if let Some(fr) = &a.friction {
         let mut h = serde_json::to_value(fr.heat).unwrap_or(Value::Null);
         if let Some(m) = h.as_object_mut() {

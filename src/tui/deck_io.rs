@@ -79,29 +79,9 @@ pub fn allowed(key: &str, units: Units) -> String {
     }
 }
 
-/// Formats a number to 6 significant digits without trailing zeros.
+/// Formats a number to 6 significant digits without trailing zeros (the deck's format).
 pub fn fmt_num(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
-    let a = v.abs();
-    if (1e-4..1e7).contains(&a) {
-        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
-        let s = format!("{v:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        let s = format!("{v:.5e}");
-        match s.split_once('e') {
-            Some((m, e)) if m.contains('.') => {
-                format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
-            }
-            _ => s,
-        }
-    }
+    crate::deck::format_short(v)
 }
 
 /// Default deck text (the shipped aerospace deck).
