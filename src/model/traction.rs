@@ -150,22 +150,6 @@ const GL8_W: [f64; 4] = [
 
 /// Panels of 8-point Gauss–Legendre per smooth piece of the integrand.
 const PANELS_PER_PIECE: usize = 4;
-/// Samples of φ ∈ [0, π/2] scanned for regime changes of the EHD law.
-const REGIME_SCAN: usize = 32;
-
-/// ∫_a^b f with `PANELS_PER_PIECE` panels of 8-point Gauss–Legendre.
-fn gauss_legendre<F: Fn(f64) -> f64>(f: &F, a: f64, b: f64) -> f64 {
-    let h = (b - a) / PANELS_PER_PIECE as f64;
-    let mut sum = 0.0;
-    for k in 0..PANELS_PER_PIECE {
-        let mid = a + (k as f64 + 0.5) * h;
-        let half = 0.5 * h;
-        for (x, w) in GL8_X.iter().zip(GL8_W.iter()) {
-            sum += w * half * (f(mid - half * x) + f(mid + half * x));
-        }
-    }
-    sum
-}
 
 impl TractionModel {
     /// The EHD (ATZ) model with the lubricant's η₀, α, τ_tr and μ_fl.
@@ -220,11 +204,11 @@ impl TractionModel {
         }
     }
 
-    /// Which branch of the law is active (0 Newtonian, 1 limited at τ_tr, 2 limited at
-    /// μ·p); constant model: always 0. Used to split the quadrature at kinks.
-    fn regime(&self, p: f64, v: f64, h: f64) -> u8 {
+    /// Which branch of the law is active at pressure p (Pa), sliding speed v (m/s) and
+    /// film h (m).
+    fn regime(&self, p: f64, v: f64, h: f64) -> Regime {
         match *self {
-            TractionModel::Constant { .. } => 0,
+            TractionModel::Constant { mu } => Regime::Coulomb(mu),
             TractionModel::Ehd {
                 viscosity_pa_s,
                 pressure_viscosity_pa_inv,
@@ -238,11 +222,11 @@ impl TractionModel {
                 };
                 let mu_p = limiting_traction_coefficient * p;
                 if newtonian <= transition_shear_stress_pa.max(mu_p) {
-                    0
+                    Regime::Newtonian
                 } else if transition_shear_stress_pa >= mu_p {
-                    1
+                    Regime::Transition(transition_shear_stress_pa)
                 } else {
-                    2
+                    Regime::Coulomb(limiting_traction_coefficient)
                 }
             }
         }
@@ -258,14 +242,13 @@ impl TractionModel {
     /// Quadrature: the substitution x = b·sin φ turns the integral into
     /// 2·w·b·∫_0^{π/2} τ(p₀ cos φ)·cos φ dφ, whose integrand is analytic on each branch of
     /// the law (in x the semi-ellipse has an infinite slope at ±b, where Gauss–Legendre
-    /// converges only algebraically). The φ-range is split at the kinks where the EHD
-    /// law changes branch (found by a 32-sample scan and bisection to round-off; a branch
-    /// entered and left between two samples, a sliver under π/64 wide, is integrated
-    /// unsplit at reduced accuracy), and each
-    /// smooth piece is integrated with 4 panels of 8-point Gauss–Legendre (exact for
-    /// polynomials of degree 15 per panel): the constant model's cos²φ is then exact to
-    /// round-off (μ·Q to 1e-14), and the Newtonian e^{αp₀ cos φ}·cos φ to ~1e-12 for
-    /// α·p₀ ≲ 20 (tested against an independent reference).
+    /// converges only algebraically). The law's kinks are found in closed form in p
+    /// ([`TractionModel::kinks`]) and mapped to φ = acos(p/p₀), which splits [0, π/2] into
+    /// pieces with one branch each. Limited pieces integrate exactly:
+    /// ∫τ_tr·cos φ dφ = τ_tr·[sin φ] and ∫μp₀cos²φ dφ = μp₀·[φ/2 + sin 2φ/4]
+    /// (the constant model's F = μ·Q to round-off). Newtonian pieces, e^{αp₀ cos φ}·cos φ,
+    /// use 4 panels of 8-point Gauss–Legendre (exact for polynomials of degree 15 per
+    /// panel): ~1e-12 for α·p₀ ≲ 20 (tested against an independent reference).
     ///
     /// Guards: unloaded or degenerate strips, v = 0 and h ≤ 0 give finite results (zero
     /// force, or the limited stress when h ≤ 0), never NaN.
@@ -285,45 +268,158 @@ impl TractionModel {
         } else {
             0.0
         };
-        let f = |phi: f64| {
-            let c = phi.cos().max(0.0);
-            self.shear_stress(p0 * c, v, h) * c
-        };
-        // Breakpoints of the piecewise law in φ.
         let half_pi = std::f64::consts::FRAC_PI_2;
-        let mut breaks = vec![0.0];
-        let regime_at = |phi: f64| self.regime(p0 * phi.cos().max(0.0), v, h);
-        let mut prev_phi = 0.0;
-        let mut prev_regime = regime_at(0.0);
-        for k in 1..=REGIME_SCAN {
-            let phi = half_pi * k as f64 / REGIME_SCAN as f64;
-            let r = regime_at(phi);
-            if r != prev_regime {
-                let (mut lo, mut hi) = (prev_phi, phi);
-                for _ in 0..60 {
-                    let mid = 0.5 * (lo + hi);
-                    if regime_at(mid) == prev_regime {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                breaks.push(0.5 * (lo + hi));
+        // Breakpoints in φ (p falls from p₀ at φ = 0 to 0 at π/2), ascending.
+        let mut breaks = [0.0; 6];
+        let mut n = 0;
+        breaks[n] = 0.0;
+        n += 1;
+        let mut kinks = self.kinks(v, h, p0);
+        kinks.sort_by(|a, b| b.total_cmp(a));
+        for pk in kinks {
+            if pk > 0.0 && pk < p0 {
+                breaks[n] = (pk / p0).acos();
+                n += 1;
             }
-            prev_phi = phi;
-            prev_regime = r;
         }
-        breaks.push(half_pi);
-        let integral: f64 = breaks
-            .windows(2)
-            .map(|w| gauss_legendre(&f, w[0], w[1]))
-            .sum();
-        let force = 2.0 * contact.width_m * contact.half_width_m * integral;
+        breaks[n] = half_pi;
+        n += 1;
+        let mut integral = 0.0;
+        for w in breaks[..n].windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if b <= a {
+                continue;
+            }
+            let mid = 0.5 * (a + b);
+            integral += match self.regime(p0 * mid.cos(), v, h) {
+                Regime::Newtonian => self.newtonian_piece(p0, v, h, a, b),
+                Regime::Transition(tau) => tau * (b.sin() - a.sin()),
+                Regime::Coulomb(mu) => {
+                    let prim = |phi: f64| 0.5 * phi + 0.25 * (2.0 * phi).sin();
+                    mu * p0 * (prim(b) - prim(a))
+                }
+            };
+        }
+        let force = 2.0 * contact.width_m * contact.half_width_m * integral * v.signum();
         LaminaTraction {
             force_n: force,
             heat_w: (force * v).abs(),
         }
     }
+
+    /// ∫_a^b τ_N(p₀ cos φ)·cos φ dφ on a Newtonian piece: 4 panels of 8-point Gauss–Legendre.
+    /// The nodes' cosines come from the angle-addition formula with one sin/cos pair per
+    /// node offset (shared by the panels) and panel centres by rotation, not one cos per node.
+    fn newtonian_piece(&self, p0: f64, v: f64, h: f64, a: f64, b: f64) -> f64 {
+        let TractionModel::Ehd {
+            viscosity_pa_s: eta,
+            pressure_viscosity_pa_inv: alpha,
+            ..
+        } = *self
+        else {
+            return 0.0;
+        };
+        if h.is_nan() || h <= 0.0 {
+            return 0.0;
+        }
+        let amp = eta * v.abs() / h;
+        let kappa = alpha * p0;
+        let half = 0.5 * (b - a) / PANELS_PER_PIECE as f64;
+        let offsets: [(f64, f64); 4] = std::array::from_fn(|i| (half * GL8_X[i]).sin_cos());
+        let mut sum = 0.0;
+        // Panel centres a + (2k+1)·half by rotating through 2·half.
+        let (mut sm, mut cm) = (a + half).sin_cos();
+        let (sr, cr) = (2.0 * half).sin_cos();
+        for _ in 0..PANELS_PER_PIECE {
+            for (&(so, co), w) in offsets.iter().zip(GL8_W.iter()) {
+                // cos(mid ∓ off) = cos mid·cos off ± sin mid·sin off
+                let c1 = (cm * co + sm * so).max(0.0);
+                let c2 = (cm * co - sm * so).max(0.0);
+                sum += w * ((kappa * c1).exp() * c1 + (kappa * c2).exp() * c2);
+            }
+            (sm, cm) = (sm * cr + cm * sr, cm * cr - sm * sr);
+        }
+        amp * half * sum
+    }
+
+    /// Pressures (Pa) where the law τ(p) = min(τ_N, max(τ_tr, μp)) can change branch at
+    /// sliding speed v and film h: p = τ_tr/μ (kink of the limit), the crossing
+    /// τ_N = τ_tr, p = ln(τ_tr/A)/α with A = η₀|v|/h, and the crossings τ_N = μp, the roots
+    /// of g(p) = ln A + αp − ln(μp), which is convex with its minimum at p = 1/α (zero or
+    /// two roots); only those below `p_max` (the peak pressure) are searched. A superfluous break only splits a smooth
+    /// piece; NaN and infinite values are dropped by the caller's range test.
+    fn kinks(&self, v: f64, h: f64, p_max: f64) -> Vec<f64> {
+        let TractionModel::Ehd {
+            viscosity_pa_s: eta,
+            pressure_viscosity_pa_inv: alpha,
+            transition_shear_stress_pa: tr,
+            limiting_traction_coefficient: mu,
+        } = *self
+        else {
+            return Vec::new();
+        };
+        let mut out = Vec::with_capacity(4);
+        if mu > 0.0 {
+            out.push(tr / mu);
+        }
+        if h <= 0.0 || eta.is_nan() || eta <= 0.0 || alpha.is_nan() || alpha <= 0.0 {
+            // τ_N is infinite (h ≤ 0), zero, or independent of p: the limit's kink only.
+            if eta > 0.0 && alpha == 0.0 && mu > 0.0 {
+                // τ_N constant: it meets μp at p = τ_N/μ.
+                out.push(eta * v.abs() / h / mu);
+            }
+            return out;
+        }
+        let ln_a = (eta * v.abs() / h).ln();
+        if tr > 0.0 {
+            out.push((tr.ln() - ln_a) / alpha);
+        }
+        if mu > 0.0 {
+            // In s = ln p, g(s) = ln A − ln μ + α·eˢ − s is convex with its minimum at
+            // s = −ln α. Left root: Newton from s = ln(A/μ) (the root without the α term,
+            // where g = α·p > 0 on the falling side) climbs monotonically to it. Right root:
+            // from ln p_max on the rising side (g > 0 there), monotonically down to it. Only
+            // roots in (0, p_max) matter, so the search is skipped when g has no sign change
+            // there. Three-digit accuracy would do (a misplaced kink costs only second order);
+            // we iterate to round-off since convergence is quadratic.
+            let c = ln_a - mu.ln();
+            let g = |s: f64| c + alpha * s.exp() - s;
+            let dg = |s: f64| alpha * s.exp() - 1.0;
+            let s_min = -alpha.ln();
+            let s_max = p_max.ln();
+            let newton = |mut s: f64| {
+                for _ in 0..100 {
+                    let next = s - g(s) / dg(s);
+                    if !next.is_finite() {
+                        return None;
+                    }
+                    if (next - s).abs() <= 1e-14 * s.abs().max(1.0) {
+                        return Some(next.exp());
+                    }
+                    s = next;
+                }
+                None
+            };
+            let s_top = s_min.min(s_max);
+            if g(s_top) < 0.0 {
+                out.extend(newton(c.min(s_top)));
+                if s_max > s_min && g(s_max) > 0.0 {
+                    out.extend(newton(s_max));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Branch of the traction law on a piece of the contact.
+enum Regime {
+    /// τ = τ_N (integrated by quadrature).
+    Newtonian,
+    /// τ = τ_tr, Pa.
+    Transition(f64),
+    /// τ = μ·p with this μ.
+    Coulomb(f64),
 }
 
 #[cfg(test)]
@@ -563,6 +659,33 @@ mod tests {
                 got.force_n
             );
             assert!((got.heat_w - want * v).abs() < 1e-7 * want * v);
+        }
+    }
+
+    /// The closed-form branch points over a sweep of speeds, films and peak pressures (every
+    /// branch order the law allows: all Newtonian, a τ_tr plateau, a μ·p core, h = 0)
+    /// against the independent graded-Simpson reference. Tolerance 1e-7 relative, as above.
+    #[test]
+    fn kinks_found_over_a_sweep() {
+        let (eta, alpha, tr, mu) = (0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
+        let m = ehd(eta, alpha, tr, mu);
+        let (b, w) = (60e-6, 0.55e-3);
+        for p0 in [50e6, 150e6, 600e6, 2.5e9] {
+            let c = LaminaContact {
+                load_n: p0 * std::f64::consts::PI * b * w / 2.0,
+                half_width_m: b,
+                width_m: w,
+            };
+            for v in [1e-5, 1e-3, 0.05, 1.0, 20.0] {
+                for h in [0.0, 0.05e-6, 0.5e-6] {
+                    let got = m.lamina_traction(&c, v, h).force_n;
+                    let want = w * reference_integral(|p| m.shear_stress(p, v, h), p0, b);
+                    assert!(
+                        (got - want).abs() <= 1e-7 * want.abs(),
+                        "p0 {p0} v {v} h {h}: {got} vs {want}"
+                    );
+                }
+            }
         }
     }
 
