@@ -415,3 +415,41 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
     assert!(a.is_ok_and(|a| a.stresses.is_none() && a.friction.is_none()));
     assert_eq!(q.counters(), c(1, 0, 0, 0, 0));
 }
+
+#[test]
+fn coarse_to_fine_path_gives_the_cold_answer() {
+    // The default path pre-solves on an 11-lamina roller with loose intermediate tolerances
+    // and predicts each dynamic-load step from the inertial sensitivities; a traced solve
+    // takes the plain path (cold fine solves from App. C, every one at the deck's tolerance).
+    // Both stop at the same force tolerance (1e-9 of the reference load) and the same
+    // dynamic-speed tolerance (1e-8), so every output agrees to 1e-7 relative (the bound used
+    // for the SI/US comparison above, for the same reason) with a 1e-9 absolute floor for
+    // quantities through zero. Timings, work counters, residuals and the trace are skipped.
+    for name in [
+        "aerospace.toml",
+        "radial_si.toml",
+        "thrust.toml",
+        "industrial.toml",
+    ] {
+        let b = deck(name).bearing;
+        let fast = pipeline::run(&b, &Request::default(), None).unwrap_or_else(|e| panic!("{e}"));
+        let traced = Request {
+            trace_roller: Some(0),
+            ..Request::default()
+        };
+        let cold = pipeline::run(&b, &traced, None).unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            fast.load.stats.lamina_evaluations < cold.load.stats.lamina_evaluations,
+            "{name}: the default path did not save work ({} vs {})",
+            fast.load.stats.lamina_evaluations,
+            cold.load.stats.lamina_evaluations
+        );
+        json_close(
+            &report::json::to_value(&fast),
+            &report::json::to_value(&cold),
+            1e-7,
+            name,
+            &["wall_time_s", "stats", "residuals", "trace", "iterations"],
+        );
+    }
+}
