@@ -62,21 +62,22 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
         .map(|(i, l)| {
             let edge = n > 1 && (i == 0 || i + 1 == n);
             let mk = |inner: bool| {
-                let (pt, load, ang) = if inner {
+                // Unit normal of the contact (x, r): the contact angle direction.
+                let (pt, load, ang, nn) = if inner {
                     (
                         l.inner_point_m,
                         l.inner_load_n,
                         l.inner_angle_deg.to_radians(),
+                        l.inner_normal,
                     )
                 } else {
                     (
                         l.outer_point_m,
                         l.outer_load_n,
                         l.outer_angle_deg.to_radians(),
+                        l.outer_normal,
                     )
                 };
-                // Unit normal of the contact (x, r): the contact angle direction.
-                let nn = [ang.sin(), ang.cos()];
                 // Ring: normal line from the point to the bearing axis (r = 0): length r/cos β'.
                 let ring_len = pt[1] / nn[1].abs().max(1e-12);
                 // Roller: normal line P + s·n meets the roller axis centre + t·a.

@@ -132,6 +132,13 @@ pub struct LaminaResult {
     pub inner_point_m: [f64; 2],
     /// Contact point (axial x, radius from bearing axis) at the outer raceway, m.
     pub outer_point_m: [f64; 2],
+    /// Unit normals (x, r) of the inner and outer contact forces' lines, the directions
+    /// whose angles are `inner_angle_deg`/`outer_angle_deg` (kept so that later stages need
+    /// not rebuild them from the angles).
+    #[serde(skip)]
+    pub inner_normal: [f64; 2],
+    #[serde(skip)]
+    pub outer_normal: [f64; 2],
 }
 
 /// One raceway contact of a roller (seed 000 §4.5).
@@ -249,6 +256,140 @@ struct Problem {
     max_step: f64,
 }
 
+/// One lamina contact as the hot loop sees it (see [`LaminaGeometry::approach_with`]).
+struct ContactPoint {
+    /// Nominal surface point relative to the roller centre, m.
+    p0: [f64; 2],
+    /// Nominal vector from the raceway crown centre to the point, m.
+    v0: [f64; 2],
+    /// |v₀|² − R², m² (cancellation-free form).
+    k0: f64,
+    /// Raceway crown radius R, m.
+    radius: f64,
+    /// Displacement of the raceway crown centre, m.
+    centre_shift: [f64; 2],
+    /// Lamina law constant k·weight, N/m^(10/9).
+    stiffness: f64,
+}
+
+/// Scalar sums of one roller's energy, gradient and Hessian blocks (upper triangles).
+#[derive(Default)]
+struct Accumulator {
+    energy: f64,
+    g: [f64; 3],
+    /// h00, h01, h02, h11, h12, h22 of H_qq.
+    h: [f64; 6],
+    gu: [f64; 2],
+    /// h00, h01, h11 of H_uu.
+    huu: [f64; 3],
+    huq: [[f64; 3]; 2],
+}
+
+impl Accumulator {
+    /// Add one contact. INNER contacts also load the inner ring (u-coupling).
+    #[inline(always)]
+    fn add<const INNER: bool>(
+        &mut self,
+        c: &ContactPoint,
+        q: [f64; 2],
+        pitch: crate::model::geometry::Pitch,
+        cphi: f64,
+        hessian: bool,
+    ) {
+        let (sa, cm1) = (pitch.sin, pitch.cos_minus_one);
+        let p0 = c.p0;
+        let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
+        let e = [
+            q[0] + dp[0] - c.centre_shift[0],
+            q[1] + dp[1] - c.centre_shift[1],
+        ];
+        let v = [c.v0[0] + e[0], c.v0[1] + e[1]];
+        let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let delta = (c.k0 + 2.0 * (c.v0[0] * e[0] + c.v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1])
+            / (rho + c.radius);
+        if delta <= 0.0 {
+            return;
+        }
+        // Lamina law Q = k·δ^(10/9), dQ/dδ, U = 9/19·Q·δ (eq. 3.3).
+        let d19 = crate::model::lamina_law::ninth_root(delta);
+        let qq = c.stiffness * delta * d19;
+        let dq = c.stiffness * (10.0 / 9.0) * d19;
+        self.energy += qq * delta * (9.0 / 19.0);
+        let inv = 1.0 / rho;
+        let n = [v[0] * inv, v[1] * inv];
+        let p = [p0[0] + dp[0], p0[1] + dp[1]];
+        // ∂P/∂α = e_t × p = (−p_r, p_x)
+        let t = [-p[1], p[0]];
+        let gd2 = n[0] * t[0] + n[1] * t[1];
+        self.g[0] += qq * n[0];
+        self.g[1] += qq * n[1];
+        self.g[2] += qq * gd2;
+        if INNER {
+            self.gu[0] -= qq * n[0];
+            self.gu[1] -= qq * n[1] * cphi;
+        }
+        if !hessian {
+            return;
+        }
+        // Projector (I − n nᵀ)/ρ: curvature of |P − C|.
+        let pm = [
+            (1.0 - n[0] * n[0]) * inv,
+            -n[0] * n[1] * inv,
+            (1.0 - n[1] * n[1]) * inv,
+        ];
+        let pmt = [pm[0] * t[0] + pm[1] * t[1], pm[1] * t[0] + pm[2] * t[1]];
+        self.h[0] += dq * n[0] * n[0] + qq * pm[0];
+        self.h[1] += dq * n[0] * n[1] + qq * pm[1];
+        self.h[2] += dq * n[0] * gd2 + qq * pmt[0];
+        self.h[3] += dq * n[1] * n[1] + qq * pm[2];
+        self.h[4] += dq * n[1] * gd2 + qq * pmt[1];
+        // ∂²P/∂α² = −p adds −Q·(n·p).
+        self.h[5] += dq * gd2 * gd2 + qq * (t[0] * pmt[0] + t[1] * pmt[1])
+            - qq * (n[0] * p[0] + n[1] * p[1]);
+        if INNER {
+            let c2 = cphi * cphi;
+            self.huu[0] += dq * n[0] * n[0] + qq * pm[0];
+            self.huu[1] += (dq * n[0] * n[1] + qq * pm[1]) * cphi;
+            self.huu[2] += (dq * n[1] * n[1] + qq * pm[2]) * c2;
+            let gd = [n[0], n[1], gd2];
+            let row0 = [pm[0], pm[1], pmt[0]];
+            let row1 = [pm[1], pm[2], pmt[1]];
+            for b in 0..3 {
+                self.huq[0][b] -= dq * n[0] * gd[b] + qq * row0[b];
+                self.huq[1][b] -= (dq * n[1] * gd[b] + qq * row1[b]) * cphi;
+            }
+        }
+    }
+
+    fn finish(self, hessian: bool) -> RollerEval {
+        let h = self.h;
+        let (h_qq, h_uu, h_uq) = if hessian {
+            (
+                Matrix3::new(h[0], h[1], h[2], h[1], h[3], h[4], h[2], h[4], h[5]),
+                Matrix2::new(self.huu[0], self.huu[1], self.huu[1], self.huu[2]),
+                Matrix2x3::new(
+                    self.huq[0][0],
+                    self.huq[0][1],
+                    self.huq[0][2],
+                    self.huq[1][0],
+                    self.huq[1][1],
+                    self.huq[1][2],
+                ),
+            )
+        } else {
+            (Matrix3::zeros(), Matrix2::zeros(), Matrix2x3::zeros())
+        };
+        RollerEval {
+            energy: self.energy,
+            g_q: Vector3::new(self.g[0], self.g[1], self.g[2]),
+            h_qq,
+            g_u: Vector2::new(self.gu[0], self.gu[1]),
+            h_uq,
+            h_uu,
+        }
+    }
+}
+
 /// Everything one roller contributes at (u, q).
 struct RollerEval {
     energy: f64,
@@ -329,7 +470,77 @@ impl Problem {
     }
 
     /// Energy, gradient and Hessian of one roller at ring deflection `u` (cos φ = `cphi`).
+    ///
+    /// The hot loop of the whole program, written out in scalars: the same terms as the
+    /// matrix form of [`Problem::eval_reference`] (kept for the tests, which compare the two
+    /// to round-off), with the symmetric blocks accumulated once, the inner and outer
+    /// contacts specialised at compile time, and δ^(1/9) by the law's own
+    /// [`crate::model::lamina_law::ninth_root`].
     fn eval(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>, hessian: bool) -> RollerEval {
+        let g = &self.geom;
+        self.evals.set(self.evals.get() + 2 * g.laminae.len());
+        let pitch = crate::model::geometry::Pitch::new(q[2]);
+        let mut acc = Accumulator::default();
+        let qa = [q[0], q[1]];
+        let shift = [u[0], u[1] * cphi];
+        let (k_in, k_out) = (self.law_in.stiffness, self.law_out.stiffness);
+        for lam in &g.laminae {
+            let inner = ContactPoint {
+                p0: lam.inner_point,
+                v0: lam.inner_v0,
+                k0: lam.inner_k0,
+                radius: g.inner_radius_m,
+                centre_shift: shift,
+                stiffness: k_in * lam.weight,
+            };
+            acc.add::<true>(&inner, qa, pitch, cphi, hessian);
+            let outer = ContactPoint {
+                p0: lam.outer_point,
+                v0: lam.outer_v0,
+                k0: lam.outer_k0,
+                radius: g.outer_radius_m,
+                centre_shift: g.outer_shift,
+                stiffness: k_out * lam.weight,
+            };
+            acc.add::<false>(&outer, qa, pitch, cphi, hessian);
+        }
+        let mut ev = acc.finish(hessian);
+        self.add_inertia_and_cage(&mut ev, q, hessian);
+        ev
+    }
+
+    /// Inertial loads and the cage pocket springs (shared by both evaluations).
+    fn add_inertia_and_cage(&self, ev: &mut RollerEval, q: &Vector3<f64>, hessian: bool) {
+        let f = self.f_ext();
+        ev.energy -= f.dot(q);
+        ev.g_q -= f;
+        // Cage pocket: springs on the position along the roller axis and on pitch.
+        let a = self.geom.axis;
+        let s = q[0] * a[0] + q[1] * a[1];
+        ev.energy += 0.5 * self.k_cage * s * s + 0.5 * self.k_tilt * q[2] * q[2];
+        ev.g_q += Vector3::new(
+            self.k_cage * s * a[0],
+            self.k_cage * s * a[1],
+            self.k_tilt * q[2],
+        );
+        if hessian {
+            ev.h_qq[(0, 0)] += self.k_cage * a[0] * a[0];
+            ev.h_qq[(0, 1)] += self.k_cage * a[0] * a[1];
+            ev.h_qq[(1, 0)] += self.k_cage * a[0] * a[1];
+            ev.h_qq[(1, 1)] += self.k_cage * a[1] * a[1];
+            ev.h_qq[(2, 2)] += self.k_tilt;
+        }
+    }
+
+    /// The matrix form of [`Problem::eval`], term by term as derived (tests only).
+    #[cfg(test)]
+    fn eval_reference(
+        &self,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+        hessian: bool,
+    ) -> RollerEval {
         let mut ev = RollerEval {
             energy: 0.0,
             g_q: Vector3::zeros(),
@@ -385,26 +596,7 @@ impl Problem {
                 }
             }
         }
-        // Inertial loads.
-        let f = self.f_ext();
-        ev.energy -= f.dot(q);
-        ev.g_q -= f;
-        // Cage pocket: springs on the position along the roller axis and on pitch.
-        let a = g.axis;
-        let s = q[0] * a[0] + q[1] * a[1];
-        ev.energy += 0.5 * self.k_cage * s * s + 0.5 * self.k_tilt * q[2] * q[2];
-        ev.g_q += Vector3::new(
-            self.k_cage * s * a[0],
-            self.k_cage * s * a[1],
-            self.k_tilt * q[2],
-        );
-        if hessian {
-            ev.h_qq[(0, 0)] += self.k_cage * a[0] * a[0];
-            ev.h_qq[(0, 1)] += self.k_cage * a[0] * a[1];
-            ev.h_qq[(1, 0)] += self.k_cage * a[0] * a[1];
-            ev.h_qq[(1, 1)] += self.k_cage * a[1] * a[1];
-            ev.h_qq[(2, 2)] += self.k_tilt;
-        }
+        self.add_inertia_and_cage(&mut ev, q, hessian);
         ev
     }
 
@@ -986,6 +1178,8 @@ fn assemble(
                     outer_angle_deg: no[0].atan2(no[1]).to_degrees(),
                     inner_point_m: [pin[0], pin[1] + g.pitch_radius_m],
                     outer_point_m: [pout[0], pout[1] + g.pitch_radius_m],
+                    inner_normal: ni,
+                    outer_normal: no,
                 }
             })
             .collect();
@@ -1084,6 +1278,55 @@ mod tests {
         match solve(b, &s, &SolveOptions::default(), None) {
             Ok(r) => r,
             Err(e) => panic!("solve failed: {e}"),
+        }
+    }
+
+    #[test]
+    fn scalar_evaluation_equals_the_matrix_form() {
+        // The hot loop against the term-by-term matrix form, over roller states that put
+        // every lamina in, out of and at the edge of contact at both raceways, with and
+        // without ring deflection and pitch. Tolerance 1e-12 of each block's largest entry:
+        // the same arithmetic reordered.
+        for b in [Bearing::example_aerospace(), stribeck_bearing(12)] {
+            let p = Problem::new(
+                &b,
+                &DynamicSpeeds::app_c_estimate(&b),
+                b.solver.force_tolerance,
+            );
+            let d = b.geometry.roller_diameter_m;
+            let mut seed = 0x2545_f491_4f6c_dd1du64;
+            let mut rnd = || {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+            };
+            let mut loaded = 0;
+            for _ in 0..200 {
+                let q = Vector3::new(2e-4 * d * rnd(), 2e-3 * d * rnd(), 2e-3 * rnd());
+                let u = [1e-3 * d * rnd(), 1e-3 * d * rnd()];
+                let cphi = rnd();
+                let a = p.eval(cphi, u, &q, true);
+                let r = p.eval_reference(cphi, u, &q, true);
+                let close = |x: &[f64], y: &[f64], what: &str| {
+                    let scale = y.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+                    for (xi, yi) in x.iter().zip(y) {
+                        assert!((xi - yi).abs() <= 1e-12 * scale, "{what}: {xi} vs {yi}");
+                    }
+                };
+                close(&[a.energy], &[r.energy], "energy");
+                close(a.g_q.as_slice(), r.g_q.as_slice(), "g_q");
+                close(a.h_qq.as_slice(), r.h_qq.as_slice(), "h_qq");
+                close(a.g_u.as_slice(), r.g_u.as_slice(), "g_u");
+                close(a.h_uq.as_slice(), r.h_uq.as_slice(), "h_uq");
+                close(a.h_uu.as_slice(), r.h_uu.as_slice(), "h_uu");
+                loaded += usize::from(r.g_u.norm() > 0.0);
+            }
+            // The states exercise the contact terms, not just the cage spring.
+            assert!(
+                loaded > 50,
+                "only {loaded} of 200 states touch the inner raceway"
+            );
         }
     }
 
