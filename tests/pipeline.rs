@@ -453,3 +453,34 @@ fn coarse_to_fine_path_gives_the_cold_answer() {
         );
     }
 }
+
+#[test]
+fn mirrored_rollers_are_copied_not_approximated() {
+    // Rollers j and Z−j are mirror images under a load in the plane of roller 1; the
+    // per-roller stages copy them. Recomputing every roller from scratch (mirror map
+    // cleared) must give bit-identical contacts, stresses and heat: exact equality.
+    use rollbench::solve::{contacts, load_distribution, stages};
+    let b = deck("aerospace.toml").bearing;
+    let speeds = load_distribution::DynamicSpeeds::app_c_estimate(&b);
+    let ld = load_distribution::solve(&b, &speeds, &Default::default(), None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        ld.mirror.iter().flatten().count() > 0,
+        "aerospace has mirrored rollers"
+    );
+    let mut plain = ld.clone();
+    plain.mirror = vec![None; plain.rollers.len()];
+    let run_stages = |ld: &load_distribution::LoadDistribution| {
+        let c = contacts::contacts(&b, ld);
+        let s = stages::internal_speeds(&b, ld, &c);
+        let st = stages::stresses(&b, ld, &c);
+        let fi = stages::films(&b, &c, &s);
+        let fr =
+            stages::friction(&b, ld, &c, &st, &fi, &s, false).unwrap_or_else(|e| panic!("{e}"));
+        (c, st, fr)
+    };
+    let (a, b2) = (run_stages(&ld), run_stages(&plain));
+    assert_eq!(a.0, b2.0, "contacts");
+    assert_eq!(a.1, b2.1, "stresses");
+    assert_eq!(a.2, b2.2, "friction");
+}

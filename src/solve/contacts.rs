@@ -41,7 +41,15 @@ pub type RollerContacts = Vec<[LaminaContact; 2]>;
 
 /// Build the contact states of every lamina of every roller.
 pub fn contacts(b: &Bearing, ld: &LoadDistribution) -> Vec<RollerContacts> {
-    ld.rollers.iter().map(|r| roller_contacts(b, r)).collect()
+    let mut out: Vec<RollerContacts> = Vec::with_capacity(ld.rollers.len());
+    for (j, r) in ld.rollers.iter().enumerate() {
+        let c = match ld.mirror.get(j).copied().flatten() {
+            Some(i) => out[i].clone(),
+            None => roller_contacts(b, r),
+        };
+        out.push(c);
+    }
+    out
 }
 
 fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {

@@ -223,6 +223,11 @@ pub struct LoadDistribution {
     pub speeds: DynamicSpeeds,
     pub roller_mass: RollerMass,
     pub rollers: Vec<RollerResult>,
+    /// `mirror[j] = Some(i)` (i < j) when roller j's state is identical to roller i's: the
+    /// load lies in the plane through roller 1, so rollers j and Z−j mirror each other.
+    /// Later per-roller stages copy such rollers instead of recomputing them.
+    #[serde(skip)]
+    pub mirror: Vec<Option<usize>>,
     pub residuals: Residuals,
     pub stats: SolveStats,
     #[serde(skip)]
@@ -1207,6 +1212,9 @@ fn assemble(
         radial_deflection_m: u[1],
         speeds: *speeds,
         roller_mass: roller_mass(&b.geometry, b.materials.roller.density_kg_m3),
+        mirror: (0..z)
+            .map(|j| Some(unique_index(j, z)).filter(|&i| i != j))
+            .collect(),
         rollers,
         residuals,
         stats: SolveStats::default(),

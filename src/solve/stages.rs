@@ -82,8 +82,14 @@ pub fn stresses(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts])
         b.materials.outer_ring.poisson_ratio,
     ];
     let mut rollers = Vec::with_capacity(contacts.len());
-    let mut laminae = Vec::with_capacity(contacts.len());
+    let mut laminae: Vec<LaminaHertz> = Vec::with_capacity(contacts.len());
     for (j, rc) in contacts.iter().enumerate() {
+        if let Some(i) = ld.mirror.get(j).copied().flatten() {
+            // A mirrored roller: same state, same stresses.
+            rollers.push(rollers[i]);
+            laminae.push(laminae[i].clone());
+            continue;
+        }
         let lam: LaminaHertz = rc
             .iter()
             .map(|pair| {
@@ -474,10 +480,19 @@ pub fn friction(
         TractionModel::ehd(&b.lubricant)
     };
     let beta = b.geometry.contact_angle_rad;
-    let mut laminae = Vec::with_capacity(contacts.len());
-    let mut roller_heat = Vec::with_capacity(contacts.len());
+    let mut laminae: Vec<Vec<[LaminaFriction; 2]>> = Vec::with_capacity(contacts.len());
+    let mut roller_heat: Vec<[f64; 2]> = Vec::with_capacity(contacts.len());
     let mut totals = [0.0f64; 2];
     for (j, (r, rc)) in ld.rollers.iter().zip(contacts).enumerate() {
+        if let Some(i) = ld.mirror.get(j).copied().flatten() {
+            // A mirrored roller: same state, same sliding and heat.
+            let rh: [f64; 2] = roller_heat[i];
+            totals[0] += rh[0];
+            totals[1] += rh[1];
+            roller_heat.push(rh);
+            laminae.push(laminae[i].clone());
+            continue;
+        }
         let (s, c) = r.tilt_rad.sin_cos();
         let a0 = [beta.cos(), -beta.sin()];
         let axis = [c * a0[0] - s * a0[1], s * a0[0] + c * a0[1], 0.0];
