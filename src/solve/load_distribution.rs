@@ -277,6 +277,15 @@ struct ContactPoint {
     stiffness: f64,
 }
 
+/// A lamina contact's state: approach δ (m, > 0 = interference), load (N), the unit normal
+/// from the raceway's crown centre to the point and the point (roller frame), m.
+struct ContactState {
+    delta: f64,
+    load: f64,
+    normal: [f64; 2],
+    point: [f64; 2],
+}
+
 /// Scalar sums of one roller's energy, gradient and Hessian blocks (upper triangles).
 #[derive(Default)]
 struct Accumulator {
@@ -291,7 +300,8 @@ struct Accumulator {
 }
 
 impl Accumulator {
-    /// Add one contact. INNER contacts also load the inner ring (u-coupling).
+    /// Add one contact. INNER contacts also load the inner ring (u-coupling). Returns the
+    /// contact's state for the report.
     #[inline(always)]
     fn add<const INNER: bool>(
         &mut self,
@@ -300,7 +310,7 @@ impl Accumulator {
         pitch: crate::model::geometry::Pitch,
         cphi: f64,
         hessian: bool,
-    ) {
+    ) -> ContactState {
         let (sa, cm1) = (pitch.sin, pitch.cos_minus_one);
         let p0 = c.p0;
         let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
@@ -312,17 +322,24 @@ impl Accumulator {
         let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
         let delta = (c.k0 + 2.0 * (c.v0[0] * e[0] + c.v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1])
             / (rho + c.radius);
+        let inv = 1.0 / rho;
+        let n = [v[0] * inv, v[1] * inv];
+        let p = [p0[0] + dp[0], p0[1] + dp[1]];
+        let mut state = ContactState {
+            delta,
+            load: 0.0,
+            normal: n,
+            point: p,
+        };
         if delta <= 0.0 {
-            return;
+            return state;
         }
         // Lamina law Q = k·δ^(10/9), dQ/dδ, U = 9/19·Q·δ (eq. 3.3).
         let d19 = crate::model::lamina_law::ninth_root(delta);
         let qq = c.stiffness * delta * d19;
+        state.load = qq;
         let dq = c.stiffness * (10.0 / 9.0) * d19;
         self.energy += qq * delta * (9.0 / 19.0);
-        let inv = 1.0 / rho;
-        let n = [v[0] * inv, v[1] * inv];
-        let p = [p0[0] + dp[0], p0[1] + dp[1]];
         // ∂P/∂α = e_t × p = (−p_r, p_x)
         let t = [-p[1], p[0]];
         let gd2 = n[0] * t[0] + n[1] * t[1];
@@ -334,7 +351,7 @@ impl Accumulator {
             self.gu[1] -= qq * n[1] * cphi;
         }
         if !hessian {
-            return;
+            return state;
         }
         // Projector (I − n nᵀ)/ρ: curvature of |P − C|.
         let pm = [
@@ -364,6 +381,7 @@ impl Accumulator {
                 self.huq[1][b] -= (dq * n[1] * gd[b] + qq * row1[b]) * cphi;
             }
         }
+        state
     }
 
     fn finish(self, hessian: bool) -> RollerEval {
@@ -488,30 +506,43 @@ impl Problem {
         let mut acc = Accumulator::default();
         let qa = [q[0], q[1]];
         let shift = [u[0], u[1] * cphi];
-        let (k_in, k_out) = (self.law_in.stiffness, self.law_out.stiffness);
         for lam in &g.laminae {
-            let inner = ContactPoint {
-                p0: lam.inner_point,
-                v0: lam.inner_v0,
-                k0: lam.inner_k0,
-                radius: g.inner_radius_m,
-                centre_shift: shift,
-                stiffness: k_in * lam.weight,
-            };
+            let (inner, outer) = self.contact_points(lam, shift);
             acc.add::<true>(&inner, qa, pitch, cphi, hessian);
-            let outer = ContactPoint {
-                p0: lam.outer_point,
-                v0: lam.outer_v0,
-                k0: lam.outer_k0,
-                radius: g.outer_radius_m,
-                centre_shift: g.outer_shift,
-                stiffness: k_out * lam.weight,
-            };
             acc.add::<false>(&outer, qa, pitch, cphi, hessian);
         }
         let mut ev = acc.finish(hessian);
         self.add_inertia_and_cage(&mut ev, q, hessian);
         ev
+    }
+
+    /// The inner and outer contacts of lamina `lam` with the inner raceway centre shifted by
+    /// `shift` (the ring deflection seen at the roller's azimuth).
+    #[inline(always)]
+    fn contact_points(
+        &self,
+        lam: &crate::model::geometry::Lamina,
+        shift: [f64; 2],
+    ) -> (ContactPoint, ContactPoint) {
+        let g = &self.geom;
+        (
+            ContactPoint {
+                p0: lam.inner_point,
+                v0: lam.inner_v0,
+                k0: lam.inner_k0,
+                radius: g.inner_radius_m,
+                centre_shift: shift,
+                stiffness: self.law_in.stiffness * lam.weight,
+            },
+            ContactPoint {
+                p0: lam.outer_point,
+                v0: lam.outer_v0,
+                k0: lam.outer_k0,
+                radius: g.outer_radius_m,
+                centre_shift: g.outer_shift,
+                stiffness: self.law_out.stiffness * lam.weight,
+            },
+        )
     }
 
     /// Inertial loads and the cage pocket springs (shared by both evaluations).
@@ -780,7 +811,8 @@ impl Problem {
             // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
             // with every roller kept in equilibrium).
             let hqu = ev.h_uq.transpose();
-            let x = solve3_mat(&ev.h_qq, &hqu, self.l_ref);
+            let factor = Factor3::new(&ev.h_qq, self.l_ref);
+            let x = factor.solve_mat(&hqu);
             k += mult * (ev.h_uu - ev.h_uq * x);
             // The roller stopped at a residual r ≤ roller_tol; left as is, Z such residuals add
             // up to a ring-force error of order Z·r, a noise floor that can sit above the
@@ -792,7 +824,7 @@ impl Problem {
             // The step is trusted only while it is tiny against the contact approaches
             // (10⁻⁶·D): a roller held in a soft direction by the cage spring alone can turn
             // a small residual into a long step the quadratic model does not cover.
-            let mut dq = solve3_vec(&ev.h_qq, &ev.g_q, self.l_ref);
+            let mut dq = factor.solve_vec(&ev.g_q);
             let len = (dq[0].powi(2) + dq[1].powi(2) + (dq[2] * self.l_ref).powi(2)).sqrt();
             if len.is_nan() || len > 1e-5 * self.max_step {
                 dq = Vector3::zeros();
@@ -804,7 +836,7 @@ impl Problem {
             sens.push(-x);
             // Response to the inertial loads (radial force, pitching moment).
             let e = nalgebra::Matrix3x2::new(0.0, 0.0, 1.0, 0.0, 0.0, 1.0);
-            let pf = solve3_mat(&ev.h_qq, &e, self.l_ref);
+            let pf = factor.solve_mat(&e);
             inertial_ring.push(mult * (ev.h_uq * pf));
             inertial_roller.push(pf);
         }
@@ -844,7 +876,11 @@ impl Problem {
                 .laminae
                 .iter()
                 .map(|l| {
-                    let a = self.geom.approach(l, inner, [0.0; 3], [0.0; 2]);
+                    let rest = crate::model::geometry::Pitch {
+                        sin: 0.0,
+                        cos_minus_one: 0.0,
+                    };
+                    let a = self.geom.approach_with(l, inner, [0.0; 3], [0.0; 2], rest);
                     let c = (a.normal[0] * n[0] + a.normal[1] * n[1]).abs();
                     l.weight * c.powf(19.0 / 9.0)
                 })
@@ -997,30 +1033,42 @@ fn newton_step3(h: &Matrix3<f64>, g: &Vector3<f64>, l_ref: f64) -> Vector3<f64> 
     s * (-gs / tr)
 }
 
-/// x = H⁻¹b with the condensation's regularisation (zero if H cannot be factored).
-fn solve3_vec(h: &Matrix3<f64>, b: &Vector3<f64>, l_ref: f64) -> Vector3<f64> {
-    let m = nalgebra::Matrix3x2::from_columns(&[*b, Vector3::zeros()]);
-    solve3_mat(h, &m, l_ref).column(0).into_owned()
-}
+/// H_qq of one roller factored once (scaled and, if need be, shifted to positive definite
+/// like the Newton step) for the condensation's three solves; `None` when no shift helps,
+/// and then every solve gives zero.
+struct Factor3(Option<(nalgebra::Cholesky<f64, nalgebra::U3>, Matrix3<f64>)>);
 
-/// X = H⁻¹B for the condensation, with the same regularisation as the Newton step.
-fn solve3_mat(
-    h: &Matrix3<f64>,
-    b: &nalgebra::Matrix3x2<f64>,
-    l_ref: f64,
-) -> nalgebra::Matrix3x2<f64> {
-    let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
-    let hs = s * h * s;
-    let tr = hs.trace().abs().max(1e-300);
-    let mut mu = 0.0;
-    for _ in 0..40 {
-        let m = hs + Matrix3::identity() * mu;
-        if let Some(ch) = m.cholesky() {
-            return s * ch.solve(&(s * b));
+impl Factor3 {
+    fn new(h: &Matrix3<f64>, l_ref: f64) -> Self {
+        let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
+        let hs = s * h * s;
+        let tr = hs.trace().abs().max(1e-300);
+        let mut mu = 0.0;
+        for _ in 0..40 {
+            let m = hs + Matrix3::identity() * mu;
+            if let Some(ch) = m.cholesky() {
+                return Factor3(Some((ch, s)));
+            }
+            mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
         }
-        mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
+        Factor3(None)
     }
-    nalgebra::Matrix3x2::zeros()
+
+    /// X = H⁻¹B.
+    fn solve_mat(&self, b: &nalgebra::Matrix3x2<f64>) -> nalgebra::Matrix3x2<f64> {
+        match &self.0 {
+            Some((ch, s)) => s * ch.solve(&(s * b)),
+            None => nalgebra::Matrix3x2::zeros(),
+        }
+    }
+
+    /// x = H⁻¹b.
+    fn solve_vec(&self, b: &Vector3<f64>) -> Vector3<f64> {
+        match &self.0 {
+            Some((ch, s)) => s * ch.solve(&(s * b)),
+            None => Vector3::zeros(),
+        }
+    }
 }
 
 /// Solve the load distribution of `b` with dynamic loads from `speeds`.
@@ -1254,6 +1302,7 @@ fn assemble(
     let z = b.geometry.roller_count;
     let g = &p.geom;
     let beta_deg = b.geometry.contact_angle_rad.to_degrees();
+    let beta = g.normal[0].atan2(g.normal[1]);
     let mut rollers: Vec<RollerResult> = Vec::with_capacity(z);
     for j in 0..z {
         let uj = unique_index(j, z);
@@ -1267,19 +1316,20 @@ fn assemble(
         }
         let (cphi, _) = p.unique[uj];
         let q = qs[uj];
-        let ev = p.eval(cphi, u, &q, false);
-        residuals.roller_force_n = residuals
-            .roller_force_n
-            .max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
-        residuals.roller_moment_nm = residuals.roller_moment_nm.max(ev.g_q[2].abs());
+        // One pass gives the lamina results and the roller's residual (the same evaluation
+        // as the solver's, through the same accumulator).
         let shift = [u[0], u[1] * cphi];
-        let qa = [q[0], q[1], q[2]];
+        let qa = [q[0], q[1]];
+        let pitch = crate::model::geometry::Pitch::new(q[2]);
+        let mut acc = Accumulator::default();
+        p.evals.set(p.evals.get() + 2 * g.laminae.len());
         let laminae: Vec<LaminaResult> = g
             .laminae
             .iter()
             .map(|lam| {
-                let ai = g.approach(lam, true, qa, shift);
-                let ao = g.approach(lam, false, qa, shift);
+                let (cin, cout) = p.contact_points(lam, shift);
+                let ai = acc.add::<true>(&cin, qa, pitch, cphi, false);
+                let ao = acc.add::<false>(&cout, qa, pitch, cphi, false);
                 let pin = [q[0] + ai.point[0], q[1] + ai.point[1]];
                 let pout = [q[0] + ao.point[0], q[1] + ao.point[1]];
                 let (di, d_o) = (ai.delta, ao.delta);
@@ -1290,12 +1340,12 @@ fn assemble(
                 LaminaResult {
                     offset_m: lam.offset_m,
                     width_m: lam.width_m,
-                    inner_load_n: p.law_in.eval(di).0 * lam.weight,
-                    outer_load_n: p.law_out.eval(d_o).0 * lam.weight,
+                    inner_load_n: ai.load,
+                    outer_load_n: ao.load,
                     inner_approach_m: di,
                     outer_approach_m: d_o,
-                    inner_angle_deg: ni[0].atan2(ni[1]).to_degrees(),
-                    outer_angle_deg: no[0].atan2(no[1]).to_degrees(),
+                    inner_angle_deg: angle_from_radial_plane(ni, g.normal, beta).to_degrees(),
+                    outer_angle_deg: angle_from_radial_plane(no, g.normal, beta).to_degrees(),
                     inner_point_m: [pin[0], pin[1] + g.pitch_radius_m],
                     outer_point_m: [pout[0], pout[1] + g.pitch_radius_m],
                     inner_normal: ni,
@@ -1303,6 +1353,12 @@ fn assemble(
                 }
             })
             .collect();
+        let mut ev = acc.finish(false);
+        p.add_inertia_and_cage(&mut ev, &q, false);
+        residuals.roller_force_n = residuals
+            .roller_force_n
+            .max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
+        residuals.roller_moment_nm = residuals.roller_moment_nm.max(ev.g_q[2].abs());
         let inner = raceway_contact(&laminae, true, beta_deg);
         let outer = raceway_contact(&laminae, false, beta_deg);
         let s = q[0] * g.axis[0] + q[1] * g.axis[1];
@@ -1342,6 +1398,31 @@ fn assemble(
     }
 }
 
+/// The angle of unit vector `n` = (sin θ, cos θ) from the radial plane, θ = atan2(n_x, n_r),
+/// computed as β + atan(t) with t = (n × n̂)/(n · n̂) its tangent relative to the nominal
+/// contact normal n̂ = (sin β, cos β) (β = `beta`, rad): lamina normals lie within a few degrees of n̂, where
+/// the odd series of atan converges in a handful of terms (|t| ≤ 0.1: the t²³ term is below
+/// 1e-24). Further out, and whenever n points away from n̂, libm's atan2. Tested against
+/// atan2 to 2e-16 rad.
+#[inline]
+fn angle_from_radial_plane(n: [f64; 2], nominal: [f64; 2], beta: f64) -> f64 {
+    let dot = n[0] * nominal[0] + n[1] * nominal[1];
+    let cross = n[0] * nominal[1] - n[1] * nominal[0];
+    if dot > 0.0 && cross.abs() <= 0.1 * dot {
+        let t = cross / dot;
+        let t2 = t * t;
+        let mut series = 0.0;
+        for k in (1..=11).rev() {
+            // Horner on Σ (−1)^k t^(2k)/(2k+1)
+            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+            series = t2 * (sign / (2 * k + 1) as f64 + series);
+        }
+        beta + t * (1.0 + series)
+    } else {
+        n[0].atan2(n[1])
+    }
+}
+
 /// §4.5: normal load = Σ lamina loads projected on the most loaded lamina's normal.
 fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> RacewayContact {
     let load = |l: &LaminaResult| {
@@ -1373,10 +1454,21 @@ fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> Race
             max_lamina: None,
         },
         Some(m) => {
-            let a0 = angle(&laminae[m]).to_radians();
+            // cos(α_l − α_m) as the dot product of the two unit normals.
+            let normal = |l: &LaminaResult| {
+                if inner {
+                    l.inner_normal
+                } else {
+                    l.outer_normal
+                }
+            };
+            let nm = normal(&laminae[m]);
             let total = laminae
                 .iter()
-                .map(|l| load(l) * (angle(l).to_radians() - a0).cos())
+                .map(|l| {
+                    let n = normal(l);
+                    load(l) * (n[0] * nm[0] + n[1] * nm[1])
+                })
                 .sum();
             RacewayContact {
                 normal_load_n: total,
@@ -1450,6 +1542,25 @@ mod tests {
                 loaded > 50,
                 "only {loaded} of 200 states touch the inner raceway"
             );
+        }
+    }
+
+    #[test]
+    fn angle_from_radial_plane_matches_atan2() {
+        // Near the nominal normal (series) and far from it (atan2), for nominal angles from
+        // 0 to 60 deg: 2e-16 rad, a few rounding errors of an angle below π/2.
+        for beta_deg in [0.0f64, 6.0, 12.0, 30.0, 60.0] {
+            let b = beta_deg.to_radians();
+            let nominal = [b.sin(), b.cos()];
+            for i in -400..=400 {
+                let th = b + 0.25 * i as f64 / 400.0;
+                let n = [th.sin(), th.cos()];
+                let got = angle_from_radial_plane(n, nominal, b);
+                assert!(
+                    (got - n[0].atan2(n[1])).abs() <= 2e-16 * th.abs().max(1.0),
+                    "{th}"
+                );
+            }
         }
     }
 
