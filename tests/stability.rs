@@ -490,6 +490,31 @@ fn regression_pure_radial_at_rest_with_contact_angle() {
     }
 }
 
+/// Found by the 2000-case campaign after the speed work (the same outcome before it): an
+/// almost unloaded roller at rest (Z = 31, D = 32.5 mm, β = 5.5°, loads far beyond
+/// capacity, Γ = 6) "converged" pitched 96° across its raceways, and the outer contact of
+/// one lamina then had no Hertz half-width (null in the JSON). The deck is kept as
+/// tests/regressions/roller_tipped_over.toml. Now a typed error that names the roller and
+/// its pitch; never a non-finite output.
+#[test]
+fn regression_roller_tipped_over_is_a_typed_error() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/regressions/roller_tipped_over.toml"
+    );
+    let b = rollbench::deck::Deck::load(path)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .bearing;
+    match check_no_panic(&b) {
+        Ok(Outcome::TypedError) => match pipeline::run(&b, &Request::default(), None) {
+            Err(e) => assert!(format!("{e}").contains("pitched"), "{e}"),
+            Ok(_) => unreachable!("typed error above"),
+        },
+        Ok(Outcome::Solved) => panic!("expected the tipped-over roller diagnostic"),
+        Err(e) => panic!("{e}"),
+    }
+}
+
 /// A spherical roller (crown radius = D/2 = 1.5 mm) in fully conforming raceways (crown
 /// radii 1.5 mm): Z = 6, D = 3 mm, L_eff = 1.26 mm, β = 0, zero clearance, at rest, pure
 /// radial 2.8 kN (2.27 C; fails from 10 N up). Pitch about the roller centre has no contact

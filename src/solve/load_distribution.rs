@@ -1221,6 +1221,10 @@ pub fn solve(
     if let Some(e) = unrestrained(b, u) {
         return Err(e);
     }
+    // Likewise a roller that has pitched over in its pocket.
+    if let Some(e) = tipped_over(b, &qs) {
+        return Err(e);
+    }
     stats.lamina_evaluations = p.evals.get();
     let g = state.g;
     let residuals = Residuals {
@@ -1264,6 +1268,38 @@ fn unrestrained(b: &Bearing, u: [f64; 2]) -> Option<SolveError> {
             b.operating.radial_load_n,
             b.operating.axial_load_n,
             b.geometry.contact_angle_rad.to_degrees()
+        ),
+    })
+}
+
+/// Largest roller pitch the model accepts, rad (11.5°). A cage pocket, with clearances of a
+/// few tenths of a millimetre over a roller length of centimetres, stops a roller within a
+/// few degrees; the model's cage is a soft spring (`solver.cage_stiffness_ratio`) that only
+/// positions rollers the raceways leave free. Beyond this pitch a "converged" roller lies
+/// across its raceways (contact points at its ends, rolling radii that are no longer a line
+/// contact's) and every later stage would report nonsense; found by the stability campaign
+/// (an unloaded roller at rest pitched 89°).
+const MAX_PITCH_RAD: f64 = 0.2;
+
+/// The typed error for a roller pitched beyond [`MAX_PITCH_RAD`].
+fn tipped_over(b: &Bearing, qs: &[Vector3<f64>]) -> Option<SolveError> {
+    let (j, q) = qs
+        .iter()
+        .enumerate()
+        .max_by(|a, c| a.1[2].abs().total_cmp(&c.1[2].abs()))?;
+    if q[2].abs() <= MAX_PITCH_RAD {
+        return None;
+    }
+    Some(SolveError::Stage {
+        stage: "load distribution (eq. 3.9-3.11)",
+        message: format!(
+            "roller {} pitched {:.1} deg in its pocket (the model accepts up to {:.1} deg): it is held by neither raceway and the cage, not modelled beyond a soft spring, would stop it; F_r = {:.1} N, F_a = {:.1} N, inner speed {:.1} rpm",
+            j + 1,
+            q[2].to_degrees(),
+            MAX_PITCH_RAD.to_degrees(),
+            b.operating.radial_load_n,
+            b.operating.axial_load_n,
+            b.operating.inner_speed_rad_s * 30.0 / std::f64::consts::PI
         ),
     })
 }
