@@ -9,7 +9,6 @@
 //!
 //! `cargo run --release --example tribology_case -- [LAMINAE]` (default 21).
 use rollbench::deck::Deck;
-use rollbench::model::Slicing;
 use rollbench::solve::load_distribution::{self, DynamicSpeeds, SolveOptions};
 use rollbench::solve::pipeline::{run, Request};
 
@@ -33,15 +32,7 @@ fn main() {
     let mut b = Deck::load(concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml"))
         .expect("deck")
         .bearing;
-    let g = &mut b.geometry;
-    g.roller_crown_radius_m = 1.0;
-    g.inner_crown_radius_m = 1.0;
-    g.outer_crown_radius_m = 1.0;
-    g.diametral_clearance_m = 0.0;
-    b.operating.inner_speed_rad_s = 0.0;
-    b.operating.outer_speed_rad_s = 0.0;
-    b.solver.laminae = laminae;
-    b.solver.slicing = Slicing::Uniform;
+    rollbench::validate::make_cylindrical_radial(&mut b, laminae);
     let speeds = DynamicSpeeds::app_c_estimate(&b);
     let solve = || load_distribution::solve(&b, &speeds, &SolveOptions::default(), None);
     let ld = solve().expect("solve");

@@ -109,6 +109,23 @@ pub(crate) fn stribeck_bearing(z: usize) -> Bearing {
     b
 }
 
+/// The cylindrical-like radial case of issue 7's comparison with the Python `tribology`
+/// package (examples/tribology_case.rs, benches/tribology_compare.py): `b` (decks/radial_si
+/// in practice) made a straight-roller bearing — conforming 1 m crowns on roller and
+/// raceways (every lamina at the same approach), zero clearance, at rest — with `laminae`
+/// uniform laminae, the package's slicing.
+pub fn make_cylindrical_radial(b: &mut Bearing, laminae: usize) {
+    let g = &mut b.geometry;
+    g.roller_crown_radius_m = 1.0;
+    g.inner_crown_radius_m = 1.0;
+    g.outer_crown_radius_m = 1.0;
+    g.diametral_clearance_m = 0.0;
+    b.operating.inner_speed_rad_s = 0.0;
+    b.operating.outer_speed_rad_s = 0.0;
+    b.solver.laminae = laminae;
+    b.solver.slicing = crate::model::Slicing::Uniform;
+}
+
 fn stribeck_cases(out: &mut Vec<Case>) {
     for (z, st) in STRIBECK_TABLE {
         let b = stribeck_bearing(z);

@@ -11,6 +11,7 @@ pub mod life;
 pub mod pchip;
 pub mod roller;
 pub mod subsurface;
+mod subsurface_table;
 pub mod traction;
 
 pub use bearing::*;
