@@ -1447,12 +1447,21 @@ fn angle_from_radial_plane(n: [f64; 2], nominal: [f64; 2], beta: f64) -> f64 {
     if dot > 0.0 && cross.abs() <= 0.1 * dot {
         let t = cross / dot;
         let t2 = t * t;
-        let mut series = 0.0;
-        for k in (1..=11).rev() {
-            // Horner on Σ (−1)^k t^(2k)/(2k+1)
-            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
-            series = t2 * (sign / (2 * k + 1) as f64 + series);
-        }
+        // Horner on Σ_k (−1)^k t^(2k)/(2k+1), k = 1…11.
+        const C: [f64; 11] = [
+            -1.0 / 3.0,
+            1.0 / 5.0,
+            -1.0 / 7.0,
+            1.0 / 9.0,
+            -1.0 / 11.0,
+            1.0 / 13.0,
+            -1.0 / 15.0,
+            1.0 / 17.0,
+            -1.0 / 19.0,
+            1.0 / 21.0,
+            -1.0 / 23.0,
+        ];
+        let series = C.iter().rev().fold(0.0, |acc, c| t2 * (c + acc));
         beta + t * (1.0 + series)
     } else {
         n[0].atan2(n[1])
