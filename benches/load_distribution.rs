@@ -1,10 +1,12 @@
 //! Load distribution on each shipped deck (seed 000 §3), the full pipeline without the
 //! transient on each deck (issue 7's 0.2 ms target is about that number), and the
-//! cylindrical-like radial case of the comparison with the Python `tribology` package.
+//! cylindrical-like radial case of the comparison with the Python `tribology` package, and
+//! the workbench's per-edit latency by edit kind (the stage-cached pipeline re-runs only the
+//! stages an edit touches).
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::deck::Deck;
 use rollbench::solve::load_distribution::{solve, DynamicSpeeds, SolveOptions};
-use rollbench::solve::pipeline::{run, Request};
+use rollbench::solve::pipeline::{run, Pipeline, Request};
 
 fn decks() -> Vec<(String, Deck)> {
     let mut out = Vec::new();
@@ -56,5 +58,48 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// Edit → results on the aerospace deck with its thermal network (steady state, no
+/// transient: what the workbench computes unless the thermal pane shows the transient).
+/// Each iteration flips one input between two values, so the stages it feeds re-run.
+fn edit_latency(c: &mut Criterion) {
+    let Some((_, deck)) = decks().into_iter().find(|(n, _)| n == "aerospace") else {
+        return;
+    };
+    let Ok(Some(tm)) = rollbench::cli::thermal_model(&deck) else {
+        return;
+    };
+    type Edit = fn(&mut rollbench::model::Bearing, &mut rollbench::thermal::ThermalModel, bool);
+    let edits: [(&str, Edit); 4] = [
+        ("load", |b, _, f| {
+            b.operating.radial_load_n *= if f { 1.05 } else { 1.0 / 1.05 }
+        }),
+        ("lubricant", |b, _, f| {
+            b.lubricant.viscosity_pa_s *= if f { 1.05 } else { 1.0 / 1.05 }
+        }),
+        ("cage", |b, _, f| {
+            b.cage.diametral_clearance_m *= if f { 1.05 } else { 1.0 / 1.05 }
+        }),
+        ("thermal", |_, t, f| {
+            t.transient.duration_s *= if f { 1.05 } else { 1.0 / 1.05 }
+        }),
+    ];
+    let mut g = c.benchmark_group("edit_latency");
+    for (name, edit) in edits {
+        let mut p = Pipeline::new();
+        let mut b = deck.bearing.clone();
+        let mut t = tm.clone();
+        let _ = p.run(&b, Some(&t), &Request::default(), None);
+        let mut flip = false;
+        g.bench_function(name, |bch| {
+            bch.iter(|| {
+                flip = !flip;
+                edit(&mut b, &mut t, flip);
+                p.run(&b, Some(&t), &Request::default(), None)
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, edit_latency);
 criterion_main!(benches);

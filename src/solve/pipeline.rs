@@ -250,13 +250,31 @@ impl Pipeline {
             cage: bearing.cage,
         };
         if need_friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
-            if let Some((_, (st, fi, _))) = &self.contact {
-                let fr =
-                    stages::friction(bearing, &ls.load, &ls.contacts, st, fi, &ls.speeds, false)?;
-                self.counters.friction += 1;
-                self.friction = Some((friction_key, fr));
-                self.steady = None;
-                self.transient = None;
+            match (&self.friction, &self.contact) {
+                // Cage-only edit: the lamina traction does not read the cage; only the
+                // cage's rail and drag heat are re-derived.
+                (Some((k, fr)), _) if k.lubricant == friction_key.lubricant => {
+                    let fr = stages::with_cage(bearing, fr, &ls.speeds)?;
+                    self.friction = Some((friction_key, fr));
+                    self.steady = None;
+                    self.transient = None;
+                }
+                (_, Some((_, (st, fi, _)))) => {
+                    let fr = stages::friction(
+                        bearing,
+                        &ls.load,
+                        &ls.contacts,
+                        st,
+                        fi,
+                        &ls.speeds,
+                        false,
+                    )?;
+                    self.counters.friction += 1;
+                    self.friction = Some((friction_key, fr));
+                    self.steady = None;
+                    self.transient = None;
+                }
+                _ => {}
             }
         }
         if let (Some(tm), Some((_, fr))) = (thermal_model, &self.friction) {

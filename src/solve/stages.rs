@@ -460,6 +460,54 @@ pub struct Friction {
     pub lost_lubrication: bool,
 }
 
+/// §9's heat by mechanism from the contact heat at the inner and outer raceways (W) and
+/// the cage: rail friction (eq. 9.3–9.4) and viscous drag, at §7's cage speed.
+fn heat_breakdown(
+    b: &Bearing,
+    contact_w: [f64; 2],
+    speeds: &InternalSpeeds,
+) -> Result<HeatBreakdown, super::SolveError> {
+    let ring_w = [b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s];
+    let lub = &b.lubricant;
+    let wc = speeds.cage_speed_rad_s;
+    let cage = heat::cage_rail_power_for(&b.cage, lub.viscosity_pa_s, ring_w[0], ring_w[1], wc)
+        .map_err(|e| super::SolveError::Stage {
+            stage: "cage rail heat (eq. 9.3-9.4)",
+            message: e.to_string(),
+        })?;
+    let drag = heat::viscous_drag_power_w(
+        b.cage.drag_factor,
+        heat::kinematic_viscosity_m2_s(lub),
+        ring_w[0] - ring_w[1],
+        b.geometry.pitch_diameter_m,
+    );
+    Ok(HeatBreakdown::new(
+        contact_w[0],
+        contact_w[1],
+        cage,
+        drag,
+        ring_w[0],
+        ring_w[1],
+    ))
+}
+
+/// `fr` with its heat breakdown re-derived for `b`'s cage: the lamina traction and contact
+/// heat do not depend on the cage, so a cage edit needs only this (the pipeline's cache).
+pub fn with_cage(
+    b: &Bearing,
+    fr: &Friction,
+    speeds: &InternalSpeeds,
+) -> Result<Friction, super::SolveError> {
+    let contact_w = fr
+        .roller_heat_w
+        .iter()
+        .fold([0.0; 2], |t, r| [t[0] + r[0], t[1] + r[1]]);
+    Ok(Friction {
+        heat: heat_breakdown(b, contact_w, speeds)?,
+        ..fr.clone()
+    })
+}
+
 /// §8 sliding at every lamina contact and §9 heat by mechanism. `lost_lubrication` selects
 /// the constant-coefficient traction of §9.2's last paragraph.
 pub fn friction(
@@ -549,20 +597,7 @@ pub fn friction(
         roller_heat.push(rh);
         laminae.push(lam);
     }
-    let lub = &b.lubricant;
-    let cage = heat::cage_rail_power_for(&b.cage, lub.viscosity_pa_s, ring_w[0], ring_w[1], wc)
-        .map_err(|e| super::SolveError::Stage {
-            stage: "cage rail heat (eq. 9.3-9.4)",
-            message: e.to_string(),
-        })?;
-    let rel = ring_w[0] - ring_w[1];
-    let drag = heat::viscous_drag_power_w(
-        b.cage.drag_factor,
-        heat::kinematic_viscosity_m2_s(lub),
-        rel,
-        b.geometry.pitch_diameter_m,
-    );
-    let heat = HeatBreakdown::new(totals[0], totals[1], cage, drag, ring_w[0], ring_w[1]);
+    let heat = heat_breakdown(b, totals, speeds)?;
     Ok(Friction {
         laminae,
         roller_heat_w: roller_heat,
