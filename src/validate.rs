@@ -95,18 +95,24 @@ pub(crate) const STRIBECK_TABLE: [(usize, f64); 8] = [
 /// zero clearance, zero speed, pure radial load 20 kN.
 pub(crate) fn stribeck_bearing(z: usize) -> Bearing {
     let mut b = Bearing::example_aerospace();
-    let g = &mut b.geometry;
-    g.roller_count = z;
-    g.contact_angle_rad = 0.0;
-    g.diametral_clearance_m = 0.0;
-    g.roller_crown_radius_m = 0.05;
-    g.inner_crown_radius_m = 0.05;
-    g.outer_crown_radius_m = 0.05;
-    b.operating.inner_speed_rad_s = 0.0;
-    b.operating.outer_speed_rad_s = 0.0;
+    straight_rollers_at_rest(&mut b, 0.05);
+    b.geometry.roller_count = z;
+    b.geometry.contact_angle_rad = 0.0;
     b.operating.axial_load_n = 0.0;
     b.operating.radial_load_n = 20_000.0;
     b
+}
+
+/// Roller and raceways with the same crown radius `crown_m` (every lamina at the same
+/// approach: a straight roller in line contact), zero clearance, both rings at rest.
+fn straight_rollers_at_rest(b: &mut Bearing, crown_m: f64) {
+    let g = &mut b.geometry;
+    g.roller_crown_radius_m = crown_m;
+    g.inner_crown_radius_m = crown_m;
+    g.outer_crown_radius_m = crown_m;
+    g.diametral_clearance_m = 0.0;
+    b.operating.inner_speed_rad_s = 0.0;
+    b.operating.outer_speed_rad_s = 0.0;
 }
 
 /// The cylindrical-like radial case of issue 7's comparison with the Python `tribology`
@@ -115,13 +121,7 @@ pub(crate) fn stribeck_bearing(z: usize) -> Bearing {
 /// raceways (every lamina at the same approach), zero clearance, at rest — with `laminae`
 /// uniform laminae, the package's slicing.
 pub fn make_cylindrical_radial(b: &mut Bearing, laminae: usize) {
-    let g = &mut b.geometry;
-    g.roller_crown_radius_m = 1.0;
-    g.inner_crown_radius_m = 1.0;
-    g.outer_crown_radius_m = 1.0;
-    g.diametral_clearance_m = 0.0;
-    b.operating.inner_speed_rad_s = 0.0;
-    b.operating.outer_speed_rad_s = 0.0;
+    straight_rollers_at_rest(b, 1.0);
     b.solver.laminae = laminae;
     b.solver.slicing = crate::model::Slicing::Uniform;
 }

@@ -260,15 +260,7 @@ impl Pipeline {
                     self.transient = None;
                 }
                 (_, Some((_, (st, fi, _)))) => {
-                    let fr = stages::friction(
-                        bearing,
-                        &ls.load,
-                        &ls.contacts,
-                        st,
-                        fi,
-                        &ls.speeds,
-                        false,
-                    )?;
+                    let fr = friction_stage(bearing, ls, st, fi, false)?;
                     self.counters.friction += 1;
                     self.friction = Some((friction_key, fr));
                     self.steady = None;
@@ -287,15 +279,7 @@ impl Pipeline {
             }
             if request.thermal_transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
                 if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
-                    let lost = stages::friction(
-                        bearing,
-                        &ls.load,
-                        &ls.contacts,
-                        st,
-                        fi,
-                        &ls.speeds,
-                        true,
-                    )?;
+                    let lost = friction_stage(bearing, ls, st, fi, true)?;
                     let tr = thermal::run_transient(
                         &tm.network,
                         steady,
@@ -347,6 +331,26 @@ impl Pipeline {
             trace: ls.trace.clone(),
         })
     }
+}
+
+/// §8–9 on the solved load stage: EHD traction, or with `lost_lubrication` the constant
+/// coefficient of the loss-of-oil transient.
+fn friction_stage(
+    bearing: &Bearing,
+    ls: &LoadStage,
+    st: &Stresses,
+    fi: &Films,
+    lost_lubrication: bool,
+) -> Result<Friction, SolveError> {
+    stages::friction(
+        bearing,
+        &ls.load,
+        &ls.contacts,
+        st,
+        fi,
+        &ls.speeds,
+        lost_lubrication,
+    )
 }
 
 /// Loosest relative force tolerance of an intermediate solve of the dynamic-load iteration.
