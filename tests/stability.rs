@@ -7,7 +7,7 @@
 //!
 //! `random_bearings_are_stable` runs 64 cases in the test profile; the `#[ignore]`d
 //! `random_bearings_are_stable_heavy` runs 2000 and prints the counts:
-//! `cargo test --release --test stability -- --ignored --nocapture`.
+//! `cargo test --release --test stability random_bearings_are_stable_heavy -- --ignored --nocapture`.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -307,7 +307,7 @@ proptest! {
 
 /// 2000 cases without shrinking, all failures collected and printed with their decks.
 #[test]
-#[ignore = "heavy: cargo test --release --test stability -- --ignored --nocapture"]
+#[ignore = "heavy: cargo test --release --test stability random_bearings_are_stable_heavy -- --ignored --nocapture"]
 fn random_bearings_are_stable_heavy() {
     let mut runner = TestRunner::new(Config {
         cases: 2000,
