@@ -13,7 +13,7 @@ pub enum SolveError {
         tolerance_n: f64,
     },
     /// One roller's equilibrium did not converge.
-    #[error("roller {roller} equilibrium did not converge after {iterations} iterations (residual {residual:.3e}, tolerance {tolerance:.3e})")]
+    #[error("roller {roller} equilibrium did not converge after {iterations} iterations (residual {residual:.3e} N, tolerance {tolerance:.3e} N); a roller that neither raceway holds rests on the soft cage spring, and a stiffer one (solver.cage_stiffness_ratio) or more iterations (solver.max_roller_iterations) may let it settle")]
     RollerNotConverged {
         roller: usize,
         iterations: usize,

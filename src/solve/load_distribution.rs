@@ -1297,13 +1297,14 @@ fn tipped_over(b: &Bearing, qs: &[Vector3<f64>]) -> Option<SolveError> {
     Some(SolveError::Stage {
         stage: "load distribution (eq. 3.9-3.11)",
         message: format!(
-            "roller {} pitched {:.1} deg in its pocket (the model accepts up to {:.1} deg): it is held by neither raceway and the cage, not modelled beyond a soft spring, would stop it; F_r = {:.1} N, F_a = {:.1} N, inner speed {:.1} rpm",
+            "roller {} pitched {:.1} deg in its pocket (the model accepts up to {:.1} deg): it is held by neither raceway and the cage, not modelled beyond a soft spring, would stop it; F_r = {:.1} N, F_a = {:.1} N, inner speed {:.1} rpm; a stiffer cage spring (solver.cage_stiffness_ratio, now {:.0e}) may hold it",
             j + 1,
             q[2].to_degrees(),
             MAX_PITCH_RAD.to_degrees(),
             b.operating.radial_load_n,
             b.operating.axial_load_n,
-            b.operating.inner_speed_rad_s * 30.0 / std::f64::consts::PI
+            b.operating.inner_speed_rad_s * 30.0 / std::f64::consts::PI,
+            b.solver.cage_stiffness_ratio
         ),
     })
 }
