@@ -47,14 +47,18 @@ pub struct DynamicSpeeds {
 impl DynamicSpeeds {
     /// App. C's first estimate (eq. C.1–C.2): no slip, contact at the design angle.
     pub fn app_c_estimate(b: &Bearing) -> Self {
+        use crate::model::kinematics::{cage_speed_estimate, roller_spin_estimate};
         let theta = b.geometry.theta();
         let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
         DynamicSpeeds {
-            cage_rad_s: 0.5 * (w1 * (1.0 - theta) + w2 * (1.0 + theta)),
-            roller_spin_rad_s: b.geometry.pitch_diameter_m / (2.0 * b.geometry.roller_diameter_m)
-                * (1.0 - theta)
-                * (1.0 + theta)
-                * (w2 - w1),
+            cage_rad_s: cage_speed_estimate(w1, w2, theta),
+            roller_spin_rad_s: roller_spin_estimate(
+                w1,
+                w2,
+                theta,
+                b.geometry.roller_diameter_m,
+                b.geometry.pitch_diameter_m,
+            ),
         }
     }
 }

@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::contacts::{LaminaContact, RollerContacts};
-use super::load_distribution::LoadDistribution;
+use super::load_distribution::{DynamicSpeeds, LoadDistribution};
 use crate::model::film::{self, FilmInputs};
 use crate::model::heat::{self, HeatBreakdown};
 use crate::model::hertz::{self, Elastic, LineContact};
@@ -201,6 +201,12 @@ pub fn contact_pairs(ld: &LoadDistribution, contacts: &[RollerContacts]) -> Vec<
         .collect()
 }
 
+/// App. C's cage speed and roller spin (eq. C.1–C.2), rad/s.
+fn app_c_speeds(b: &Bearing) -> (f64, f64) {
+    let s = DynamicSpeeds::app_c_estimate(b);
+    (s.cage_rad_s, s.roller_spin_rad_s)
+}
+
 /// §7 speeds at the equilibrium; falls back to App. C when no roller touches both raceways
 /// (e.g. zero load at zero speed), and says so through `controlling_rollers = 0`.
 pub fn internal_speeds(
@@ -209,14 +215,7 @@ pub fn internal_speeds(
     contacts: &[RollerContacts],
 ) -> InternalSpeeds {
     let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
-    let est_cage = kinematics::cage_speed_estimate(w1, w2, b.geometry.theta());
-    let est_spin = kinematics::roller_spin_estimate(
-        w1,
-        w2,
-        b.geometry.theta(),
-        b.geometry.roller_diameter_m,
-        b.geometry.pitch_diameter_m,
-    );
+    let (est_cage, est_spin) = app_c_speeds(b);
     let pairs = contact_pairs(ld, contacts);
     match kinematics::internal_speeds(w1, w2, b.geometry.pitch_diameter_m, &pairs) {
         Ok(s) => s,
@@ -231,14 +230,7 @@ pub fn internal_speeds(
 /// Build the report struct of the speeds.
 pub fn speeds_report(b: &Bearing, s: &InternalSpeeds, iterations: usize) -> Speeds {
     let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
-    let est_cage = kinematics::cage_speed_estimate(w1, w2, b.geometry.theta());
-    let est_spin = kinematics::roller_spin_estimate(
-        w1,
-        w2,
-        b.geometry.theta(),
-        b.geometry.roller_diameter_m,
-        b.geometry.pitch_diameter_m,
-    );
+    let (est_cage, est_spin) = app_c_speeds(b);
     Speeds {
         inner_rpm: w1 * RPM,
         outer_rpm: w2 * RPM,
@@ -263,14 +255,7 @@ pub fn speeds_report(b: &Bearing, s: &InternalSpeeds, iterations: usize) -> Spee
 
 /// Spins per roller with App. C's value where §7 leaves it undetermined, rad/s.
 fn spins(b: &Bearing, s: &InternalSpeeds) -> Vec<f64> {
-    let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
-    let est = kinematics::roller_spin_estimate(
-        w1,
-        w2,
-        b.geometry.theta(),
-        b.geometry.roller_diameter_m,
-        b.geometry.pitch_diameter_m,
-    );
+    let (_, est) = app_c_speeds(b);
     s.roller_spin_rad_s
         .iter()
         .map(|x| x.unwrap_or(est))
