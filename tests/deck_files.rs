@@ -1,25 +1,15 @@
 //! Deck fixtures: every shipped deck parses; every invalid deck fails with a message
 //! naming key and line (snapshotted); random bearings survive a write/parse round trip.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
+
+use common::toml_files;
 
 use proptest::prelude::*;
 use rollbench::deck::{write_bearing, Deck, Units};
 use rollbench::model::{Bearing, FilmModel, GuidingRing, LifeMethod, Material};
-
-fn toml_files(dir: &str) -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map(|rd| {
-            rd.filter_map(Result::ok)
-                .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect()
-        })
-        .unwrap_or_default();
-    files.sort();
-    files
-}
 
 #[test]
 fn every_shipped_deck_parses() {
@@ -217,50 +207,7 @@ fn bearing() -> impl Strategy<Value = Bearing> {
 /// Field-by-field comparison through the serde representation (independent of the
 /// deck registry): numbers within `tol` relative, everything else equal.
 fn diff(a: &Bearing, b: &Bearing, tol: f64) -> Vec<String> {
-    fn walk(
-        path: &str,
-        x: &serde_json::Value,
-        y: &serde_json::Value,
-        tol: f64,
-        out: &mut Vec<String>,
-    ) {
-        use serde_json::Value as J;
-        match (x, y) {
-            (J::Object(p), J::Object(q)) => {
-                for (k, v) in p {
-                    match q.get(k) {
-                        Some(w) => walk(&format!("{path}.{k}"), v, w, tol, out),
-                        None => out.push(format!("{path}.{k}: missing")),
-                    }
-                }
-            }
-            (J::Number(p), J::Number(q)) => {
-                let (p, q) = (
-                    p.as_f64().unwrap_or(f64::NAN),
-                    q.as_f64().unwrap_or(f64::NAN),
-                );
-                let r = if p == q {
-                    0.0
-                } else {
-                    (p - q).abs() / p.abs().max(q.abs())
-                };
-                if r.is_nan() || r > tol {
-                    out.push(format!("{path}: {p} vs {q}"));
-                }
-            }
-            _ => {
-                if x != y {
-                    out.push(format!("{path}: {x} vs {y}"));
-                }
-            }
-        }
-    }
-    let mut out = Vec::new();
-    match (serde_json::to_value(a), serde_json::to_value(b)) {
-        (Ok(x), Ok(y)) => walk("bearing", &x, &y, tol, &mut out),
-        _ => out.push("not serializable".into()),
-    }
-    out
+    common::serde_diff::serde_diff("bearing", a, b, tol)
 }
 
 fn deck(name: &str) -> Deck {

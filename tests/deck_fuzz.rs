@@ -9,23 +9,14 @@
 //! `rollbench check`. Run once by hand at 10 000 random-byte and 20 000 mutation cases:
 //! no panic.
 
-use std::path::{Path, PathBuf};
+mod common;
 
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rollbench::deck::Deck;
 
 fn shipped() -> Vec<(String, String)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("decks");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map(|rd| {
-            rd.filter_map(Result::ok)
-                .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect()
-        })
-        .unwrap_or_default();
-    files.sort();
+    let files = common::toml_files("decks");
     files
         .into_iter()
         .map(|p| {

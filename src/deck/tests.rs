@@ -13,49 +13,13 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
+#[path = "../../tests/common/serde_diff.rs"]
+mod serde_diff;
+
 /// Field-by-field comparison of two bearings through their serde representation
-/// (independent of the registry): numbers within `tol` relative, everything else
-/// equal. Returns the paths that differ.
+/// (independent of the registry). Returns the paths that differ.
 pub(crate) fn bearing_diff(a: &Bearing, b: &Bearing, tol: f64) -> Vec<String> {
-    fn walk(
-        path: &str,
-        x: &serde_json::Value,
-        y: &serde_json::Value,
-        tol: f64,
-        out: &mut Vec<String>,
-    ) {
-        use serde_json::Value as J;
-        match (x, y) {
-            (J::Object(p), J::Object(q)) => {
-                for (k, v) in p {
-                    match q.get(k) {
-                        Some(w) => walk(&format!("{path}.{k}"), v, w, tol, out),
-                        None => out.push(format!("{path}.{k}: missing")),
-                    }
-                }
-            }
-            (J::Number(p), J::Number(q)) => {
-                let (p, q) = (
-                    p.as_f64().unwrap_or(f64::NAN),
-                    q.as_f64().unwrap_or(f64::NAN),
-                );
-                if rel(p, q).is_nan() || rel(p, q) > tol {
-                    out.push(format!("{path}: {p} vs {q}"));
-                }
-            }
-            _ => {
-                if x != y {
-                    out.push(format!("{path}: {x} vs {y}"));
-                }
-            }
-        }
-    }
-    let mut out = Vec::new();
-    match (serde_json::to_value(a), serde_json::to_value(b)) {
-        (Ok(x), Ok(y)) => walk("bearing", &x, &y, tol, &mut out),
-        _ => out.push("not serializable".into()),
-    }
-    out
+    serde_diff::serde_diff("bearing", a, b, tol)
 }
 
 /// The registry covers every field of `Bearing` except `name`: one registry entry per

@@ -44,6 +44,11 @@ impl Ctx<'_> {
             .map(|s| s.trim().to_string())
             .unwrap_or_default()
     }
+    /// Where `item` stands in the file and its text as written.
+    fn at(&self, item: &Item) -> (Location, String) {
+        let span = item_span(item);
+        (self.loc(span.clone()), self.raw(span))
+    }
 }
 
 fn item_span(item: &Item) -> Option<Range<usize>> {
@@ -134,23 +139,19 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
             });
             None
         }
-        Some(item) => {
-            let span = item_span(item);
-            match item.as_str().map(str::parse::<Units>) {
-                Some(Ok(u)) => Some(u),
-                _ => {
-                    let location = ctx.loc(span.clone());
-                    let value = ctx.raw(span);
-                    ctx.errors.push(DeckError::Invalid {
-                        location,
-                        key: "units".into(),
-                        value,
-                        rule: "expected \"si\" or \"us\"".into(),
-                    });
-                    None
-                }
+        Some(item) => match item.as_str().map(str::parse::<Units>) {
+            Some(Ok(u)) => Some(u),
+            _ => {
+                let (location, value) = ctx.at(item);
+                ctx.errors.push(DeckError::Invalid {
+                    location,
+                    key: "units".into(),
+                    value,
+                    rule: "expected \"si\" or \"us\"".into(),
+                });
+                None
             }
-        }
+        },
     };
 
     let mut bearing = Bearing::example_aerospace();
@@ -159,9 +160,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
         Some(item) => match item.as_str() {
             Some(s) => s.to_string(),
             None => {
-                let span = item_span(item);
-                let location = ctx.loc(span.clone());
-                let value = ctx.raw(span);
+                let (location, value) = ctx.at(item);
                 ctx.errors.push(DeckError::WrongType {
                     location,
                     key: "name".into(),
@@ -199,9 +198,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
                 check_keys(&mut ctx, t, g, &allowed);
             }
             None => {
-                let span = item_span(item);
-                let location = ctx.loc(span.clone());
-                let value = ctx.raw(span);
+                let (location, value) = ctx.at(item);
                 ctx.errors.push(DeckError::WrongType {
                     location,
                     key: (*g).to_string(),
@@ -259,9 +256,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
                                 _ => bearing.materials.outer_ring = m,
                             },
                             None => {
-                                let span = item_span(item);
-                                let location = ctx.loc(span.clone());
-                                let value = ctx.raw(span);
+                                let (location, value) = ctx.at(item);
                                 ctx.errors.push(DeckError::Invalid {
                                     location,
                                     key,
@@ -284,9 +279,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
                         check_keys(&mut ctx, t, &key, &allowed);
                         material_tables.insert(key, t);
                     } else {
-                        let span = item_span(item);
-                        let location = ctx.loc(span.clone());
-                        let value = ctx.raw(span);
+                        let (location, value) = ctx.at(item);
                         ctx.errors.push(DeckError::WrongType {
                             location,
                             key,
@@ -338,9 +331,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
                 Presence::OneOf(_) => {}
             },
             Some(item) => {
-                let span = item_span(item);
-                let location = ctx.loc(span.clone());
-                let raw = ctx.raw(span);
+                let (location, raw) = ctx.at(item);
                 ctx.seen.insert(spec.key, (location.clone(), raw.clone()));
                 if let Some(si) = read_value(&mut ctx, spec, item, units, location, raw) {
                     spec.set_si(&mut bearing, si);
