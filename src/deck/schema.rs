@@ -217,6 +217,16 @@ pub const MATERIAL_PRESETS: &[(&str, Material)] = &[
 ];
 /// The bodies under `[materials]`.
 pub const MATERIAL_BODIES: &[&str] = &["roller", "inner_ring", "outer_ring"];
+/// Top-level tables every deck must have (`[solver]` and `[thermal]` are optional).
+pub const REQUIRED_GROUPS: &[&str] = &[
+    "geometry",
+    "materials",
+    "operating",
+    "lubricant",
+    "surfaces",
+    "life",
+    "cage",
+];
 /// Top-level tables, in file order.
 pub const GROUPS: &[&str] = &[
     "geometry",

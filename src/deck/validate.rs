@@ -10,7 +10,7 @@ use toml_edit::{Item, TableLike, Value};
 use super::error::{DeckError, DeckErrors, Location};
 use super::schema::{
     field, fields, format_short, material_preset, FieldKind, FieldSpec, Presence, GROUPS,
-    MATERIAL_BODIES, MATERIAL_PRESETS,
+    MATERIAL_BODIES, MATERIAL_PRESETS, REQUIRED_GROUPS,
 };
 use crate::model::{Bearing, LifeMethod};
 use crate::units::Units;
@@ -212,15 +212,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
         let span = root.get(g).and_then(item_span);
         ctx.loc(span)
     };
-    for g in [
-        "geometry",
-        "materials",
-        "operating",
-        "lubricant",
-        "surfaces",
-        "life",
-        "cage",
-    ] {
+    for g in REQUIRED_GROUPS {
         if root.get(g).is_none() {
             ctx.errors.push(DeckError::Missing {
                 location: Location::start(source),
