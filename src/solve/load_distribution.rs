@@ -30,7 +30,7 @@ use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 use serde::Serialize;
 
 use super::SolveError;
-use crate::model::geometry::LaminaGeometry;
+use crate::model::geometry::{Approach, LaminaGeometry};
 use crate::model::lamina_law::LaminaLaw;
 use crate::model::roller::{roller_mass, RollerMass};
 use crate::model::Bearing;
@@ -265,31 +265,6 @@ struct Problem {
     max_step: f64,
 }
 
-/// One lamina contact as the hot loop sees it (see [`LaminaGeometry::approach_with`]).
-struct ContactPoint {
-    /// Nominal surface point relative to the roller centre, m.
-    p0: [f64; 2],
-    /// Nominal vector from the raceway crown centre to the point, m.
-    v0: [f64; 2],
-    /// |v₀|² − R², m² (cancellation-free form).
-    k0: f64,
-    /// Raceway crown radius R, m.
-    radius: f64,
-    /// Displacement of the raceway crown centre, m.
-    centre_shift: [f64; 2],
-    /// Lamina law constant k·weight, N/m^(10/9).
-    stiffness: f64,
-}
-
-/// A lamina contact's state: approach δ (m, > 0 = interference), load (N), the unit normal
-/// from the raceway's crown centre to the point and the point (roller frame), m.
-struct ContactState {
-    delta: f64,
-    load: f64,
-    normal: [f64; 2],
-    point: [f64; 2],
-}
-
 /// Scalar sums of one roller's energy, gradient and Hessian blocks (upper triangles).
 #[derive(Default)]
 struct Accumulator {
@@ -304,45 +279,27 @@ struct Accumulator {
 }
 
 impl Accumulator {
-    /// Add one contact. INNER contacts also load the inner ring (u-coupling). Returns the
-    /// contact's state for the report.
+    /// Add one contact at approach state `a` ([`LaminaGeometry::approach_with`]) with lamina
+    /// law constant `stiffness` (k·weight, N/m^(10/9)). INNER contacts also load the inner
+    /// ring (u-coupling). Returns the contact's load, N.
     #[inline(always)]
     fn add<const INNER: bool>(
         &mut self,
-        c: &ContactPoint,
-        q: [f64; 2],
-        pitch: crate::model::geometry::Pitch,
+        a: &Approach,
+        stiffness: f64,
         cphi: f64,
         hessian: bool,
-    ) -> ContactState {
-        let (sa, cm1) = (pitch.sin, pitch.cos_minus_one);
-        let p0 = c.p0;
-        let dp = [cm1 * p0[0] - sa * p0[1], sa * p0[0] + cm1 * p0[1]];
-        let e = [
-            q[0] + dp[0] - c.centre_shift[0],
-            q[1] + dp[1] - c.centre_shift[1],
-        ];
-        let v = [c.v0[0] + e[0], c.v0[1] + e[1]];
-        let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
-        let delta = (c.k0 + 2.0 * (c.v0[0] * e[0] + c.v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1])
-            / (rho + c.radius);
-        let inv = 1.0 / rho;
-        let n = [v[0] * inv, v[1] * inv];
-        let p = [p0[0] + dp[0], p0[1] + dp[1]];
-        let mut state = ContactState {
-            delta,
-            load: 0.0,
-            normal: n,
-            point: p,
-        };
+    ) -> f64 {
+        let delta = a.delta;
         if delta <= 0.0 {
-            return state;
+            return 0.0;
         }
+        let (n, p) = (a.normal, a.point);
+        let inv = 1.0 / a.rho;
         // Lamina law Q = k·δ^(10/9), dQ/dδ, U = 9/19·Q·δ (eq. 3.3).
         let d19 = crate::model::lamina_law::ninth_root(delta);
-        let qq = c.stiffness * delta * d19;
-        state.load = qq;
-        let dq = c.stiffness * (10.0 / 9.0) * d19;
+        let qq = stiffness * delta * d19;
+        let dq = stiffness * (10.0 / 9.0) * d19;
         self.energy += qq * delta * (9.0 / 19.0);
         // ∂P/∂α = e_t × p = (−p_r, p_x)
         let t = [-p[1], p[0]];
@@ -355,7 +312,7 @@ impl Accumulator {
             self.gu[1] -= qq * n[1] * cphi;
         }
         if !hessian {
-            return state;
+            return qq;
         }
         // Projector (I − n nᵀ)/ρ: curvature of |P − C|.
         let pm = [
@@ -385,7 +342,7 @@ impl Accumulator {
                 self.huq[1][b] -= (dq * n[1] * gd[b] + qq * row1[b]) * cphi;
             }
         }
-        state
+        qq
     }
 
     fn finish(self, hessian: bool) -> RollerEval {
@@ -508,45 +465,18 @@ impl Problem {
         self.evals.set(self.evals.get() + 2 * g.laminae.len());
         let pitch = crate::model::geometry::Pitch::new(q[2]);
         let mut acc = Accumulator::default();
-        let qa = [q[0], q[1]];
+        let qa = [q[0], q[1], q[2]];
         let shift = [u[0], u[1] * cphi];
+        let (k_in, k_out) = (self.law_in.stiffness, self.law_out.stiffness);
         for lam in &g.laminae {
-            let (inner, outer) = self.contact_points(lam, shift);
-            acc.add::<true>(&inner, qa, pitch, cphi, hessian);
-            acc.add::<false>(&outer, qa, pitch, cphi, hessian);
+            let ai = g.approach_with(lam, true, qa, shift, pitch);
+            acc.add::<true>(&ai, k_in * lam.weight, cphi, hessian);
+            let ao = g.approach_with(lam, false, qa, shift, pitch);
+            acc.add::<false>(&ao, k_out * lam.weight, cphi, hessian);
         }
         let mut ev = acc.finish(hessian);
         self.add_inertia_and_cage(&mut ev, q, hessian);
         ev
-    }
-
-    /// The inner and outer contacts of lamina `lam` with the inner raceway centre shifted by
-    /// `shift` (the ring deflection seen at the roller's azimuth).
-    #[inline(always)]
-    fn contact_points(
-        &self,
-        lam: &crate::model::geometry::Lamina,
-        shift: [f64; 2],
-    ) -> (ContactPoint, ContactPoint) {
-        let g = &self.geom;
-        (
-            ContactPoint {
-                p0: lam.inner_point,
-                v0: lam.inner_v0,
-                k0: lam.inner_k0,
-                radius: g.inner_radius_m,
-                centre_shift: shift,
-                stiffness: self.law_in.stiffness * lam.weight,
-            },
-            ContactPoint {
-                p0: lam.outer_point,
-                v0: lam.outer_v0,
-                k0: lam.outer_k0,
-                radius: g.outer_radius_m,
-                centre_shift: g.outer_shift,
-                stiffness: self.law_out.stiffness * lam.weight,
-            },
-        )
     }
 
     /// Inertial loads and the cage pocket springs (shared by both evaluations).
@@ -1364,7 +1294,7 @@ fn assemble(
         // One pass gives the lamina results and the roller's residual (the same evaluation
         // as the solver's, through the same accumulator).
         let shift = [u[0], u[1] * cphi];
-        let qa = [q[0], q[1]];
+        let qa = [q[0], q[1], q[2]];
         let pitch = crate::model::geometry::Pitch::new(q[2]);
         let mut acc = Accumulator::default();
         p.evals.set(p.evals.get() + 2 * g.laminae.len());
@@ -1372,9 +1302,11 @@ fn assemble(
             .laminae
             .iter()
             .map(|lam| {
-                let (cin, cout) = p.contact_points(lam, shift);
-                let ai = acc.add::<true>(&cin, qa, pitch, cphi, false);
-                let ao = acc.add::<false>(&cout, qa, pitch, cphi, false);
+                let ai = g.approach_with(lam, true, qa, shift, pitch);
+                let inner_load = acc.add::<true>(&ai, p.law_in.stiffness * lam.weight, cphi, false);
+                let ao = g.approach_with(lam, false, qa, shift, pitch);
+                let outer_load =
+                    acc.add::<false>(&ao, p.law_out.stiffness * lam.weight, cphi, false);
                 let pin = [q[0] + ai.point[0], q[1] + ai.point[1]];
                 let pout = [q[0] + ao.point[0], q[1] + ao.point[1]];
                 let (di, d_o) = (ai.delta, ao.delta);
@@ -1385,8 +1317,8 @@ fn assemble(
                 LaminaResult {
                     offset_m: lam.offset_m,
                     width_m: lam.width_m,
-                    inner_load_n: ai.load,
-                    outer_load_n: ao.load,
+                    inner_load_n: inner_load,
+                    outer_load_n: outer_load,
                     inner_approach_m: di,
                     outer_approach_m: d_o,
                     inner_angle_deg: angle_from_radial_plane(ni, g.normal, beta).to_degrees(),
