@@ -65,6 +65,8 @@ pub struct Approach {
     pub delta: f64,
     pub normal: V2,
     pub rho: f64,
+    /// 1/ρ, 1/m: one division shared by the normal and the solver's curvature term.
+    pub inv_rho: f64,
     pub point: V2,
 }
 
@@ -224,12 +226,14 @@ impl LaminaGeometry {
         let e = [q[0] + dp[0] - dc[0], q[1] + dp[1] - dc[1]];
         let v = [v0[0] + e[0], v0[1] + e[1]];
         let rho = (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let inv_rho = 1.0 / rho;
         let delta =
             (k0 + 2.0 * (v0[0] * e[0] + v0[1] * e[1]) + e[0] * e[0] + e[1] * e[1]) / (rho + r);
         Approach {
             delta,
-            normal: [v[0] / rho, v[1] / rho],
+            normal: [v[0] * inv_rho, v[1] * inv_rho],
             rho,
+            inv_rho,
             point: [p0[0] + dp[0], p0[1] + dp[1]],
         }
     }

@@ -295,7 +295,7 @@ impl Accumulator {
             return 0.0;
         }
         let (n, p) = (a.normal, a.point);
-        let inv = 1.0 / a.rho;
+        let inv = a.inv_rho;
         // Lamina law Q = k·δ^(10/9), dQ/dδ, U = 9/19·Q·δ (eq. 3.3).
         let d19 = crate::model::lamina_law::ninth_root(delta);
         let qq = stiffness * delta * d19;
