@@ -521,7 +521,7 @@ fn axial_cases(out: &mut Vec<Case>) {
                 .flat_map(|x| {
                     x.laminae
                         .iter()
-                        .map(|l| l.inner_load_n * l.inner_angle_deg.to_radians().sin())
+                        .map(|l| l.inner_load_n * l.inner_angle_deg().to_radians().sin())
                 })
                 .sum();
             (lo / hi, fa)

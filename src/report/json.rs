@@ -67,8 +67,8 @@ pub fn to_value(a: &Analysis) -> Value {
                         "outer_load_n": l.outer_load_n,
                         "inner_approach_m": l.inner_approach_m,
                         "outer_approach_m": l.outer_approach_m,
-                        "inner_angle_deg": l.inner_angle_deg,
-                        "outer_angle_deg": l.outer_angle_deg,
+                        "inner_angle_deg": l.inner_angle_deg(),
+                        "outer_angle_deg": l.outer_angle_deg(),
                         "inner_point_m": l.inner_point_m,
                         "outer_point_m": l.outer_point_m,
                     });

@@ -20,8 +20,6 @@ pub struct LaminaContact {
     pub load_n: f64,
     /// Lamina width, m.
     pub width_m: f64,
-    /// Contact angle of the lamina normal from the radial plane, rad.
-    pub angle_rad: f64,
     /// Distance of the contact point from the bearing axis, m.
     pub ring_axis_distance_m: f64,
     /// Distance of the contact point from the roller axis, m.
@@ -71,20 +69,10 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
             let edge = n > 1 && (i == 0 || i + 1 == n);
             let mk = |inner: bool| {
                 // Unit normal of the contact (x, r): the contact angle direction.
-                let (pt, load, ang, nn) = if inner {
-                    (
-                        l.inner_point_m,
-                        l.inner_load_n,
-                        l.inner_angle_deg.to_radians(),
-                        l.inner_normal,
-                    )
+                let (pt, load, nn) = if inner {
+                    (l.inner_point_m, l.inner_load_n, l.inner_normal)
                 } else {
-                    (
-                        l.outer_point_m,
-                        l.outer_load_n,
-                        l.outer_angle_deg.to_radians(),
-                        l.outer_normal,
-                    )
+                    (l.outer_point_m, l.outer_load_n, l.outer_normal)
                 };
                 // Ring: normal line from the point to the bearing axis (r = 0): length r/cos β'.
                 let ring_len = pt[1] / nn[1].abs().max(1e-12);
@@ -104,7 +92,6 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
                 LaminaContact {
                     load_n: load,
                     width_m: l.width_m,
-                    angle_rad: ang,
                     ring_axis_distance_m: pt[1],
                     roller_axis_distance_m: dist_axis,
                     roller_radius_m: roller_len,
