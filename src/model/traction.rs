@@ -213,7 +213,7 @@ impl TractionModel {
                 limiting_traction_coefficient,
             } => {
                 let newtonian = if h > 0.0 {
-                    viscosity_pa_s * (pressure_viscosity_pa_inv * p).exp() * v.abs() / h
+                    viscosity_pa_s * exp_fast(pressure_viscosity_pa_inv * p) * v.abs() / h
                 } else {
                     f64::INFINITY
                 };
@@ -266,29 +266,54 @@ impl TractionModel {
         } else {
             0.0
         };
-        // Breakpoints in φ (p falls from p₀ at φ = 0 to 0 at π/2), ascending, with their
-        // cosines (p/p₀, exact) and sines (√(1 − cos²)): no trigonometric call per piece.
-        let mut breaks = [(0.0, 1.0, 0.0); 6];
-        let mut n = 1;
+        // Pieces in p, from p₀ down to 0, split at the law's kinks, each with its branch
+        // (any interior pressure identifies it: the branch is constant between kinks).
+        // Adjacent pieces on the same branch are merged: a kink of one branch's formula inside
+        // another branch's range (the limit's kink τ_tr/μ where the film is Newtonian, say)
+        // is no break of the law, and splitting there only cost a quadrature panel and an
+        // acos (on the aerospace deck 3.8 Newtonian pieces per contact before, ~1 after).
         let mut kinks = self.kinks(v, h, p0);
-        let kinks = kinks.sorted_descending();
-        for &pk in kinks {
-            if pk > 0.0 && pk < p0 {
-                let c = pk / p0;
-                breaks[n] = (c.acos(), c, (1.0 - c * c).max(0.0).sqrt());
+        let mut bounds = [0.0f64; 6];
+        let mut branch = [Regime::Newtonian; 5];
+        bounds[0] = p0;
+        let mut n = 0;
+        let interior = kinks
+            .sorted_descending()
+            .iter()
+            .copied()
+            .filter(|&pk| pk > 0.0 && pk < p0);
+        for pk in interior.chain(std::iter::once(0.0)) {
+            let hi = bounds[n];
+            if pk >= hi {
+                continue; // a repeated kink
+            }
+            let r = self.regime(0.5 * (hi + pk), v, h);
+            if n > 0 && branch[n - 1] == r {
+                bounds[n] = pk;
+            } else {
+                branch[n] = r;
                 n += 1;
+                bounds[n] = pk;
             }
         }
-        breaks[n] = (std::f64::consts::FRAC_PI_2, 0.0, 1.0);
-        n += 1;
-        let mut integral = 0.0;
-        for w in breaks[..n].windows(2) {
-            let ((a, ca, sa), (b, cb, sb)) = (w[0], w[1]);
-            if b <= a {
-                continue;
+        // The pieces in φ (p = p₀ cos φ): (φ, cos φ = p/p₀ exactly, sin φ = √(1 − cos²)), so
+        // one acos per real break and no trigonometric call per piece.
+        let at = |i: usize| {
+            if i == 0 {
+                (0.0, 1.0, 0.0)
+            } else if i == n {
+                (std::f64::consts::FRAC_PI_2, 0.0, 1.0)
+            } else {
+                let c = bounds[i] / p0;
+                (c.acos(), c, (1.0 - c * c).max(0.0).sqrt())
             }
-            // Any interior pressure identifies the piece's branch (p is monotone in φ).
-            integral += match self.regime(0.5 * p0 * (ca + cb), v, h) {
+        };
+        let mut integral = 0.0;
+        let mut start = at(0);
+        for (i, r) in branch[..n].iter().enumerate() {
+            let end = at(i + 1);
+            let ((a, ca, sa), (b, cb, sb)) = (start, end);
+            integral += match *r {
                 Regime::Newtonian => self.newtonian_piece(p0, v, h, (a, ca, sa), (b, cb)),
                 Regime::Transition(tau) => tau * (sb - sa),
                 Regime::Coulomb(mu) => {
@@ -296,6 +321,7 @@ impl TractionModel {
                     mu * p0 * 0.5 * ((b - a) + (sb * cb - sa * ca))
                 }
             };
+            start = end;
         }
         let force = 2.0 * contact.width_m * contact.half_width_m * integral * v.signum();
         LaminaTraction {
@@ -407,18 +433,18 @@ impl TractionModel {
             // there. Three-digit accuracy would do (a misplaced kink costs only second order);
             // we iterate to round-off since convergence is quadratic.
             let c = ln_a - mu.ln();
-            let g = |s: f64| c + alpha * s.exp() - s;
-            let dg = |s: f64| alpha * s.exp() - 1.0;
+            let g = |s: f64| c + alpha * exp_fast(s) - s;
             let s_min = -alpha.ln();
             let s_max = p_max.ln();
             let newton = |mut s: f64| {
                 for _ in 0..100 {
-                    let next = s - g(s) / dg(s);
+                    let e = alpha * exp_fast(s);
+                    let next = s - (c + e - s) / (e - 1.0);
                     if !next.is_finite() {
                         return None;
                     }
                     if (next - s).abs() <= 1e-14 * s.abs().max(1.0) {
-                        return Some(next.exp());
+                        return Some(exp_fast(next));
                     }
                     s = next;
                 }
@@ -470,21 +496,55 @@ fn exp_fast(x: f64) -> f64 {
 
 // Tables of [`exp_fast`], from 50-digit decimal arithmetic (checked in `exp_fast_tables`):
 // 2^(i/32), and ln2/32 as a 32-bit head plus its tail, and 32/ln2.
-const EXP2_TABLE: [f64; 32] = [1.0, 1.0218971486541166, 1.0442737824274138, 1.0671404006768237, 1.0905077326652577, 1.1143867425958924, 1.1387886347566916, 1.1637248587775775, 1.189207115002721, 1.215247359980469, 1.241857812073484, 1.2690509571917332, 1.2968395546510096, 1.3252366431597413, 1.3542555469368927, 1.383909881963832, 1.4142135623730951, 1.4451808069770467, 1.4768261459394993, 1.5091644275934228, 1.5422108254079407, 1.5759808451078865, 1.6104903319492543, 1.645755478153965, 1.681792830507429, 1.718619298122478, 1.7562521603732995, 1.7947090750031072, 1.8340080864093424, 1.8741676341103, 1.9152065613971474, 1.9571441241754002];
+const EXP2_TABLE: [f64; 32] = [
+    1.0,
+    1.0218971486541166,
+    1.0442737824274138,
+    1.0671404006768237,
+    1.0905077326652577,
+    1.1143867425958924,
+    1.1387886347566916,
+    1.1637248587775775,
+    1.189207115002721,
+    1.215247359980469,
+    1.241857812073484,
+    1.2690509571917332,
+    1.2968395546510096,
+    1.3252366431597413,
+    1.3542555469368927,
+    1.383909881963832,
+    std::f64::consts::SQRT_2,
+    1.4451808069770467,
+    1.4768261459394993,
+    1.5091644275934228,
+    1.5422108254079407,
+    1.5759808451078865,
+    1.6104903319492543,
+    1.645755478153965,
+    1.681792830507429,
+    1.718619298122478,
+    1.7562521603732995,
+    1.7947090750031072,
+    1.8340080864093424,
+    1.8741676341103,
+    1.9152065613971474,
+    1.9571441241754002,
+];
 const LN2_32_HI: f64 = 0.02166084938653512;
 const LN2_32_LO: f64 = 5.9631716539705866e-12;
 const INV_LN2_32: f64 = 46.16624130844683;
 
-/// sin t and cos t for |t| ≤ π/4 by their Taylor series to t¹⁵ and t¹⁶ (Horner): the first
-/// omitted terms are below 5e-17 there, under the rounding of the result. A libm call costs
-/// about 20 ns; this costs a few multiply-adds. Larger |t| falls back to libm.
+/// sin t and cos t for |t| ≤ π/4 by their Taylor series to t¹⁵ and t¹⁶ (Estrin's scheme:
+/// short independent chains instead of one 8-deep Horner chain): the first omitted terms are
+/// below 5e-17 there, under the rounding of the result. A libm call costs about 20 ns; this
+/// costs a few multiply-adds. Larger |t| falls back to libm.
 #[inline]
 fn small_sin_cos(t: f64) -> (f64, f64) {
     if t.abs() > std::f64::consts::FRAC_PI_4 {
         return t.sin_cos();
     }
-    // Horner in t² with the coefficients (−1)^k/(2k+1)! and (−1)^k/(2k)! as constants (a
-    // division per term would cost more than the rest together).
+    // Polynomials in t² with the coefficients (−1)^k/(2k+1)! and (−1)^k/(2k)! as constants
+    // (a division per term would cost more than the rest together).
     const S: [f64; 7] = [
         -1.0 / 6.0,
         1.0 / 120.0,
@@ -505,8 +565,15 @@ fn small_sin_cos(t: f64) -> (f64, f64) {
         1.0 / 20_922_789_888_000.0,
     ];
     let t2 = t * t;
-    let s = t + t * S.iter().rev().fold(0.0, |acc, k| t2 * (k + acc));
-    let c = 1.0 + C.iter().rev().fold(0.0, |acc, k| t2 * (k + acc));
+    let t4 = t2 * t2;
+    let t8 = t4 * t4;
+    // Σ_{k<7} S[k]·t2^(k+1) and Σ_{k<8} C[k]·t2^(k+1), in pairs joined by t⁴ and t⁸.
+    let s_low = (S[0] + t2 * S[1]) + t4 * (S[2] + t2 * S[3]);
+    let s_high = (S[4] + t2 * S[5]) + t4 * S[6];
+    let c_low = (C[0] + t2 * C[1]) + t4 * (C[2] + t2 * C[3]);
+    let c_high = (C[4] + t2 * C[5]) + t4 * (C[6] + t2 * C[7]);
+    let s = t + t * (t2 * (s_low + t8 * s_high));
+    let c = 1.0 + t2 * (c_low + t8 * c_high);
     (s, c)
 }
 
@@ -533,6 +600,7 @@ impl Kinks {
 }
 
 /// Branch of the traction law on a piece of the contact.
+#[derive(Clone, Copy, PartialEq)]
 enum Regime {
     /// τ = τ_N (integrated by quadrature).
     Newtonian,
@@ -802,7 +870,10 @@ mod tests {
     #[test]
     fn exp_fast_tables() {
         for (i, &v) in EXP2_TABLE.iter().enumerate() {
-            assert!((v / 2f64.powf(i as f64 / 32.0) - 1.0).abs() <= 2.3e-16, "{i}");
+            assert!(
+                (v / 2f64.powf(i as f64 / 32.0) - 1.0).abs() <= 2.3e-16,
+                "{i}"
+            );
         }
         let ln2_32 = std::f64::consts::LN_2 / 32.0;
         assert!(((LN2_32_HI + LN2_32_LO) / ln2_32 - 1.0).abs() <= 1.2e-16);
