@@ -123,7 +123,9 @@ pub fn run_with_thermal(
     request: &Request,
     cancel: Option<&AtomicBool>,
 ) -> Result<Analysis, SolveError> {
-    Pipeline::default().run(bearing, thermal_model, request, cancel)
+    let mut p = Pipeline::default();
+    p.update(bearing, thermal_model, request, cancel)?;
+    p.into_analysis(bearing, thermal_model, request)
 }
 
 /// How many times each stage has run (the proof that edits re-run only what they touch).
@@ -205,6 +207,61 @@ impl Pipeline {
         request: &Request,
         cancel: Option<&AtomicBool>,
     ) -> Result<Analysis, SolveError> {
+        self.update(bearing, thermal_model, request, cancel)?;
+        // The caches stay for the next edit: the analysis gets copies of what it shows.
+        let need_contact = request.contact || request.heat || thermal_model.is_some();
+        let need_friction = request.heat || thermal_model.is_some();
+        let thermal = thermal_model.is_some();
+        let parts = Parts {
+            load: self.load.as_ref().map(|l| l.1.clone()),
+            contact: self
+                .contact
+                .as_ref()
+                .filter(|_| need_contact)
+                .map(|c| c.1.clone()),
+            friction: self
+                .friction
+                .as_ref()
+                .filter(|_| need_friction)
+                .map(|f| f.1.clone()),
+            steady: self
+                .steady
+                .as_ref()
+                .filter(|_| thermal)
+                .map(|s| s.1.clone()),
+            transient: (self.transient.as_ref())
+                .filter(|_| thermal && request.thermal_transient)
+                .map(|t| t.1.clone()),
+        };
+        parts.analysis(bearing, thermal_model, request)
+    }
+
+    /// A one-shot pipeline's analysis: the stage outputs are moved, not copied (a copy of
+    /// the per-lamina tables was a tenth of a run on the aerospace deck).
+    fn into_analysis(
+        self,
+        bearing: &Bearing,
+        thermal_model: Option<&ThermalModel>,
+        request: &Request,
+    ) -> Result<Analysis, SolveError> {
+        let parts = Parts {
+            load: self.load.map(|l| l.1),
+            contact: self.contact.map(|c| c.1),
+            friction: self.friction.map(|f| f.1),
+            steady: self.steady.map(|s| s.1),
+            transient: self.transient.map(|t| t.1),
+        };
+        parts.analysis(bearing, thermal_model, request)
+    }
+
+    /// Bring every stage `request` needs up to date with `bearing`.
+    fn update(
+        &mut self,
+        bearing: &Bearing,
+        thermal_model: Option<&ThermalModel>,
+        request: &Request,
+        cancel: Option<&AtomicBool>,
+    ) -> Result<(), SolveError> {
         let load_key = LoadKey {
             geometry: bearing.geometry,
             materials: bearing.materials,
@@ -292,26 +349,50 @@ impl Pipeline {
                 }
             }
         }
-        let (stresses, films, life) = match (&self.contact, need_contact) {
-            (Some((_, (st, fi, li))), true) => {
-                (Some(st.clone()), Some(fi.clone()), Some(li.clone()))
-            }
+        Ok(())
+    }
+}
+
+/// The stage outputs an [`Analysis`] is made of, owned.
+struct Parts {
+    load: Option<LoadStage>,
+    contact: Option<(Stresses, Films, Life)>,
+    friction: Option<Friction>,
+    steady: Option<SteadyResult>,
+    transient: Option<(TransientResult, f64)>,
+}
+
+impl Parts {
+    /// The analysis of `request`: the stages it asked for (a cached stage it did not ask
+    /// for is left out, as if it had not run).
+    fn analysis(
+        self,
+        bearing: &Bearing,
+        thermal_model: Option<&ThermalModel>,
+        request: &Request,
+    ) -> Result<Analysis, SolveError> {
+        let Some(ls) = self.load else {
+            return Err(SolveError::Stage {
+                stage: "pipeline",
+                message: "load stage missing".into(),
+            });
+        };
+        let need_contact = request.contact || request.heat || thermal_model.is_some();
+        let need_friction = request.heat || thermal_model.is_some();
+        let (stresses, films, life) = match (self.contact, need_contact) {
+            (Some((st, fi, li)), true) => (Some(st), Some(fi), Some(li)),
             _ => (None, None, None),
         };
-        let friction = if need_friction {
-            self.friction.as_ref().map(|f| f.1.clone())
-        } else {
-            None
-        };
-        let thermal = match (thermal_model, &self.steady) {
-            (Some(_), Some((_, steady))) => {
+        let friction = if need_friction { self.friction } else { None };
+        let thermal = match (thermal_model, self.steady) {
+            (Some(_), Some(steady)) => {
                 let tr = if request.thermal_transient {
-                    self.transient.as_ref().map(|t| t.1.clone())
+                    self.transient
                 } else {
                     None
                 };
                 Some(ThermalOut {
-                    steady: steady.clone(),
+                    steady,
                     transient_heat_w: tr.as_ref().map(|t| t.1),
                     transient: tr.map(|t| t.0),
                 })
@@ -321,14 +402,14 @@ impl Pipeline {
         Ok(Analysis {
             input: bearing.clone(),
             thermal,
-            load: ls.load.clone(),
             speeds: stages::speeds_report(bearing, &ls.speeds, ls.iterations),
-            contacts: ls.contacts.clone(),
+            load: ls.load,
+            contacts: ls.contacts,
             stresses,
             films,
             life,
             friction,
-            trace: ls.trace.clone(),
+            trace: ls.trace,
         })
     }
 }
