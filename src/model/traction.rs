@@ -426,16 +426,25 @@ impl TractionModel {
         }
         if mu > 0.0 {
             // In s = ln p, g(s) = ln A − ln μ + α·eˢ − s is convex with its minimum at
-            // s = −ln α. Left root: Newton from s = ln(A/μ) (the root without the α term,
-            // where g = α·p > 0 on the falling side) climbs monotonically to it. Right root:
-            // from ln p_max on the rising side (g > 0 there), monotonically down to it. Only
-            // roots in (0, p_max) matter, so the search is skipped when g has no sign change
-            // there. Three-digit accuracy would do (a misplaced kink costs only second order);
-            // we iterate to round-off since convergence is quadratic.
+            // s = −ln α. Its roots are branch changes of the law only above the limit's kink
+            // p = τ_tr/μ (below it the limit is τ_tr, and where τ_N meets μp does not
+            // matter), so only roots in (ln(τ_tr/μ), ln p_max) are searched: on the aerospace
+            // deck that skips most searches. Left root (falling side): Newton from
+            // max(ln(A/μ), ln(τ_tr/μ)), where g > 0 (at ln(A/μ), the root without the α term,
+            // g = α·p), climbs monotonically to it. Right root: from ln p_max on the rising
+            // side (g > 0 there), monotonically down to it. A search runs only when g changes
+            // sign on its side. Three-digit accuracy would do (a misplaced kink costs only
+            // second order); the step test stops at 1e-9, after which the quadratic
+            // convergence has already put the root at round-off.
             let c = ln_a - mu.ln();
             let g = |s: f64| c + alpha * exp_fast(s) - s;
             let s_min = -alpha.ln();
             let s_max = p_max.ln();
+            let s_lo = if tr > 0.0 {
+                (tr / mu).ln()
+            } else {
+                f64::NEG_INFINITY
+            };
             let newton = |mut s: f64| {
                 for _ in 0..100 {
                     let e = alpha * exp_fast(s);
@@ -443,7 +452,7 @@ impl TractionModel {
                     if !next.is_finite() {
                         return None;
                     }
-                    if (next - s).abs() <= 1e-14 * s.abs().max(1.0) {
+                    if (next - s).abs() <= 1e-9 * s.abs().max(1.0) {
                         return Some(exp_fast(next));
                     }
                     s = next;
@@ -451,14 +460,15 @@ impl TractionModel {
                 None
             };
             let s_top = s_min.min(s_max);
-            if g(s_top) < 0.0 {
-                if let Some(p) = newton(c.min(s_top)) {
+            if s_lo < s_top && g(s_top) < 0.0 && (s_lo.is_infinite() || g(s_lo) > 0.0) {
+                if let Some(p) = newton(c.max(s_lo).min(s_top)) {
                     out.push(p);
                 }
-                if s_max > s_min && g(s_max) > 0.0 {
-                    if let Some(p) = newton(s_max) {
-                        out.push(p);
-                    }
+            }
+            let s_right = s_min.max(s_lo);
+            if s_max > s_right && g(s_max) > 0.0 && g(s_right) < 0.0 {
+                if let Some(p) = newton(s_max) {
+                    out.push(p);
                 }
             }
         }
@@ -897,10 +907,18 @@ mod tests {
     /// against the independent graded-Simpson reference. Tolerance 1e-7 relative, as above.
     #[test]
     fn kinks_found_over_a_sweep() {
-        let (eta, alpha, tr, mu) = (0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
-        let m = ehd(eta, alpha, tr, mu);
+        // τ_tr = 0 (no flat limit: every μp crossing is a branch change), the deck's 1000 psi
+        // (limit kink τ_tr/μ = 115 MPa) and 10 000 psi (1.15 GPa, above most crossings):
+        // the μp crossings are searched only above τ_tr/μ, which must lose no branch change.
+        let (eta, alpha, mu) = (0.0045, 1.1e-8, 0.06);
+        for tr in [0.0, 1000.0 * PSI, 10_000.0 * PSI] {
+            kinks_sweep(ehd(eta, alpha, tr, mu));
+        }
+    }
+
+    fn kinks_sweep(m: TractionModel) {
         let (b, w) = (60e-6, 0.55e-3);
-        for p0 in [50e6, 150e6, 600e6, 2.5e9] {
+        for p0 in [50e6, 150e6, 600e6, 1.2e9, 2.5e9] {
             let c = LaminaContact {
                 load_n: p0 * std::f64::consts::PI * b * w / 2.0,
                 half_width_m: b,
