@@ -44,6 +44,14 @@ pub enum Raceway {
     Outer,
 }
 
+/// x^4.5 = x⁴·√x for x ≥ 0 (the equivalent-load exponent of eq. 6.2): a square root and
+/// three products instead of a pow call per lamina, within a few ulp of powf (tested).
+#[inline]
+pub fn pow_4_5(x: f64) -> f64 {
+    let x2 = x * x;
+    x2 * x2 * x.sqrt()
+}
+
 /// Roller equivalent load at one raceway by the product law, N (seed eq. 6.1):
 /// P_e = Γ^(7/9)·(Σ Q_l^(9/2))^(2/9), Γ = number of laminae (all of them, loaded or not:
 /// `lamina_loads_n.len()`). A uniform load q per lamina gives exactly Γ·q. Negative
@@ -53,7 +61,7 @@ pub fn equivalent_roller_load(lamina_loads_n: &[f64]) -> f64 {
     let sum: f64 = lamina_loads_n
         .iter()
         .filter(|q| **q > 0.0)
-        .map(|q| q.powf(4.5))
+        .map(|q| pow_4_5(*q))
         .sum();
     if sum <= 0.0 || !sum.is_finite() {
         return 0.0;
@@ -456,6 +464,16 @@ pub fn bearing_life(inp: &LifeInputs) -> LifeResult {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pow_4_5_matches_powf() {
+        // Lamina loads from 1e-6 N to 1e7 N: within 4 ulp of powf (1e-15 relative).
+        for i in 0..=2000 {
+            let x = 10f64.powf(-6.0 + 13.0 * i as f64 / 2000.0);
+            assert!((pow_4_5(x) / x.powf(4.5) - 1.0).abs() < 1e-15, "{x}");
+        }
+        assert_eq!(pow_4_5(0.0), 0.0);
+    }
     use crate::model::Bearing;
 
     const LBF: f64 = 4.448_221_615_260_5;

@@ -380,7 +380,7 @@ pub fn equivalent_load(loads_n: &[f64], widths_m: &[f64]) -> f64 {
         .iter()
         .zip(widths_m)
         .filter(|(q, w)| **q > 0.0 && **w > 0.0)
-        .map(|(q, w)| w * (q / w).powf(4.5))
+        .map(|(q, w)| w * life::pow_4_5(q / w))
         .sum();
     if s <= 0.0 {
         return 0.0;
