@@ -209,31 +209,15 @@ impl Pipeline {
     ) -> Result<Analysis, SolveError> {
         self.update(bearing, thermal_model, request, cancel)?;
         // The caches stay for the next edit: the analysis gets copies of what it shows.
-        let need_contact = request.contact || request.heat || thermal_model.is_some();
-        let need_friction = request.heat || thermal_model.is_some();
-        let thermal = thermal_model.is_some();
+        let n = Needs::of(request, thermal_model);
         let parts = Parts {
             load: self.load.as_ref().map(|l| l.1.clone()),
-            contact: self
-                .contact
-                .as_ref()
-                .filter(|_| need_contact)
-                .map(|c| c.1.clone()),
-            friction: self
-                .friction
-                .as_ref()
-                .filter(|_| need_friction)
-                .map(|f| f.1.clone()),
-            steady: self
-                .steady
-                .as_ref()
-                .filter(|_| thermal)
-                .map(|s| s.1.clone()),
-            transient: (self.transient.as_ref())
-                .filter(|_| thermal && request.thermal_transient)
-                .map(|t| t.1.clone()),
+            contact: (self.contact.as_ref().filter(|_| n.contact)).map(|c| c.1.clone()),
+            friction: (self.friction.as_ref().filter(|_| n.friction)).map(|f| f.1.clone()),
+            steady: (self.steady.as_ref().filter(|_| n.thermal)).map(|s| s.1.clone()),
+            transient: (self.transient.as_ref().filter(|_| n.transient)).map(|t| t.1.clone()),
         };
-        parts.analysis(bearing, thermal_model, request)
+        parts.analysis(bearing)
     }
 
     /// A one-shot pipeline's analysis: the stage outputs are moved, not copied (a copy of
@@ -244,14 +228,15 @@ impl Pipeline {
         thermal_model: Option<&ThermalModel>,
         request: &Request,
     ) -> Result<Analysis, SolveError> {
+        let n = Needs::of(request, thermal_model);
         let parts = Parts {
             load: self.load.map(|l| l.1),
-            contact: self.contact.map(|c| c.1),
-            friction: self.friction.map(|f| f.1),
-            steady: self.steady.map(|s| s.1),
-            transient: self.transient.map(|t| t.1),
+            contact: (self.contact.filter(|_| n.contact)).map(|c| c.1),
+            friction: (self.friction.filter(|_| n.friction)).map(|f| f.1),
+            steady: (self.steady.filter(|_| n.thermal)).map(|s| s.1),
+            transient: (self.transient.filter(|_| n.transient)).map(|t| t.1),
         };
-        parts.analysis(bearing, thermal_model, request)
+        parts.analysis(bearing)
     }
 
     /// Bring every stage `request` needs up to date with `bearing`.
@@ -285,13 +270,13 @@ impl Pipeline {
                 message: "load stage missing".into(),
             });
         };
-        let need_contact = request.contact || request.heat || thermal_model.is_some();
+        let needs = Needs::of(request, thermal_model);
         let contact_key = ContactKey {
             lubricant: bearing.lubricant,
             surfaces: bearing.surfaces,
             life: bearing.life,
         };
-        if need_contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
+        if needs.contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
             let st = stages::stresses(bearing, &ls.load, &ls.contacts);
             let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
             let li = stages::life(bearing, &ls.load, &fi);
@@ -301,12 +286,11 @@ impl Pipeline {
             self.steady = None;
             self.transient = None;
         }
-        let need_friction = request.heat || thermal_model.is_some();
         let friction_key = FrictionKey {
             lubricant: bearing.lubricant,
             cage: bearing.cage,
         };
-        if need_friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
+        if needs.friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
             match (&self.friction, &self.contact) {
                 // Cage-only edit: the lamina traction does not read the cage; only the
                 // cage's rail and drag heat are re-derived.
@@ -334,7 +318,7 @@ impl Pipeline {
                 self.steady = Some((tm.clone(), steady));
                 self.transient = None;
             }
-            if request.thermal_transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
+            if needs.transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
                 if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
                     let lost = friction_stage(bearing, ls, st, fi, true)?;
                     let tr = thermal::run_transient(
@@ -353,7 +337,31 @@ impl Pipeline {
     }
 }
 
-/// The stage outputs an [`Analysis`] is made of, owned.
+/// Which stages a request shows: contact (§4–6) for any view of stresses or heat or a
+/// thermal network, friction (§8–9) for heat or a network, the thermal network when one is
+/// given, and its transient when asked for too.
+#[derive(Debug, Clone, Copy)]
+struct Needs {
+    contact: bool,
+    friction: bool,
+    thermal: bool,
+    transient: bool,
+}
+
+impl Needs {
+    fn of(request: &Request, thermal_model: Option<&ThermalModel>) -> Self {
+        let thermal = thermal_model.is_some();
+        Needs {
+            contact: request.contact || request.heat || thermal,
+            friction: request.heat || thermal,
+            thermal,
+            transient: thermal && request.thermal_transient,
+        }
+    }
+}
+
+/// The stage outputs an [`Analysis`] shows, owned: exactly the stages its request needs
+/// ([`Needs`]; a cached stage it did not ask for is left out, as if it had not run).
 struct Parts {
     load: Option<LoadStage>,
     contact: Option<(Stresses, Films, Life)>,
@@ -363,42 +371,24 @@ struct Parts {
 }
 
 impl Parts {
-    /// The analysis of `request`: the stages it asked for (a cached stage it did not ask
-    /// for is left out, as if it had not run).
-    fn analysis(
-        self,
-        bearing: &Bearing,
-        thermal_model: Option<&ThermalModel>,
-        request: &Request,
-    ) -> Result<Analysis, SolveError> {
+    /// The analysis of `bearing` from these outputs.
+    fn analysis(self, bearing: &Bearing) -> Result<Analysis, SolveError> {
         let Some(ls) = self.load else {
             return Err(SolveError::Stage {
                 stage: "pipeline",
                 message: "load stage missing".into(),
             });
         };
-        let need_contact = request.contact || request.heat || thermal_model.is_some();
-        let need_friction = request.heat || thermal_model.is_some();
-        let (stresses, films, life) = match (self.contact, need_contact) {
-            (Some((st, fi, li)), true) => (Some(st), Some(fi), Some(li)),
-            _ => (None, None, None),
+        let (stresses, films, life) = match self.contact {
+            Some((st, fi, li)) => (Some(st), Some(fi), Some(li)),
+            None => (None, None, None),
         };
-        let friction = if need_friction { self.friction } else { None };
-        let thermal = match (thermal_model, self.steady) {
-            (Some(_), Some(steady)) => {
-                let tr = if request.thermal_transient {
-                    self.transient
-                } else {
-                    None
-                };
-                Some(ThermalOut {
-                    steady,
-                    transient_heat_w: tr.as_ref().map(|t| t.1),
-                    transient: tr.map(|t| t.0),
-                })
-            }
-            _ => None,
-        };
+        let transient = self.transient;
+        let thermal = self.steady.map(|steady| ThermalOut {
+            steady,
+            transient_heat_w: transient.as_ref().map(|t| t.1),
+            transient: transient.map(|t| t.0),
+        });
         Ok(Analysis {
             input: bearing.clone(),
             thermal,
@@ -408,7 +398,7 @@ impl Parts {
             stresses,
             films,
             life,
-            friction,
+            friction: self.friction,
             trace: ls.trace,
         })
     }
