@@ -217,17 +217,8 @@ pub const MATERIAL_PRESETS: &[(&str, Material)] = &[
 ];
 /// The bodies under `[materials]`.
 pub const MATERIAL_BODIES: &[&str] = &["roller", "inner_ring", "outer_ring"];
-/// Top-level tables every deck must have (`[solver]` and `[thermal]` are optional).
-pub const REQUIRED_GROUPS: &[&str] = &[
-    "geometry",
-    "materials",
-    "operating",
-    "lubricant",
-    "surfaces",
-    "life",
-    "cage",
-];
-/// Top-level tables, in file order.
+/// Top-level tables, in file order: the required ones, then the optional `[solver]` and
+/// `[thermal]`.
 pub const GROUPS: &[&str] = &[
     "geometry",
     "materials",
@@ -239,6 +230,8 @@ pub const GROUPS: &[&str] = &[
     "solver",
     "thermal",
 ];
+/// Top-level tables every deck must have: all of [`GROUPS`] but the last two.
+pub const REQUIRED_GROUPS: &[&str] = GROUPS.split_at(GROUPS.len() - 2).0;
 
 fn film_index(m: FilmModel) -> f64 {
     match m {
@@ -559,6 +552,22 @@ pub fn preset_name(m: &Material) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn required_groups_are_all_but_solver_and_thermal() {
+        assert_eq!(
+            REQUIRED_GROUPS,
+            [
+                "geometry",
+                "materials",
+                "operating",
+                "lubricant",
+                "surfaces",
+                "life",
+                "cage"
+            ]
+        );
+    }
 
     #[test]
     fn registry_is_consistent() {
