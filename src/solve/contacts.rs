@@ -108,27 +108,14 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solve::load_distribution::{solve, DynamicSpeeds, SolveOptions};
+    use crate::solve::load_distribution::solved_at_rest;
 
     #[test]
     fn radii_match_nominal_geometry() {
         // At the mid lamina of an unloaded bearing the rolling radii are the textbook ones:
         // roller D/2; inner ring (P_t/2 − D/2·cos β)/cos β; outer −(P_t/2 + D/2·cos β)/cos β.
         // Displacements are zero (no load, no speed): round-off tolerance 1e-9 relative.
-        let mut b = Bearing::example_aerospace();
-        b.operating.radial_load_n = 0.0;
-        b.operating.axial_load_n = 0.0;
-        b.operating.inner_speed_rad_s = 0.0;
-        b.geometry.diametral_clearance_m = 0.0;
-        let ld = match solve(
-            &b,
-            &DynamicSpeeds::app_c_estimate(&b),
-            &SolveOptions::default(),
-            None,
-        ) {
-            Ok(x) => x,
-            Err(e) => panic!("{e}"),
-        };
+        let (b, ld) = solved_at_rest();
         let c = contacts(&b, &ld);
         let mid = c[0][b.solver.laminae / 2];
         let (d, p, beta) = (

@@ -1212,6 +1212,25 @@ pub fn solve(
     Ok(out)
 }
 
+/// Test fixture: the aerospace bearing with no load, no speed and no clearance, solved —
+/// every roller and lamina at its nominal geometry.
+#[cfg(test)]
+pub(crate) fn solved_at_rest() -> (Bearing, LoadDistribution) {
+    let mut b = Bearing::example_aerospace();
+    b.operating.radial_load_n = 0.0;
+    b.operating.axial_load_n = 0.0;
+    b.operating.inner_speed_rad_s = 0.0;
+    b.geometry.diametral_clearance_m = 0.0;
+    let ld = solve(
+        &b,
+        &DynamicSpeeds::app_c_estimate(&b),
+        &SolveOptions::default(),
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    (b, ld)
+}
+
 /// When the ring Newton fails after the rings have moved more than half a roller diameter
 /// apart, the bearing has no equilibrium near its design geometry: typically a pure radial
 /// load on an angular-contact bearing whose spherical outer raceway gives no axial restraint
@@ -1525,18 +1544,7 @@ mod tests {
         // At rest with no load and no clearance the mid lamina's normals are the nominal
         // contact normal: both angles equal the design contact angle β (round-off, 1e-12 deg),
         // and the outer and inner normals are the same line.
-        let mut b = Bearing::example_aerospace();
-        b.operating.radial_load_n = 0.0;
-        b.operating.axial_load_n = 0.0;
-        b.operating.inner_speed_rad_s = 0.0;
-        b.geometry.diametral_clearance_m = 0.0;
-        let ld = solve(
-            &b,
-            &DynamicSpeeds::app_c_estimate(&b),
-            &SolveOptions::default(),
-            None,
-        )
-        .expect("solves");
+        let (b, ld) = solved_at_rest();
         let mid = &ld.rollers[0].laminae[b.solver.laminae / 2];
         let beta = b.geometry.contact_angle_rad.to_degrees();
         assert!(
