@@ -245,6 +245,18 @@ pub struct FidelityTable {
     pub target_error: f64,
     /// [`GUARD_ERROR`]: the bound on the other key outputs' errors of the recommendation.
     pub guard_error: f64,
+    /// Whether the deck's own fidelity [meets the target](Row::meets_target); None when it
+    /// is not a cell of the grid.
+    pub default_meets_target: Option<bool>,
+}
+
+impl FidelityTable {
+    /// The grid row at the deck's own fidelity, if the grid has it.
+    pub fn default_row(&self) -> Option<&Row> {
+        self.rows
+            .iter()
+            .find(|r| r.laminae == self.default.laminae && r.tolerance == self.default.tolerance)
+    }
 }
 
 /// Run the pipeline (no transient) on `b` once.
@@ -335,7 +347,7 @@ pub fn measure(
         }
     }
     let recommended = recommend(&rows);
-    Ok(FidelityTable {
+    let mut table = FidelityTable {
         deck: deck.to_string(),
         reference: REFERENCE,
         reference_outputs,
@@ -345,7 +357,10 @@ pub fn measure(
         recommended,
         target_error: TARGET_ERROR,
         guard_error: GUARD_ERROR,
-    })
+        default_meets_target: None,
+    };
+    table.default_meets_target = table.default_row().map(Row::meets_target);
+    Ok(table)
 }
 
 /// Rows whose median is within this fraction of the cheapest one's count as equally cheap:
@@ -444,9 +459,14 @@ pub fn to_text(t: &FidelityTable) -> String {
             }
         }
     }
+    let verdict = match t.default_meets_target {
+        Some(true) => " (meets the targets)",
+        Some(false) => " (misses the targets)",
+        None => " (not a cell of the grid)",
+    };
     let _ = writeln!(
         s,
-        "deck default: Γ = {}, tolerance {:.0e}",
+        "deck default: Γ = {}, tolerance {:.0e}{verdict}",
         t.default.laminae, t.default.tolerance
     );
     match t.recommended {
@@ -677,10 +697,27 @@ mod tests {
             "recommended",
             "target_error",
             "guard_error",
+            "default_meets_target",
         ] {
             assert!(json.get(k).is_some(), "{k}");
         }
         assert!(to_text(&t).contains("<= recommended"));
+        // The deck's own Γ = 61 is not a cell of this one-cell grid.
+        assert_eq!(t.default_meets_target, None);
+        assert!(to_text(&t).contains("(not a cell of the grid)"));
+        // A deck at the reference fidelity is that cell, which meets the targets.
+        let at_ref = match measure(
+            "aerospace",
+            &REFERENCE.apply(&b),
+            None,
+            &[REFERENCE.laminae],
+            &[REFERENCE.tolerance],
+        ) {
+            Ok(t) => t,
+            Err(e) => panic!("{e}"),
+        };
+        assert_eq!(at_ref.default_meets_target, Some(true));
+        assert!(to_text(&at_ref).contains("(meets the targets)"));
     }
 
     #[test]
