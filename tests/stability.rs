@@ -610,3 +610,40 @@ proptest! {
         );
     }
 }
+
+/// Found by the 2000-case campaign: loads far beyond capacity (F_r = 4.7 C, F_a = 4.5 C) on
+/// a ceramic-roller bearing at rest with clearance (Z = 20, D = 31.4 mm, β = 8.3°, Γ = 17).
+/// Roller 3's Newton wandered for its 60 iterations while the roller pitched through
+/// 150°, and the error said only "roller 3 equilibrium did not converge". It now names the
+/// cause: the roller pitched beyond what the model accepts, held by neither raceway.
+#[test]
+fn regression_wandering_roller_is_diagnosed_as_pitched() {
+    let p = Params {
+        roller_count: 20,
+        roller_diameter_mm: 31.448512017137357,
+        pitch_factor: 2.7061413029493933,
+        length_ratio: 1.5433141316277368,
+        effective_ratio: 0.8573024936424176,
+        crown_log: 0.05334770674890655,
+        inner_conformity: 1.1723588702239325,
+        outer_conformity: 1.1176567932634904,
+        spherical_outer: true,
+        contact_angle_deg: 8.287668722906492,
+        clearance_ratio: 0.0011518191190677395,
+        radial_capacity: 4.712512941558003,
+        axial_capacity: 4.542357492346932,
+        rotation: 1,
+        ceramic_rollers: true,
+        laminae: 17,
+        ..base_params()
+    };
+    let b = valid(&bearing(&p)).unwrap_or_else(|| panic!("regression deck is invalid"));
+    match check_no_panic(&b) {
+        Ok(Outcome::TypedError) => match pipeline::run(&b, &Request::default(), None) {
+            Err(e) => assert!(format!("{e}").contains("roller 3 pitched"), "{e}"),
+            Ok(_) => unreachable!("typed error above"),
+        },
+        Ok(Outcome::Solved) => panic!("expected the pitched-roller diagnostic"),
+        Err(e) => panic!("{e}"),
+    }
+}

@@ -1075,7 +1075,9 @@ pub fn solve(
     // to measure it: 10⁻³ of the reference force (inexact Newton; the tolerance tightens with
     // the ring residual and is the deck's at convergence).
     p.roller_tol.set(p.tol.max(1e-3 * p.f_ref));
-    let mut state = p.solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)?;
+    let mut state = p
+        .solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)
+        .map_err(|e| diagnose(b, u, &qs, e))?;
     let mut converged = false;
     let mut ring_res;
     for it in 0..max_it {
@@ -1101,7 +1103,7 @@ pub fn solve(
             p.roller_tol.set(p.tol);
             state = p
                 .solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, it)
-                .map_err(|e| unrestrained(b, u).unwrap_or(e))?;
+                .map_err(|e| diagnose(b, u, &qs, e))?;
             continue;
         }
         // Inexact Newton: rollers to 1e-3 of the ring residual (never below the tolerance).
@@ -1136,7 +1138,7 @@ pub fn solve(
                     &mut trace,
                     it + 1,
                 )
-                .map_err(|e| unrestrained(b, trial).unwrap_or(e))?;
+                .map_err(|e| diagnose(b, trial, &qt, e))?;
             let ok_energy = st.energy < energy + 1e-4 * lambda * slope;
             let ok_grad = st.g[0].abs().max(st.g[1].abs()) < 0.5 * ring_res;
             if ok_energy || ok_grad {
@@ -1270,6 +1272,12 @@ fn tipped_over(b: &Bearing, qs: &[Vector3<f64>]) -> Option<SolveError> {
         .iter()
         .enumerate()
         .max_by(|a, c| a.1[2].abs().total_cmp(&c.1[2].abs()))?;
+    pitched(b, j, q)
+}
+
+/// The typed error for roller `j` (0-based) at `q` if it is pitched beyond
+/// [`MAX_PITCH_RAD`].
+fn pitched(b: &Bearing, j: usize, q: &Vector3<f64>) -> Option<SolveError> {
     if q[2].abs() <= MAX_PITCH_RAD {
         return None;
     }
@@ -1286,6 +1294,26 @@ fn tipped_over(b: &Bearing, qs: &[Vector3<f64>]) -> Option<SolveError> {
             b.solver.cage_stiffness_ratio
         ),
     })
+}
+
+/// The cause behind a failed roller sweep at ring deflection `u` with the rollers at `qs`
+/// (as the sweep left them): the rings drifted apart (missing restraint), else a roller
+/// whose Newton gave up after pitching beyond [`MAX_PITCH_RAD`] — it was lying across its
+/// raceways, held by the soft cage spring alone, and that is what the user needs to hear
+/// (the campaign's typical "did not converge" roller had pitched 150°) — else `e` itself.
+fn diagnose(b: &Bearing, u: [f64; 2], qs: &[Vector3<f64>], e: SolveError) -> SolveError {
+    if let Some(d) = unrestrained(b, u) {
+        return d;
+    }
+    match e {
+        // `roller` is 1-based over the unique rollers, which are rollers 1 … Z/2 + 1.
+        SolveError::RollerNotConverged { roller, .. } => roller
+            .checked_sub(1)
+            .and_then(|j| qs.get(j).map(|q| (j, q)))
+            .and_then(|(j, q)| pitched(b, j, q))
+            .unwrap_or(e),
+        _ => e,
+    }
 }
 
 /// Unique (symmetry) index of roller `r` (0-based): rollers j and Z−j mirror each other.
