@@ -20,9 +20,10 @@
 //!
 //! The recommendation is the cheapest cell with max stress and L-10 within
 //! [`TARGET_ERROR`] of the reference *and* the other key outputs (max roller load, cage
-//! speed, total heat, hottest steady temperature) within [`GUARD_ERROR`]: without the
-//! guard the industrial deck's cheapest qualifying cell (Γ = 15 at tolerance 10⁻⁴) had its
-//! total heat 16 % and its cage speed 0.8 % off.
+//! speed, total heat, hottest steady temperature) within [`GUARD_ERROR`], at its Γ and at
+//! every finer Γ of the grid (see [`recommend`]): without the guard the industrial deck's
+//! cheapest qualifying cell (Γ = 15 at tolerance 10⁻⁴) had its total heat 16 % and its cage
+//! speed 0.8 % off.
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
@@ -369,12 +370,23 @@ pub fn measure(
 /// of `rollbench bench` to the next.
 const COST_TIE_BAND: f64 = 0.15;
 
-/// The cheapest row meeting the target: among the rows within [`COST_TIE_BAND`] of the
-/// cheapest, the one with the fewest laminae, then the loosest tolerance (a noise-independent
-/// choice: fewer laminae is less work per evaluation, and at equal Γ a looser tolerance is
-/// never slower).
+/// The cheapest row meeting the target *for good*: the row and every row of the grid with
+/// more laminae at its tolerance meet it. The slicing error of an edge-loaded roller
+/// fluctuates with Γ (its contact zone ends inside a lamina, and where depends on Γ): on
+/// the aerospace deck the max-stress error is 0.03–0.18 % between Γ = 53 and 71, so a single
+/// cell can meet 0.1 % by luck while finer ones do not. Among the qualifying rows within
+/// [`COST_TIE_BAND`] of the cheapest, the one with the fewest laminae, then the loosest
+/// tolerance (a noise-independent choice: fewer laminae is less work per evaluation, and
+/// at equal Γ a looser tolerance is never slower).
 pub fn recommend(rows: &[Row]) -> Option<Recommended> {
-    let ok = || rows.iter().filter(|r| r.meets_target());
+    let stays_met = |r: &Row| {
+        r.meets_target()
+            && rows
+                .iter()
+                .filter(|f| f.tolerance == r.tolerance && f.laminae > r.laminae)
+                .all(Row::meets_target)
+    };
+    let ok = || rows.iter().filter(|r| stays_met(r));
     let cheapest = ok().map(|r| r.median_s).min_by(|a, b| a.total_cmp(b))?;
     ok().filter(|r| r.median_s <= (1.0 + COST_TIE_BAND) * cheapest)
         .min_by(|a, b| {
@@ -473,7 +485,7 @@ pub fn to_text(t: &FidelityTable) -> String {
         Some(r) => {
             let _ = writeln!(
                 s,
-                "recommended: Γ = {}, tolerance {:.0e} ({:.4} ms; max-stress and L-10 errors < {} %, the other key outputs < {} %)",
+                "recommended: Γ = {}, tolerance {:.0e} ({:.4} ms; max-stress and L-10 errors < {} %, the other key outputs < {} %, here and at every finer Γ of the grid)",
                 r.laminae,
                 r.tolerance,
                 1e3 * r.median_s,
@@ -484,7 +496,7 @@ pub fn to_text(t: &FidelityTable) -> String {
         None => {
             let _ = writeln!(
                 s,
-                "recommended: none of the grid meets {} % on max stress and L-10 with the other key outputs within {} %",
+                "recommended: no cell of the grid meets {} % on max stress and L-10 with the other key outputs within {} % at its Γ and every finer one",
                 100.0 * TARGET_ERROR,
                 100.0 * GUARD_ERROR
             );
@@ -616,6 +628,39 @@ mod tests {
         // Outside the band the cheaper row wins even with more laminae.
         let rows = [row(61, 1e-6, 1.0, 8e-4), row(81, 1e-4, 0.5, 7e-4)];
         assert_eq!(recommend(&rows).map(|r| r.laminae), Some(81));
+    }
+
+    #[test]
+    fn recommendation_is_not_a_lucky_dip() {
+        // Γ = 31 meets the target but Γ = 41 at the same tolerance does not (the fluctuating
+        // slicing error of an edge-loaded roller): Γ = 31 is not recommended, Γ = 61 (met
+        // from there on) is. A finer row at another tolerance does not count.
+        let row = |laminae: usize, tolerance: f64, err: f64| Row {
+            laminae,
+            tolerance,
+            median_s: laminae as f64 * 1e-5,
+            err_max_roller_load: Some(1e-4),
+            err_max_stress: Some(err),
+            err_l10: Some(5e-4),
+            err_cage_speed: Some(1e-4),
+            err_total_heat: Some(1e-3),
+            err_hottest_temperature: None,
+            failure: None,
+        };
+        let rows = [
+            row(31, 1e-6, 6e-4),
+            row(41, 1e-6, 1.8e-3),
+            row(61, 1e-6, 8e-4),
+            row(81, 1e-6, 7e-4),
+            row(81, 1e-4, 5e-3),
+        ];
+        let rec = recommend(&rows).map(|r| (r.laminae, r.tolerance));
+        assert_eq!(rec, Some((61, 1e-6)));
+        // With Γ = 41 meeting it too, Γ = 31 is the cheapest for good.
+        let mut rows = rows;
+        rows[1].err_max_stress = Some(9e-4);
+        let rec = recommend(&rows).map(|r| (r.laminae, r.tolerance));
+        assert_eq!(rec, Some((31, 1e-6)));
     }
 
     #[test]
