@@ -201,12 +201,12 @@ fn each_range_rule_rejects() {
             "life.edge_stress_factor = 0.9 is out of range",
         ),
         (
-            "laminae = 61",
+            "laminae = 81",
             "laminae = 0",
             "solver.laminae = 0 is out of range (allowed 1 ≤ value ≤ 2000)",
         ),
         (
-            "laminae = 61",
+            "laminae = 81",
             "laminae = 2001",
             "solver.laminae = 2001 is out of range",
         ),
@@ -329,7 +329,7 @@ fn pressure_viscosity_xor_lubricant_parameter() {
 fn all_errors_are_collected_in_file_order() {
     let text = DEFAULT_DECK
         .replace("roller_count = 16", "roller_count = 0")
-        .replace("laminae = 61", "laminae = -1")
+        .replace("laminae = 81", "laminae = -1")
         .replace("mass = 0.330693393277316", "mass = -1\nbogus = 2");
     let e = match Deck::parse(&text, "t.toml") {
         Ok(_) => panic!("accepted"),

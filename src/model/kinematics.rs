@@ -151,6 +151,41 @@ impl ContactPointPair {
     }
 }
 
+/// §7's "most heavily loaded point" of a contact between lamina centres: the axial
+/// position (m) of the vertex of the parabola through the line loads `q` (N/m) of the most
+/// loaded lamina and its two neighbours at their centres `x` (m), and the weights that
+/// carry any quantity sampled at those three centres to that position (the quadratic
+/// Lagrange interpolant, exact for a quantity quadratic along the roller).
+///
+/// The seed takes the contact centre A at the most heavily loaded lamina (§7, Figs. 9–10),
+/// whose centre jumps by a lamina width as Γ or the load changes, and the cage speed with
+/// it (0.02–0.04 % on the aerospace deck between neighbouring Γ, 4× that on L-10 through
+/// the centrifugal force). The vertex is the continuum reading of the same point: it
+/// converges to it as Γ → ∞ and moves smoothly with the load. Kept within `[lo, hi]`, the
+/// most loaded lamina's own extent. `None` (take the lamina centre) when a neighbour is
+/// unloaded or the three loads do not make a concave parabola (the peak is at a roller end
+/// or the profile is flat).
+pub fn load_peak(x: [f64; 3], q: [f64; 3], lo: f64, hi: f64) -> Option<(f64, [f64; 3])> {
+    if !(q[0] > 0.0 && q[2] > 0.0 && x[0] < x[1] && x[1] < x[2]) {
+        return None;
+    }
+    let d01 = (q[1] - q[0]) / (x[1] - x[0]);
+    let d12 = (q[2] - q[1]) / (x[2] - x[1]);
+    let a = (d12 - d01) / (x[2] - x[0]);
+    // Concave only (a NaN from degenerate input fails too).
+    if a.is_nan() || a >= 0.0 {
+        return None;
+    }
+    // q(x) = q₁ + d01·(x − x₁) + a·(x − x₀)(x − x₁): vertex where q' = 0.
+    let xs = (0.5 * (x[0] + x[1]) - d01 / (2.0 * a)).clamp(lo, hi);
+    let w = [
+        (xs - x[1]) * (xs - x[2]) / ((x[0] - x[1]) * (x[0] - x[2])),
+        (xs - x[0]) * (xs - x[2]) / ((x[1] - x[0]) * (x[1] - x[2])),
+        (xs - x[0]) * (xs - x[1]) / ((x[2] - x[0]) * (x[2] - x[1])),
+    ];
+    xs.is_finite().then_some((xs, w))
+}
+
 /// Cage and roller speeds from the contact points (seed 000 eqs. 7.5–7.12).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct InternalSpeeds {
@@ -325,6 +360,48 @@ pub fn sliding_velocity(
         None => [0.0; 3],
     };
     ring[2] - roller[2]
+}
+
+#[cfg(test)]
+mod load_peak_tests {
+    use super::load_peak;
+
+    #[test]
+    fn vertex_of_a_parabolic_load_and_interpolated_radius() {
+        // Unequal spacing (cosine slicing): q(x) = 5 − 2(x − 0.3)², r(x) = 1 + 0.5x − x²:
+        // the vertex is 0.3 and the weights reproduce r(0.3) exactly (quadratic).
+        let x = [0.0, 0.25, 0.6];
+        let q = x.map(|x: f64| 5.0 - 2.0 * (x - 0.3).powi(2));
+        let r = |x: f64| 1.0 + 0.5 * x - x * x;
+        let (xs, w) = load_peak(x, q, 0.1, 0.45).expect("concave");
+        assert!((xs - 0.3).abs() < 1e-14, "{xs}");
+        let ri = w[0] * r(x[0]) + w[1] * r(x[1]) + w[2] * r(x[2]);
+        assert!((ri - r(0.3)).abs() < 1e-14, "{ri}");
+        assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn symmetric_loads_keep_the_centre_and_the_peak_stays_in_its_lamina() {
+        let (xs, w) = load_peak([-1.0, 0.0, 1.0], [2.0, 3.0, 2.0], -0.5, 0.5).expect("concave");
+        assert_eq!(xs, 0.0);
+        assert_eq!(w, [0.0, 1.0, 0.0]);
+        // Vertex at 1/6 (q = 3 − 0.75x² + 0.25x): inside [−0.5, 0.5], held at the edge of a
+        // narrower lamina (unequal spacing can put it beyond the lamina).
+        let q = [2.0, 3.0, 2.5];
+        let (xs, _) = load_peak([-1.0, 0.0, 1.0], q, -0.5, 0.5).expect("concave");
+        assert!((xs - 1.0 / 6.0).abs() < 1e-15, "{xs}");
+        let (xs, _) = load_peak([-1.0, 0.0, 1.0], q, -0.5, 0.05).expect("concave");
+        assert_eq!(xs, 0.05);
+    }
+
+    #[test]
+    fn no_peak_without_two_loaded_neighbours_or_concavity() {
+        assert!(load_peak([-1.0, 0.0, 1.0], [0.0, 3.0, 2.0], -0.5, 0.5).is_none());
+        assert!(load_peak([-1.0, 0.0, 1.0], [2.0, 3.0, 0.0], -0.5, 0.5).is_none());
+        // Linear and convex profiles: the lamina centre stands.
+        assert!(load_peak([-1.0, 0.0, 1.0], [1.0, 2.0, 3.0], -0.5, 0.5).is_none());
+        assert!(load_peak([-1.0, 0.0, 1.0], [3.0, 1.0, 3.0], -0.5, 0.5).is_none());
+    }
 }
 
 #[cfg(test)]

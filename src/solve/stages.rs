@@ -115,10 +115,13 @@ pub fn stresses(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts])
         let mut summary = [RacewayStress::default(); 2];
         for k in 0..2 {
             let loaded: Vec<usize> = (0..rc.len()).filter(|&i| rc[i][k].load_n > 0.0).collect();
-            let Some(&imax) = loaded
-                .iter()
-                .max_by(|&&a, &&c| rc[a][k].load_n.total_cmp(&rc[c][k].load_n))
-            else {
+            // The most loaded lamina (highest line load) as §4.5 picked it.
+            let r = &ld.rollers[j];
+            let Some(imax) = (if k == 0 {
+                r.inner.max_lamina
+            } else {
+                r.outer.max_lamina
+            }) else {
                 continue;
             };
             let major: f64 = loaded.iter().map(|&i| rc[i][k].width_m).sum();
@@ -181,7 +184,9 @@ pub struct Speeds {
     pub cage_difference: f64,
 }
 
-/// Contact points of the most loaded laminae of a roller, for §7.
+/// §7's most heavily loaded contact points of each roller: at the most loaded lamina (the
+/// highest line load), moved to the peak of the line load between its neighbours
+/// ([`kinematics::load_peak`]).
 pub fn contact_pairs(ld: &LoadDistribution, contacts: &[RollerContacts]) -> Vec<ContactPointPair> {
     ld.rollers
         .iter()
@@ -190,7 +195,34 @@ pub fn contact_pairs(ld: &LoadDistribution, contacts: &[RollerContacts]) -> Vec<
             let pick = |k: usize, m: Option<usize>| {
                 m.map(|i| {
                     let c: &LaminaContact = &rc[i][k];
-                    (c.ring_axis_distance_m, c.roller_axis_distance_m)
+                    let at = (c.ring_axis_distance_m, c.roller_axis_distance_m);
+                    // Between lamina centres: §7's point A at the peak of the line load.
+                    if i == 0 || i + 1 >= rc.len().min(r.laminae.len()) {
+                        return at;
+                    }
+                    let three = [i - 1, i, i + 1];
+                    let x = three.map(|n| r.laminae[n].offset_m);
+                    let q = three.map(|n| {
+                        let w = rc[n][k].width_m;
+                        if w > 0.0 {
+                            rc[n][k].load_n.max(0.0) / w
+                        } else {
+                            0.0
+                        }
+                    });
+                    let half = 0.5 * r.laminae[i].width_m;
+                    match kinematics::load_peak(x, q, x[1] - half, x[1] + half) {
+                        Some((_, w)) => {
+                            let mix = |f: &dyn Fn(&LaminaContact) -> f64| {
+                                (0..3).map(|n| w[n] * f(&rc[three[n]][k])).sum::<f64>()
+                            };
+                            (
+                                mix(&|c| c.ring_axis_distance_m),
+                                mix(&|c| c.roller_axis_distance_m),
+                            )
+                        }
+                        None => at,
+                    }
                 })
             };
             ContactPointPair {
