@@ -337,7 +337,8 @@ impl TractionModel {
     /// ⌈max((b−a)/(π/2), √κ·(b−a)/2.2, κ·(cos a − cos b)/8)⌉, at most 64. Against a
     /// 128-panel rule over κ = 0.1…120 and pieces inside [0, π/2] the relative error stays
     /// below 1e-9 (tested against the series below): the quadrature budget. It sits five
-    /// orders below the slicing error of the heat at the default Γ = 61 (`rollbench bench`),
+    /// orders below the slicing error of the heat at the default Γ = 81 (1.6e-4,
+    /// `rollbench bench`),
     /// so a tighter rule would buy no accuracy, only time (a full-contact lamina at
     /// α·p₀ = 16 takes 3 panels; 4 would reach 5e-13).
     /// `start` is (a, cos a, sin a). The nodes' cosines come from the angle-addition formula:
