@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::contacts::{LaminaContact, RollerContacts};
-use super::load_distribution::{DynamicSpeeds, LoadDistribution};
+use super::load_distribution::{DynamicSpeeds, LoadDistribution, RollerResult};
 use crate::model::film::{self, FilmInputs};
 use crate::model::heat::{self, HeatBreakdown};
 use crate::model::hertz::{self, Elastic, LineContact};
@@ -191,46 +191,46 @@ pub fn contact_pairs(ld: &LoadDistribution, contacts: &[RollerContacts]) -> Vec<
     ld.rollers
         .iter()
         .zip(contacts)
-        .map(|(r, rc)| {
-            let pick = |k: usize, m: Option<usize>| {
-                m.map(|i| {
-                    let c: &LaminaContact = &rc[i][k];
-                    let at = (c.ring_axis_distance_m, c.roller_axis_distance_m);
-                    // Between lamina centres: §7's point A at the peak of the line load.
-                    if i == 0 || i + 1 >= rc.len().min(r.laminae.len()) {
-                        return at;
-                    }
-                    let three = [i - 1, i, i + 1];
-                    let x = three.map(|n| r.laminae[n].offset_m);
-                    let q = three.map(|n| {
-                        let w = rc[n][k].width_m;
-                        if w > 0.0 {
-                            rc[n][k].load_n.max(0.0) / w
-                        } else {
-                            0.0
-                        }
-                    });
-                    let half = 0.5 * r.laminae[i].width_m;
-                    match kinematics::load_peak(x, q, x[1] - half, x[1] + half) {
-                        Some((_, w)) => {
-                            let mix = |f: &dyn Fn(&LaminaContact) -> f64| {
-                                (0..3).map(|n| w[n] * f(&rc[three[n]][k])).sum::<f64>()
-                            };
-                            (
-                                mix(&|c| c.ring_axis_distance_m),
-                                mix(&|c| c.roller_axis_distance_m),
-                            )
-                        }
-                        None => at,
-                    }
-                })
-            };
-            ContactPointPair {
-                inner: pick(0, r.inner.max_lamina),
-                outer: pick(1, r.outer.max_lamina),
-            }
+        .map(|(r, rc)| ContactPointPair {
+            inner: r.inner.max_lamina.map(|i| contact_point(r, rc, 0, i)),
+            outer: r.outer.max_lamina.map(|i| contact_point(r, rc, 1, i)),
         })
         .collect()
+}
+
+/// §7's point A of raceway `k` (0 inner, 1 outer) of roller `r` whose most loaded lamina is
+/// `i`: (radius from the bearing axis, radius from the roller axis), m, at the peak of the
+/// line load between that lamina and its neighbours, or at the lamina centre when there is
+/// no interior peak (an end lamina, an unloaded neighbour, a flat or convex profile).
+fn contact_point(r: &RollerResult, rc: &RollerContacts, k: usize, i: usize) -> (f64, f64) {
+    let c: &LaminaContact = &rc[i][k];
+    let at_centre = (c.ring_axis_distance_m, c.roller_axis_distance_m);
+    if i == 0 || i + 1 >= rc.len().min(r.laminae.len()) {
+        return at_centre;
+    }
+    let three = [i - 1, i, i + 1];
+    let x = three.map(|n| r.laminae[n].offset_m);
+    let q = three.map(|n| {
+        let w = rc[n][k].width_m;
+        if w > 0.0 {
+            rc[n][k].load_n.max(0.0) / w
+        } else {
+            0.0
+        }
+    });
+    let half = 0.5 * r.laminae[i].width_m;
+    match kinematics::load_peak(x, q, x[1] - half, x[1] + half) {
+        Some((_, w)) => {
+            let mix = |f: fn(&LaminaContact) -> f64| {
+                (0..3).map(|n| w[n] * f(&rc[three[n]][k])).sum::<f64>()
+            };
+            (
+                mix(|c| c.ring_axis_distance_m),
+                mix(|c| c.roller_axis_distance_m),
+            )
+        }
+        None => at_centre,
+    }
 }
 
 /// App. C's cage speed and roller spin (eq. C.1–C.2), rad/s.
