@@ -581,6 +581,30 @@ pub fn bench_command(
 mod tests {
     use super::*;
 
+    /// The grid `laminae × tolerances` of `b` (aerospace, no thermal network), measured.
+    fn measured(b: &Bearing, laminae: &[usize], tolerances: &[f64]) -> FidelityTable {
+        match measure("aerospace", b, None, laminae, tolerances) {
+            Ok(t) => t,
+            Err(e) => panic!("{e}"),
+        }
+    }
+
+    /// A measured grid row: every key output `err` off, median `ms` milliseconds.
+    fn row(laminae: usize, tolerance: f64, ms: f64, err: f64) -> Row {
+        Row {
+            laminae,
+            tolerance,
+            median_s: ms * 1e-3,
+            err_max_roller_load: Some(err),
+            err_max_stress: Some(err),
+            err_l10: Some(err),
+            err_cage_speed: Some(err),
+            err_total_heat: Some(err),
+            err_hottest_temperature: Some(err),
+            failure: None,
+        }
+    }
+
     #[test]
     fn relative_errors() {
         // Exact arithmetic on representable numbers: equality.
@@ -596,18 +620,6 @@ mod tests {
         // Two runs of the same grid whose medians differ by noise (±8 %): the same row is
         // recommended (fewest laminae within the tie band), and a row that does not meet the
         // target is never chosen however cheap.
-        let row = |laminae: usize, tolerance: f64, ms: f64, err: f64| Row {
-            laminae,
-            tolerance,
-            median_s: ms * 1e-3,
-            err_max_roller_load: Some(err),
-            err_max_stress: Some(err),
-            err_l10: Some(err),
-            err_cage_speed: Some(err),
-            err_total_heat: Some(err),
-            err_hottest_temperature: Some(err),
-            failure: None,
-        };
         let run_a = [
             row(41, 1e-6, 0.48, 2.5e-3),
             row(61, 1e-4, 0.48, 1.1e-3),
@@ -637,16 +649,11 @@ mod tests {
         // slicing error of an edge-loaded roller): Γ = 31 is not recommended, Γ = 61 (met
         // from there on) is. A finer row at another tolerance does not count.
         let row = |laminae: usize, tolerance: f64, err: f64| Row {
-            laminae,
-            tolerance,
-            median_s: laminae as f64 * 1e-5,
-            err_max_roller_load: Some(1e-4),
             err_max_stress: Some(err),
             err_l10: Some(5e-4),
-            err_cage_speed: Some(1e-4),
             err_total_heat: Some(1e-3),
             err_hottest_temperature: None,
-            failure: None,
+            ..row(laminae, tolerance, laminae as f64 * 1e-2, 1e-4)
         };
         let rows = [
             row(31, 1e-6, 6e-4),
@@ -672,16 +679,11 @@ mod tests {
         // above the guard and not just below it; a missing output (no thermal network)
         // does not.
         let ok = Row {
-            laminae: 31,
-            tolerance: 1e-6,
-            median_s: 0.3e-3,
-            err_max_roller_load: Some(1e-4),
             err_max_stress: Some(5e-4),
             err_l10: Some(5e-4),
-            err_cage_speed: Some(1e-4),
             err_total_heat: Some(2e-3),
             err_hottest_temperature: None,
-            failure: None,
+            ..row(31, 1e-6, 0.3, 1e-4)
         };
         let industrial_15 = Row {
             laminae: 15,
@@ -719,16 +721,7 @@ mod tests {
         // The reference fidelity measured against itself has zero error (same
         // deterministic computation: exact), so a grid of {reference} recommends it.
         let b = Bearing::example_aerospace();
-        let t = match measure(
-            "aerospace",
-            &b,
-            None,
-            &[REFERENCE.laminae],
-            &[REFERENCE.tolerance],
-        ) {
-            Ok(t) => t,
-            Err(e) => panic!("{e}"),
-        };
+        let t = measured(&b, &[REFERENCE.laminae], &[REFERENCE.tolerance]);
         let r = &t.rows[0];
         assert_eq!(r.err_max_stress, Some(0.0));
         assert_eq!(r.err_l10, Some(0.0));
@@ -748,20 +741,15 @@ mod tests {
             assert!(json.get(k).is_some(), "{k}");
         }
         assert!(to_text(&t).contains("<= recommended"));
-        // The deck's own Γ = 61 is not a cell of this one-cell grid.
+        // The deck's own Γ = 81 is not a cell of this one-cell grid.
         assert_eq!(t.default_meets_target, None);
         assert!(to_text(&t).contains("(not a cell of the grid)"));
         // A deck at the reference fidelity is that cell, which meets the targets.
-        let at_ref = match measure(
-            "aerospace",
+        let at_ref = measured(
             &REFERENCE.apply(&b),
-            None,
             &[REFERENCE.laminae],
             &[REFERENCE.tolerance],
-        ) {
-            Ok(t) => t,
-            Err(e) => panic!("{e}"),
-        };
+        );
         assert_eq!(at_ref.default_meets_target, Some(true));
         assert!(to_text(&at_ref).contains("(meets the targets)"));
     }
@@ -770,10 +758,7 @@ mod tests {
     #[ignore = "measurement, run by hand: cargo test --release --lib even_and_odd -- --ignored --nocapture"]
     fn even_and_odd_laminae() {
         let b = Bearing::example_aerospace();
-        let t = match measure("aerospace", &b, None, &[10, 11, 20, 21, 40, 41], &[1e-9]) {
-            Ok(t) => t,
-            Err(e) => panic!("{e}"),
-        };
+        let t = measured(&b, &[10, 11, 20, 21, 40, 41], &[1e-9]);
         print!("{}", to_text(&t));
         assert_eq!(t.rows.len(), 6);
     }

@@ -37,6 +37,18 @@ pub struct LaminaContact {
 /// Contact states of one roller: `[inner, outer]` per lamina.
 pub type RollerContacts = Vec<[LaminaContact; 2]>;
 
+impl LaminaContact {
+    /// Load per unit length Q/w, N/m (0 when unloaded or of no width): what ranks the
+    /// laminae by how heavily they are loaded, whatever their widths.
+    pub fn line_load_n_m(&self) -> f64 {
+        if self.load_n > 0.0 && self.width_m > 0.0 {
+            self.load_n / self.width_m
+        } else {
+            0.0
+        }
+    }
+}
+
 /// Build the contact states of every lamina of every roller.
 pub fn contacts(b: &Bearing, ld: &LoadDistribution) -> Vec<RollerContacts> {
     let mut out: Vec<RollerContacts> = Vec::with_capacity(ld.rollers.len());

@@ -98,7 +98,7 @@ pub fn stresses(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts])
                     let c = &pair[k];
                     if c.load_n > 0.0 && c.width_m > 0.0 {
                         let mut lc = hertz::line_contact_reduced(
-                            c.load_n / c.width_m,
+                            c.line_load_n_m(),
                             c.reduced_radius_m,
                             e_star[k],
                         );
@@ -210,14 +210,7 @@ fn contact_point(r: &RollerResult, rc: &RollerContacts, k: usize, i: usize) -> (
     }
     let three = [i - 1, i, i + 1];
     let x = three.map(|n| r.laminae[n].offset_m);
-    let q = three.map(|n| {
-        let w = rc[n][k].width_m;
-        if w > 0.0 {
-            rc[n][k].load_n.max(0.0) / w
-        } else {
-            0.0
-        }
-    });
+    let q = three.map(|n| rc[n][k].line_load_n_m());
     let half = 0.5 * r.laminae[i].width_m;
     match kinematics::load_peak(x, q, x[1] - half, x[1] + half) {
         Some((_, w)) => {
