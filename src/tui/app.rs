@@ -210,7 +210,8 @@ pub struct App {
     pub analysis: Option<Arc<Analysis>>,
     /// Selected roller (0-based).
     pub roller_sel: usize,
-    /// Load chart shows lamina loads of the selected roller instead of roller loads.
+    /// Load chart shows the load along the selected roller (per unit length) instead of the
+    /// roller loads.
     pub chart_laminae: bool,
     /// Stepper position (0-based trace step).
     pub step: usize,
@@ -866,7 +867,11 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "step back / forward through iterations",
     ),
     ("h l / ← →", "Rollers, Load", "previous / next roller"),
-    ("c", "any", "load chart: roller loads ↔ lamina loads"),
+    (
+        "c",
+        "any",
+        "load chart: roller loads ↔ load per length along the roller",
+    ),
     ("u", "any", "display units SI ↔ US"),
     ("r", "any", "re-solve now"),
     ("Ctrl-z / Ctrl-y", "any", "undo / redo an edit"),

@@ -586,7 +586,7 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
     lines.push(Line::styled(
         format!(
             "{:<lw$}{:.1} {} / {:.5} {}",
-            "full scale", lmax, v.force_unit, amax, v.approach_unit
+            "full scale", lmax, v.load_unit, amax, v.approach_unit
         ),
         Style::default().fg(DIM),
     ));

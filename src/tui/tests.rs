@@ -821,3 +821,40 @@ fn tui_quit_prompt_save_without_file_asks_for_a_name_then_quits() {
         app.deck.bearing()
     );
 }
+
+#[test]
+fn load_chart_is_the_load_per_length_along_the_roller() {
+    // A straight roller on straight raceways (crown radii 10 km), zero contact angle, pure
+    // radial load at rest: every lamina sits at the same approach, so the load per unit
+    // length is uniform along the roller (line contact). With cosine slicing the laminae
+    // range from thin at the ends to π/2 times the mean width in the middle, so their loads
+    // alone would not be: the chart and the stepper's bars must be flat. SI: N/mm.
+    let mut b = crate::validate::stribeck_bearing(16);
+    let g = &mut b.geometry;
+    g.roller_crown_radius_m = 1e4;
+    g.inner_crown_radius_m = 1e4;
+    g.outer_crown_radius_m = 1e4;
+    let req = Request {
+        trace_roller: Some(0),
+        ..Request::default()
+    };
+    let a = pipeline::run(&b, &req, None).unwrap_or_else(|e| panic!("{e}"));
+    let flat = |v: &[f64], what: &str| {
+        let (lo, hi) = v
+            .iter()
+            .fold((f64::MAX, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
+        assert!(lo > 0.0 && hi / lo - 1.0 < 1e-9, "{what}: {lo} … {hi}");
+    };
+    let s = view_model::lamina_loads(&a, 0, deck_io::Units::Si).expect("roller 1");
+    assert_eq!(s.y_label, "N/mm");
+    flat(&s.inner.iter().map(|p| p.1).collect::<Vec<_>>(), "chart");
+    // The chart's level is the roller's load over its length (Q/L, here in N/mm).
+    let r = &a.load.rollers[0];
+    let q_over_l = r.laminae.iter().map(|l| l.inner_load_n).sum::<f64>()
+        / b.geometry.effective_length_m
+        * 1e-3;
+    assert!((s.inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
+    let last = view_model::trace_len(&a) - 1;
+    let step = view_model::trace_step(&a, last, deck_io::Units::Si).expect("a step");
+    flat(&step.inner_load, "stepper bars");
+}

@@ -6,7 +6,7 @@
 //! spin, heat, thermal) only this module changes: fill the matching `—` cell or the
 //! [`ThermalView`].
 
-use crate::solve::load_distribution::TraceStep;
+use crate::solve::load_distribution::{LaminaResult, TraceStep};
 use crate::solve::pipeline::Analysis;
 
 use super::deck_io::Units;
@@ -35,6 +35,34 @@ pub fn force_unit(u: Units) -> &'static str {
         Units::Si => "N",
         Units::Us => "lbf",
     }
+}
+
+/// A load per unit length (a lamina's load over its width) in display units: N/mm or
+/// lbf/in.
+pub fn line_load(value_n_m: f64, u: Units) -> f64 {
+    match u {
+        Units::Si => value_n_m * 1e-3,
+        Units::Us => value_n_m / LBF_N * IN_M,
+    }
+}
+
+/// Unit label of [`line_load`].
+pub fn line_load_unit(u: Units) -> &'static str {
+    match u {
+        Units::Si => "N/mm",
+        Units::Us => "lbf/in",
+    }
+}
+
+/// Each lamina's load over its width, N/m: the load distribution along the roller. The
+/// laminae are not equally wide (cosine slicing puts thin ones at the ends), so their
+/// loads alone would draw the thin end laminae low however hard the end is loaded.
+fn per_length(loads_n: &[f64], laminae: &[LaminaResult]) -> Vec<f64> {
+    loads_n
+        .iter()
+        .zip(laminae)
+        .map(|(&q, l)| if l.width_m > 0.0 { q / l.width_m } else { 0.0 })
+        .collect()
 }
 
 /// A small length (deflection, approach, lamina offset) in display units: mm or mil
@@ -273,27 +301,27 @@ pub fn load_vs_azimuth(a: &Analysis, u: Units) -> LoadSeries {
     }
 }
 
-/// Lamina loads along roller `roller` (0-based), against lamina offset from the roller
-/// centre; edge loading shows as a rise at the ends. `None` if there is no such roller.
+/// The load distribution along roller `roller` (0-based): each lamina's load per unit
+/// length against its offset from the roller centre; edge loading shows as a rise at the
+/// ends. `None` if there is no such roller.
 pub fn lamina_loads(a: &Analysis, roller: usize, u: Units) -> Option<LoadSeries> {
     let r = a.load.rollers.get(roller)?;
-    let inner: Vec<(f64, f64)> = r
-        .laminae
-        .iter()
-        .map(|l| (small_length(l.offset_m, u), force(l.inner_load_n, u)))
-        .collect();
-    let outer: Vec<(f64, f64)> = r
-        .laminae
-        .iter()
-        .map(|l| (small_length(l.offset_m, u), force(l.outer_load_n, u)))
-        .collect();
+    let series = |loads: Vec<f64>| -> Vec<(f64, f64)> {
+        per_length(&loads, &r.laminae)
+            .into_iter()
+            .zip(&r.laminae)
+            .map(|(q, l)| (small_length(l.offset_m, u), line_load(q, u)))
+            .collect()
+    };
+    let inner = series(r.laminae.iter().map(|l| l.inner_load_n).collect());
+    let outer = series(r.laminae.iter().map(|l| l.outer_load_n).collect());
     let ymax = inner.iter().chain(&outer).map(|p| p.1).fold(0.0, f64::max);
     let xmax = inner.iter().map(|p| p.0.abs()).fold(0.0, f64::max);
     let xmax = if xmax > 0.0 { xmax } else { 1.0 };
     Some(LoadSeries {
-        title: format!("lamina loads, roller {}", r.index),
+        title: format!("load along roller {}", r.index),
         x_label: format!("x {}", small_length_unit(u)),
-        y_label: force_unit(u).into(),
+        y_label: line_load_unit(u).into(),
         inner,
         outer,
         x_bounds: [-xmax, xmax],
@@ -421,16 +449,16 @@ pub fn bearing_lines(a: &Analysis, u: Units) -> Vec<(String, String)> {
 pub struct StepView {
     /// Label/value lines: iteration numbers, displacements, residuals.
     pub lines: Vec<(String, String)>,
-    /// Inner lamina loads, display units (for the bar row).
+    /// Inner lamina loads per unit length, display units (for the bar row).
     pub inner_load: Vec<f64>,
-    /// Outer lamina loads, display units.
+    /// Outer lamina loads per unit length, display units.
     pub outer_load: Vec<f64>,
     /// Inner lamina approaches, display small-length units.
     pub inner_approach: Vec<f64>,
     /// Outer lamina approaches, display small-length units.
     pub outer_approach: Vec<f64>,
-    /// Force unit label.
-    pub force_unit: String,
+    /// Load-per-length unit label of the bar rows.
+    pub load_unit: String,
     /// Approach unit label.
     pub approach_unit: String,
 }
@@ -513,10 +541,22 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
         ),
         ("resid moment N·m".to_string(), residual(t.residual[2])),
     ];
+    // The traced roller's laminae (every roller is sliced alike) give the widths.
+    let laminae = a
+        .load
+        .rollers
+        .first()
+        .map_or(&[][..], |r| r.laminae.as_slice());
+    let bars = |loads: &[f64]| -> Vec<f64> {
+        per_length(loads, laminae)
+            .into_iter()
+            .map(|q| line_load(q, u))
+            .collect()
+    };
     Some(StepView {
         lines,
-        inner_load: t.inner_load_n.iter().map(|&v| force(v, u)).collect(),
-        outer_load: t.outer_load_n.iter().map(|&v| force(v, u)).collect(),
+        inner_load: bars(&t.inner_load_n),
+        outer_load: bars(&t.outer_load_n),
         inner_approach: t
             .inner_approach_m
             .iter()
@@ -527,7 +567,7 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
             .iter()
             .map(|&v| small_length(v, u))
             .collect(),
-        force_unit: fu.into(),
+        load_unit: line_load_unit(u).into(),
         approach_unit: su.into(),
     })
 }
