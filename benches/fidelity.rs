@@ -1,10 +1,10 @@
 //! Full pipeline (no transient) on each shipped deck at the deck's default fidelity and at
 //! the recommended one (cheapest grid cell with max-stress and L-10 errors below 0.1 % and
-//! the other key outputs within 1 %, from `rollbench::fidelity::measure_grid`, measured once
+//! the other key outputs within 1 %, from `rollbench::verify::fidelity::measure_grid`, measured once
 //! in the set-up).
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::deck::Deck;
-use rollbench::fidelity::{self, Fidelity};
+use rollbench::verify::fidelity::{self, Fidelity};
 
 fn decks() -> Vec<(String, Deck)> {
     let mut paths: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))

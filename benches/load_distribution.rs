@@ -4,9 +4,11 @@
 //! the workbench's per-edit latency by edit kind (the stage-cached pipeline re-runs only the
 //! stages an edit touches).
 use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::bearings::spherical_roller::load_distribution::{
+    solve, DynamicSpeeds, SolveOptions,
+};
+use rollbench::bearings::spherical_roller::pipeline::{run, Pipeline, Request};
 use rollbench::deck::Deck;
-use rollbench::solve::load_distribution::{solve, DynamicSpeeds, SolveOptions};
-use rollbench::solve::pipeline::{run, Pipeline, Request};
 
 fn decks() -> Vec<(String, Deck)> {
     let mut out = Vec::new();
@@ -48,7 +50,7 @@ fn bench(c: &mut Criterion) {
     if let Some((_, radial)) = decks().into_iter().find(|(n, _)| n == "radial_si") {
         for laminae in [21, 61] {
             let mut b = radial.bearing.clone();
-            rollbench::validate::make_cylindrical_radial(&mut b, laminae);
+            rollbench::verify::cases::make_cylindrical_radial(&mut b, laminae);
             let s = DynamicSpeeds::app_c_estimate(&b);
             g.bench_function(format!("gamma_{laminae}"), |bch| {
                 bch.iter(|| solve(&b, &s, &SolveOptions::default(), None))
@@ -68,7 +70,11 @@ fn edit_latency(c: &mut Criterion) {
     let Ok(Some(tm)) = rollbench::cli::thermal_model(&deck) else {
         return;
     };
-    type Edit = fn(&mut rollbench::model::Bearing, &mut rollbench::thermal::ThermalModel, bool);
+    type Edit = fn(
+        &mut rollbench::bearings::spherical_roller::Bearing,
+        &mut rollbench::thermal::ThermalModel,
+        bool,
+    );
     let edits: [(&str, Edit); 4] = [
         ("load", |b, _, f| {
             b.operating.radial_load_n *= if f { 1.05 } else { 1.0 / 1.05 }

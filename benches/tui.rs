@@ -10,7 +10,7 @@ use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 
-use rollbench::solve::pipeline;
+use rollbench::bearings::spherical_roller::pipeline;
 use rollbench::tui::{App, AppEvent, Command, DeckDoc, Pane};
 
 fn key(c: KeyCode) -> AppEvent {

@@ -1,6 +1,6 @@
 //! Run one deck's pipeline repeatedly (for `perf record`): `profile [DECK] [N] [load|contact|all]`.
+use rollbench::bearings::spherical_roller::pipeline::{run, Request};
 use rollbench::deck::Deck;
-use rollbench::solve::pipeline::{run, Request};
 fn main() {
     let mut args = std::env::args().skip(1);
     let path = args.next().unwrap_or("decks/aerospace.toml".into());

@@ -1,11 +1,15 @@
 //! Quick timing of the pipeline on the shipped decks: the load stage alone (with its
 //! nanoseconds per lamina evaluation) and the full pipeline without the transient.
+use rollbench::bearings::spherical_roller::pipeline::{run, Analysis, Request};
 use rollbench::deck::Deck;
-use rollbench::solve::pipeline::{run, Analysis, Request};
 
 /// Median and minimum wall time of `n` runs (the minimum is the steadier figure on a busy
 /// machine; the median is what the README quotes).
-fn median(b: &rollbench::model::Bearing, r: &Request, n: usize) -> (f64, f64, Analysis) {
+fn median(
+    b: &rollbench::bearings::spherical_roller::Bearing,
+    r: &Request,
+    n: usize,
+) -> (f64, f64, Analysis) {
     let mut t = vec![];
     let mut last = None;
     for _ in 0..n {

@@ -8,9 +8,9 @@
 //! rest), the same for the full pipeline, and the roller loads.
 //!
 //! `cargo run --release --example tribology_case -- [LAMINAE]` (default 21).
+use rollbench::bearings::spherical_roller::load_distribution::{self, DynamicSpeeds, SolveOptions};
+use rollbench::bearings::spherical_roller::pipeline::{run, Request};
 use rollbench::deck::Deck;
-use rollbench::solve::load_distribution::{self, DynamicSpeeds, SolveOptions};
-use rollbench::solve::pipeline::{run, Request};
 
 fn median<F: FnMut()>(n: usize, mut f: F) -> f64 {
     let mut t: Vec<f64> = (0..n)
@@ -32,7 +32,7 @@ fn main() {
     let mut b = Deck::load(concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml"))
         .expect("deck")
         .bearing;
-    rollbench::validate::make_cylindrical_radial(&mut b, laminae);
+    rollbench::verify::cases::make_cylindrical_radial(&mut b, laminae);
     let speeds = DynamicSpeeds::app_c_estimate(&b);
     let solve = || load_distribution::solve(&b, &speeds, &SolveOptions::default(), None);
     let ld = solve().expect("solve");

@@ -1,17 +1,19 @@
-//! rollbench: high-speed rolling-bearing analysis (SASHBEAN lamina method, NASA CR-191182).
+//! rollbench: high-speed rolling-bearing analysis.
 //!
-//! Layers: `model` (pure physics), `solve` (equilibrium solvers, staged pipeline),
-//! `deck` (TOML input), `report` (text/JSON/CSV), `thermal` (lumped network). None of
-//! these depend on the terminal UI; `cli` and `tui` are thin layers on top.
+//! Layers, bottom up: `units` and `numerics`; `physics` (shared by every bearing system);
+//! `bearings` (one folder per bearing system, behind one trait); `thermal` (the lumped
+//! network); `deck` (all input), `report` (text, JSON, CSV), `verify` (`validate` and
+//! `bench`). None of these depend on the terminal UI; `cli` and `tui` are thin layers on
+//! top. See `docs/architecture.md`.
 #![forbid(unsafe_code)]
 
+pub mod bearings;
 pub mod cli;
 pub mod deck;
-pub mod fidelity;
-pub mod model;
+pub mod numerics;
+pub mod physics;
 pub mod report;
-pub mod solve;
 pub mod thermal;
 pub mod tui;
 pub mod units;
-pub mod validate;
+pub mod verify;

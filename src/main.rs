@@ -4,12 +4,12 @@
 use std::process::ExitCode;
 
 use clap::Parser;
+use rollbench::bearings::spherical_roller::pipeline::{self, Request};
 use rollbench::cli::{
     load_deck, thermal_model, write_atomic, Cli, Command, Format, TableFormat, UnitsArg,
 };
 use rollbench::deck::Units;
 use rollbench::report::{self, ReportUnits};
-use rollbench::solve::pipeline::{self, Request};
 
 fn report_units(u: Units) -> ReportUnits {
     match u {
@@ -104,19 +104,19 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Some(Command::Validate { format }) => {
-            let cases = rollbench::validate::cases();
+            let cases = rollbench::verify::cases::cases();
             match format {
-                TableFormat::Text => print!("{}", rollbench::validate::to_text(&cases)),
-                TableFormat::Json => println!("{:#}", rollbench::validate::to_json(&cases)),
+                TableFormat::Text => print!("{}", rollbench::verify::cases::to_text(&cases)),
+                TableFormat::Json => println!("{:#}", rollbench::verify::cases::to_json(&cases)),
             }
-            ExitCode::from(if rollbench::validate::all_pass(&cases) {
+            ExitCode::from(if rollbench::verify::cases::all_pass(&cases) {
                 0
             } else {
                 1
             })
         }
         Some(Command::Bench { deck, format }) => {
-            match rollbench::fidelity::bench_command(
+            match rollbench::verify::fidelity::bench_command(
                 deck.as_deref(),
                 &cli.set,
                 format == TableFormat::Json,

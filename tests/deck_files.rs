@@ -8,8 +8,10 @@ use std::path::Path;
 use common::toml_files;
 
 use proptest::prelude::*;
+use rollbench::bearings::spherical_roller::{
+    Bearing, FilmModel, GuidingRing, LifeMethod, Material,
+};
 use rollbench::deck::{write_bearing, Deck, Units};
-use rollbench::model::{Bearing, FilmModel, GuidingRing, LifeMethod, Material};
 
 #[test]
 fn every_shipped_deck_parses() {

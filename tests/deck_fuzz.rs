@@ -266,8 +266,12 @@ fn mutation_outcome_mix() {
                 let text = apply(text, &muts);
                 let solved = std::panic::catch_unwind(|| {
                     Deck::parse(&text, "fuzz.toml").map(|d| {
-                        rollbench::solve::pipeline::run(&d.bearing, &Default::default(), None)
-                            .is_ok()
+                        rollbench::bearings::spherical_roller::pipeline::run(
+                            &d.bearing,
+                            &Default::default(),
+                            None,
+                        )
+                        .is_ok()
                     })
                 });
                 assert!(

@@ -1,9 +1,9 @@
 //! Pipeline-level tests against independent references (issues 2–5).
 
+use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
 use rollbench::deck::Deck;
-use rollbench::model::hertz;
+use rollbench::physics::contact::line;
 use rollbench::report;
-use rollbench::solve::pipeline::{self, Analysis, Request};
 
 fn deck(name: &str) -> Deck {
     let path = format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -13,7 +13,7 @@ fn deck(name: &str) -> Deck {
     }
 }
 
-fn run(b: &rollbench::model::Bearing) -> Analysis {
+fn run(b: &rollbench::bearings::spherical_roller::Bearing) -> Analysis {
     match pipeline::run(b, &Request::default(), None) {
         Ok(a) => a,
         Err(e) => panic!("{e}"),
@@ -165,7 +165,7 @@ fn lamina_hertz_matches_closed_form() {
     }
     assert!(checked > 100, "{checked}");
     // And the library's own line-contact function agrees on the worked number of references.md.
-    let lc = hertz::line_contact_reduced(104_167.0, 4.2308e-3, 206e9 / (2.0 * (1.0 - 0.09)));
+    let lc = line::line_contact_reduced(104_167.0, 4.2308e-3, 206e9 / (2.0 * (1.0 - 0.09)));
     assert!((lc.half_width_m / 70.41e-6 - 1.0).abs() < 1e-3);
 }
 
@@ -406,7 +406,7 @@ fn solver_statistics_per_deck() {
 
 #[test]
 fn stage_cache_reruns_only_what_an_edit_touches() {
-    use rollbench::solve::pipeline::{Pipeline, StageCounters};
+    use rollbench::bearings::spherical_roller::pipeline::{Pipeline, StageCounters};
     let d = deck("aerospace.toml");
     let tm = match rollbench::cli::thermal_model(&d) {
         Ok(Some(t)) => t,
@@ -524,7 +524,7 @@ fn mirrored_rollers_are_copied_not_approximated() {
     // Rollers j and Z−j are mirror images under a load in the plane of roller 1; the
     // per-roller stages copy them. Recomputing every roller from scratch (mirror map
     // cleared) must give bit-identical contacts, stresses and heat: exact equality.
-    use rollbench::solve::{contacts, load_distribution, stages};
+    use rollbench::bearings::spherical_roller::{contacts, load_distribution, stages};
     let b = deck("aerospace.toml").bearing;
     let speeds = load_distribution::DynamicSpeeds::app_c_estimate(&b);
     let ld = load_distribution::solve(&b, &speeds, &Default::default(), None)

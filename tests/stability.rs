@@ -14,11 +14,11 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
+use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use rollbench::bearings::spherical_roller::{Bearing, DynamicLoads, Material};
 use rollbench::deck::{write_bearing, Deck, Units};
-use rollbench::model::life::{raceway_capacity, CapacityGeometry, Raceway};
-use rollbench::model::{Bearing, DynamicLoads, Material};
+use rollbench::physics::life::{raceway_capacity, Raceway};
 use rollbench::report;
-use rollbench::solve::pipeline::{self, Analysis, Request};
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 
@@ -126,11 +126,7 @@ fn bearing(p: &Params) -> Bearing {
     }
     // Dynamic capacity estimate: Z·Q_c·cos β/(4.08·…) is not needed to this accuracy; the
     // bearing rating of a line contact is ≈ 0.378·Z·Q_c(inner)·cos β (Harris).
-    let qc = raceway_capacity(
-        Raceway::Inner,
-        1.0,
-        &CapacityGeometry::from_geometry(&b.geometry),
-    );
+    let qc = raceway_capacity(Raceway::Inner, 1.0, &b.geometry.capacity_geometry());
     let c = 0.378 * z as f64 * qc * b.geometry.contact_angle_rad.cos().max(0.3);
     b.operating.radial_load_n = p.radial_capacity * c;
     b.operating.axial_load_n = p.axial_capacity * c;

@@ -18,6 +18,7 @@ mod error;
 mod io;
 mod schema;
 mod template;
+pub mod thermal;
 mod validate;
 
 pub use crate::units::Units;
@@ -32,7 +33,7 @@ use std::path::Path;
 
 use toml_edit::{DocumentMut, Item, Value};
 
-use crate::model::Bearing;
+use crate::bearings::spherical_roller::Bearing;
 
 /// The aerospace example deck (US units), shipped as `decks/aerospace.toml`.
 pub const DEFAULT_DECK: &str = include_str!("../../decks/aerospace.toml");

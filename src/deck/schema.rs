@@ -42,7 +42,7 @@
 //! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
-use crate::model::{
+use crate::bearings::spherical_roller::{
     Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, Slicing, SolverSettings,
 };
 use crate::units::{Quantity, Units, PSI_PA};

@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 
 use super::schema::{fields, preset_name, FieldKind, FieldSpec, Presence, MATERIAL_BODIES};
-use crate::model::{Bearing, Material};
+use crate::bearings::spherical_roller::{Bearing, Material};
 use crate::units::{Quantity, Units};
 
 /// Formats a real for a deck: rounded to 15 significant digits (hides last-bit noise

@@ -2,7 +2,7 @@
 //! template round trip, conversion and atomic save.
 
 use super::*;
-use crate::model::{Bearing, LifeMethod, Material};
+use crate::bearings::spherical_roller::{Bearing, LifeMethod, Material};
 
 /// Relative difference, safe at zero.
 fn rel(a: f64, b: f64) -> f64 {
@@ -365,7 +365,10 @@ fn missing_required_key_and_table() {
 fn optional_keys_take_defaults() {
     let d = load_deck("radial_si.toml");
     let b = &d.bearing;
-    assert_eq!(b.solver, crate::model::SolverSettings::default());
+    assert_eq!(
+        b.solver,
+        crate::bearings::spherical_roller::SolverSettings::default()
+    );
     assert_eq!(b.cage.drag_factor, 5.0);
     assert_eq!(b.life.iso_contamination_factor, 1.0);
     assert_eq!(b.lubricant.limiting_traction_coefficient, 0.06);

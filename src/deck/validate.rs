@@ -12,7 +12,7 @@ use super::schema::{
     field, fields, format_short, material_preset, FieldKind, FieldSpec, Presence, GROUPS,
     MATERIAL_BODIES, MATERIAL_PRESETS, REQUIRED_GROUPS,
 };
-use crate::model::{Bearing, LifeMethod};
+use crate::bearings::spherical_roller::{Bearing, LifeMethod};
 use crate::units::Units;
 
 /// The result of a successful parse.

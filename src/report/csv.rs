@@ -1,6 +1,6 @@
 //! CSV report: one row per roller, SI units in the header.
 
-use crate::solve::pipeline::Analysis;
+use crate::bearings::spherical_roller::pipeline::Analysis;
 
 /// CSV text with a header line.
 pub fn to_string(a: &Analysis) -> String {

@@ -2,7 +2,7 @@
 
 use serde_json::{json, Map, Value};
 
-use crate::solve::pipeline::Analysis;
+use crate::bearings::spherical_roller::pipeline::Analysis;
 
 /// The full JSON document of an analysis.
 pub fn to_value(a: &Analysis) -> Value {
@@ -12,7 +12,7 @@ pub fn to_value(a: &Analysis) -> Value {
         .iter()
         .enumerate()
         .map(|(j, r)| {
-            let contact = |k: usize, c: &crate::solve::load_distribution::RacewayContact| {
+            let contact = |k: usize, c: &crate::bearings::spherical_roller::load_distribution::RacewayContact| {
                 let mut v = json!({
                     "normal_load_n": c.normal_load_n,
                     "contact_angle_deg": c.contact_angle_deg,

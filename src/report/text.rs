@@ -3,7 +3,7 @@
 use std::fmt::Write;
 
 use super::{Disp, ReportUnits};
-use crate::solve::pipeline::Analysis;
+use crate::bearings::spherical_roller::pipeline::Analysis;
 
 /// Human-readable report in `units`.
 pub fn to_string(a: &Analysis, units: ReportUnits) -> String {

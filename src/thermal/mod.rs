@@ -7,13 +7,12 @@
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 #![deny(missing_docs)]
 
-pub mod deck;
 pub mod error;
 pub mod network;
 pub mod steady;
 pub mod transient;
 
-pub use deck::{parse_thermal, ThermalModel, ThermalUnits};
+pub use crate::deck::thermal::{parse_thermal, ThermalModel, ThermalUnits};
 pub use error::ThermalError;
 pub use network::{
     capacity_from_material, HeatInput, HeatMechanism, Link, LinkKind, Network, Node, NodeRole,

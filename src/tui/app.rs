@@ -10,8 +10,8 @@ use std::sync::Arc;
 
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
-use crate::model::Bearing;
-use crate::solve::pipeline::{Analysis, Request};
+use crate::bearings::spherical_roller::pipeline::{Analysis, Request};
+use crate::bearings::spherical_roller::Bearing;
 
 use super::deck_io::{self, DeckDoc, FieldInfo, Units};
 use super::view_model;

@@ -7,8 +7,8 @@
 
 use std::path::Path;
 
+use crate::bearings::spherical_roller::Bearing;
 use crate::deck::{self, Deck, DeckError, DeckErrors, FieldKind, FieldSpec};
-use crate::model::Bearing;
 
 pub use crate::units::Units;
 

@@ -15,8 +15,8 @@ use ratatui::Terminal;
 
 use super::app::{Mode, PromptKind, SolveState};
 use super::*;
-use crate::solve::pipeline::{self, Analysis, Request};
-use crate::solve::SolveError;
+use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use crate::bearings::SolveError;
 
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
@@ -489,7 +489,7 @@ fn tui_tiny_sizes_do_not_panic() {
 fn job(generation: u64) -> app::SolveJob {
     app::SolveJob {
         generation,
-        bearing: crate::model::Bearing::example_aerospace(),
+        bearing: crate::bearings::spherical_roller::Bearing::example_aerospace(),
         request: Request::default(),
     }
 }
@@ -692,7 +692,7 @@ fn tui_choice_field_cycles_with_arrows() {
     );
     assert_eq!(
         app.deck.bearing().lubricant.film_model,
-        crate::model::FilmModel::DowsonHigginson
+        crate::bearings::spherical_roller::FilmModel::DowsonHigginson
     );
 }
 
@@ -829,7 +829,7 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
     // length is uniform along the roller (line contact). With cosine slicing the laminae
     // range from thin at the ends to π/2 times the mean width in the middle, so their loads
     // alone would not be: the chart and the stepper's bars must be flat. SI: N/mm.
-    let mut b = crate::validate::stribeck_bearing(16);
+    let mut b = crate::verify::cases::stribeck_bearing(16);
     let g = &mut b.geometry;
     g.roller_crown_radius_m = 1e4;
     g.inner_crown_radius_m = 1e4;

@@ -6,8 +6,8 @@
 //! spin, heat, thermal) only this module changes: fill the matching `—` cell or the
 //! [`ThermalView`].
 
-use crate::solve::load_distribution::{LaminaResult, TraceStep};
-use crate::solve::pipeline::Analysis;
+use crate::bearings::spherical_roller::load_distribution::{LaminaResult, TraceStep};
+use crate::bearings::spherical_roller::pipeline::Analysis;
 
 use super::deck_io::Units;
 
@@ -204,10 +204,16 @@ pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
             let lambda = match (film_min, a.films.as_ref()) {
                 (Some(h), Some(_)) => {
                     let s = &a.input.surfaces;
-                    let inner =
-                        crate::model::film::film_parameter(h, s.roller_rms_m, s.inner_rms_m);
-                    let outer =
-                        crate::model::film::film_parameter(h, s.roller_rms_m, s.outer_rms_m);
+                    let inner = crate::physics::lubrication::film::film_parameter(
+                        h,
+                        s.roller_rms_m,
+                        s.inner_rms_m,
+                    );
+                    let outer = crate::physics::lubrication::film::film_parameter(
+                        h,
+                        s.roller_rms_m,
+                        s.outer_rms_m,
+                    );
                     fixed(inner.min(outer), 2)
                 }
                 _ => DASH.to_string(),

@@ -11,9 +11,9 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Arc;
 use std::thread::{self, JoinHandle};
 
-use crate::model::Bearing;
-use crate::solve::pipeline::{self, Analysis, Request};
-use crate::solve::SolveError;
+use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use crate::bearings::spherical_roller::Bearing;
+use crate::bearings::SolveError;
 
 use super::app::{AppEvent, SolveJob};
 

@@ -44,7 +44,7 @@
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
 
-use crate::model::pchip::MonotoneCubic;
+use crate::numerics::pchip::MonotoneCubic;
 use std::sync::OnceLock;
 
 /// Maximum subsurface stresses as ratios to p₀ and depths as z/b (seed 000 §4.4).

@@ -25,14 +25,14 @@
 //!
 //! # Sign
 //!
-//! v is the sliding velocity of [`crate::model::kinematics::sliding_velocity`]: raceway
+//! v is the sliding velocity of [`crate::physics::kinematics::sliding_velocity`]: raceway
 //! minus roller. The traction on the *roller* acts along +v (the raceway drags it); the
 //! raceway receives the opposite force. Heat = |F·v| (eq. "rate of work done"; the seed's
-//! 2.5933 is only the in-lb/s → Btu/hr factor, see `crate::model::heat`).
+//! 2.5933 is only the in-lb/s → Btu/hr factor, see `crate::physics::heat`).
 
 use serde::{Deserialize, Serialize};
 
-use crate::model::Lubricant;
+use crate::bearings::spherical_roller::Lubricant;
 
 /// Traction law at a concentrated contact (seed 000 §9.2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -624,7 +624,7 @@ enum Regime {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     const PSI: f64 = 6_894.757_293_168_361;
 

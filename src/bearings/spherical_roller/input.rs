@@ -5,44 +5,12 @@
 
 use serde::{Deserialize, Serialize};
 
-/// Elastic and inertial properties of one body (roller or ring).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Material {
-    /// Young's modulus, Pa.
-    pub youngs_modulus_pa: f64,
-    /// Poisson's ratio, dimensionless.
-    pub poisson_ratio: f64,
-    /// Mass density, kg/m³.
-    pub density_kg_m3: f64,
-    /// Specific heat, J/(kg·K) (thermal network capacities).
-    pub specific_heat_j_kg_k: f64,
-    /// Thermal conductivity, W/(m·K).
-    pub conductivity_w_m_k: f64,
-}
-
-impl Material {
-    /// AISI 52100 / M50 bearing steel (E = 29.0 Mpsi, ν = 0.30, as in seed 000 App. E).
-    pub const STEEL: Material = Material {
-        youngs_modulus_pa: 29.0e6 * 6_894.757_293_168_361,
-        poisson_ratio: 0.30,
-        density_kg_m3: 7_833.0,
-        specific_heat_j_kg_k: 460.0,
-        conductivity_w_m_k: 43.0,
-    };
-    /// Hot-pressed silicon nitride (E = 43.0 Mpsi, ν = 0.27, as in seed 000 App. E).
-    pub const SILICON_NITRIDE: Material = Material {
-        youngs_modulus_pa: 43.0e6 * 6_894.757_293_168_361,
-        poisson_ratio: 0.27,
-        density_kg_m3: 3_200.0,
-        specific_heat_j_kg_k: 680.0,
-        conductivity_w_m_k: 30.0,
-    };
-
-    /// E/(1−ν²), Pa: the plane-strain modulus of this body.
-    pub fn plane_strain_modulus_pa(&self) -> f64 {
-        self.youngs_modulus_pa / (1.0 - self.poisson_ratio * self.poisson_ratio)
-    }
-}
+// The shared physics inputs a spherical roller bearing is made of, re-exported so the
+// bearing's description reads as one module.
+pub use crate::physics::heat::{Cage, GuidingRing};
+pub use crate::physics::life::{LifeFactors, LifeMethod};
+pub use crate::physics::lubrication::{FilmModel, Lubricant, Surfaces};
+pub use crate::physics::material::Material;
 
 /// Bearing internal geometry (seed 000 symbol list), SI.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -71,6 +39,19 @@ pub struct Geometry {
 }
 
 impl Geometry {
+    /// The geometry entering the raceway capacities (seed eq. 6.2): shared life physics
+    /// takes it as an argument and knows no bearing system.
+    pub fn capacity_geometry(&self) -> crate::physics::life::CapacityGeometry {
+        crate::physics::life::CapacityGeometry {
+            theta: self.theta(),
+            contact_angle_rad: self.contact_angle_rad,
+            roller_diameter_m: self.roller_diameter_m,
+            effective_length_m: self.effective_length_m,
+            roller_count: self.roller_count,
+            pitch_diameter_m: self.pitch_diameter_m,
+        }
+    }
+
     /// θ = D·cos β / P_t (seed 000 symbol list).
     pub fn theta(&self) -> f64 {
         self.roller_diameter_m * self.contact_angle_rad.cos() / self.pitch_diameter_m
@@ -96,104 +77,6 @@ pub struct Operating {
     pub radial_load_n: f64,
     /// F_a, axial load, N (positive presses the rings together).
     pub axial_load_n: f64,
-}
-
-/// Which film-thickness formula the EHD stage uses.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum FilmModel {
-    /// Grubin, seed 000 eq. 5.1 (the seed's choice, and the basis of the ASME curve).
-    #[default]
-    Grubin,
-    /// Dowson–Higginson minimum film.
-    DowsonHigginson,
-    /// Pan–Hamrock minimum film.
-    PanHamrock,
-}
-
-/// Lubricant at operating temperature, and EHD traction parameters (seed 000 §5, §9).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Lubricant {
-    /// η₀, absolute viscosity at operating temperature and ambient pressure, Pa·s.
-    pub viscosity_pa_s: f64,
-    /// α (seed's ζ), pressure-viscosity coefficient, 1/Pa.
-    pub pressure_viscosity_pa_inv: f64,
-    /// Lubricant density, kg/m³ (kinematic viscosity for the drag term).
-    pub density_kg_m3: f64,
-    /// Specific heat, J/(kg·K) (oil mass transport in the thermal network).
-    pub specific_heat_j_kg_k: f64,
-    /// τ_tr, transition shear stress of the Allen–Townsend–Zaretsky law, Pa.
-    pub transition_shear_stress_pa: f64,
-    /// μ_fl, limiting (pseudo) traction coefficient, dimensionless.
-    pub limiting_traction_coefficient: f64,
-    /// Constant traction coefficient in lost-lubrication mode, dimensionless.
-    pub lost_lubrication_traction_coefficient: f64,
-    /// Film formula.
-    pub film_model: FilmModel,
-}
-
-/// RMS surface finishes (seed 000 eq. 6.7), m.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Surfaces {
-    pub roller_rms_m: f64,
-    pub inner_rms_m: f64,
-    pub outer_rms_m: f64,
-}
-
-/// Which life-adjustment method is used for lubrication.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum LifeMethod {
-    /// Seed 000 §6.1: ASME (1971) lubrication factor, extended down to Λ = 0.1.
-    #[default]
-    Asme,
-    /// ISO 281:2007 modified rating life a_ISO(κ, e_C·C_u/P).
-    Iso281,
-}
-
-/// Life factors (seed 000 §4.2, §6).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct LifeFactors {
-    /// ξ, basic dynamic capacity reduction factor (0.60–0.85 typical).
-    pub capacity_reduction: f64,
-    /// Material life-adjustment factor (§6.2).
-    pub material_factor: f64,
-    /// Stress-concentration factor applied to loaded edge laminae (§4.2, 1.5–2.0 typical).
-    pub edge_stress_factor: f64,
-    /// Lubrication adjustment method.
-    pub method: LifeMethod,
-    /// ISO 281 contamination factor e_C (0–1).
-    pub iso_contamination_factor: f64,
-    /// ISO 281 fatigue load limit C_u, N.
-    pub iso_fatigue_load_limit_n: f64,
-    /// ISO 281 reference kinematic viscosity ν₁ override, m²/s (0 = compute from n and d_m).
-    pub iso_reference_viscosity_m2_s: f64,
-}
-
-/// Which ring guides the cage.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum GuidingRing {
-    Inner,
-    #[default]
-    Outer,
-}
-
-/// Cage rails (seed 000 §9.3) and drag factor (§9.4).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Cage {
-    /// W_cr, total width of the cage rails, m.
-    pub rail_width_m: f64,
-    /// D_cr, mean rail/land interface diameter, m.
-    pub mean_diameter_m: f64,
-    /// dc_cr, diametral clearance between lands and rails, m.
-    pub diametral_clearance_m: f64,
-    /// Guiding ring.
-    pub guided_by: GuidingRing,
-    /// Ψ (seed's f₀), viscous-drag factor of eq. 9.5 (5 for spherical roller bearings in oil bath).
-    pub drag_factor: f64,
-    /// Cage mass, kg (informational; thermal capacity of the cage node).
-    pub mass_kg: f64,
 }
 
 /// Which speeds set the centrifugal force and gyroscopic moment (seed 000 §3, §7).

@@ -41,12 +41,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::error::ThermalError;
-use super::network::{
+use crate::thermal::error::ThermalError;
+use crate::thermal::network::{
     capacity_from_material, HeatMechanism, Link, LinkKind, Network, Node, NodeRole,
     DEFAULT_ROLLER_HEAT_FRACTION,
 };
-use super::transient::{Integrator, Scenario, TransientSettings};
+use crate::thermal::transient::{Integrator, Scenario, TransientSettings};
 
 /// Unit system of a `[thermal]` section.
 ///

@@ -21,7 +21,7 @@
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
 
-use crate::model::FilmModel;
+use crate::bearings::spherical_roller::FilmModel;
 
 /// One lamina's EHD inputs, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,7 +37,7 @@ pub struct FilmInputs {
     pub reduced_radius_m: f64,
     /// w = Q/(lamina width), load per unit length, N/m.
     pub load_per_length_n_m: f64,
-    /// E′ = 2E*, Pa (`hertz::effective_modulus`).
+    /// E′ = 2E*, Pa (`line::effective_modulus`).
     pub effective_modulus_pa: f64,
 }
 

@@ -35,9 +35,9 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::model::Bearing;
-use crate::solve::pipeline::{self, Analysis, Request};
-use crate::solve::SolveError;
+use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use crate::bearings::spherical_roller::Bearing;
+use crate::bearings::SolveError;
 use crate::thermal::ThermalModel;
 
 /// Laminae of the grid (Γ).

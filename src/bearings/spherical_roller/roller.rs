@@ -1,7 +1,7 @@
 //! Roller volume, mass and moments of inertia by integrating the crowned profile
 //! (seed 000 App. A–B).
 
-use super::bearing::Geometry;
+use super::input::Geometry;
 
 /// Mass properties of one roller, SI.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -73,7 +73,7 @@ pub fn roller_mass(geometry: &Geometry, density_kg_m3: f64) -> RollerMass {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     fn geom(d: f64, l: f64, r0: f64) -> Geometry {
         let mut g = Bearing::example_aerospace().geometry;

@@ -13,16 +13,16 @@
 
 use serde::Serialize;
 
-use crate::model::film::{self, FilmInputs};
-use crate::model::heat;
-use crate::model::hertz::{self, Elastic};
-use crate::model::kinematics::{self, ContactPointPair};
-use crate::model::lamina_law;
-use crate::model::life;
-use crate::model::subsurface;
-use crate::model::{Bearing, Material};
-use crate::solve::load_distribution::{self, DynamicSpeeds, SolveOptions};
-use crate::solve::pipeline::{self, Request};
+use crate::bearings::spherical_roller::load_distribution::{self, DynamicSpeeds, SolveOptions};
+use crate::bearings::spherical_roller::pipeline::{self, Request};
+use crate::bearings::spherical_roller::{Bearing, Material};
+use crate::physics::contact::lamina_law;
+use crate::physics::contact::line::{self, Elastic};
+use crate::physics::contact::subsurface;
+use crate::physics::heat;
+use crate::physics::kinematics::{self, ContactPointPair};
+use crate::physics::life;
+use crate::physics::lubrication::film::{self, FilmInputs};
 use crate::thermal::{
     self, HeatMechanism, Integrator, Link, Network, Node, Scenario, TransientSettings,
 };
@@ -123,7 +123,7 @@ fn straight_rollers_at_rest(b: &mut Bearing, crown_m: f64) {
 pub fn make_cylindrical_radial(b: &mut Bearing, laminae: usize) {
     straight_rollers_at_rest(b, 1.0);
     b.solver.laminae = laminae;
-    b.solver.slicing = crate::model::Slicing::Uniform;
+    b.solver.slicing = crate::bearings::spherical_roller::Slicing::Uniform;
 }
 
 fn stribeck_cases(out: &mut Vec<Case>) {
@@ -194,8 +194,8 @@ fn contact_cases(out: &mut Vec<Case>) {
         youngs_modulus_pa: 206e9,
         poisson_ratio: 0.3,
     };
-    let e_star = hertz::reduced_modulus(steel, steel);
-    let lc = hertz::line_contact_reduced(104_167.0, 4.2308e-3, e_star);
+    let e_star = line::reduced_modulus(steel, steel);
+    let lc = line::line_contact_reduced(104_167.0, 4.2308e-3, e_star);
     let src = "Johnson 1985 §4.2; references.md worked number";
     out.push(case(
         "Hertz half-width b, µm",
@@ -399,7 +399,7 @@ fn life_cases(out: &mut Vec<Case>) {
         "round-off only",
     ));
     // Lundberg–Palmgren capacity: SI constant 552 (N, mm) against 49 500 (lbf, in).
-    let g = life::CapacityGeometry::from_geometry(&Bearing::example_aerospace().geometry);
+    let g = Bearing::example_aerospace().geometry.capacity_geometry();
     let (d_in, l_in) = (g.roller_diameter_m / IN, g.effective_length_m / IN);
     let inch = life::CAPACITY_CONSTANT_LBF_IN * 0.75 * (1.0 - g.theta).powf(29.0 / 27.0)
         / (1.0 + g.theta).powf(0.25)
@@ -555,7 +555,7 @@ fn axial_cases(out: &mut Vec<Case>) {
 /// which is the equal laminae's own slicing error (their axial deflection still moves
 /// 0.14 % from Γ = 400 to 801).
 fn slicing_cases(out: &mut Vec<Case>) {
-    let run = |slicing: crate::model::Slicing, laminae: usize| {
+    let run = |slicing: crate::bearings::spherical_roller::Slicing, laminae: usize| {
         let mut b = Bearing::example_aerospace();
         b.solver.slicing = slicing;
         b.solver.laminae = laminae;
@@ -573,8 +573,8 @@ fn slicing_cases(out: &mut Vec<Case>) {
             Err(_) => [f64::NAN; 4],
         }
     };
-    let equal = run(crate::model::Slicing::Uniform, 801);
-    let cosine = run(crate::model::Slicing::Cosine, 201);
+    let equal = run(crate::bearings::spherical_roller::Slicing::Uniform, 801);
+    let cosine = run(crate::bearings::spherical_roller::Slicing::Cosine, 201);
     let rows = [
         ("axial ring deflection, m", 5e-3),
         ("total heat, W", 2e-3),

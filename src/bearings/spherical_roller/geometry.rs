@@ -13,7 +13,7 @@
 //! that distance. Ring and roller displacements move centres and points rigidly, so the
 //! initial clearances of eq. 3.4 come out of the geometry by themselves.
 
-use super::bearing::Geometry;
+use super::input::Geometry;
 
 /// 2-vector in the (x, r) roller plane, m.
 pub type V2 = [f64; 2];
@@ -96,11 +96,11 @@ pub struct LaminaGeometry {
 impl LaminaGeometry {
     /// Build the lamina geometry for `laminae` slices of the effective length.
     pub fn new(g: &Geometry, laminae: usize) -> Self {
-        Self::with_slicing(g, laminae, super::bearing::Slicing::Uniform)
+        Self::with_slicing(g, laminae, super::input::Slicing::Uniform)
     }
 
     /// Build the lamina geometry with the chosen spacing.
-    pub fn with_slicing(g: &Geometry, laminae: usize, slicing: super::bearing::Slicing) -> Self {
+    pub fn with_slicing(g: &Geometry, laminae: usize, slicing: super::input::Slicing) -> Self {
         let beta = g.contact_angle_rad;
         let n = [beta.sin(), beta.cos()];
         let a = [beta.cos(), -beta.sin()];
@@ -112,8 +112,8 @@ impl LaminaGeometry {
         // Lamina boundaries along the roller axis.
         let bounds: Vec<f64> = (0..=count)
             .map(|k| match slicing {
-                super::bearing::Slicing::Uniform => -half_l + w * k as f64,
-                super::bearing::Slicing::Cosine => {
+                super::input::Slicing::Uniform => -half_l + w * k as f64,
+                super::input::Slicing::Cosine => {
                     -half_l * (std::f64::consts::PI * k as f64 / count as f64).cos()
                 }
             })
@@ -126,12 +126,12 @@ impl LaminaGeometry {
                 // in general the lamina's mid-point.
                 let (lo, hi) = (bounds[l], bounds[l + 1]);
                 let d = match slicing {
-                    super::bearing::Slicing::Uniform => w * (l as f64 - 0.5 * (count as f64 - 1.0)),
-                    super::bearing::Slicing::Cosine => 0.5 * (lo + hi),
+                    super::input::Slicing::Uniform => w * (l as f64 - 0.5 * (count as f64 - 1.0)),
+                    super::input::Slicing::Cosine => 0.5 * (lo + hi),
                 };
                 let width = match slicing {
-                    super::bearing::Slicing::Uniform => w,
-                    super::bearing::Slicing::Cosine => hi - lo,
+                    super::input::Slicing::Uniform => w,
+                    super::input::Slicing::Cosine => hi - lo,
                 };
                 let h = (r0 * r0 - d * d).max(0.0).sqrt();
                 // Outer side: crown centre at −sag·n, point at centre + h·n + d·a.
@@ -271,7 +271,7 @@ pub(crate) mod tests_support {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     #[test]
     fn clearances_follow_eq_3_4() {

@@ -11,7 +11,7 @@
 use serde::Serialize;
 
 use super::load_distribution::{LoadDistribution, RollerResult};
-use crate::model::Bearing;
+use crate::bearings::spherical_roller::Bearing;
 
 /// Contact state of one lamina at one raceway.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -120,7 +120,7 @@ fn roller_contacts(b: &Bearing, r: &RollerResult) -> RollerContacts {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solve::load_distribution::solved_at_rest;
+    use crate::bearings::spherical_roller::load_distribution::solved_at_rest;
 
     #[test]
     fn radii_match_nominal_geometry() {

@@ -407,7 +407,7 @@ mod load_peak_tests {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     const RPM: f64 = std::f64::consts::PI / 30.0;
 

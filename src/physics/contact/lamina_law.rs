@@ -10,7 +10,7 @@
 //! the slicing used by ISO/TS 16281. The exponent is the exact 10/9 (the seed's 1.11 is
 //! its rounding).
 
-use super::bearing::Material;
+use crate::physics::material::Material;
 
 /// Palmgren's constant in inch–pound units: δ[in] = C·Q[lbf]^0.9/L[in]^0.8 (eq. E.1).
 pub const PALMGREN_IN_LBF: f64 = 4.36e-7;

@@ -11,9 +11,9 @@ use super::load_distribution::{
     self, DynamicSpeeds, LoadDistribution, SolveOptions, SolveStats, TraceStep, WarmStart,
 };
 use super::stages::{self, Films, Friction, Life, Speeds, Stresses};
-use super::SolveError;
-use crate::model::kinematics::InternalSpeeds;
-use crate::model::{Bearing, DynamicLoads};
+use crate::bearings::spherical_roller::{Bearing, DynamicLoads};
+use crate::bearings::SolveError;
+use crate::physics::kinematics::InternalSpeeds;
 use crate::thermal::{self, HeatInput, SteadyResult, ThermalModel, TransientResult};
 
 /// What the caller needs computed.
@@ -157,24 +157,24 @@ struct LoadStage {
 /// upstream stage's) reuses its cached output.
 #[derive(Debug, Clone, PartialEq)]
 struct LoadKey {
-    geometry: crate::model::Geometry,
-    materials: crate::model::Materials,
-    operating: crate::model::Operating,
-    solver: crate::model::SolverSettings,
+    geometry: crate::bearings::spherical_roller::Geometry,
+    materials: crate::bearings::spherical_roller::Materials,
+    operating: crate::bearings::spherical_roller::Operating,
+    solver: crate::bearings::spherical_roller::SolverSettings,
     trace_roller: Option<usize>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
 struct ContactKey {
-    lubricant: crate::model::Lubricant,
-    surfaces: crate::model::Surfaces,
-    life: crate::model::LifeFactors,
+    lubricant: crate::bearings::spherical_roller::Lubricant,
+    surfaces: crate::bearings::spherical_roller::Surfaces,
+    life: crate::bearings::spherical_roller::LifeFactors,
 }
 
 #[derive(Debug, Clone, PartialEq)]
 struct FrictionKey {
-    lubricant: crate::model::Lubricant,
-    cage: crate::model::Cage,
+    lubricant: crate::bearings::spherical_roller::Lubricant,
+    cage: crate::bearings::spherical_roller::Cage,
 }
 
 /// An incremental pipeline: caches each stage's output with the inputs it read.

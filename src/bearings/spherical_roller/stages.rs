@@ -6,14 +6,14 @@ use serde::Serialize;
 
 use super::contacts::{LaminaContact, RollerContacts};
 use super::load_distribution::{DynamicSpeeds, LoadDistribution, RollerResult};
-use crate::model::film::{self, FilmInputs};
-use crate::model::heat::{self, HeatBreakdown};
-use crate::model::hertz::{self, Elastic, LineContact};
-use crate::model::kinematics::{self, ContactPointPair, InternalSpeeds};
-use crate::model::life::{self, CapacityGeometry, LifeInputs, LifeResult};
-use crate::model::subsurface::{self, SubsurfaceStress};
-use crate::model::traction::{self, TractionModel};
-use crate::model::{Bearing, Material};
+use crate::bearings::spherical_roller::{Bearing, Material};
+use crate::physics::contact::line::{self, Elastic, LineContact};
+use crate::physics::contact::subsurface::{self, SubsurfaceStress};
+use crate::physics::heat::{self, HeatBreakdown};
+use crate::physics::kinematics::{self, ContactPointPair, InternalSpeeds};
+use crate::physics::life::{self, LifeInputs, LifeResult};
+use crate::physics::lubrication::film::{self, FilmInputs};
+use crate::physics::lubrication::traction::{self, TractionModel};
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
 
@@ -28,8 +28,8 @@ fn elastic(m: &Material) -> Elastic {
 fn reduced_moduli(b: &Bearing) -> [f64; 2] {
     let r = elastic(&b.materials.roller);
     [
-        hertz::reduced_modulus(r, elastic(&b.materials.inner_ring)),
-        hertz::reduced_modulus(r, elastic(&b.materials.outer_ring)),
+        line::reduced_modulus(r, elastic(&b.materials.inner_ring)),
+        line::reduced_modulus(r, elastic(&b.materials.outer_ring)),
     ]
 }
 
@@ -97,7 +97,7 @@ pub fn stresses(b: &Bearing, ld: &LoadDistribution, contacts: &[RollerContacts])
                 for k in 0..2 {
                     let c = &pair[k];
                     if c.load_n > 0.0 && c.width_m > 0.0 {
-                        let mut lc = hertz::line_contact_reduced(
+                        let mut lc = line::line_contact_reduced(
                             c.line_load_n_m(),
                             c.reduced_radius_m,
                             e_star[k],
@@ -177,7 +177,7 @@ pub struct Speeds {
     /// Number of rollers loaded at both raceways (Z_eff, eq. 7.7).
     pub controlling_rollers: usize,
     /// Which speeds set the dynamic loads of the reported load distribution.
-    pub dynamic_loads: crate::model::DynamicLoads,
+    pub dynamic_loads: crate::bearings::spherical_roller::DynamicLoads,
     /// Dynamic-load iterations (1 = App. C only).
     pub iterations: usize,
     /// Relative difference of §7's cage speed from App. C's estimate.
@@ -431,7 +431,7 @@ pub fn life(b: &Bearing, ld: &LoadDistribution, films: &Films) -> Life {
     let result = life::bearing_life(&LifeInputs {
         inner_equivalent_loads_n: &inner,
         outer_equivalent_loads_n: &outer,
-        geometry: CapacityGeometry::from_geometry(&b.geometry),
+        geometry: b.geometry.capacity_geometry(),
         rotating: life::rotating_raceway(w1, w2),
         relative_speed_rad_s: (w1 - w2).abs(),
         lambda_inner: films.lambda_inner,
@@ -476,12 +476,12 @@ fn heat_breakdown(
     b: &Bearing,
     contact_w: [f64; 2],
     speeds: &InternalSpeeds,
-) -> Result<HeatBreakdown, super::SolveError> {
+) -> Result<HeatBreakdown, crate::bearings::SolveError> {
     let ring_w = [b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s];
     let lub = &b.lubricant;
     let wc = speeds.cage_speed_rad_s;
     let cage = heat::cage_rail_power_for(&b.cage, lub.viscosity_pa_s, ring_w[0], ring_w[1], wc)
-        .map_err(|e| super::SolveError::Stage {
+        .map_err(|e| crate::bearings::SolveError::Stage {
             stage: "cage rail heat (eq. 9.3-9.4)",
             message: e.to_string(),
         })?;
@@ -507,7 +507,7 @@ pub fn with_cage(
     b: &Bearing,
     fr: &Friction,
     speeds: &InternalSpeeds,
-) -> Result<Friction, super::SolveError> {
+) -> Result<Friction, crate::bearings::SolveError> {
     let contact_w = fr
         .roller_heat_w
         .iter()
@@ -528,7 +528,7 @@ pub fn friction(
     films: &Films,
     speeds: &InternalSpeeds,
     lost_lubrication: bool,
-) -> Result<Friction, super::SolveError> {
+) -> Result<Friction, crate::bearings::SolveError> {
     let spin = spins(b, speeds);
     let wc = speeds.cage_speed_rad_s;
     let ring_w = [b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s];

@@ -29,11 +29,11 @@ use std::time::Instant;
 use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 use serde::Serialize;
 
-use super::SolveError;
-use crate::model::geometry::{Approach, LaminaGeometry};
-use crate::model::lamina_law::LaminaLaw;
-use crate::model::roller::{roller_mass, RollerMass};
-use crate::model::Bearing;
+use crate::bearings::spherical_roller::geometry::{Approach, LaminaGeometry};
+use crate::bearings::spherical_roller::roller::{roller_mass, RollerMass};
+use crate::bearings::spherical_roller::Bearing;
+use crate::bearings::SolveError;
+use crate::physics::contact::lamina_law::LaminaLaw;
 
 /// Speeds that set the dynamic loads: cage orbit and roller spin relative to the cage (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -47,7 +47,7 @@ pub struct DynamicSpeeds {
 impl DynamicSpeeds {
     /// App. C's first estimate (eq. C.1–C.2): no slip, contact at the design angle.
     pub fn app_c_estimate(b: &Bearing) -> Self {
-        use crate::model::kinematics::{cage_speed_estimate, roller_spin_estimate};
+        use crate::physics::kinematics::{cage_speed_estimate, roller_spin_estimate};
         let theta = b.geometry.theta();
         let (w1, w2) = (b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s);
         DynamicSpeeds {
@@ -314,7 +314,7 @@ impl Accumulator {
         let (n, p) = (a.normal, a.point);
         let inv = a.inv_rho;
         // Lamina law Q = k·δ^(10/9), dQ/dδ, U = 9/19·Q·δ (eq. 3.3).
-        let d19 = crate::model::lamina_law::ninth_root(delta);
+        let d19 = crate::physics::contact::lamina_law::ninth_root(delta);
         let qq = stiffness * delta * d19;
         let dq = stiffness * (10.0 / 9.0) * d19;
         self.energy += qq * delta * (9.0 / 19.0);
@@ -476,11 +476,11 @@ impl Problem {
     /// matrix form of [`Problem::eval_reference`] (kept for the tests, which compare the two
     /// to round-off), with the symmetric blocks accumulated once, the inner and outer
     /// contacts specialised at compile time, and δ^(1/9) by the law's own
-    /// [`crate::model::lamina_law::ninth_root`].
+    /// [`crate::physics::contact::lamina_law::ninth_root`].
     fn eval(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>, hessian: bool) -> RollerEval {
         let g = &self.geom;
         self.evals.set(self.evals.get() + 2 * g.laminae.len());
-        let pitch = crate::model::geometry::Pitch::new(q[2]);
+        let pitch = crate::bearings::spherical_roller::geometry::Pitch::new(q[2]);
         let mut acc = Accumulator::default();
         let qa = [q[0], q[1], q[2]];
         let shift = [u[0], u[1] * cphi];
@@ -539,7 +539,7 @@ impl Problem {
         let g = &self.geom;
         let shift = [u[0], u[1] * cphi];
         let qa = [q[0], q[1], q[2]];
-        let pitch = crate::model::geometry::Pitch::new(q[2]);
+        let pitch = crate::bearings::spherical_roller::geometry::Pitch::new(q[2]);
         self.evals.set(self.evals.get() + 2 * g.laminae.len());
         for lam in &g.laminae {
             for inner in [true, false] {
@@ -827,14 +827,14 @@ impl Problem {
                 .laminae
                 .iter()
                 .map(|l| {
-                    let rest = crate::model::geometry::Pitch {
+                    let rest = crate::bearings::spherical_roller::geometry::Pitch {
                         sin: 0.0,
                         cos_minus_one: 0.0,
                     };
                     let a = self.geom.approach_with(l, inner, [0.0; 3], [0.0; 2], rest);
                     let c = (a.normal[0] * n[0] + a.normal[1] * n[1]).abs();
                     // c^(19/9) = c²·c^(1/9): the hot loop's root instead of a pow call.
-                    l.weight * c * c * crate::model::lamina_law::ninth_root(c)
+                    l.weight * c * c * crate::physics::contact::lamina_law::ninth_root(c)
                 })
                 .sum()
         };
@@ -856,7 +856,7 @@ impl Problem {
                 let d = m.dot(&Vector2::new(u[0], u[1])) - gap;
                 if d > 0.0 {
                     let x = d / c_pair;
-                    let x19 = crate::model::lamina_law::ninth_root(x);
+                    let x19 = crate::physics::contact::lamina_law::ninth_root(x);
                     let q = x * x19;
                     let dq = (10.0 / 9.0) * x19 / c_pair;
                     e += mult * (9.0 / 19.0) * q * d;
@@ -1368,7 +1368,7 @@ fn assemble(
         // as the solver's, through the same accumulator).
         let shift = [u[0], u[1] * cphi];
         let qa = [q[0], q[1], q[2]];
-        let pitch = crate::model::geometry::Pitch::new(q[2]);
+        let pitch = crate::bearings::spherical_roller::geometry::Pitch::new(q[2]);
         let mut acc = Accumulator::default();
         p.evals.set(p.evals.get() + 2 * g.laminae.len());
         let laminae: Vec<LaminaResult> = g
@@ -1512,10 +1512,10 @@ fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> Race
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     // The Stribeck bearing and NASA/TM-2012-217115's table live with the validation report.
-    use crate::validate::{stribeck_bearing, STRIBECK_TABLE};
+    use crate::verify::cases::{stribeck_bearing, STRIBECK_TABLE};
 
     fn run(b: &Bearing) -> LoadDistribution {
         let s = DynamicSpeeds::app_c_estimate(b);
@@ -1629,7 +1629,7 @@ mod tests {
         for laminae in [5, 21, 61] {
             let deck = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml");
             let mut b = crate::deck::Deck::load(deck).expect("shipped deck").bearing;
-            crate::validate::make_cylindrical_radial(&mut b, laminae);
+            crate::verify::cases::make_cylindrical_radial(&mut b, laminae);
             let r = run(&b);
             assert_eq!(r.stats.iterations, 0, "Γ = {laminae}");
             assert!(r.residuals.bearing_radial_n <= 1e-9 * b.operating.radial_load_n);

@@ -19,7 +19,7 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::model::{Cage, GuidingRing, Lubricant};
+use crate::physics::lubrication::Lubricant;
 
 /// Btu/hr per watt (International Table Btu): 1 W = 3.412141633 Btu/hr.
 pub const BTU_PER_HOUR_PER_WATT: f64 = 3.412_141_633;
@@ -253,7 +253,7 @@ impl HeatBreakdown {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::Bearing;
+    use crate::bearings::spherical_roller::Bearing;
 
     const IN: f64 = 0.0254;
     const LBF: f64 = 4.448_221_615_260_5;
@@ -396,4 +396,30 @@ mod tests {
         }
         assert!((h.total_btu_per_hour() - 200.0 * 3.412_141_633).abs() < 1e-12);
     }
+}
+
+/// Which ring guides the cage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum GuidingRing {
+    Inner,
+    #[default]
+    Outer,
+}
+
+/// Cage rails (seed 000 §9.3) and drag factor (§9.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Cage {
+    /// W_cr, total width of the cage rails, m.
+    pub rail_width_m: f64,
+    /// D_cr, mean rail/land interface diameter, m.
+    pub mean_diameter_m: f64,
+    /// dc_cr, diametral clearance between lands and rails, m.
+    pub diametral_clearance_m: f64,
+    /// Guiding ring.
+    pub guided_by: GuidingRing,
+    /// Ψ (seed's f₀), viscous-drag factor of eq. 9.5 (5 for spherical roller bearings in oil bath).
+    pub drag_factor: f64,
+    /// Cage mass, kg (informational; thermal capacity of the cage node).
+    pub mass_kg: f64,
 }

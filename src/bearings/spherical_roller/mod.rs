@@ -1,0 +1,13 @@
+//! The angular-contact spherical roller bearing by the SASHBEAN lamina method
+//! (A. K. Aggarwal, NASA CR-191182, 1993; seed 000): lamina load distribution with
+//! centrifugal and gyroscopic loads, stresses, EHD film, life, speeds, heat.
+
+pub mod contacts;
+pub mod geometry;
+pub mod input;
+pub mod load_distribution;
+pub mod pipeline;
+pub mod roller;
+pub mod stages;
+
+pub use input::*;

@@ -1,0 +1,18 @@
+//! Shared physics: knows no bearing system. SI units throughout.
+//!
+//! Contact mechanics (`contact`: line and point Hertz, the lamina load law, subsurface
+//! stresses), lubrication (`lubrication`: film thickness and traction), fatigue life
+//! (`life`, capacity geometry passed in), heat sources (`heat`), rolling-element
+//! kinematics (`kinematics`) and materials. Bearing systems (`crate::bearings`) compose
+//! these; nothing here imports a bearing system, the deck, a report or the UI.
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+
+pub mod contact;
+pub mod heat;
+pub mod kinematics;
+pub mod life;
+pub mod lubrication;
+pub mod material;
