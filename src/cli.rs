@@ -45,6 +45,9 @@ pub enum Command {
         /// Unit system of the template.
         #[arg(long, value_enum, default_value_t = UnitsArg::Us)]
         units: UnitsArg,
+        /// Bearing system (the deck's `type`).
+        #[arg(long = "type", value_name = "TYPE", default_value = crate::bearings::DEFAULT_SYSTEM)]
+        r#type: String,
     },
     /// Run every reference case through the library and print the validation table; exit 1 if any fails.
     Validate {
@@ -86,39 +89,14 @@ pub enum UnitsArg {
 
 /// Load a deck from a path (or the embedded default) and apply `--set` overrides.
 pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::Deck, String> {
-    let mut deck = match path {
-        Some(p) => crate::deck::Deck::load(p).map_err(|e| e.to_string())?,
-        None => {
-            crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml (embedded)")
-                .map_err(|e| e.to_string())?
-        }
-    };
-    for s in sets {
-        let Some((k, v)) = s.split_once('=') else {
-            return Err(format!(
-                "--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"
-            ));
-        };
-        deck.set(k.trim(), v.trim())
-            .map_err(|e| format!("--set {s}: {e}"))?;
-    }
-    Ok(deck)
+    crate::deck::Deck::load_with_overrides(path, sets)
 }
 
 /// The thermal network of a deck's `[thermal]` section, if any (errors name node, link, field).
 pub fn thermal_model(
     deck: &crate::deck::Deck,
 ) -> Result<Option<crate::thermal::ThermalModel>, String> {
-    let units = match deck.units {
-        crate::deck::Units::Si => crate::thermal::ThermalUnits::Si,
-        crate::deck::Units::Us => crate::thermal::ThermalUnits::Us,
-    };
-    match &deck.thermal {
-        None => Ok(None),
-        Some(t) => crate::thermal::parse_thermal(t, units)
-            .map(Some)
-            .map_err(|e| format!("{}: [thermal]: {e}", deck.source_name())),
-    }
+    deck.thermal_model().map_err(|e| e.to_string())
 }
 
 /// Write `text` to `path` atomically (temporary file in the same directory, then rename).

@@ -3,19 +3,24 @@
 
 use std::process::ExitCode;
 
-use clap::Parser;
-use rollbench::bearings::spherical_roller::pipeline::{self, Request};
-use rollbench::cli::{
-    load_deck, thermal_model, write_atomic, Cli, Command, Format, TableFormat, UnitsArg,
-};
-use rollbench::deck::Units;
-use rollbench::report::{self, ReportUnits};
+use std::path::Path;
 
-fn report_units(u: Units) -> ReportUnits {
-    match u {
-        Units::Si => ReportUnits::Si,
-        Units::Us => ReportUnits::Us,
-    }
+use clap::Parser;
+use rollbench::bearings::{self, Case, RunOptions};
+use rollbench::cli::{load_deck, write_atomic, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::deck::{self, Units};
+use rollbench::numerics::cancel::Cancel;
+use rollbench::report;
+
+/// Reads the deck at `path`, finds its bearing system by `type`, and has that system
+/// parse it with the `--set` overrides.
+fn load_case(path: &Path, overrides: &[String]) -> Result<Box<dyn Case>, String> {
+    let text = deck::read_deck_text(path).map_err(|e| e.to_string())?;
+    let name = path.display().to_string();
+    let system = deck::system_of(&text, &name).map_err(|e| e.to_string())?;
+    system
+        .load(&text, &name, overrides)
+        .map_err(|e| e.to_string())
 }
 
 fn main() -> ExitCode {
@@ -46,32 +51,29 @@ fn main() -> ExitCode {
             output,
             no_transient,
         }) => {
-            let (deck, thermal) = match load_deck(Some(&deck), &cli.set)
-                .and_then(|d| thermal_model(&d).map(|t| (d, t)))
-            {
-                Ok(d) => d,
+            let case = match load_case(&deck, &cli.set) {
+                Ok(c) => c,
                 Err(e) => {
                     eprintln!("{e}");
                     return ExitCode::from(1);
                 }
             };
-            let request = Request {
-                thermal_transient: !no_transient,
-                ..Request::default()
+            let options = RunOptions {
+                skip_transient: no_transient,
             };
-            let analysis =
-                match pipeline::run_with_thermal(&deck.bearing, thermal.as_ref(), &request, None) {
-                    Ok(a) => a,
-                    Err(e) => {
-                        eprintln!("solve failed: {e}");
-                        return ExitCode::from(2);
-                    }
-                };
-            let text = match format {
-                Format::Text => report::text::to_string(&analysis, report_units(deck.units)),
-                Format::Json => report::json::to_string(&analysis) + "\n",
-                Format::Csv => report::csv::to_string(&analysis),
+            let solution = match case.solve(options, Cancel::NONE) {
+                Ok(s) => s,
+                Err(e) => {
+                    eprintln!("solve failed: {e}");
+                    return ExitCode::from(2);
+                }
             };
+            let format = match format {
+                Format::Text => report::Format::Text,
+                Format::Json => report::Format::Json,
+                Format::Csv => report::Format::Csv,
+            };
+            let text = report::render(solution.as_ref(), format, case.units());
             match output {
                 Some(path) => {
                     if let Err(e) = write_atomic(&path, &text) {
@@ -83,25 +85,35 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
-        Some(Command::Check { deck }) => {
-            match load_deck(Some(&deck), &cli.set).and_then(|d| thermal_model(&d)) {
-                Ok(_) => {
-                    println!("{}: ok", deck.display());
-                    ExitCode::SUCCESS
-                }
-                Err(e) => {
-                    eprintln!("{e}");
-                    ExitCode::from(1)
-                }
+        Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
+            Ok(_) => {
+                println!("{}: ok", deck.display());
+                ExitCode::SUCCESS
             }
-        }
-        Some(Command::Template { units }) => {
+            Err(e) => {
+                eprintln!("{e}");
+                ExitCode::from(1)
+            }
+        },
+        Some(Command::Template { units, r#type }) => {
             let u = match units {
                 UnitsArg::Si => Units::Si,
                 UnitsArg::Us => Units::Us,
             };
-            print!("{}", rollbench::deck::template(u));
-            ExitCode::SUCCESS
+            match bearings::system(&r#type) {
+                Some(system) => {
+                    print!("{}", system.template(u));
+                    ExitCode::SUCCESS
+                }
+                None => {
+                    eprintln!(
+                        "--type {}: unknown bearing system (known: {})",
+                        r#type,
+                        bearings::known_types()
+                    );
+                    ExitCode::from(1)
+                }
+            }
         }
         Some(Command::Validate { format }) => {
             let cases = rollbench::verify::cases::cases();

@@ -106,6 +106,10 @@ pub enum Quantity {
     Time,
     /// Temperature: °F | °C, SI value in K (affine).
     Temperature,
+    /// Moment (torque): in·lbf | N·m.
+    Moment,
+    /// Power (heat rate): Btu/hr | W.
+    Power,
 }
 
 impl Quantity {
@@ -133,6 +137,8 @@ impl Quantity {
             (SpecificHeat, Units::Us) => BTU_J / (LBM_KG * FAHRENHEIT_DEGREE_K),
             (Conductivity, Units::Us) => BTU_J / (HOUR_S * FOOT_M * FAHRENHEIT_DEGREE_K),
             (Mass, Units::Us) => LBM_KG,
+            (Moment, Units::Us) => LBF_N * INCH_M,
+            (Power, Units::Us) => BTU_J / HOUR_S,
         }
     }
 
@@ -190,6 +196,10 @@ impl Quantity {
             (Mass, Units::Us) => "lbm",
             (Temperature, Units::Si) => "°C",
             (Temperature, Units::Us) => "°F",
+            (Moment, Units::Si) => "N·m",
+            (Moment, Units::Us) => "in·lbf",
+            (Power, Units::Si) => "W",
+            (Power, Units::Us) => "Btu/hr",
         }
     }
 }
@@ -208,7 +218,9 @@ pub fn celsius_to_fahrenheit(c: f64) -> f64 {
 mod tests {
     use super::*;
 
-    const ALL: [Quantity; 17] = [
+    const ALL: [Quantity; 19] = [
+        Quantity::Moment,
+        Quantity::Power,
         Quantity::Dimensionless,
         Quantity::Count,
         Quantity::Length,

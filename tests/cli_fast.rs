@@ -78,3 +78,72 @@ fn help_lists_validate_and_bench() {
         "{text}"
     );
 }
+
+/// `template --type` prints the named system's template (the default is the spherical
+/// roller) and refuses an unknown type, listing the known ones.
+#[test]
+fn template_type_selects_the_bearing_system() {
+    let default = rollbench()
+        .arg("template")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let typed = rollbench()
+        .args(["template", "--type", "spherical-roller"])
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(typed.status.code(), Some(0));
+    assert_eq!(default.stdout, typed.stdout);
+    let bad = rollbench()
+        .args(["template", "--type", "ball"])
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(bad.status.code(), Some(1));
+    let msg = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        msg.contains("unknown bearing system (known: \"spherical-roller\")"),
+        "{msg}"
+    );
+}
+
+/// The CSV report is the view's roller table: its header names the JSON roller fields,
+/// and every cell equals the JSON value of that roller (an independent path: JSON is the
+/// system's own report, CSV the system-independent table).
+#[test]
+fn csv_rows_equal_the_json_rollers() {
+    let run = |format: &str| {
+        let out = rollbench()
+            .args([
+                "run",
+                "decks/thrust.toml",
+                "--no-transient",
+                "--format",
+                format,
+            ])
+            .output()
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(out.status.code(), Some(0));
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let json: serde_json::Value =
+        serde_json::from_str(&run("json")).unwrap_or_else(|e| panic!("{e}"));
+    let csv = run("csv");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
+    let rollers = json["rollers"].as_array().cloned().unwrap_or_default();
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), rollers.len());
+    for (row, r) in rows.iter().zip(&rollers) {
+        for (key, cell) in header.iter().zip(row.split(',')) {
+            let v = match key.split_once('_') {
+                Some((race @ ("inner" | "outer"), field)) => &r[race][field],
+                _ => &r[*key],
+            };
+            let want = v.as_f64().unwrap_or_else(|| panic!("{key}: {v}"));
+            let got: f64 = cell.parse().unwrap_or_else(|e| panic!("{key} {cell}: {e}"));
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs(),
+                "{key}: {got} vs {want}"
+            );
+        }
+    }
+}

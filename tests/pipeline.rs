@@ -1,9 +1,9 @@
 //! Pipeline-level tests against independent references (issues 2–5).
 
 use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use rollbench::bearings::spherical_roller::report;
 use rollbench::deck::Deck;
 use rollbench::physics::contact::line;
-use rollbench::report;
 
 fn deck(name: &str) -> Deck {
     let path = format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"));

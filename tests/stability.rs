@@ -15,10 +15,10 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
 use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
+use rollbench::bearings::spherical_roller::report;
 use rollbench::bearings::spherical_roller::{Bearing, DynamicLoads, Material};
 use rollbench::deck::{write_bearing, Deck, Units};
 use rollbench::physics::life::{raceway_capacity, Raceway};
-use rollbench::report;
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 

@@ -126,6 +126,14 @@ pub enum DeckError {
         /// The rule broken, in words.
         rule: String,
     },
+    /// The `[thermal]` network is invalid (the message names node, link and field).
+    #[error("{source_name}: [thermal]: {message}")]
+    Thermal {
+        /// The deck's source name.
+        source_name: String,
+        /// What is wrong.
+        message: String,
+    },
     /// A key path given to `Deck::set`/`Deck::get` that cannot be edited.
     #[error("cannot set `{key}`: {reason}")]
     NotEditable {
@@ -146,7 +154,9 @@ impl DeckError {
             | DeckError::WrongType { location, .. }
             | DeckError::OutOfRange { location, .. }
             | DeckError::Invalid { location, .. } => Some(location),
-            DeckError::Io { .. } | DeckError::NotEditable { .. } => None,
+            DeckError::Io { .. } | DeckError::NotEditable { .. } | DeckError::Thermal { .. } => {
+                None
+            }
         }
     }
 
@@ -159,7 +169,7 @@ impl DeckError {
             | DeckError::OutOfRange { key, .. }
             | DeckError::Invalid { key, .. }
             | DeckError::NotEditable { key, .. } => Some(key),
-            DeckError::Io { .. } | DeckError::Syntax { .. } => None,
+            DeckError::Io { .. } | DeckError::Syntax { .. } | DeckError::Thermal { .. } => None,
         }
     }
 }

@@ -56,6 +56,20 @@ impl Deck {
     /// Parses and validates deck text; `source_name` (e.g. a file name) prefixes every
     /// error location. All errors found are returned together.
     pub fn parse(text: &str, source_name: &str) -> Result<Deck, DeckErrors> {
+        // A deck of another bearing system is not a spherical roller deck.
+        let system = system_of(text, source_name)?;
+        if system.id() != crate::bearings::spherical_roller::SYSTEM_ID {
+            return Err(DeckError::Invalid {
+                location: Location::start(source_name),
+                key: "type".into(),
+                value: format!("\"{}\"", system.id()),
+                rule: format!(
+                    "this deck reader reads \"{}\" decks",
+                    crate::bearings::spherical_roller::SYSTEM_ID
+                ),
+            }
+            .into());
+        }
         let parsed = validate::parse_text(text, source_name)?;
         let doc = text
             .parse::<DocumentMut>()
@@ -79,6 +93,56 @@ impl Deck {
         })?;
         let name = path.display().to_string();
         Deck::parse(&text, &name)
+    }
+
+    /// The deck at `path`, or the embedded aerospace deck when `path` is `None`, with the
+    /// command line's `key=value` overrides applied in order (deck units).
+    pub fn load_with_overrides(path: Option<&Path>, overrides: &[String]) -> Result<Deck, String> {
+        let mut deck = match path {
+            Some(p) => Deck::load(p).map_err(|e| e.to_string())?,
+            None => Deck::parse(DEFAULT_DECK, "decks/aerospace.toml (embedded)")
+                .map_err(|e| e.to_string())?,
+        };
+        deck.apply_overrides(overrides)?;
+        Ok(deck)
+    }
+
+    /// Applies the command line's `key=value` overrides in order (deck units); the error
+    /// names the override.
+    pub fn apply_overrides(&mut self, overrides: &[String]) -> Result<(), String> {
+        for s in overrides {
+            let Some((k, v)) = s.split_once('=') else {
+                return Err(format!(
+                    "--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"
+                ));
+            };
+            self.set(k.trim(), v.trim())
+                .map_err(|e| format!("--set {s}: {e}"))?;
+        }
+        Ok(())
+    }
+
+    /// The thermal network of the deck's `[thermal]` section, if any (errors name node,
+    /// link and field).
+    pub fn thermal_model(&self) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
+        match &self.thermal {
+            None => Ok(None),
+            Some(t) => thermal::parse_thermal(
+                t,
+                match self.units {
+                    Units::Si => thermal::ThermalUnits::Si,
+                    Units::Us => thermal::ThermalUnits::Us,
+                },
+            )
+            .map(Some)
+            .map_err(|e| {
+                DeckError::Thermal {
+                    source_name: self.source_name.clone(),
+                    message: e.to_string(),
+                }
+                .into()
+            }),
+        }
     }
 
     /// The source name given to [`Deck::parse`] (file path for [`Deck::load`]).
@@ -280,6 +344,71 @@ impl Deck {
     /// existing file untouched.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
         io::save_atomic(path.as_ref(), &self.to_toml_string()).map_err(DeckErrors::from)
+    }
+}
+
+/// Reads a deck file's text; errors name the file.
+pub fn read_deck_text(path: &Path) -> Result<String, DeckErrors> {
+    std::fs::read_to_string(path).map_err(|source| {
+        DeckError::Io {
+            path: path.to_path_buf(),
+            action: "cannot read deck",
+            source,
+        }
+        .into()
+    })
+}
+
+/// The bearing system a deck's top-level `type` names; a deck without `type` is a
+/// [`crate::bearings::DEFAULT_SYSTEM`] deck. A deck that is not valid TOML is handed to
+/// the default system's parser, whose message locates the syntax error.
+pub fn system_of(
+    text: &str,
+    source_name: &str,
+) -> Result<&'static dyn crate::bearings::BearingSystem, DeckErrors> {
+    use crate::bearings::{known_types, system, DEFAULT_SYSTEM};
+    let default = || {
+        system(DEFAULT_SYSTEM).ok_or_else(|| {
+            DeckErrors::from(DeckError::NotEditable {
+                key: "type".into(),
+                reason: "no default bearing system registered".into(),
+            })
+        })
+    };
+    let Ok(doc) = toml_edit::Document::parse(text) else {
+        return default();
+    };
+    let Some(item) = doc.as_table().get("type") else {
+        return default();
+    };
+    let location = item
+        .as_value()
+        .and_then(toml_edit::Value::span)
+        .map_or_else(
+            || Location::start(source_name),
+            |sp| Location::at(source_name, text, sp.start),
+        );
+    let value = item.as_value().map_or_else(
+        || "(a table)".to_string(),
+        |v| v.to_string().trim().to_string(),
+    );
+    match item.as_str() {
+        None => Err(DeckError::WrongType {
+            location,
+            key: "type".into(),
+            value,
+            expected: format!("a string, one of {}", known_types()),
+        }
+        .into()),
+        Some(id) => system(id).ok_or_else(|| {
+            DeckError::Invalid {
+                location,
+                key: "type".into(),
+                value,
+                rule: format!("unknown bearing system (known: {})", known_types()),
+            }
+            .into()
+        }),
     }
 }
 

@@ -501,3 +501,65 @@ fn save_is_atomic_and_keeps_backup() {
         "{e:?}"
     );
 }
+
+/// The deck `type` key: absent or "spherical-roller" reads the same bearing; an unknown
+/// system is refused at its line with the known systems listed; a non-string is a type
+/// error. (Redesign issue: `type` accepted and validated with a clear error.)
+#[test]
+fn deck_type_names_the_bearing_system() {
+    let plain = Deck::parse(DEFAULT_DECK, "a.toml").unwrap_or_else(|e| panic!("{e}"));
+    let typed_text = format!("type = \"spherical-roller\"\n{DEFAULT_DECK}");
+    let typed = Deck::parse(&typed_text, "a.toml").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(plain.bearing, typed.bearing);
+    let system = system_of(DEFAULT_DECK, "a.toml").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(system.id(), "spherical-roller");
+
+    let unknown = format!(
+        "{}\ntype = \"ball\"\n",
+        DEFAULT_DECK.lines().next().unwrap_or("")
+    );
+    let unknown = format!(
+        "{unknown}{}",
+        DEFAULT_DECK.split_once('\n').map_or("", |x| x.1)
+    );
+    let e = system_of(&unknown, "b.toml")
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(e.contains("b.toml:2:"), "{e}");
+    assert!(e.contains("type = \"ball\""), "{e}");
+    assert!(
+        e.contains("unknown bearing system (known: \"spherical-roller\")"),
+        "{e}"
+    );
+    // The spherical reader refuses it too, instead of ignoring the key.
+    assert!(Deck::parse(&unknown, "b.toml").is_err());
+
+    let wrong = format!("type = 3\n{DEFAULT_DECK}");
+    let e = system_of(&wrong, "c.toml")
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(e.contains("c.toml:1:") && e.contains("wrong type"), "{e}");
+}
+
+/// Every registered system's template parses back as that system, in both unit systems,
+/// and its embedded example deck loads through the registry.
+#[test]
+fn every_registered_system_reads_its_template_and_example() {
+    for system in crate::bearings::SYSTEMS {
+        for units in [Units::Si, Units::Us] {
+            let text = system.template(units);
+            let found = system_of(&text, "template").unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(found.id(), system.id());
+            let case = system
+                .load(&text, "template", &[])
+                .unwrap_or_else(|e| panic!("{}: {e}", system.id()));
+            assert_eq!(case.units(), units);
+        }
+        let case = system
+            .load(system.example_deck(), "example", &[])
+            .unwrap_or_else(|e| panic!("{}: {e}", system.id()));
+        assert_eq!(case.system().id(), system.id());
+    }
+}

@@ -125,7 +125,7 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
         valid: HashMap::new(),
     };
 
-    let mut top: Vec<&str> = vec!["units", "name"];
+    let mut top: Vec<&str> = vec!["type", "units", "name"];
     top.extend_from_slice(GROUPS);
     check_keys(&mut ctx, root, "", &top);
 

@@ -1,29 +1,34 @@
-//! CSV report: one row per roller, SI units in the header.
+//! CSV report: the first table of a view (one row per rolling element), SI units in the
+//! header.
 
-use crate::bearings::spherical_roller::pipeline::Analysis;
+use crate::bearings::view::{CsvStyle, View};
 
-/// CSV text with a header line.
-pub fn to_string(a: &Analysis) -> String {
-    let mut s = String::from(
-        "index,azimuth_deg,axial_displacement_m,radial_displacement_m,tilt_rad,centrifugal_force_n,gyroscopic_moment_nm,inner_normal_load_n,inner_contact_angle_deg,inner_loaded_laminae,outer_normal_load_n,outer_contact_angle_deg,outer_loaded_laminae\n",
-    );
-    for r in &a.load.rollers {
-        s.push_str(&format!(
-            "{},{},{:e},{:e},{:e},{:e},{:e},{:e},{},{},{:e},{},{}\n",
-            r.index,
-            r.azimuth_deg,
-            r.axial_displacement_m,
-            r.radial_displacement_m,
-            r.tilt_rad,
-            r.centrifugal_force_n,
-            r.gyroscopic_moment_nm,
-            r.inner.normal_load_n,
-            r.inner.contact_angle_deg,
-            r.inner.loaded_laminae,
-            r.outer.normal_load_n,
-            r.outer.contact_angle_deg,
-            r.outer.loaded_laminae
-        ));
+/// CSV text with a header line; empty cells where a stage was not run.
+pub fn to_string(view: &View) -> String {
+    let Some(t) = view.tables.first() else {
+        return String::new();
+    };
+    let mut s = t
+        .columns
+        .iter()
+        .map(|c| c.key)
+        .collect::<Vec<_>>()
+        .join(",");
+    s.push('\n');
+    for row in &t.rows {
+        let cells: Vec<String> = t
+            .columns
+            .iter()
+            .zip(row)
+            .map(|(c, v)| match (v, c.csv) {
+                (None, _) => String::new(),
+                (Some(v), CsvStyle::Integer) => format!("{}", v.round() as i64),
+                (Some(v), CsvStyle::Plain) => format!("{v}"),
+                (Some(v), CsvStyle::Scientific) => format!("{v:e}"),
+            })
+            .collect();
+        s.push_str(&cells.join(","));
+        s.push('\n');
     }
     s
 }

@@ -1,18 +1,40 @@
-//! Reports from an [`Analysis`]: JSON (SI, units in key names), text (SASHBEAN-like tables in
-//! the deck's unit system) and CSV (one row per roller).
-//!
-//! The JSON field names are a contract with scripts: fields are added, never renamed.
+//! Reports drawn from a solved bearing: JSON and text come from the bearing system
+//! (`Solution::json`, `Solution::text`, each built on the system's view), CSV from the
+//! system-independent [`View`] table. [`Disp`] holds the display units of a text report.
 
 pub mod csv;
-pub mod json;
-pub mod text;
 
-/// Unit system of a human-readable report.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum ReportUnits {
-    #[default]
-    Si,
-    Us,
+use crate::bearings::view::View;
+use crate::bearings::Solution;
+use crate::units::{Units, BTU_J, HOUR_S, INCH_M, LBF_N, PSI_PA};
+
+/// Report formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// Human-readable tables in the deck's unit system.
+    Text,
+    /// SI, units in key names.
+    Json,
+    /// One row per rolling element, SI units in the header.
+    Csv,
+}
+
+/// The report of `solution` in `format`; text in `units`.
+pub fn render(solution: &dyn Solution, format: Format, units: Units) -> String {
+    match format {
+        Format::Text => solution.text(units),
+        Format::Json => {
+            serde_json::to_string_pretty(&solution.json())
+                .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+                + "\n"
+        }
+        Format::Csv => csv::to_string(&solution.view()),
+    }
+}
+
+/// CSV of a view (see [`csv::to_string`]).
+pub fn csv_of(view: &View) -> String {
+    csv::to_string(view)
 }
 
 /// Display conversions for reports: (factor from SI, label).
@@ -28,9 +50,9 @@ pub struct Disp {
 
 impl Disp {
     /// The conversion set of `units`.
-    pub fn of(units: ReportUnits) -> Disp {
+    pub fn of(units: Units) -> Disp {
         match units {
-            ReportUnits::Si => Disp {
+            Units::Si => Disp {
                 len: (1e3, "mm"),
                 small_len: (1e6, "µm"),
                 force: (1.0, "N"),
@@ -38,13 +60,13 @@ impl Disp {
                 moment: (1.0, "N·m"),
                 power: (1.0, "W"),
             },
-            ReportUnits::Us => Disp {
-                len: (1.0 / 0.0254, "in"),
-                small_len: (1e6 / 0.0254, "µin"),
-                force: (1.0 / 4.448_221_615_260_5, "lbf"),
-                stress: (1.0 / 6_894.757_293_168_361 * 1e-3, "ksi"),
-                moment: (1.0 / (4.448_221_615_260_5 * 0.0254), "in·lbf"),
-                power: (3.412_141_633, "Btu/hr"),
+            Units::Us => Disp {
+                len: (1.0 / INCH_M, "in"),
+                small_len: (1e6 / INCH_M, "µin"),
+                force: (1.0 / LBF_N, "lbf"),
+                stress: (1.0 / PSI_PA * 1e-3, "ksi"),
+                moment: (1.0 / (LBF_N * INCH_M), "in·lbf"),
+                power: (HOUR_S / BTU_J, "Btu/hr"),
             },
         }
     }

@@ -157,7 +157,12 @@ impl DeckDoc {
         &self.deck
     }
 
-    /// Bearing name.
+    /// The deck's bearing system (its `type`).
+    pub fn system_id(&self) -> &'static str {
+        crate::bearings::spherical_roller::SYSTEM_ID
+    }
+
+    /// The deck's name.
     pub fn name(&self) -> &str {
         &self.deck.bearing.name
     }
@@ -169,7 +174,7 @@ impl DeckDoc {
 
     /// The deck's thermal network (None when absent or invalid; `check` reports why).
     pub fn thermal_model(&self) -> Option<crate::thermal::ThermalModel> {
-        crate::cli::thermal_model(&self.deck).ok().flatten()
+        self.deck.thermal_model().ok().flatten()
     }
 
     /// The deck as text (what a save writes).

@@ -118,27 +118,39 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         .and_then(|p| p.file_name())
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "(no file)".into());
-    let mut right = vec![Span::raw(file)];
-    if app.unsaved() {
-        right.push(Span::styled("[+]", Style::default().fg(Color::Yellow)));
-    }
-    if wide {
-        right.push(Span::raw(format!(" · {}", app.deck.name())));
-    }
-    right.push(Span::styled(
-        format!(" {} ", deck_io::units_label(app.display_units)),
-        Style::default().fg(Color::Black).bg(Color::Gray),
-    ));
-    let line = Line::from(right);
-    let w = (line.width() as u16).min(area.width);
     let used = if wide { 11 + 50 } else { 50 };
-    if area.width > used + w {
-        let r = Rect {
-            x: area.x + area.width - w,
-            width: w,
-            ..area
-        };
-        line.render(r, buf);
+    // Most to least informative; the first that fits is drawn (the system and the deck
+    // name are dropped before the file name, the unsaved mark and the units).
+    let details: Vec<String> = if wide {
+        vec![
+            format!(" · {} · {}", app.deck.name(), app.deck.system_id()),
+            format!(" · {}", app.deck.name()),
+            String::new(),
+        ]
+    } else {
+        vec![String::new()]
+    };
+    for detail in details {
+        let mut right = vec![Span::raw(file.clone())];
+        if app.unsaved() {
+            right.push(Span::styled("[+]", Style::default().fg(Color::Yellow)));
+        }
+        right.push(Span::raw(detail));
+        right.push(Span::styled(
+            format!(" {} ", deck_io::units_label(app.display_units)),
+            Style::default().fg(Color::Black).bg(Color::Gray),
+        ));
+        let line = Line::from(right);
+        let w = (line.width() as u16).min(area.width);
+        if area.width > used + w {
+            let r = Rect {
+                x: area.x + area.width - w,
+                width: w,
+                ..area
+            };
+            line.render(r, buf);
+            return;
+        }
     }
 }
 

@@ -179,53 +179,14 @@ pub fn roller_columns(u: Units) -> Vec<Column> {
 }
 
 /// One row per roller, same order as [`roller_columns`]; `—` for stages not yet solved.
-///
-/// Lead: when stresses, film, Λ, spin and heat land in `Analysis`, fill cells 6..=10 here.
+/// The values come joined per roller from the system's view
+/// ([`crate::bearings::spherical_roller::view::rollers`]); nothing is computed here.
 pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
-    a.load
-        .rollers
+    let opt = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or(DASH.to_string(), f);
+    crate::bearings::spherical_roller::view::rollers(a)
         .iter()
-        .enumerate()
-        .map(|(j, r)| {
-            let stress = a.stresses.as_ref().map_or(DASH.to_string(), |st| {
-                let m = st.rollers[j][0]
-                    .max_stress_pa
-                    .max(st.rollers[j][1].max_stress_pa);
-                fixed(stress(m, u), 0)
-            });
-            let film_min =
-                a.films
-                    .as_ref()
-                    .and_then(|f| match (f.min_film[j][0], f.min_film[j][1]) {
-                        (Some(x), Some(y)) => Some(x.min(y)),
-                        (x, y) => x.or(y),
-                    });
-            let film = film_min.map_or(DASH.to_string(), |h| fixed(film_thickness(h, u), 2));
-            let lambda = match (film_min, a.films.as_ref()) {
-                (Some(h), Some(_)) => {
-                    let s = &a.input.surfaces;
-                    let inner = crate::physics::lubrication::film::film_parameter(
-                        h,
-                        s.roller_rms_m,
-                        s.inner_rms_m,
-                    );
-                    let outer = crate::physics::lubrication::film::film_parameter(
-                        h,
-                        s.roller_rms_m,
-                        s.outer_rms_m,
-                    );
-                    fixed(inner.min(outer), 2)
-                }
-                _ => DASH.to_string(),
-            };
-            let spin = a
-                .speeds
-                .spin_rpm
-                .get(j)
-                .map_or(DASH.to_string(), |x| fixed(*x, 0));
-            let heat = a.friction.as_ref().map_or(DASH.to_string(), |f| {
-                fixed(f.roller_heat_w[j][0] + f.roller_heat_w[j][1], 1)
-            });
+        .map(|rv| {
+            let r = rv.roller;
             vec![
                 format!("{}", r.index),
                 fixed(r.azimuth_deg, 1),
@@ -233,11 +194,16 @@ pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
                 fixed(force(r.outer.normal_load_n, u), 1),
                 fixed(r.inner.contact_angle_deg, 2),
                 fixed(r.outer.contact_angle_deg, 2),
-                stress, // max of the two raceways' max Hertz stress (§4)
-                film,   // thinnest lamina film of the roller (§5)
-                lambda, // Λ of that film (eq. 6.8, conservative composite roughness)
-                spin,   // roller spin relative to the cage (§7)
-                heat,   // contact heat of the roller, both raceways (§9)
+                // max of the two raceways' max Hertz stress (§4)
+                opt(rv.max_stress_pa(), &|m| fixed(stress(m, u), 0)),
+                // thinnest lamina film of the roller (§5)
+                opt(rv.min_film_m(), &|h| fixed(film_thickness(h, u), 2)),
+                // Λ of that film (eq. 6.8, conservative composite roughness)
+                opt(rv.lambda, &|l| fixed(l, 2)),
+                // roller spin relative to the cage (§7)
+                opt(rv.spin_rpm, &|x| fixed(x, 0)),
+                // contact heat of the roller, both raceways (§9)
+                opt(rv.heat_w(), &|h| fixed(h, 1)),
             ]
         })
         .collect()
@@ -355,8 +321,6 @@ pub struct ThermalView {
 
 /// The thermal pane's data; `node` picks the node whose transient is plotted (`None`
 /// or out of range: the hottest).
-///
-/// Lead: when `Analysis` gains thermal steady/transient results, build the view here.
 pub fn thermal_view(a: &Analysis, u: Units, node: Option<usize>) -> Option<ThermalView> {
     let th = a.thermal.as_ref()?;
     let (conv, unit): (fn(f64) -> f64, &str) = match u {

@@ -689,7 +689,7 @@ fn thermal_cases(out: &mut Vec<Case>) {
     let balance = match crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml")
         .ok()
         .and_then(|d| {
-            let tm = crate::cli::thermal_model(&d).ok().flatten()?;
+            let tm = d.thermal_model().ok().flatten()?;
             pipeline::run_with_thermal(&d.bearing, Some(&tm), &Request::default(), None).ok()
         }) {
         Some(a) => a.thermal.map_or((f64::NAN, f64::NAN), |t| {

@@ -524,7 +524,10 @@ pub fn bench_decks(
         )
     };
     if let Some(p) = path {
-        return Ok(vec![(stem(p), crate::cli::load_deck(Some(p), sets)?)]);
+        return Ok(vec![(
+            stem(p),
+            crate::deck::Deck::load_with_overrides(Some(p), sets)?,
+        )]);
     }
     let mut paths: Vec<std::path::PathBuf> = std::fs::read_dir("decks")
         .map(|d| {
@@ -538,12 +541,17 @@ pub fn bench_decks(
     if paths.is_empty() {
         return Ok(vec![(
             "aerospace (embedded)".to_string(),
-            crate::cli::load_deck(None, sets)?,
+            crate::deck::Deck::load_with_overrides(None, sets)?,
         )]);
     }
     paths
         .iter()
-        .map(|p| Ok((stem(p), crate::cli::load_deck(Some(p), sets)?)))
+        .map(|p| {
+            Ok((
+                stem(p),
+                crate::deck::Deck::load_with_overrides(Some(p), sets)?,
+            ))
+        })
         .collect()
 }
 
@@ -557,7 +565,7 @@ pub fn bench_command(
     let decks = bench_decks(path, sets)?;
     let mut tables = Vec::with_capacity(decks.len());
     for (name, deck) in &decks {
-        let thermal = crate::cli::thermal_model(deck)?;
+        let thermal = deck.thermal_model().map_err(|e| e.to_string())?;
         let t = measure_grid(name, &deck.bearing, thermal.as_ref())
             .map_err(|e| format!("{name}: reference run failed: {e}"))?;
         tables.push(t);

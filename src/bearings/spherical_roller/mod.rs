@@ -7,7 +7,11 @@ pub mod geometry;
 pub mod input;
 pub mod load_distribution;
 pub mod pipeline;
+pub mod report;
 pub mod roller;
 pub mod stages;
+pub mod system;
+pub mod view;
 
 pub use input::*;
+pub use system::{SYSTEM, SYSTEM_ID};

@@ -1,9 +1,11 @@
 //! Lubrication shared by every bearing system: the lubricant and surface description,
-//! EHD film thickness (line contact: `film`) and traction (`traction`).
+//! EHD film thickness (line contact: `film`; elliptical point contact, Hamrock–Dowson:
+//! `film_point`) and traction (`traction`).
 
 use serde::{Deserialize, Serialize};
 
 pub mod film;
+pub mod film_point;
 pub mod traction;
 
 /// Which film-thickness formula the EHD stage uses.

@@ -2,11 +2,12 @@
 
 use std::fmt::Write;
 
-use super::{Disp, ReportUnits};
 use crate::bearings::spherical_roller::pipeline::Analysis;
+use crate::report::Disp;
+use crate::units::Units;
 
 /// Human-readable report in `units`.
-pub fn to_string(a: &Analysis, units: ReportUnits) -> String {
+pub fn to_string(a: &Analysis, units: Units) -> String {
     let d = Disp::of(units);
     let ld = &a.load;
     let b = &a.input;
@@ -188,8 +189,8 @@ pub fn to_string(a: &Analysis, units: ReportUnits) -> String {
     }
     if let Some(th) = &a.thermal {
         let temp = |c: f64| match units {
-            ReportUnits::Si => format!("{c:.1} °C"),
-            ReportUnits::Us => format!("{:.1} °F", c * 1.8 + 32.0),
+            Units::Si => format!("{c:.1} °C"),
+            Units::Us => format!("{:.1} °F", c * 1.8 + 32.0),
         };
         let _ = writeln!(s);
         let _ = writeln!(

@@ -1,0 +1,288 @@
+//! The spherical roller bearing's view: every stage's per-roller results joined once, by
+//! roller, here. The JSON, text and CSV reports and the workbench's panes read these rows
+//! and never index the stages' arrays themselves.
+
+use super::load_distribution::{LaminaResult, RacewayContact, RollerResult};
+use super::pipeline::Analysis;
+use super::stages::{LaminaFriction, RacewayStress};
+use crate::bearings::view::{Column, CsvStyle, KeyOutput, KeyRole, Table, View};
+use crate::physics::contact::line::LineContact;
+use crate::physics::lubrication::film;
+use crate::units::Quantity;
+
+/// One raceway contact of one roller with what each stage found there (`None`: the stage
+/// was not run for this analysis).
+#[derive(Debug, Clone, Copy)]
+pub struct ContactView<'a> {
+    /// §3 load, angle and loaded laminae.
+    pub load: &'a RacewayContact,
+    /// §4 stresses, ellipse and subsurface shear.
+    pub stress: Option<&'a RacewayStress>,
+    /// §5 thinnest lamina film, m (`Some(None)`: no lamina loaded).
+    pub min_film_m: Option<Option<f64>>,
+    /// §6 equivalent roller load P_e (eq. 6.1), N.
+    pub equivalent_load_n: Option<f64>,
+    /// §9 contact heat, W.
+    pub heat_w: Option<f64>,
+}
+
+/// One lamina of one roller with what each stage found there.
+#[derive(Debug, Clone, Copy)]
+pub struct LaminaView<'a> {
+    /// §3 lamina loads, approaches and contact points.
+    pub load: &'a LaminaResult,
+    /// §4 Hertz strip per raceway `[inner, outer]`.
+    pub hertz: Option<&'a [LineContact; 2]>,
+    /// §5 film per raceway, m.
+    pub film_m: Option<[Option<f64>; 2]>,
+    /// §8–9 sliding, traction and heat per raceway.
+    pub friction: Option<&'a [LaminaFriction; 2]>,
+}
+
+/// One roller: its equilibrium and every stage's results at its two contacts.
+#[derive(Debug, Clone)]
+pub struct RollerView<'a> {
+    /// §3 displacements, forces and moments.
+    pub roller: &'a RollerResult,
+    /// Spin relative to the cage, rpm (§7).
+    pub spin_rpm: Option<f64>,
+    /// Inner and outer raceway contacts.
+    pub contacts: [ContactView<'a>; 2],
+    /// Λ of the roller's thinnest film against the rougher raceway (eq. 6.8, composite
+    /// roughness of the roller and that raceway); `None` without a film stage or a
+    /// loaded lamina.
+    pub lambda: Option<f64>,
+    /// Laminae, in order along the roller.
+    pub laminae: Vec<LaminaView<'a>>,
+}
+
+impl RollerView<'_> {
+    /// The larger of the two raceways' max contact stress (edge laminae included), Pa.
+    pub fn max_stress_pa(&self) -> Option<f64> {
+        let [i, o] = &self.contacts;
+        Some(i.stress?.max_stress_pa.max(o.stress?.max_stress_pa))
+    }
+
+    /// The roller's thinnest film at either raceway, m.
+    pub fn min_film_m(&self) -> Option<f64> {
+        let [i, o] = &self.contacts;
+        match (i.min_film_m?, o.min_film_m?) {
+            (Some(x), Some(y)) => Some(x.min(y)),
+            (x, y) => x.or(y),
+        }
+    }
+
+    /// Contact heat of the roller at both raceways, W.
+    pub fn heat_w(&self) -> Option<f64> {
+        let [i, o] = &self.contacts;
+        Some(i.heat_w? + o.heat_w?)
+    }
+}
+
+/// The rows of every roller of `a`: the one place the stages' per-roller arrays are joined.
+pub fn rollers(a: &Analysis) -> Vec<RollerView<'_>> {
+    a.load
+        .rollers
+        .iter()
+        .enumerate()
+        .map(|(j, r)| {
+            let contact = |k: usize| ContactView {
+                load: if k == 0 { &r.inner } else { &r.outer },
+                stress: a
+                    .stresses
+                    .as_ref()
+                    .and_then(|s| s.rollers.get(j))
+                    .map(|s| &s[k]),
+                min_film_m: a
+                    .films
+                    .as_ref()
+                    .and_then(|f| f.min_film.get(j))
+                    .map(|f| f[k]),
+                equivalent_load_n: a
+                    .life
+                    .as_ref()
+                    .and_then(|l| l.equivalent_loads_n.get(j))
+                    .map(|p| p[k]),
+                heat_w: a
+                    .friction
+                    .as_ref()
+                    .and_then(|f| f.roller_heat_w.get(j))
+                    .map(|h| h[k]),
+            };
+            let laminae = r
+                .laminae
+                .iter()
+                .enumerate()
+                .map(|(i, l)| LaminaView {
+                    load: l,
+                    hertz: a
+                        .stresses
+                        .as_ref()
+                        .and_then(|s| s.laminae.get(j))
+                        .and_then(|h| h.get(i)),
+                    film_m: a
+                        .films
+                        .as_ref()
+                        .and_then(|f| f.laminae.get(j))
+                        .and_then(|f| f.get(i))
+                        .copied(),
+                    friction: a
+                        .friction
+                        .as_ref()
+                        .and_then(|f| f.laminae.get(j))
+                        .and_then(|f| f.get(i)),
+                })
+                .collect();
+            let mut v = RollerView {
+                roller: r,
+                spin_rpm: a.speeds.spin_rpm.get(j).copied(),
+                contacts: [contact(0), contact(1)],
+                lambda: None,
+                laminae,
+            };
+            if a.films.is_some() {
+                let s = &a.input.surfaces;
+                v.lambda = v.min_film_m().map(|h| {
+                    film::film_parameter(h, s.roller_rms_m, s.inner_rms_m)
+                        .min(film::film_parameter(h, s.roller_rms_m, s.outer_rms_m))
+                });
+            }
+            v
+        })
+        .collect()
+}
+
+/// Columns of the `rollers` table (the CSV report's columns, in its order).
+const ROLLER_COLUMNS: [Column; 13] = [
+    Column::new("index", Quantity::Count, CsvStyle::Integer),
+    Column::new("azimuth_deg", Quantity::Angle, CsvStyle::Plain),
+    Column::new(
+        "axial_displacement_m",
+        Quantity::Length,
+        CsvStyle::Scientific,
+    ),
+    Column::new(
+        "radial_displacement_m",
+        Quantity::Length,
+        CsvStyle::Scientific,
+    ),
+    Column::new("tilt_rad", Quantity::Dimensionless, CsvStyle::Scientific),
+    Column::new("centrifugal_force_n", Quantity::Force, CsvStyle::Scientific),
+    Column::new(
+        "gyroscopic_moment_nm",
+        Quantity::Moment,
+        CsvStyle::Scientific,
+    ),
+    Column::new("inner_normal_load_n", Quantity::Force, CsvStyle::Scientific),
+    Column::new("inner_contact_angle_deg", Quantity::Angle, CsvStyle::Plain),
+    Column::new("inner_loaded_laminae", Quantity::Count, CsvStyle::Integer),
+    Column::new("outer_normal_load_n", Quantity::Force, CsvStyle::Scientific),
+    Column::new("outer_contact_angle_deg", Quantity::Angle, CsvStyle::Plain),
+    Column::new("outer_loaded_laminae", Quantity::Count, CsvStyle::Integer),
+];
+
+/// The system-independent view of an analysis: the per-roller table and the key outputs.
+pub fn view(a: &Analysis) -> View {
+    let rows = a
+        .load
+        .rollers
+        .iter()
+        .map(|r| {
+            [
+                r.index as f64,
+                r.azimuth_deg,
+                r.axial_displacement_m,
+                r.radial_displacement_m,
+                r.tilt_rad,
+                r.centrifugal_force_n,
+                r.gyroscopic_moment_nm,
+                r.inner.normal_load_n,
+                r.inner.contact_angle_deg,
+                r.inner.loaded_laminae as f64,
+                r.outer.normal_load_n,
+                r.outer.contact_angle_deg,
+                r.outer.loaded_laminae as f64,
+            ]
+            .into_iter()
+            .map(Some)
+            .collect()
+        })
+        .collect();
+    View {
+        system: super::SYSTEM_ID,
+        tables: vec![Table {
+            id: "rollers",
+            columns: ROLLER_COLUMNS.to_vec(),
+            rows,
+        }],
+        key_outputs: key_outputs(a),
+    }
+}
+
+/// Key outputs (the fidelity bench's targets and guards).
+fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
+    let max_roller_load_n = a
+        .load
+        .rollers
+        .iter()
+        .map(|r| r.inner.normal_load_n.max(r.outer.normal_load_n))
+        .fold(0.0, f64::max);
+    let max_stress_pa = a.stresses.as_ref().map_or(0.0, |s| {
+        s.rollers
+            .iter()
+            .flat_map(|r| r.iter().map(|c| c.max_stress_pa))
+            .fold(0.0, f64::max)
+    });
+    let hottest_temperature_c = a.thermal.as_ref().and_then(|t| {
+        t.steady
+            .nodes
+            .iter()
+            .filter(|n| !n.fixed)
+            .map(|n| n.temperature_c)
+            .reduce(f64::max)
+    });
+    let k = |name, value, quantity, role| KeyOutput {
+        name,
+        value,
+        quantity,
+        role,
+    };
+    vec![
+        k(
+            "max_roller_load_n",
+            Some(max_roller_load_n),
+            Quantity::Force,
+            KeyRole::Guard,
+        ),
+        k(
+            "max_stress_pa",
+            Some(max_stress_pa),
+            Quantity::Pressure,
+            KeyRole::Target,
+        ),
+        k(
+            "l10_mrev",
+            a.life.as_ref().and_then(|l| l.result.l10_bearing_mrev),
+            Quantity::Dimensionless,
+            KeyRole::Target,
+        ),
+        k(
+            "cage_speed_rpm",
+            Some(a.speeds.cage_rpm),
+            Quantity::Dimensionless,
+            KeyRole::Guard,
+        ),
+        k(
+            "total_heat_w",
+            Some(a.friction.as_ref().map_or(0.0, |f| f.heat.total_w)),
+            Quantity::Power,
+            KeyRole::Guard,
+        ),
+        k(
+            "hottest_temperature_c",
+            hottest_temperature_c,
+            Quantity::Dimensionless,
+            KeyRole::Guard,
+        ),
+    ]
+}
