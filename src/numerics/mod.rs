@@ -7,4 +7,5 @@
 )]
 
 pub mod cancel;
+pub mod ode;
 pub mod pchip;

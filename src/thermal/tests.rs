@@ -817,6 +817,37 @@ fn transient_can_be_cancelled() {
 }
 
 #[test]
+fn cancellation_is_seen_inside_the_explicit_substeps() {
+    // One output step of 1000 s with the explicit scheme needs C/ΣG-bounded substeps
+    // (10 000 here: C/ΣG = 0.1 s): a flag raised after the first check stops the run
+    // inside that step, before the output step completes (it used to run every substep
+    // first).
+    let net = one_node(1.0, G1, TINF);
+    let bound = explicit_stable_step_s(&net).unwrap().unwrap();
+    assert!(
+        1000.0 / bound > 1000.0,
+        "needs many substeps, bound {bound}"
+    );
+    let calls = std::cell::Cell::new(0);
+    let cancel = || {
+        calls.set(calls.get() + 1);
+        calls.get() > 1
+    };
+    let e = run_transient_cancellable(
+        &net,
+        &[T0, TINF],
+        &continued(1000.0, 1000.0, Integrator::Explicit),
+        &q(Q1),
+        &cancel,
+    )
+    .unwrap_err();
+    match e {
+        ThermalError::Cancelled { time_s } => assert!(time_s > 0.0 && time_s < 1000.0, "{time_s}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
 fn fixed_nodes_keep_their_temperature_in_transients() {
     // A wrong initial value for the fixed sink is ignored: the sink is reported at its
     // given 20 °C throughout (exact).

@@ -186,6 +186,9 @@ fn stable_bound(sys: &System) -> Option<f64> {
         .reduce(f64::min)
 }
 
+/// Explicit substeps between two checks of the cancellation flag.
+const CANCEL_CHECK_SUBSTEPS: usize = 256;
+
 /// Runs the transient from a steady state (seed 000 §10.3: "the element's steady-state
 /// temperature … is used as the initial value at time t = 0").
 pub fn run_transient(
@@ -208,7 +211,8 @@ pub fn run_transient_from(
     run_transient_cancellable(network, initial_c, settings, heat, &|| false)
 }
 
-/// As [`run_transient_from`], checking `cancelled()` before every output step; returns
+/// As [`run_transient_from`], checking `cancelled()` before every output step and every
+/// [`CANCEL_CHECK_SUBSTEPS`] explicit substeps; returns
 /// [`ThermalError::Cancelled`] (with the simulated time reached) when it turns true, so a
 /// worker thread can abandon a stale run.
 pub fn run_transient_cancellable(
@@ -332,7 +336,14 @@ pub fn run_transient_cancellable(
                     _ => 1,
                 };
                 let h = dt / n_sub as f64;
-                for _ in 0..n_sub {
+                for sub in 0..n_sub {
+                    // A long output step may hold millions of stable substeps: cancellation
+                    // is seen within them too, not only between output steps.
+                    if sub % CANCEL_CHECK_SUBSTEPS == CANCEL_CHECK_SUBSTEPS - 1 && cancelled() {
+                        return Err(ThermalError::Cancelled {
+                            time_s: now + sub as f64 * h,
+                        });
+                    }
                     let qb = heat_at(&t_all)?;
                     // eq. 10.7: T_i⁺ = (Q_i + Σ_j F_ij T_j)·Δt/C_i + [1 − Δt/C_i·Σ_j F_ij]·T_i,
                     // with Σ_j F_ij T_j split into free neighbours (−A_ij) and fixed (b_i).

@@ -108,35 +108,18 @@ pub struct KeyOutputs {
     pub hottest_temperature_c: Option<f64>,
 }
 
-/// The key outputs of an analysis.
+/// The key outputs of an analysis, as its bearing system's view defines them
+/// ([`crate::bearings::view::View::key_outputs`]).
 pub fn key_outputs(a: &Analysis) -> KeyOutputs {
-    let max_roller_load_n = a
-        .load
-        .rollers
-        .iter()
-        .map(|r| r.inner.normal_load_n.max(r.outer.normal_load_n))
-        .fold(0.0, f64::max);
-    let max_stress_pa = a.stresses.as_ref().map_or(0.0, |s| {
-        s.rollers
-            .iter()
-            .flat_map(|r| r.iter().map(|c| c.max_stress_pa))
-            .fold(0.0, f64::max)
-    });
-    let hottest_temperature_c = a.thermal.as_ref().and_then(|t| {
-        t.steady
-            .nodes
-            .iter()
-            .filter(|n| !n.fixed)
-            .map(|n| n.temperature_c)
-            .reduce(f64::max)
-    });
+    let v = crate::bearings::spherical_roller::view::view(a);
+    let get = |name: &str| v.key(name).and_then(|k| k.value);
     KeyOutputs {
-        max_roller_load_n,
-        max_stress_pa,
-        l10_mrev: a.life.as_ref().and_then(|l| l.result.l10_bearing_mrev),
-        cage_speed_rpm: a.speeds.cage_rpm,
-        total_heat_w: a.friction.as_ref().map_or(0.0, |f| f.heat.total_w),
-        hottest_temperature_c,
+        max_roller_load_n: get("max_roller_load_n").unwrap_or(0.0),
+        max_stress_pa: get("max_stress_pa").unwrap_or(0.0),
+        l10_mrev: get("l10_mrev"),
+        cage_speed_rpm: get("cage_speed_rpm").unwrap_or(0.0),
+        total_heat_w: get("total_heat_w").unwrap_or(0.0),
+        hottest_temperature_c: get("hottest_temperature_c"),
     }
 }
 

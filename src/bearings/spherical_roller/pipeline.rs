@@ -2,7 +2,7 @@
 //! sliding/heat → thermal. Each stage runs only when a view or report asks for it
 //! ([`Request`]); [`StageCounters`] count what ran.
 
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use serde::Serialize;
 
@@ -321,13 +321,18 @@ impl Pipeline {
             if needs.transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
                 if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
                     let lost = friction_stage(bearing, ls, st, fi, true)?;
-                    let tr = thermal::run_transient(
+                    let cancelled = || cancel.is_some_and(|c| c.load(Ordering::Relaxed));
+                    let tr = thermal::run_transient_cancellable(
                         &tm.network,
-                        steady,
+                        &steady.temperatures_c(),
                         &tm.transient,
                         &heat_input(&lost),
+                        &cancelled,
                     )
-                    .map_err(thermal_err)?;
+                    .map_err(|e| match e {
+                        thermal::ThermalError::Cancelled { .. } => SolveError::Cancelled,
+                        e => thermal_err(e),
+                    })?;
                     self.counters.thermal_transient += 1;
                     self.transient = Some((tm.clone(), (tr, lost.heat.total_w)));
                 }
