@@ -12,6 +12,7 @@ pub mod cli;
 pub mod deck;
 pub mod numerics;
 pub mod physics;
+pub mod pipeline;
 pub mod report;
 pub mod thermal;
 pub mod tui;

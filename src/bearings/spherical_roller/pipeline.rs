@@ -14,6 +14,7 @@ use super::stages::{self, Films, Friction, Life, Speeds, Stresses};
 use crate::bearings::spherical_roller::{Bearing, DynamicLoads};
 use crate::bearings::SolveError;
 use crate::physics::kinematics::InternalSpeeds;
+use crate::pipeline::Stage;
 use crate::thermal::{self, HeatInput, SteadyResult, ThermalModel, TransientResult};
 
 /// What the caller needs computed.
@@ -177,15 +178,15 @@ struct FrictionKey {
     cage: crate::bearings::spherical_roller::Cage,
 }
 
-/// An incremental pipeline: caches each stage's output with the inputs it read.
+/// An incremental pipeline: each stage ([`crate::pipeline::Stage`]) caches its output with
+/// the inputs it declares (its key) and counts its runs.
 #[derive(Debug, Default)]
 pub struct Pipeline {
-    load: Option<(LoadKey, LoadStage)>,
-    contact: Option<(ContactKey, (Stresses, Films, Life))>,
-    friction: Option<(FrictionKey, Friction)>,
-    steady: Option<(ThermalModel, SteadyResult)>,
-    transient: Option<(ThermalModel, (TransientResult, f64))>,
-    counters: StageCounters,
+    load: Stage<LoadKey, LoadStage>,
+    contact: Stage<ContactKey, (Stresses, Films, Life)>,
+    friction: Stage<FrictionKey, Friction>,
+    steady: Stage<ThermalModel, SteadyResult>,
+    transient: Stage<ThermalModel, (TransientResult, f64)>,
 }
 
 impl Pipeline {
@@ -196,7 +197,13 @@ impl Pipeline {
 
     /// Stage run counters since creation.
     pub fn counters(&self) -> StageCounters {
-        self.counters
+        StageCounters {
+            load_distribution: self.load.runs(),
+            contact: self.contact.runs(),
+            friction: self.friction.runs(),
+            thermal_steady: self.steady.runs(),
+            thermal_transient: self.transient.runs(),
+        }
     }
 
     /// Run the stages `request` needs, reusing cached outputs whose inputs did not change.
@@ -211,11 +218,11 @@ impl Pipeline {
         // The caches stay for the next edit: the analysis gets copies of what it shows.
         let n = Needs::of(request, thermal_model);
         let parts = Parts {
-            load: self.load.as_ref().map(|l| l.1.clone()),
-            contact: (self.contact.as_ref().filter(|_| n.contact)).map(|c| c.1.clone()),
-            friction: (self.friction.as_ref().filter(|_| n.friction)).map(|f| f.1.clone()),
-            steady: (self.steady.as_ref().filter(|_| n.thermal)).map(|s| s.1.clone()),
-            transient: (self.transient.as_ref().filter(|_| n.transient)).map(|t| t.1.clone()),
+            load: self.load.output().cloned(),
+            contact: self.contact.output().filter(|_| n.contact).cloned(),
+            friction: self.friction.output().filter(|_| n.friction).cloned(),
+            steady: self.steady.output().filter(|_| n.thermal).cloned(),
+            transient: self.transient.output().filter(|_| n.transient).cloned(),
         };
         parts.analysis(bearing)
     }
@@ -230,11 +237,11 @@ impl Pipeline {
     ) -> Result<Analysis, SolveError> {
         let n = Needs::of(request, thermal_model);
         let parts = Parts {
-            load: self.load.map(|l| l.1),
-            contact: (self.contact.filter(|_| n.contact)).map(|c| c.1),
-            friction: (self.friction.filter(|_| n.friction)).map(|f| f.1),
-            steady: (self.steady.filter(|_| n.thermal)).map(|s| s.1),
-            transient: (self.transient.filter(|_| n.transient)).map(|t| t.1),
+            load: self.load.into_output(),
+            contact: self.contact.into_output().filter(|_| n.contact),
+            friction: self.friction.into_output().filter(|_| n.friction),
+            steady: self.steady.into_output().filter(|_| n.thermal),
+            transient: self.transient.into_output().filter(|_| n.transient),
         };
         parts.analysis(bearing)
     }
@@ -254,17 +261,17 @@ impl Pipeline {
             solver: bearing.solver,
             trace_roller: request.trace_roller,
         };
-        let load_fresh = !matches!(&self.load, Some((k, _)) if *k == load_key);
-        if load_fresh {
-            let stage = load_stage(bearing, request, cancel)?;
-            self.counters.load_distribution += 1;
-            self.load = Some((load_key, stage));
-            self.contact = None;
-            self.friction = None;
-            self.steady = None;
-            self.transient = None;
+        if self
+            .load
+            .update(load_key, || load_stage(bearing, request, cancel))?
+        {
+            // Every stage downstream read the old load distribution.
+            self.contact.invalidate();
+            self.friction.invalidate();
+            self.steady.invalidate();
+            self.transient.invalidate();
         }
-        let Some((_, ls)) = &self.load else {
+        let Some(ls) = self.load.output() else {
             return Err(SolveError::Stage {
                 stage: "pipeline",
                 message: "load stage missing".into(),
@@ -276,65 +283,67 @@ impl Pipeline {
             surfaces: bearing.surfaces,
             life: bearing.life,
         };
-        if needs.contact && !matches!(&self.contact, Some((k, _)) if *k == contact_key) {
-            let st = stages::stresses(bearing, &ls.load, &ls.contacts);
-            let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
-            let li = stages::life(bearing, &ls.load, &fi);
-            self.counters.contact += 1;
-            self.contact = Some((contact_key, (st, fi, li)));
-            self.friction = None;
-            self.steady = None;
-            self.transient = None;
+        if needs.contact
+            && self.contact.update(contact_key, || {
+                let st = stages::stresses(bearing, &ls.load, &ls.contacts);
+                let fi = stages::films(bearing, &ls.contacts, &ls.speeds);
+                let li = stages::life(bearing, &ls.load, &fi);
+                Ok::<_, SolveError>((st, fi, li))
+            })?
+        {
+            self.friction.invalidate();
+            self.steady.invalidate();
+            self.transient.invalidate();
         }
         let friction_key = FrictionKey {
             lubricant: bearing.lubricant,
             cage: bearing.cage,
         };
-        if needs.friction && !matches!(&self.friction, Some((k, _)) if *k == friction_key) {
-            match (&self.friction, &self.contact) {
+        if needs.friction && !self.friction.is_fresh(&friction_key) {
+            match (self.friction.entry(), self.contact.output()) {
                 // Cage-only edit: the lamina traction does not read the cage; only the
-                // cage's rail and drag heat are re-derived.
+                // cage's rail and drag heat are re-derived (not counted as a run).
                 (Some((k, fr)), _) if k.lubricant == friction_key.lubricant => {
                     let fr = stages::with_cage(bearing, fr, &ls.speeds)?;
-                    self.friction = Some((friction_key, fr));
-                    self.steady = None;
-                    self.transient = None;
+                    self.friction.store(friction_key, fr);
+                    self.steady.invalidate();
+                    self.transient.invalidate();
                 }
-                (_, Some((_, (st, fi, _)))) => {
-                    let fr = friction_stage(bearing, ls, st, fi, false)?;
-                    self.counters.friction += 1;
-                    self.friction = Some((friction_key, fr));
-                    self.steady = None;
-                    self.transient = None;
+                (_, Some((st, fi, _))) => {
+                    self.friction
+                        .update(friction_key, || friction_stage(bearing, ls, st, fi, false))?;
+                    self.steady.invalidate();
+                    self.transient.invalidate();
                 }
                 _ => {}
             }
         }
-        if let (Some(tm), Some((_, fr))) = (thermal_model, &self.friction) {
-            if !matches!(&self.steady, Some((k, _)) if k == tm) {
-                let steady =
-                    thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)?;
-                self.counters.thermal_steady += 1;
-                self.steady = Some((tm.clone(), steady));
-                self.transient = None;
+        if let (Some(tm), Some(fr)) = (thermal_model, self.friction.output()) {
+            if self.steady.update(tm.clone(), || {
+                thermal::solve_steady(&tm.network, &heat_input(fr)).map_err(thermal_err)
+            })? {
+                self.transient.invalidate();
             }
-            if needs.transient && !matches!(&self.transient, Some((k, _)) if k == tm) {
-                if let (Some((_, steady)), Some((_, (st, fi, _)))) = (&self.steady, &self.contact) {
-                    let lost = friction_stage(bearing, ls, st, fi, true)?;
-                    let cancelled = || cancel.is_some_and(|c| c.load(Ordering::Relaxed));
-                    let tr = thermal::run_transient_cancellable(
-                        &tm.network,
-                        &steady.temperatures_c(),
-                        &tm.transient,
-                        &heat_input(&lost),
-                        &cancelled,
-                    )
-                    .map_err(|e| match e {
-                        thermal::ThermalError::Cancelled { .. } => SolveError::Cancelled,
-                        e => thermal_err(e),
+            if needs.transient && !self.transient.is_fresh(tm) {
+                if let (Some(steady), Some((st, fi, _))) =
+                    (self.steady.output(), self.contact.output())
+                {
+                    self.transient.update(tm.clone(), || {
+                        let lost = friction_stage(bearing, ls, st, fi, true)?;
+                        let cancelled = || cancel.is_some_and(|c| c.load(Ordering::Relaxed));
+                        let tr = thermal::run_transient_cancellable(
+                            &tm.network,
+                            &steady.temperatures_c(),
+                            &tm.transient,
+                            &heat_input(&lost),
+                            &cancelled,
+                        )
+                        .map_err(|e| match e {
+                            thermal::ThermalError::Cancelled { .. } => SolveError::Cancelled,
+                            e => thermal_err(e),
+                        })?;
+                        Ok::<_, SolveError>((tr, lost.heat.total_w))
                     })?;
-                    self.counters.thermal_transient += 1;
-                    self.transient = Some((tm.clone(), (tr, lost.heat.total_w)));
                 }
             }
         }
