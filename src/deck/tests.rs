@@ -386,7 +386,12 @@ fn set_and_get_keep_comments() {
     let r = d.set("geometry.pitch_diameter", "3.4");
     assert!(r.is_ok(), "{r:?}");
     // 3.4 in exactly in SI: 1e-15 relative (one multiply).
-    assert!(rel(d.bearing.geometry.pitch_diameter_m, 3.4 * 0.0254) < 1e-15);
+    assert!(
+        rel(
+            d.bearing.geometry.pitch_diameter_m,
+            3.4 * crate::units::INCH_M
+        ) < 1e-15
+    );
     let text = d.to_toml_string();
     assert!(
         text.contains("pitch_diameter = 3.4              # in"),

@@ -47,6 +47,7 @@ use crate::thermal::network::{
     DEFAULT_ROLLER_HEAT_FRACTION,
 };
 use crate::thermal::transient::{Integrator, Scenario, TransientSettings};
+use crate::units::{BTU_J, FAHRENHEIT_PER_KELVIN, FOOT_M, HOUR_S, INCH_M, LBM_KG};
 
 /// Unit system of a `[thermal]` section.
 ///
@@ -64,18 +65,11 @@ pub enum ThermalUnits {
     Us,
 }
 
-const BTU_J: f64 = 1_055.055_852_62;
-const F_PER_K: f64 = 1.8;
-const IN_M: f64 = 0.0254;
-const FT_M: f64 = 0.3048;
-const LBM_KG: f64 = 0.453_592_37;
-const HR_S: f64 = 3600.0;
-
 impl ThermalUnits {
     fn temperature_c(self, v: f64) -> f64 {
         match self {
             ThermalUnits::Si => v,
-            ThermalUnits::Us => (v - 32.0) / F_PER_K,
+            ThermalUnits::Us => (v - 32.0) / FAHRENHEIT_PER_KELVIN,
         }
     }
     fn scale(self, us_to_si: f64, v: f64) -> f64 {
@@ -86,36 +80,39 @@ impl ThermalUnits {
     }
     /// Btu/°F → J/K.
     fn capacity(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN, v)
     }
     /// Btu/(hr·°F) → W/K.
     fn conductance(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S, v)
     }
     /// Btu/(hr·ft·°F) → W/(m·K).
     fn conductivity(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S / FT_M, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S / FOOT_M, v)
     }
     /// Btu/(hr·ft²·°F) → W/(m²·K).
     fn film(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S / (FT_M * FT_M), v)
+        self.scale(
+            BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S / (FOOT_M * FOOT_M),
+            v,
+        )
     }
     fn length(self, v: f64) -> f64 {
-        self.scale(IN_M, v)
+        self.scale(INCH_M, v)
     }
     fn area(self, v: f64) -> f64 {
-        self.scale(IN_M * IN_M, v)
+        self.scale(INCH_M * INCH_M, v)
     }
     fn volume(self, v: f64) -> f64 {
-        self.scale(IN_M * IN_M * IN_M, v)
+        self.scale(INCH_M * INCH_M * INCH_M, v)
     }
     /// lbm/in³ → kg/m³.
     fn density(self, v: f64) -> f64 {
-        self.scale(LBM_KG / (IN_M * IN_M * IN_M), v)
+        self.scale(LBM_KG / (INCH_M * INCH_M * INCH_M), v)
     }
     /// Btu/(lbm·°F) → J/(kg·K).
     fn specific_heat(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / LBM_KG, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / LBM_KG, v)
     }
     /// lbm/s → kg/s.
     fn mass_flow(self, v: f64) -> f64 {

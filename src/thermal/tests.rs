@@ -708,6 +708,7 @@ fn deck_errors_name_node_link_and_field() {
 
 #[test]
 fn deck_us_units_convert() {
+    use crate::units::{BTU_J, FAHRENHEIT_PER_KELVIN, HOUR_S};
     // Each US link below is exactly 1 Btu/(hr·°F) = 0.527 527 926 W/K:
     // conduction 1 Btu/(hr·ft·°F)·144 in²/12 in; convection 1 Btu/(hr·ft²·°F)·144 in²;
     // plain conductance 1. Mass transport 1/3600 lbm/s · 1 Btu/(lbm·°F) = 1 Btu/(hr·°F).
@@ -755,15 +756,22 @@ fn deck_us_units_convert() {
         ThermalUnits::Us,
     )
     .unwrap();
-    let w_per_k = 1_055.055_852_62 * 1.8 / 3600.0;
+    let w_per_k = BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S;
+    // The hand values quoted above, to the digits given.
+    assert!(close(w_per_k, 0.527_527_926, 1e-9));
+    assert!(close(BTU_J * FAHRENHEIT_PER_KELVIN, 1_899.10, 1e-6));
     for l in &m.network.links {
         assert!(close(l.coefficient_w_k(), w_per_k, 1e-12), "{}", l.name);
     }
     let nodes = &m.network.nodes;
     assert!(close(nodes[0].fixed_c.unwrap(), 20.0, 1e-12));
     assert!(close(nodes[1].limit_c.unwrap(), 100.0, 1e-12));
-    assert!(close(nodes[1].capacity_j_k, 1_055.055_852_62 * 1.8, 1e-12));
-    let rho_c_v = 0.283 * 0.11 * 10.0 * 1_055.055_852_62 * 1.8; // Btu/°F → J/K
+    assert!(close(
+        nodes[1].capacity_j_k,
+        BTU_J * FAHRENHEIT_PER_KELVIN,
+        1e-12
+    ));
+    let rho_c_v = 0.283 * 0.11 * 10.0 * BTU_J * FAHRENHEIT_PER_KELVIN; // Btu/°F → J/K
     assert!(close(nodes[2].capacity_j_k, rho_c_v, 1e-12));
     assert_eq!(m.transient, TransientSettings::default());
 }

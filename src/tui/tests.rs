@@ -119,7 +119,7 @@ fn tui_edit_commits_marks_and_solves() {
         panic!("expected one solve, got {cmds:?}");
     };
     assert_eq!(job.generation, app.generation);
-    assert!((job.bearing.operating.radial_load_n - 4000.0 * 4.448_221_615_260_5).abs() < 1e-6);
+    assert!((job.bearing.operating.radial_load_n - 4000.0 * crate::units::LBF_N).abs() < 1e-6);
     run_sync(&mut app, cmds);
     assert!(app.dirty_keys.is_empty());
     assert!(matches!(app.solve, SolveState::Solved { .. }));
