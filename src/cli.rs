@@ -109,13 +109,9 @@ pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::De
 pub fn thermal_model(
     deck: &crate::deck::Deck,
 ) -> Result<Option<crate::thermal::ThermalModel>, String> {
-    let units = match deck.units {
-        crate::deck::Units::Si => crate::thermal::ThermalUnits::Si,
-        crate::deck::Units::Us => crate::thermal::ThermalUnits::Us,
-    };
     match &deck.thermal {
         None => Ok(None),
-        Some(t) => crate::thermal::parse_thermal(t, units)
+        Some(t) => crate::thermal::parse_thermal(t, deck.units)
             .map(Some)
             .map_err(|e| format!("{}: [thermal]: {e}", deck.source_name())),
     }

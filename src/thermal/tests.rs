@@ -2,12 +2,13 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use super::*;
+use crate::units::Units;
 
 const RIG: &str = include_str!("../../decks/aerospace.toml");
 
 fn rig() -> ThermalModel {
     let table: toml::Table = toml::from_str(RIG).expect("shipped deck is valid TOML");
-    parse_thermal(&table, ThermalUnits::Si).expect("shipped deck parses")
+    parse_thermal(&table, Units::Si).expect("shipped deck parses")
 }
 
 /// Heat of the shipped rig in normal operation, W (~2.1 kW).
@@ -617,7 +618,7 @@ fn bad_networks_name_the_culprit() {
 
 // ---- deck ----------------------------------------------------------------------------
 
-fn parse(text: &str, units: ThermalUnits) -> Result<ThermalModel, ThermalError> {
+fn parse(text: &str, units: Units) -> Result<ThermalModel, ThermalError> {
     let table: toml::Table = toml::from_str(text).unwrap();
     parse_thermal(&table, units)
 }
@@ -630,7 +631,7 @@ fn deck_errors_name_node_link_and_field() {
         name = "cage"
         capacty = 3.0
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -651,7 +652,7 @@ fn deck_errors_name_node_link_and_field() {
         conductivity = 40.0
         area = 0.01
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -667,7 +668,7 @@ fn deck_errors_name_node_link_and_field() {
         density = 7800.0
         volume = 1e-5
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -689,18 +690,18 @@ fn deck_errors_name_node_link_and_field() {
         conductance = 1.0
         h = 5.0
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
     assert!(e.contains("link 'fit'") && e.contains("'h'"), "{e}");
 
-    let e = parse("[bearing]\nz = 1\n", ThermalUnits::Si)
+    let e = parse("[bearing]\nz = 1\n", Units::Si)
         .unwrap_err()
         .to_string();
     assert!(e.contains("[thermal]") && e.contains("missing"), "{e}");
 
-    let e = parse("[thermal]\nnodez = []\n", ThermalUnits::Si)
+    let e = parse("[thermal]\nnodez = []\n", Units::Si)
         .unwrap_err()
         .to_string();
     assert!(e.contains("nodez"), "{e}");
@@ -753,7 +754,7 @@ fn deck_us_units_convert() {
         mass_flow = 2.777777777777778e-4
         specific_heat = 1.0
         "#,
-        ThermalUnits::Us,
+        Units::Us,
     )
     .unwrap();
     let w_per_k = BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S;

@@ -12,8 +12,9 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use crate::bearings::spherical_roller::pipeline::{Analysis, Request};
 use crate::bearings::spherical_roller::Bearing;
+use crate::units::Units;
 
-use super::deck_io::{self, DeckDoc, FieldInfo, Units};
+use super::deck_io::{self, DeckDoc, FieldInfo};
 use super::view_model;
 
 /// The panes, in Tab order.

@@ -10,6 +10,8 @@ use std::path::Path;
 use crate::bearings::spherical_roller::Bearing;
 use crate::deck::{self, Deck, DeckError, DeckErrors, FieldKind, FieldSpec};
 
+/// The one unit-system enum, [`crate::units::Units`], re-exported for the panes that
+/// still import it from here (`view_model`); new code names `crate::units::Units`.
 pub use crate::units::Units;
 
 /// `"SI"` or `"US"`.

@@ -845,7 +845,7 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
             .fold((f64::MAX, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
         assert!(lo > 0.0 && hi / lo - 1.0 < 1e-9, "{what}: {lo} … {hi}");
     };
-    let s = view_model::lamina_loads(&a, 0, deck_io::Units::Si).expect("roller 1");
+    let s = view_model::lamina_loads(&a, 0, crate::units::Units::Si).expect("roller 1");
     assert_eq!(s.y_label, "N/mm");
     flat(&s.inner.iter().map(|p| p.1).collect::<Vec<_>>(), "chart");
     // The chart's level is the roller's load over its length (Q/L, here in N/mm).
@@ -855,6 +855,6 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
         * 1e-3;
     assert!((s.inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
     let last = view_model::trace_len(&a) - 1;
-    let step = view_model::trace_step(&a, last, deck_io::Units::Si).expect("a step");
+    let step = view_model::trace_step(&a, last, crate::units::Units::Si).expect("a step");
     flat(&step.inner_load, "stepper bars");
 }
