@@ -15,7 +15,6 @@
 )]
 
 mod error;
-mod io;
 mod schema;
 mod template;
 pub mod thermal;
@@ -279,7 +278,13 @@ impl Deck {
     /// previous file kept as `<file name>.bak`, then rename. A failure leaves the
     /// existing file untouched.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
-        io::save_atomic(path.as_ref(), &self.to_toml_string()).map_err(DeckErrors::from)
+        crate::files::save_with_backup(path.as_ref(), &self.to_toml_string()).map_err(|e| {
+            DeckErrors::from(DeckError::Io {
+                path: e.path,
+                action: e.action,
+                source: e.source,
+            })
+        })
     }
 }
 
