@@ -174,6 +174,39 @@ fn tui_undo_redo() {
     assert_eq!(app.message.as_deref(), Some("nothing to redo"));
 }
 
+/// `unsaved()` compares the deck's text with the saved text, as it did when it
+/// serialised the deck on every call: on after an edit, off after undoing back to the
+/// saved deck (or retyping the saved value), on after redo, off after a save, and on
+/// after undoing past that save. At each step it agrees with that old definition.
+#[test]
+fn tui_unsaved_follows_the_deck_text() {
+    let mut app = deck_app();
+    let was = |app: &App| app.deck.text() != app.saved_text;
+    let check = |app: &App, expected: bool| {
+        assert_eq!(app.unsaved(), expected);
+        assert_eq!(app.unsaved(), was(app), "agrees with the text comparison");
+    };
+    check(&app, false);
+    select_field(&mut app, "operating.axial_load");
+    let original = app.deck.value("operating.axial_load", app.display_units);
+    type_value(&mut app, "1500");
+    check(&app, true);
+    app.handle(ctrl('z'));
+    check(&app, false);
+    app.handle(ctrl('y'));
+    check(&app, true);
+    type_value(&mut app, &original);
+    check(&app, false);
+    type_value(&mut app, "1500");
+    check(&app, true);
+    app.handle(AppEvent::Saved(Ok(PathBuf::from("saved.toml"))));
+    check(&app, false);
+    app.handle(ctrl('z'));
+    check(&app, true);
+    app.handle(ctrl('y'));
+    check(&app, false);
+}
+
 #[test]
 fn tui_units_toggle_and_edit_in_other_units() {
     let mut app = solved_app(Pane::Inputs, 80, 24);
