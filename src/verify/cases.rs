@@ -1,6 +1,6 @@
 //! Validation report (issue 7): every reference case of the tests, computed through the
 //! library and compared with its published or closed-form value
-//! (`/work/shared/guide/references.md`).
+//! (the project's guide of reference values, `references.md`).
 //!
 //! Each [`Case`] carries the quantity, the reference value and its source, the computed
 //! value, the relative error and the relative tolerance (with the reason for it in
