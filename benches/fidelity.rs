@@ -27,7 +27,7 @@ fn decks() -> Vec<(String, Deck)> {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("pipeline_fidelity");
     for (name, deck) in decks() {
-        let thermal = rollbench::cli::thermal_model(&deck).ok().flatten();
+        let thermal = deck.thermal_model().ok().flatten();
         let b = deck.bearing.clone();
         let default = Fidelity::of(&b);
         let mut points = vec![("default", default)];

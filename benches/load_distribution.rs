@@ -67,7 +67,7 @@ fn edit_latency(c: &mut Criterion) {
     let Some((_, deck)) = decks().into_iter().find(|(n, _)| n == "aerospace") else {
         return;
     };
-    let Ok(Some(tm)) = rollbench::cli::thermal_model(&deck) else {
+    let Ok(Some(tm)) = deck.thermal_model() else {
         return;
     };
     type Edit = fn(

@@ -6,15 +6,16 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::thermal::{
-    parse_thermal, run_transient, solve_steady, HeatInput, Integrator, ThermalModel, ThermalUnits,
+    parse_thermal, run_transient, solve_steady, HeatInput, Integrator, ThermalModel,
     TransientSettings,
 };
+use rollbench::units::Units;
 
 fn rig() -> ThermalModel {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/aerospace.toml");
     let text = std::fs::read_to_string(path).expect("shipped thermal deck");
     let table: toml::Table = toml::from_str(&text).expect("valid TOML");
-    parse_thermal(&table, ThermalUnits::Si).expect("valid [thermal] section")
+    parse_thermal(&table, Units::Si).expect("valid [thermal] section")
 }
 
 const HEAT: HeatInput = HeatInput {

@@ -1,6 +1,5 @@
 //! Command line (clap): a thin layer over the library.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -90,34 +89,4 @@ pub enum UnitsArg {
 /// Load a deck from a path (or the embedded default) and apply `--set` overrides.
 pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::Deck, String> {
     crate::deck::Deck::load_with_overrides(path, sets)
-}
-
-/// The thermal network of a deck's `[thermal]` section, if any (errors name node, link, field).
-pub fn thermal_model(
-    deck: &crate::deck::Deck,
-) -> Result<Option<crate::thermal::ThermalModel>, String> {
-    deck.thermal_model().map_err(|e| e.to_string())
-}
-
-/// Write `text` to `path` atomically (temporary file in the same directory, then rename).
-pub fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "output".into());
-    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }

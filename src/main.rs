@@ -7,8 +7,9 @@ use std::path::Path;
 
 use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
-use rollbench::cli::{load_deck, write_atomic, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::cli::{load_deck, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::{self, Units};
+use rollbench::files::write_atomic;
 use rollbench::numerics::cancel::Cancel;
 use rollbench::report;
 

@@ -21,10 +21,21 @@ pub const LBM_KG: f64 = 0.453_592_37;
 pub const BTU_J: f64 = 1_055.055_852_62;
 /// 1 °F (or °R) temperature difference in K (exact: 5/9).
 pub const FAHRENHEIT_DEGREE_K: f64 = 5.0 / 9.0;
+/// 1 K (or °C) temperature difference in °F (exact: 1.8). Kept as the literal, not
+/// `1.0 / FAHRENHEIT_DEGREE_K`: the two differ in the last bit, and the thermal deck and
+/// the reports convert with 1.8, so deriving it would change answers in the last digit.
+pub const FAHRENHEIT_PER_KELVIN: f64 = 1.8;
 /// 1 rpm in rad/s (exact: π/30).
 pub const RPM_RAD_S: f64 = std::f64::consts::PI / 30.0;
 /// 1 hour in s.
 pub const HOUR_S: f64 = 3_600.0;
+/// 1 in·lbf in N·m (exact: 0.0254 m × 4.448 221 615 260 5 N).
+pub const INCH_LBF_N_M: f64 = INCH_M * LBF_N;
+/// Btu/hr per watt (International Table Btu): 1 W = 3.412141633 Btu/hr. Kept as the
+/// published 10-digit literal, not `HOUR_S / BTU_J` (= 3.412 141 633 128, 3.7e-11
+/// relative above it): the reports have always used the literal, and deriving it would
+/// change every Btu/hr in the last digits.
+pub const BTU_PER_HOUR_PER_WATT: f64 = 3.412_141_633;
 /// 0 °C in K.
 pub const CELSIUS_ZERO_K: f64 = 273.15;
 
@@ -292,6 +303,10 @@ mod tests {
         assert!(rel(Quantity::Temperature.to_si(-40.0, Units::Si), 233.15) < 1e-12);
         assert!(rel(fahrenheit_to_celsius(-40.0), -40.0) < 1e-12);
         assert!(rel(celsius_to_fahrenheit(100.0), 212.0) < 1e-12);
+        // The two literal (not derived) factors agree with their definitions.
+        assert!(rel(FAHRENHEIT_PER_KELVIN, 1.0 / FAHRENHEIT_DEGREE_K) < 1e-15);
+        assert!(rel(BTU_PER_HOUR_PER_WATT, HOUR_S / BTU_J) < 1e-10);
+        assert!(rel(INCH_LBF_N_M, 0.112_984_829_027_616_7) < 1e-15);
         assert_eq!("US".parse::<Units>(), Ok(Units::Us));
         assert!("cgs".parse::<Units>().is_err());
     }

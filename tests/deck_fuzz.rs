@@ -146,7 +146,7 @@ fn apply(text: &str, muts: &[Mutation]) -> String {
 /// What `rollbench check` does, in-process: parse, then the `[thermal]` section.
 fn check_in_process(text: &str) -> Result<(), String> {
     let deck = Deck::parse(text, "fuzz.toml").map_err(|e| e.to_string())?;
-    rollbench::cli::thermal_model(&deck).map(|_| ())
+    deck.thermal_model().map(|_| ()).map_err(|e| e.to_string())
 }
 
 proptest! {

@@ -408,7 +408,7 @@ fn solver_statistics_per_deck() {
 fn stage_cache_reruns_only_what_an_edit_touches() {
     use rollbench::bearings::spherical_roller::pipeline::{Pipeline, StageCounters};
     let d = deck("aerospace.toml");
-    let tm = match rollbench::cli::thermal_model(&d) {
+    let tm = match d.thermal_model() {
         Ok(Some(t)) => t,
         other => panic!("{other:?}"),
     };

@@ -15,7 +15,6 @@
 )]
 
 mod error;
-mod io;
 mod schema;
 mod template;
 pub mod thermal;
@@ -127,21 +126,15 @@ impl Deck {
     pub fn thermal_model(&self) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
         match &self.thermal {
             None => Ok(None),
-            Some(t) => thermal::parse_thermal(
-                t,
-                match self.units {
-                    Units::Si => thermal::ThermalUnits::Si,
-                    Units::Us => thermal::ThermalUnits::Us,
-                },
-            )
-            .map(Some)
-            .map_err(|e| {
-                DeckError::Thermal {
-                    source_name: self.source_name.clone(),
-                    message: e.to_string(),
-                }
-                .into()
-            }),
+            Some(t) => thermal::parse_thermal(t, self.units)
+                .map(Some)
+                .map_err(|e| {
+                    DeckError::Thermal {
+                        source_name: self.source_name.clone(),
+                        message: e.to_string(),
+                    }
+                    .into()
+                }),
         }
     }
 
@@ -343,7 +336,13 @@ impl Deck {
     /// previous file kept as `<file name>.bak`, then rename. A failure leaves the
     /// existing file untouched.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
-        io::save_atomic(path.as_ref(), &self.to_toml_string()).map_err(DeckErrors::from)
+        crate::files::save_with_backup(path.as_ref(), &self.to_toml_string()).map_err(|e| {
+            DeckErrors::from(DeckError::Io {
+                path: e.path,
+                action: e.action,
+                source: e.source,
+            })
+        })
     }
 }
 

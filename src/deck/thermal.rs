@@ -47,79 +47,73 @@ use crate::thermal::network::{
     DEFAULT_ROLLER_HEAT_FRACTION,
 };
 use crate::thermal::transient::{Integrator, Scenario, TransientSettings};
+use crate::units::{Units, BTU_J, FAHRENHEIT_PER_KELVIN, FOOT_M, HOUR_S, INCH_M, LBM_KG};
 
-/// Unit system of a `[thermal]` section.
+/// The conversions of a `[thermal]` section's values to SI, in the section's
+/// [`Units`].
 ///
 /// US customary: temperatures °F, capacities Btu/°F, conductances Btu/(hr·°F),
 /// conductivity Btu/(hr·ft·°F), film coefficients Btu/(hr·ft²·°F), lengths in, areas in²,
 /// volumes in³, density lbm/in³, specific heat Btu/(lbm·°F), mass flow lbm/s. Times are
 /// seconds in both systems. Btu is the International Table Btu (1055.05585262 J).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ThermalUnits {
-    /// SI (°C for temperatures).
-    #[default]
-    Si,
-    /// US customary, see the type documentation.
-    Us,
-}
-
-const BTU_J: f64 = 1_055.055_852_62;
-const F_PER_K: f64 = 1.8;
-const IN_M: f64 = 0.0254;
-const FT_M: f64 = 0.3048;
-const LBM_KG: f64 = 0.453_592_37;
-const HR_S: f64 = 3600.0;
-
-impl ThermalUnits {
-    fn temperature_c(self, v: f64) -> f64 {
-        match self {
-            ThermalUnits::Si => v,
-            ThermalUnits::Us => (v - 32.0) / F_PER_K,
-        }
-    }
-    fn scale(self, us_to_si: f64, v: f64) -> f64 {
-        match self {
-            ThermalUnits::Si => v,
-            ThermalUnits::Us => v * us_to_si,
-        }
-    }
+trait ThermalConversions: Copy {
+    fn temperature_c(self, v: f64) -> f64;
+    fn scale(self, us_to_si: f64, v: f64) -> f64;
     /// Btu/°F → J/K.
     fn capacity(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN, v)
     }
     /// Btu/(hr·°F) → W/K.
     fn conductance(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S, v)
     }
     /// Btu/(hr·ft·°F) → W/(m·K).
     fn conductivity(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S / FT_M, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S / FOOT_M, v)
     }
     /// Btu/(hr·ft²·°F) → W/(m²·K).
     fn film(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / HR_S / (FT_M * FT_M), v)
+        self.scale(
+            BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S / (FOOT_M * FOOT_M),
+            v,
+        )
     }
     fn length(self, v: f64) -> f64 {
-        self.scale(IN_M, v)
+        self.scale(INCH_M, v)
     }
     fn area(self, v: f64) -> f64 {
-        self.scale(IN_M * IN_M, v)
+        self.scale(INCH_M * INCH_M, v)
     }
     fn volume(self, v: f64) -> f64 {
-        self.scale(IN_M * IN_M * IN_M, v)
+        self.scale(INCH_M * INCH_M * INCH_M, v)
     }
     /// lbm/in³ → kg/m³.
     fn density(self, v: f64) -> f64 {
-        self.scale(LBM_KG / (IN_M * IN_M * IN_M), v)
+        self.scale(LBM_KG / (INCH_M * INCH_M * INCH_M), v)
     }
     /// Btu/(lbm·°F) → J/(kg·K).
     fn specific_heat(self, v: f64) -> f64 {
-        self.scale(BTU_J * F_PER_K / LBM_KG, v)
+        self.scale(BTU_J * FAHRENHEIT_PER_KELVIN / LBM_KG, v)
     }
     /// lbm/s → kg/s.
     fn mass_flow(self, v: f64) -> f64 {
         self.scale(LBM_KG, v)
+    }
+}
+
+impl ThermalConversions for Units {
+    /// °F → °C.
+    fn temperature_c(self, v: f64) -> f64 {
+        match self {
+            Units::Si => v,
+            Units::Us => (v - 32.0) / FAHRENHEIT_PER_KELVIN,
+        }
+    }
+    fn scale(self, us_to_si: f64, v: f64) -> f64 {
+        match self {
+            Units::Si => v,
+            Units::Us => v * us_to_si,
+        }
     }
 }
 
@@ -265,10 +259,7 @@ fn array<'a>(section: &'a toml::Table, key: &str) -> Result<&'a [toml::Value], T
 /// `nodes` key it is taken to be the section itself. Values are in `units`; the result is SI. Each entry
 /// is deserialised on its own so errors name the node or link and the field; the network
 /// is then validated (names, signs, grounding).
-pub fn parse_thermal(
-    table: &toml::Table,
-    units: ThermalUnits,
-) -> Result<ThermalModel, ThermalError> {
+pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, ThermalError> {
     let section = match table.get("thermal") {
         Some(toml::Value::Table(t)) => t,
         Some(_) => return Err(deck_err("[thermal]", "expected a table")),
@@ -287,8 +278,8 @@ pub fn parse_thermal(
     // network written in SI can sit in an inch-unit deck.
     let units = match section.get("units") {
         None => units,
-        Some(toml::Value::String(u)) if u == "si" => ThermalUnits::Si,
-        Some(toml::Value::String(u)) if u == "us" => ThermalUnits::Us,
+        Some(toml::Value::String(u)) if u == "si" => Units::Si,
+        Some(toml::Value::String(u)) if u == "us" => Units::Us,
         Some(other) => {
             return Err(deck_err(
                 "[thermal] key 'units'",
@@ -390,7 +381,7 @@ fn field_err(loc: &str, field: &str, message: impl Into<String>) -> ThermalError
     deck_err(format!("{loc} field '{field}'"), message)
 }
 
-fn convert_node(d: &NodeDeck, u: ThermalUnits, loc: &str) -> Result<Node, ThermalError> {
+fn convert_node(d: &NodeDeck, u: Units, loc: &str) -> Result<Node, ThermalError> {
     let material = [d.density, d.specific_heat, d.volume];
     let n_material = material.iter().filter(|x| x.is_some()).count();
     let capacity_j_k = match (d.capacity, n_material) {
@@ -456,7 +447,7 @@ fn convert_node(d: &NodeDeck, u: ThermalUnits, loc: &str) -> Result<Node, Therma
     })
 }
 
-fn convert_link(d: &LinkDeck, u: ThermalUnits, loc: &str) -> Result<Link, ThermalError> {
+fn convert_link(d: &LinkDeck, u: Units, loc: &str) -> Result<Link, ThermalError> {
     let all: [(&str, Option<f64>); 8] = [
         ("conductivity", d.conductivity),
         ("area", d.area),

@@ -20,11 +20,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::physics::lubrication::Lubricant;
-
-/// Btu/hr per watt (International Table Btu): 1 W = 3.412141633 Btu/hr.
-pub const BTU_PER_HOUR_PER_WATT: f64 = 3.412_141_633;
-/// Newton-metres per inch-pound-force (0.0254 m × 4.4482216152605 N).
-pub const NEWTON_METRE_PER_INCH_POUND: f64 = 0.0254 * 4.448_221_615_260_5;
+use crate::units::{BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M};
 
 /// Power in W → Btu/hr, for reporting in the seed's units.
 pub fn watts_to_btu_per_hour(watts: f64) -> f64 {
@@ -38,7 +34,7 @@ pub fn btu_per_hour_to_watts(btu_per_hour: f64) -> f64 {
 
 /// Torque in N·m → in·lbf, for reporting.
 pub fn newton_metres_to_inch_pounds(nm: f64) -> f64 {
-    nm / NEWTON_METRE_PER_INCH_POUND
+    nm / INCH_LBF_N_M
 }
 
 /// Relative ring speed below which the friction torque is reported as 0, rad/s.
@@ -255,9 +251,7 @@ mod tests {
     use super::*;
     use crate::bearings::spherical_roller::Bearing;
 
-    const IN: f64 = 0.0254;
-    const LBF: f64 = 4.448_221_615_260_5;
-    const RPM: f64 = std::f64::consts::PI / 30.0;
+    use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
 
     /// Petroff for the aerospace cage (W = 0.25 in, D = 3.75 in, dc = 0.02 in, outer
     /// guided, η = 0.0045 Pa·s), ΔΩ = 800 rad/s, by hand from the film: τ = η·v/h,
@@ -265,7 +259,7 @@ mod tests {
     /// independent arithmetic.
     #[test]
     fn petroff_by_hand() {
-        let (eta, w, d, dc, dw) = (0.0045, 0.25 * IN, 3.75 * IN, 0.02 * IN, 800.0);
+        let (eta, w, d, dc, dw) = (0.0045, 0.25 * INCH_M, 3.75 * INCH_M, 0.02 * INCH_M, 800.0);
         let v = dw * d / 2.0;
         let tau = eta * v / (dc / 2.0);
         let force = tau * std::f64::consts::PI * d * w;
@@ -293,7 +287,7 @@ mod tests {
             cage_speed,
         )
         .expect("valid");
-        let h_btu = 0.1928 * (b.cage.mean_diameter_m / IN) * (f / LBF) * cage_speed;
+        let h_btu = 0.1928 * (b.cage.mean_diameter_m / INCH_M) * (f / LBF_N) * cage_speed;
         let ours = watts_to_btu_per_hour(p);
         assert!((ours - h_btu).abs() < 1e-3 * h_btu, "{ours} vs {h_btu}");
         // Inner guided: ΔΩ = Ω_cg − Ω₁.
@@ -350,14 +344,14 @@ mod tests {
     fn palmgren_matches_inch_form_and_eq_9_6() {
         let (psi, nu_cst, n_rpm, d_in): (f64, f64, f64, f64) = (5.0, 10.0, 12_000.0, 3.3);
         let t_inlb = 1.42e-5 * psi * f64::powf(nu_cst * n_rpm, 2.0 / 3.0) * d_in.powi(3);
-        let m = viscous_drag_torque_nm(psi, nu_cst * 1e-6, n_rpm * RPM, d_in * IN);
+        let m = viscous_drag_torque_nm(psi, nu_cst * 1e-6, n_rpm * RPM_RAD_S, d_in * INCH_M);
         let ours_inlb = newton_metres_to_inch_pounds(m);
         assert!(
             (ours_inlb - t_inlb).abs() < 0.025 * t_inlb,
             "{ours_inlb} vs {t_inlb}"
         );
         let h_btu = 0.0404 * n_rpm * ours_inlb;
-        let p = viscous_drag_power_w(psi, nu_cst * 1e-6, n_rpm * RPM, d_in * IN);
+        let p = viscous_drag_power_w(psi, nu_cst * 1e-6, n_rpm * RPM_RAD_S, d_in * INCH_M);
         assert!((watts_to_btu_per_hour(p) - h_btu).abs() < 1e-3 * h_btu);
     }
 
@@ -369,7 +363,7 @@ mod tests {
         assert!((btu_per_hour_to_watts(watts_to_btu_per_hour(123.4)) - 123.4).abs() < 1e-12);
         assert!((newton_metres_to_inch_pounds(0.112_984_829_027_616_7) - 1.0).abs() < 1e-15);
         // The seed's in-lb/s → Btu/hr factor 2.5933 is today's 2.5939 (0.02 % apart).
-        let f = 1.0 / watts_to_btu_per_hour(NEWTON_METRE_PER_INCH_POUND);
+        let f = 1.0 / watts_to_btu_per_hour(INCH_LBF_N_M);
         assert!((f - 2.5933).abs() < 1e-3, "{f}");
     }
 
@@ -394,7 +388,7 @@ mod tests {
         ] {
             assert!(json.get(k).is_some(), "missing {k}");
         }
-        assert!((h.total_btu_per_hour() - 200.0 * 3.412_141_633).abs() < 1e-12);
+        assert!((h.total_btu_per_hour() - 200.0 * BTU_PER_HOUR_PER_WATT).abs() < 1e-12);
     }
 }
 

@@ -409,7 +409,7 @@ mod tests {
     use super::*;
     use crate::bearings::spherical_roller::Bearing;
 
-    const RPM: f64 = std::f64::consts::PI / 30.0;
+    use crate::units::{INCH_M, RPM_RAD_S};
 
     fn close(a: f64, b: f64, rel: f64) -> bool {
         (a - b).abs() <= rel * a.abs().max(b.abs()).max(1e-300)
@@ -432,9 +432,9 @@ mod tests {
     fn app_c_speeds_roll_without_slip_at_nominal_points() {
         let g = Bearing::example_aerospace().geometry;
         for (w1, w2, beta) in [
-            (17_000.0 * RPM, 0.0, 0.0),
-            (17_000.0 * RPM, 0.0, g.contact_angle_rad),
-            (-3_000.0 * RPM, 5_000.0 * RPM, 0.3),
+            (17_000.0 * RPM_RAD_S, 0.0, 0.0),
+            (17_000.0 * RPM_RAD_S, 0.0, g.contact_angle_rad),
+            (-3_000.0 * RPM_RAD_S, 5_000.0 * RPM_RAD_S, 0.3),
         ] {
             let (d, pt) = (g.roller_diameter_m, g.pitch_diameter_m);
             let theta = d * beta.cos() / pt;
@@ -457,7 +457,7 @@ mod tests {
     /// arithmetic.
     #[test]
     fn app_c_hand_values() {
-        let w1 = 17_000.0 * RPM;
+        let w1 = 17_000.0 * RPM_RAD_S;
         let gamma = 0.5 * 12f64.to_radians().cos() / 3.3;
         let theta = Bearing::example_aerospace().geometry.theta();
         assert!(close(theta, gamma, 1e-12));
@@ -466,7 +466,7 @@ mod tests {
             0.5 * w1 * (1.0 - gamma),
             1e-12
         ));
-        let spin = roller_spin_estimate(w1, 0.0, theta, 0.5 * 0.0254, 3.3 * 0.0254);
+        let spin = roller_spin_estimate(w1, 0.0, theta, 0.5 * INCH_M, 3.3 * INCH_M);
         assert!(close(spin, -3.3 / 1.0 * (1.0 - gamma * gamma) * w1, 1e-12));
         assert_eq!(roller_spin_estimate(w1, 0.0, theta, 0.0, 1.0), 0.0);
     }
@@ -479,7 +479,7 @@ mod tests {
         let (d, pt) = (0.0127, 0.08382);
         for beta in [0.0, 12f64.to_radians()] {
             let theta = d * f64::cos(beta) / pt;
-            let (w1, w2) = (17_000.0 * RPM, -1_000.0 * RPM);
+            let (w1, w2) = (17_000.0 * RPM_RAD_S, -1_000.0 * RPM_RAD_S);
             let inner = Some((pt / 2.0 * (1.0 - theta), d / 2.0));
             let outer = Some((pt / 2.0 * (1.0 + theta), d / 2.0));
             let rollers = [

@@ -17,6 +17,7 @@
 #![warn(missing_docs)]
 
 use crate::numerics::pchip::MonotoneCubic;
+use crate::units::HOUR_S;
 use serde::{Deserialize, Serialize};
 use std::sync::OnceLock;
 
@@ -174,7 +175,7 @@ pub fn bearing_l10(inner_mrev: Option<f64>, outer_mrev: Option<f64>) -> Option<f
 pub fn life_hours(life_mrev: Option<f64>, relative_speed_rad_s: f64) -> Option<f64> {
     let w = relative_speed_rad_s.abs();
     let l = life_mrev?;
-    (w > 0.0 && w.is_finite()).then(|| l * 1e6 * std::f64::consts::TAU / (3600.0 * w))
+    (w > 0.0 && w.is_finite()).then(|| l * 1e6 * std::f64::consts::TAU / (HOUR_S * w))
 }
 
 /// Which raceway rotates relative to the load, from the ring speeds (rad/s). The applied
@@ -462,8 +463,7 @@ mod tests {
     }
     use crate::bearings::spherical_roller::Bearing;
 
-    const LBF: f64 = 4.448_221_615_260_5;
-    const INCH: f64 = 0.0254;
+    use crate::units::{INCH_M, LBF_N};
 
     fn rel(a: f64, b: f64) -> f64 {
         (a / b - 1.0).abs()
@@ -493,7 +493,7 @@ mod tests {
         // differ by up to 0.19 %; 552 converts to 49 579 (0.16 % above 49 500). The
         // brief's 0.1 % is tighter than the rounding allows: tolerance 0.2 %.
         let g = Bearing::example_aerospace().geometry.capacity_geometry();
-        let (d_in, l_in) = (g.roller_diameter_m / INCH, g.effective_length_m / INCH);
+        let (d_in, l_in) = (g.roller_diameter_m / INCH_M, g.effective_length_m / INCH_M);
         for (race, near, far) in [
             (Raceway::Inner, 1.0 - g.theta, 1.0 + g.theta),
             (Raceway::Outer, 1.0 + g.theta, 1.0 - g.theta),
@@ -506,12 +506,12 @@ mod tests {
                 * (g.roller_count as f64).powf(-0.25);
             let si = raceway_capacity(race, 0.75, &g);
             assert!(
-                rel(si, inch_lbf * LBF) < 2e-3,
+                rel(si, inch_lbf * LBF_N) < 2e-3,
                 "{race:?} {si} vs {}",
-                inch_lbf * LBF
+                inch_lbf * LBF_N
             );
             assert!(
-                rel(si, inch_lbf * LBF) > 1e-3,
+                rel(si, inch_lbf * LBF_N) > 1e-3,
                 "constants now agree better than expected"
             );
         }

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::units::PSI_PA;
+
 /// Elastic and inertial properties of one body (roller or ring).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Material {
@@ -20,7 +22,7 @@ pub struct Material {
 impl Material {
     /// AISI 52100 / M50 bearing steel (E = 29.0 Mpsi, ν = 0.30, as in seed 000 App. E).
     pub const STEEL: Material = Material {
-        youngs_modulus_pa: 29.0e6 * 6_894.757_293_168_361,
+        youngs_modulus_pa: 29.0e6 * PSI_PA,
         poisson_ratio: 0.30,
         density_kg_m3: 7_833.0,
         specific_heat_j_kg_k: 460.0,
@@ -28,7 +30,7 @@ impl Material {
     };
     /// Hot-pressed silicon nitride (E = 43.0 Mpsi, ν = 0.27, as in seed 000 App. E).
     pub const SILICON_NITRIDE: Material = Material {
-        youngs_modulus_pa: 43.0e6 * 6_894.757_293_168_361,
+        youngs_modulus_pa: 43.0e6 * PSI_PA,
         poisson_ratio: 0.27,
         density_kg_m3: 3_200.0,
         specific_heat_j_kg_k: 680.0,

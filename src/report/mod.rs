@@ -6,7 +6,7 @@ pub mod csv;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;
-use crate::units::{Units, BTU_J, HOUR_S, INCH_M, LBF_N, PSI_PA};
+use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA};
 
 /// Report formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -65,8 +65,8 @@ impl Disp {
                 small_len: (1e6 / INCH_M, "µin"),
                 force: (1.0 / LBF_N, "lbf"),
                 stress: (1.0 / PSI_PA * 1e-3, "ksi"),
-                moment: (1.0 / (LBF_N * INCH_M), "in·lbf"),
-                power: (HOUR_S / BTU_J, "Btu/hr"),
+                moment: (1.0 / INCH_LBF_N_M, "in·lbf"),
+                power: (BTU_PER_HOUR_PER_WATT, "Btu/hr"),
             },
         }
     }

@@ -12,7 +12,7 @@ pub mod network;
 pub mod steady;
 pub mod transient;
 
-pub use crate::deck::thermal::{parse_thermal, ThermalModel, ThermalUnits};
+pub use crate::deck::thermal::{parse_thermal, ThermalModel};
 pub use error::ThermalError;
 pub use network::{
     capacity_from_material, HeatInput, HeatMechanism, Link, LinkKind, Network, Node, NodeRole,

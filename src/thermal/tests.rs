@@ -2,12 +2,13 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use super::*;
+use crate::units::Units;
 
 const RIG: &str = include_str!("../../decks/aerospace.toml");
 
 fn rig() -> ThermalModel {
     let table: toml::Table = toml::from_str(RIG).expect("shipped deck is valid TOML");
-    parse_thermal(&table, ThermalUnits::Si).expect("shipped deck parses")
+    parse_thermal(&table, Units::Si).expect("shipped deck parses")
 }
 
 /// Heat of the shipped rig in normal operation, W (~2.1 kW).
@@ -617,7 +618,7 @@ fn bad_networks_name_the_culprit() {
 
 // ---- deck ----------------------------------------------------------------------------
 
-fn parse(text: &str, units: ThermalUnits) -> Result<ThermalModel, ThermalError> {
+fn parse(text: &str, units: Units) -> Result<ThermalModel, ThermalError> {
     let table: toml::Table = toml::from_str(text).unwrap();
     parse_thermal(&table, units)
 }
@@ -630,7 +631,7 @@ fn deck_errors_name_node_link_and_field() {
         name = "cage"
         capacty = 3.0
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -651,7 +652,7 @@ fn deck_errors_name_node_link_and_field() {
         conductivity = 40.0
         area = 0.01
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -667,7 +668,7 @@ fn deck_errors_name_node_link_and_field() {
         density = 7800.0
         volume = 1e-5
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
@@ -689,18 +690,18 @@ fn deck_errors_name_node_link_and_field() {
         conductance = 1.0
         h = 5.0
         "#,
-        ThermalUnits::Si,
+        Units::Si,
     )
     .unwrap_err()
     .to_string();
     assert!(e.contains("link 'fit'") && e.contains("'h'"), "{e}");
 
-    let e = parse("[bearing]\nz = 1\n", ThermalUnits::Si)
+    let e = parse("[bearing]\nz = 1\n", Units::Si)
         .unwrap_err()
         .to_string();
     assert!(e.contains("[thermal]") && e.contains("missing"), "{e}");
 
-    let e = parse("[thermal]\nnodez = []\n", ThermalUnits::Si)
+    let e = parse("[thermal]\nnodez = []\n", Units::Si)
         .unwrap_err()
         .to_string();
     assert!(e.contains("nodez"), "{e}");
@@ -708,6 +709,7 @@ fn deck_errors_name_node_link_and_field() {
 
 #[test]
 fn deck_us_units_convert() {
+    use crate::units::{BTU_J, FAHRENHEIT_PER_KELVIN, HOUR_S};
     // Each US link below is exactly 1 Btu/(hr·°F) = 0.527 527 926 W/K:
     // conduction 1 Btu/(hr·ft·°F)·144 in²/12 in; convection 1 Btu/(hr·ft²·°F)·144 in²;
     // plain conductance 1. Mass transport 1/3600 lbm/s · 1 Btu/(lbm·°F) = 1 Btu/(hr·°F).
@@ -752,18 +754,25 @@ fn deck_us_units_convert() {
         mass_flow = 2.777777777777778e-4
         specific_heat = 1.0
         "#,
-        ThermalUnits::Us,
+        Units::Us,
     )
     .unwrap();
-    let w_per_k = 1_055.055_852_62 * 1.8 / 3600.0;
+    let w_per_k = BTU_J * FAHRENHEIT_PER_KELVIN / HOUR_S;
+    // The hand values quoted above, to the digits given.
+    assert!(close(w_per_k, 0.527_527_926, 1e-9));
+    assert!(close(BTU_J * FAHRENHEIT_PER_KELVIN, 1_899.10, 1e-6));
     for l in &m.network.links {
         assert!(close(l.coefficient_w_k(), w_per_k, 1e-12), "{}", l.name);
     }
     let nodes = &m.network.nodes;
     assert!(close(nodes[0].fixed_c.unwrap(), 20.0, 1e-12));
     assert!(close(nodes[1].limit_c.unwrap(), 100.0, 1e-12));
-    assert!(close(nodes[1].capacity_j_k, 1_055.055_852_62 * 1.8, 1e-12));
-    let rho_c_v = 0.283 * 0.11 * 10.0 * 1_055.055_852_62 * 1.8; // Btu/°F → J/K
+    assert!(close(
+        nodes[1].capacity_j_k,
+        BTU_J * FAHRENHEIT_PER_KELVIN,
+        1e-12
+    ));
+    let rho_c_v = 0.283 * 0.11 * 10.0 * BTU_J * FAHRENHEIT_PER_KELVIN; // Btu/°F → J/K
     assert!(close(nodes[2].capacity_j_k, rho_c_v, 1e-12));
     assert_eq!(m.transient, TransientSettings::default());
 }

@@ -12,8 +12,9 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use crate::bearings::spherical_roller::pipeline::{Analysis, Request};
 use crate::bearings::spherical_roller::Bearing;
+use crate::units::Units;
 
-use super::deck_io::{self, DeckDoc, FieldInfo, Units};
+use super::deck_io::{self, DeckDoc, FieldInfo};
 use super::view_model;
 
 /// The panes, in Tab order.
@@ -176,11 +177,15 @@ pub enum Mode {
 /// The whole UI state. Rendering reads it through `&App`; nothing is locked.
 #[derive(Debug, Clone)]
 pub struct App {
-    /// The deck under edit.
+    /// The deck under edit. Changed only through [`App::handle`] (which keeps
+    /// `deck_text` in step); read it freely.
     pub deck: DeckDoc,
+    /// `deck.text()`, refreshed whenever the deck changes, so that [`App::unsaved`]
+    /// (asked every frame) does not serialise the deck.
+    deck_text: String,
     /// File the deck came from / is saved to.
     pub path: Option<PathBuf>,
-    /// Deck text at the last open/save (unsaved = differs).
+    /// Deck text at the last open/save (unsaved = the deck's text differs).
     pub saved_text: String,
     /// Units used to display and type values.
     pub display_units: Units,
@@ -235,12 +240,13 @@ const PAGE: usize = 10;
 impl App {
     /// A new app on `deck` (from `path` if given). Call [`App::start`] for the first solve.
     pub fn new(deck: DeckDoc, path: Option<PathBuf>) -> App {
-        let saved_text = deck.text();
+        let deck_text = deck.text();
         let display_units = deck.units();
         App {
             deck,
             path,
-            saved_text,
+            saved_text: deck_text.clone(),
+            deck_text,
             display_units,
             focus: Pane::Inputs,
             size: (80, 24),
@@ -269,9 +275,17 @@ impl App {
         vec![self.submit()]
     }
 
-    /// True if the deck differs from the last saved/opened text.
+    /// True if the deck's text differs from the last saved/opened text (so undoing back
+    /// to the saved deck clears it). A string comparison: the deck's text is kept
+    /// up to date when the deck changes, not serialised here.
     pub fn unsaved(&self) -> bool {
-        self.deck.text() != self.saved_text
+        self.deck_text != self.saved_text
+    }
+
+    /// Replaces the deck (keeping its text in step) and returns the previous one.
+    fn replace_deck(&mut self, deck: DeckDoc) -> DeckDoc {
+        self.deck_text = deck.text();
+        std::mem::replace(&mut self.deck, deck)
     }
 
     /// True if all panes are laid out together at the current size.
@@ -292,11 +306,9 @@ impl App {
         }
     }
 
-    /// What the visible panes need from the solver.
-    ///
-    /// Lead: stages added to `Request` later (contact, heat, …) default to off through
-    /// `..Request::default()`; switch them on here for the panes that show them.
-    #[allow(clippy::needless_update)] // future Request fields take their defaults
+    /// What the visible panes need from the solver: the stepper's trace and the thermal
+    /// transient only when their panes are on screen; the other stages (contact, heat)
+    /// take `Request`'s defaults.
     pub fn wanted_request(&self) -> Request {
         Request {
             trace_roller: self.visible(Pane::Stepper).then_some(self.roller_sel),
@@ -389,7 +401,7 @@ impl App {
             }
             AppEvent::Saved(Ok(path)) => {
                 self.message = Some(format!("saved {}", path.display()));
-                self.saved_text = self.deck.text();
+                self.saved_text = self.deck_text.clone();
                 self.path = Some(path);
                 if std::mem::take(&mut self.quit_after_save) {
                     self.quit = true;
@@ -403,14 +415,14 @@ impl App {
                 Vec::new()
             }
             AppEvent::Opened(Ok((deck, path))) => {
-                let before = std::mem::replace(&mut self.deck, *deck);
+                let before = self.replace_deck(*deck);
                 if self.path.as_ref() == Some(&path) {
                     self.undo.push((before, None)); // revert: undoable
                 } else {
                     self.undo.clear(); // another file: old edits do not apply to it
                 }
                 self.redo.clear();
-                self.saved_text = self.deck.text();
+                self.saved_text = self.deck_text.clone();
                 self.display_units = self.deck.units();
                 self.message = Some(format!("opened {}", path.display()));
                 self.path = Some(path);
@@ -734,7 +746,7 @@ impl App {
         let mut next = self.deck.clone();
         match next.set_value(field.key, &buffer, self.display_units) {
             Ok(()) => {
-                let before = std::mem::replace(&mut self.deck, next);
+                let before = self.replace_deck(next);
                 self.undo.push((before, Some(field.key)));
                 self.redo.clear();
                 self.mode = Mode::Normal;
@@ -757,7 +769,7 @@ impl App {
     fn undo_edit(&mut self) -> Vec<Command> {
         match self.undo.pop() {
             Some((deck, key)) => {
-                let cur = std::mem::replace(&mut self.deck, deck);
+                let cur = self.replace_deck(deck);
                 self.redo.push((cur, key));
                 let cmd = self.submit();
                 if let Some(k) = key {
@@ -779,7 +791,7 @@ impl App {
     fn redo_edit(&mut self) -> Vec<Command> {
         match self.redo.pop() {
             Some((deck, key)) => {
-                let cur = std::mem::replace(&mut self.deck, deck);
+                let cur = self.replace_deck(deck);
                 self.undo.push((cur, key));
                 let cmd = self.submit();
                 if let Some(k) = key {

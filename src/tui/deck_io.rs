@@ -10,7 +10,7 @@ use std::path::Path;
 use crate::bearings::spherical_roller::Bearing;
 use crate::deck::{self, Deck, DeckError, DeckErrors, FieldKind, FieldSpec};
 
-pub use crate::units::Units;
+use crate::units::Units;
 
 /// `"SI"` or `"US"`.
 pub fn units_label(u: Units) -> &'static str {

@@ -119,7 +119,7 @@ fn tui_edit_commits_marks_and_solves() {
         panic!("expected one solve, got {cmds:?}");
     };
     assert_eq!(job.generation, app.generation);
-    assert!((job.bearing.operating.radial_load_n - 4000.0 * 4.448_221_615_260_5).abs() < 1e-6);
+    assert!((job.bearing.operating.radial_load_n - 4000.0 * crate::units::LBF_N).abs() < 1e-6);
     run_sync(&mut app, cmds);
     assert!(app.dirty_keys.is_empty());
     assert!(matches!(app.solve, SolveState::Solved { .. }));
@@ -172,6 +172,39 @@ fn tui_undo_redo() {
     assert_eq!(app.deck, edited);
     assert!(app.handle(ctrl('y')).is_empty());
     assert_eq!(app.message.as_deref(), Some("nothing to redo"));
+}
+
+/// `unsaved()` compares the deck's text with the saved text, as it did when it
+/// serialised the deck on every call: on after an edit, off after undoing back to the
+/// saved deck (or retyping the saved value), on after redo, off after a save, and on
+/// after undoing past that save. At each step it agrees with that old definition.
+#[test]
+fn tui_unsaved_follows_the_deck_text() {
+    let mut app = deck_app();
+    let was = |app: &App| app.deck.text() != app.saved_text;
+    let check = |app: &App, expected: bool| {
+        assert_eq!(app.unsaved(), expected);
+        assert_eq!(app.unsaved(), was(app), "agrees with the text comparison");
+    };
+    check(&app, false);
+    select_field(&mut app, "operating.axial_load");
+    let original = app.deck.value("operating.axial_load", app.display_units);
+    type_value(&mut app, "1500");
+    check(&app, true);
+    app.handle(ctrl('z'));
+    check(&app, false);
+    app.handle(ctrl('y'));
+    check(&app, true);
+    type_value(&mut app, &original);
+    check(&app, false);
+    type_value(&mut app, "1500");
+    check(&app, true);
+    app.handle(AppEvent::Saved(Ok(PathBuf::from("saved.toml"))));
+    check(&app, false);
+    app.handle(ctrl('z'));
+    check(&app, true);
+    app.handle(ctrl('y'));
+    check(&app, false);
 }
 
 #[test]
@@ -845,7 +878,7 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
             .fold((f64::MAX, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
         assert!(lo > 0.0 && hi / lo - 1.0 < 1e-9, "{what}: {lo} … {hi}");
     };
-    let s = view_model::lamina_loads(&a, 0, deck_io::Units::Si).expect("roller 1");
+    let s = view_model::lamina_loads(&a, 0, crate::units::Units::Si).expect("roller 1");
     assert_eq!(s.y_label, "N/mm");
     flat(&s.inner.iter().map(|p| p.1).collect::<Vec<_>>(), "chart");
     // The chart's level is the roller's load over its length (Q/L, here in N/mm).
@@ -855,6 +888,6 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
         * 1e-3;
     assert!((s.inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
     let last = view_model::trace_len(&a) - 1;
-    let step = view_model::trace_step(&a, last, deck_io::Units::Si).expect("a step");
+    let step = view_model::trace_step(&a, last, crate::units::Units::Si).expect("a step");
     flat(&step.inner_load, "stepper bars");
 }

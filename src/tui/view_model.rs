@@ -9,17 +9,10 @@
 use crate::bearings::spherical_roller::load_distribution::{LaminaResult, TraceStep};
 use crate::bearings::spherical_roller::pipeline::Analysis;
 
-use super::deck_io::Units;
+use crate::units::{Units, FAHRENHEIT_PER_KELVIN, INCH_M as IN_M, LBF_N, PSI_PA};
 
 /// Placeholder for a value that the current pipeline does not compute yet.
 pub const DASH: &str = "—";
-
-/// Newtons per pound-force.
-const LBF_N: f64 = 4.448_221_615_260_5;
-/// Metres per inch.
-const IN_M: f64 = 0.0254;
-/// Pascals per psi.
-const PSI_PA: f64 = 6_894.757_293_168_361;
 
 /// A force in display units (N or lbf).
 pub fn force(value_n: f64, u: Units) -> f64 {
@@ -325,7 +318,7 @@ pub fn thermal_view(a: &Analysis, u: Units, node: Option<usize>) -> Option<Therm
     let th = a.thermal.as_ref()?;
     let (conv, unit): (fn(f64) -> f64, &str) = match u {
         Units::Si => (|c| c, "°C"),
-        Units::Us => (|c| c * 1.8 + 32.0, "°F"),
+        Units::Us => (|c| c * FAHRENHEIT_PER_KELVIN + 32.0, "°F"),
     };
     let steady: Vec<(String, f64)> = th
         .steady

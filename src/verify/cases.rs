@@ -1,6 +1,6 @@
 //! Validation report (issue 7): every reference case of the tests, computed through the
 //! library and compared with its published or closed-form value
-//! (`/work/shared/guide/references.md`).
+//! (the project's guide of reference values, `references.md`).
 //!
 //! Each [`Case`] carries the quantity, the reference value and its source, the computed
 //! value, the relative error and the relative tolerance (with the reason for it in
@@ -26,6 +26,7 @@ use crate::physics::lubrication::film::{self, FilmInputs};
 use crate::thermal::{
     self, HeatMechanism, Integrator, Link, Network, Node, Scenario, TransientSettings,
 };
+use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
 
 /// One validation case.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -75,9 +76,6 @@ fn case(
         note: note.to_string(),
     }
 }
-
-const IN: f64 = 0.0254;
-const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// NASA/TM-2012-217115 Table I, roller at ψ = 0 (exponent 10/9).
 pub(crate) const STRIBECK_TABLE: [(usize, f64); 8] = [
@@ -400,14 +398,14 @@ fn life_cases(out: &mut Vec<Case>) {
     ));
     // Lundberg–Palmgren capacity: SI constant 552 (N, mm) against 49 500 (lbf, in).
     let g = Bearing::example_aerospace().geometry.capacity_geometry();
-    let (d_in, l_in) = (g.roller_diameter_m / IN, g.effective_length_m / IN);
+    let (d_in, l_in) = (g.roller_diameter_m / INCH_M, g.effective_length_m / INCH_M);
     let inch = life::CAPACITY_CONSTANT_LBF_IN * 0.75 * (1.0 - g.theta).powf(29.0 / 27.0)
         / (1.0 + g.theta).powf(0.25)
         * (g.theta / g.contact_angle_rad.cos()).powf(2.0 / 9.0)
         * d_in.powf(29.0 / 27.0)
         * l_in.powf(7.0 / 9.0)
         * (g.roller_count as f64).powf(-0.25)
-        * 4.448_221_615_260_5;
+        * LBF_N;
     out.push(case(
         "inner raceway capacity, aerospace bearing, ξ = 0.75, N",
         inch,
@@ -467,8 +465,8 @@ fn life_cases(out: &mut Vec<Case>) {
 fn kinematics_cases(out: &mut Vec<Case>) {
     // §7 with contacts at the roller mid-plane, zero angle, no crown: r₁,₂ = (P/2)(1 ∓ γ),
     // r_o = D/2, against Harris's closed forms.
-    let (d, pt) = (0.5 * IN, 3.3 * IN);
-    let (w1, w2) = (17_000.0 * RPM, -1_000.0 * RPM);
+    let (d, pt) = (0.5 * INCH_M, 3.3 * INCH_M);
+    let (w1, w2) = (17_000.0 * RPM_RAD_S, -1_000.0 * RPM_RAD_S);
     let gamma = d / pt;
     let inner = Some((pt / 2.0 * (1.0 - gamma), d / 2.0));
     let outer = Some((pt / 2.0 * (1.0 + gamma), d / 2.0));
@@ -487,17 +485,17 @@ fn kinematics_cases(out: &mut Vec<Case>) {
     let src = "seed 000 App. C; Harris (no slip, no crown, β = 0)";
     out.push(case(
         "cage speed, §7 at mid-plane contacts, rpm",
-        0.5 * (w1 * (1.0 - gamma) + w2 * (1.0 + gamma)) / RPM,
+        0.5 * (w1 * (1.0 - gamma) + w2 * (1.0 + gamma)) / RPM_RAD_S,
         src,
-        cage / RPM,
+        cage / RPM_RAD_S,
         1e-12,
         "same kinematics, independent arithmetic",
     ));
     out.push(case(
         "roller spin, §7 at mid-plane contacts, rpm",
-        pt / (2.0 * d) * (1.0 - gamma * gamma) * (w2 - w1) / RPM,
+        pt / (2.0 * d) * (1.0 - gamma * gamma) * (w2 - w1) / RPM_RAD_S,
         src,
-        spin / RPM,
+        spin / RPM_RAD_S,
         1e-12,
         "same kinematics, independent arithmetic",
     ));
@@ -595,7 +593,7 @@ fn slicing_cases(out: &mut Vec<Case>) {
 
 fn heat_cases(out: &mut Vec<Case>) {
     // Petroff by hand from the film: τ = η·v/h, v = ΔΩ·D/2, h = dc/2, area π·D·W.
-    let (eta, w, d, dc, dw) = (0.0045, 0.25 * IN, 3.75 * IN, 0.02 * IN, 800.0);
+    let (eta, w, d, dc, dw) = (0.0045, 0.25 * INCH_M, 3.75 * INCH_M, 0.02 * INCH_M, 800.0);
     let v = dw * d / 2.0;
     let hand = eta * v / (dc / 2.0) * std::f64::consts::PI * d * w;
     out.push(case(
@@ -610,7 +608,7 @@ fn heat_cases(out: &mut Vec<Case>) {
     let f = heat::cage_rail_friction_force_n(eta, w, d, dc, dw).unwrap_or(f64::NAN);
     out.push(case(
         "Petroff cage-rail heat, Btu/hr",
-        0.1928 * 3.75 * (f / 4.448_221_615_260_5) * dw,
+        0.1928 * 3.75 * (f / LBF_N) * dw,
         "seed 000 eq. 9.4 (in, lbf)",
         heat::watts_to_btu_per_hour(heat::cage_rail_power_w(eta, w, d, dc, dw).unwrap_or(f64::NAN)),
         1e-3,
@@ -641,8 +639,8 @@ fn heat_cases(out: &mut Vec<Case>) {
         heat::newton_metres_to_inch_pounds(heat::viscous_drag_torque_nm(
             5.0,
             10e-6,
-            12_000.0 * RPM,
-            3.3 * IN,
+            12_000.0 * RPM_RAD_S,
+            3.3 * INCH_M,
         )),
         0.025,
         "the seed's 1.42e-5 is 2.1 % below the exact conversion 1.4504e-5",

@@ -39,6 +39,7 @@ use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
 use crate::bearings::spherical_roller::Bearing;
 use crate::bearings::SolveError;
 use crate::thermal::ThermalModel;
+use crate::units::CELSIUS_ZERO_K;
 
 /// Laminae of the grid (Γ).
 pub const GRID_LAMINAE: [usize; 12] = [5, 7, 11, 15, 21, 31, 41, 61, 81, 121, 201, 400];
@@ -149,7 +150,7 @@ fn relative_error_opt(x: Option<f64>, reference: Option<f64>) -> Option<f64> {
 /// value would depend on the arbitrary zero of the scale.
 fn relative_temperature_error(x: Option<f64>, reference: Option<f64>) -> Option<f64> {
     match (x, reference) {
-        (Some(a), Some(b)) => Some(relative_error(a + 273.15, b + 273.15)),
+        (Some(a), Some(b)) => Some(relative_error(a + CELSIUS_ZERO_K, b + CELSIUS_ZERO_K)),
         _ => None,
     }
 }

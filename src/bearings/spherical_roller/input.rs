@@ -169,25 +169,23 @@ impl Bearing {
     /// (65 mm bore at 17 000 rpm), the same bearing as `decks/aerospace.toml`. For unit tests
     /// and benchmarks that must not depend on the deck parser.
     pub fn example_aerospace() -> Bearing {
-        const IN: f64 = 0.0254;
-        const LBF: f64 = 4.448_221_615_260_5;
-        const RPM: f64 = std::f64::consts::PI / 30.0;
-        let pitch = 3.3 * IN;
+        use crate::units::{INCH_M, LBF_N, PSI_PA, RPM_RAD_S};
+        let pitch = 3.3 * INCH_M;
         let beta = 12.0_f64.to_radians();
-        let d = 0.5 * IN;
+        let d = 0.5 * INCH_M;
         Bearing {
             name: "aerospace example".into(),
             geometry: Geometry {
                 roller_count: 16,
                 roller_diameter_m: d,
-                roller_length_m: 0.5 * IN,
-                effective_length_m: 0.46 * IN,
-                roller_crown_radius_m: 1.90 * IN,
-                inner_crown_radius_m: 1.95 * IN,
+                roller_length_m: 0.5 * INCH_M,
+                effective_length_m: 0.46 * INCH_M,
+                roller_crown_radius_m: 1.90 * INCH_M,
+                inner_crown_radius_m: 1.95 * INCH_M,
                 outer_crown_radius_m: pitch / (2.0 * beta.cos()) + d / 2.0,
                 pitch_diameter_m: pitch,
                 contact_angle_rad: beta,
-                diametral_clearance_m: 0.0008 * IN,
+                diametral_clearance_m: 0.0008 * INCH_M,
             },
             materials: Materials {
                 roller: Material::STEEL,
@@ -195,25 +193,25 @@ impl Bearing {
                 outer_ring: Material::STEEL,
             },
             operating: Operating {
-                inner_speed_rad_s: 17_000.0 * RPM,
+                inner_speed_rad_s: 17_000.0 * RPM_RAD_S,
                 outer_speed_rad_s: 0.0,
-                radial_load_n: 3_000.0 * LBF,
-                axial_load_n: 1_000.0 * LBF,
+                radial_load_n: 3_000.0 * LBF_N,
+                axial_load_n: 1_000.0 * LBF_N,
             },
             lubricant: Lubricant {
                 viscosity_pa_s: 0.0045,
                 pressure_viscosity_pa_inv: 1.1e-8,
                 density_kg_m3: 950.0,
                 specific_heat_j_kg_k: 2_000.0,
-                transition_shear_stress_pa: 1_000.0 * 6_894.757_293_168_361,
+                transition_shear_stress_pa: 1_000.0 * PSI_PA,
                 limiting_traction_coefficient: 0.06,
                 lost_lubrication_traction_coefficient: 0.1,
                 film_model: FilmModel::Grubin,
             },
             surfaces: Surfaces {
-                roller_rms_m: 2.0e-6 * IN,
-                inner_rms_m: 4.0e-6 * IN,
-                outer_rms_m: 4.0e-6 * IN,
+                roller_rms_m: 2.0e-6 * INCH_M,
+                inner_rms_m: 4.0e-6 * INCH_M,
+                outer_rms_m: 4.0e-6 * INCH_M,
             },
             life: LifeFactors {
                 capacity_reduction: 0.75,
@@ -225,9 +223,9 @@ impl Bearing {
                 iso_reference_viscosity_m2_s: 0.0,
             },
             cage: Cage {
-                rail_width_m: 0.25 * IN,
-                mean_diameter_m: 3.75 * IN,
-                diametral_clearance_m: 0.02 * IN,
+                rail_width_m: 0.25 * INCH_M,
+                mean_diameter_m: 3.75 * INCH_M,
+                diametral_clearance_m: 0.02 * INCH_M,
                 guided_by: GuidingRing::Outer,
                 drag_factor: 5.0,
                 mass_kg: 0.15,

@@ -11,17 +11,15 @@
 //! its rounding).
 
 use crate::physics::material::Material;
+use crate::units::{INCH_M, LBF_N, PSI_PA};
 
 /// Palmgren's constant in inch–pound units: δ[in] = C·Q[lbf]^0.9/L[in]^0.8 (eq. E.1).
 pub const PALMGREN_IN_LBF: f64 = 4.36e-7;
-const IN: f64 = 0.0254;
-const LBF: f64 = 4.448_221_615_260_5;
-const PSI: f64 = 6_894.757_293_168_361;
 
 /// Palmgren's constant in SI: δ[m] = C·Q[N]^0.9/L[m]^0.8, converted exactly from the inch form.
 pub fn palmgren_si() -> f64 {
-    // δ_m = IN·C_in·(Q_N/LBF)^0.9/(L_m/IN)^0.8
-    PALMGREN_IN_LBF * IN.powf(1.8) / LBF.powf(0.9)
+    // δ_m = INCH_M·C_in·(Q_N/LBF_N)^0.9/(L_m/INCH_M)^0.8
+    PALMGREN_IN_LBF * INCH_M.powf(1.8) / LBF_N.powf(0.9)
 }
 
 /// Sum of compliances (1−ν₁²)/E₁ + (1−ν₂²)/E₂, 1/Pa.
@@ -46,8 +44,8 @@ pub fn material_factor(a: &Material, b: &Material) -> f64 {
 /// Eq. E.3 taken literally, K̄^2.7 = [1.643·10⁷·(Ê₁+Ê₂)/(Ê₁Ê₂)]^0.9 with Ê in psi.
 /// Kept for the record and the tests only.
 pub fn material_factor_eq_e3(a: &Material, b: &Material) -> f64 {
-    let e1 = a.plane_strain_modulus_pa() / PSI;
-    let e2 = b.plane_strain_modulus_pa() / PSI;
+    let e1 = a.plane_strain_modulus_pa() / PSI_PA;
+    let e2 = b.plane_strain_modulus_pa() / PSI_PA;
     (1.643e7 * (e1 + e2) / (e1 * e2)).powf(0.9)
 }
 
@@ -226,12 +224,12 @@ mod tests {
         let mm_n = palmgren_si() * 1e3 * (1e-3f64).powf(-0.8) / 1.0; // δ[mm]=C_mm·Q^0.9/l_mm^0.8
         assert!((mm_n / 3.84e-5 - 1.0).abs() < 5e-3, "{mm_n}");
         // Back-conversion to inches is exact (round-off, 1e-12).
-        let back = palmgren_si() / IN.powf(1.8) * LBF.powf(0.9);
+        let back = palmgren_si() / INCH_M.powf(1.8) * LBF_N.powf(0.9);
         assert!((back / PALMGREN_IN_LBF - 1.0).abs() < 1e-12);
         // A numeric δ: Q = 1000 lbf on L = 0.5 in, inch formula vs SI law.
         let d_in = PALMGREN_IN_LBF * 1000f64.powf(0.9) / 0.5f64.powf(0.8);
-        let d_m = palmgren_si() * (1000.0 * LBF).powf(0.9) / (0.5 * IN).powf(0.8);
-        assert!((d_m / (d_in * IN) - 1.0).abs() < 1e-12);
+        let d_m = palmgren_si() * (1000.0 * LBF_N).powf(0.9) / (0.5 * INCH_M).powf(0.8);
+        assert!((d_m / (d_in * INCH_M) - 1.0).abs() < 1e-12);
     }
 
     #[test]

@@ -9,7 +9,8 @@
 //! **Seed misprint**: §5 prints the "equivalent modulus" as Ē = ½[(1−e₀²)/E₀ + (1−eᵢ²)/Eᵢ],
 //! which is 1/E′ (a compliance, 1/psi), not a modulus. Read literally the groups Ū, Ā, Ȳ
 //! would not be dimensionless. The physically consistent reading, used here, is Ē = E′
-//! (see `/work/shared/guide/sashbean-notes.md`); with it eq. 5.1 is Grubin's formula.
+//! (see the project's reading notes on seed 000, `sashbean-notes.md`); with it eq. 5.1 is
+//! Grubin's formula.
 //!
 //! **Unloaded laminae**: W → 0 sends W^(−1/11) (and the other load exponents) to
 //! infinity: no load, no Hertz contact, no EHD film to speak of. Every film function

@@ -626,7 +626,7 @@ mod tests {
     use super::*;
     use crate::bearings::spherical_roller::Bearing;
 
-    const PSI: f64 = 6_894.757_293_168_361;
+    use crate::units::PSI_PA;
 
     fn ehd(eta: f64, alpha: f64, tau_tr: f64, mu: f64) -> TractionModel {
         TractionModel::Ehd {
@@ -643,9 +643,9 @@ mod tests {
     #[test]
     fn newtonian_branch() {
         let want = 0.0045 * 1.1f64.exp() * 0.01 / 0.5e-6;
-        let tau = atz_shear_stress(100e6, 0.01, 0.5e-6, 0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
+        let tau = atz_shear_stress(100e6, 0.01, 0.5e-6, 0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
         assert!((tau - want).abs() < 1e-12 * want);
-        let neg = atz_shear_stress(100e6, -0.01, 0.5e-6, 0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
+        let neg = atz_shear_stress(100e6, -0.01, 0.5e-6, 0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
         assert_eq!(neg, -tau);
     }
 
@@ -654,7 +654,7 @@ mod tests {
     /// with v/h = 50/0.03e-6 (τ_N = 13 MPa), τ = τ_tr. Exact (min/max of computed values).
     #[test]
     fn limited_branches() {
-        let tr = 1000.0 * PSI;
+        let tr = 1000.0 * PSI_PA;
         let tau = atz_shear_stress(1.5e9, 5.0, 0.3e-6, 0.0045, 1.1e-8, tr, 0.06);
         assert!((tau - 0.06 * 1.5e9).abs() < 1e-6);
         let tau = atz_shear_stress(50e6, 50.0, 0.03e-6, 0.0045, 1.1e-8, tr, 0.06);
@@ -668,7 +668,7 @@ mod tests {
     #[test]
     fn switch_is_continuous_and_monotone() {
         let (eta, alpha, tr, mu, h): (f64, f64, f64, f64, f64) =
-            (0.0045, 1.1e-8, 1000.0 * PSI, 0.06, 0.4e-6);
+            (0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06, 0.4e-6);
         for p in [50e6, 1e9] {
             let k = eta * (alpha * p).exp() / h; // dτ_N/dv
             let limit = f64::max(tr, mu * p);
@@ -692,7 +692,7 @@ mod tests {
     /// the limit. Exact.
     #[test]
     fn guards_never_nan() {
-        let tr = 1000.0 * PSI;
+        let tr = 1000.0 * PSI_PA;
         assert_eq!(
             atz_shear_stress(1e9, 1.0, 0.0, 0.0045, 1.1e-8, tr, 0.06),
             6e7
@@ -776,7 +776,7 @@ mod tests {
     #[test]
     fn newtonian_lamina_against_closed_form() {
         let (eta, alpha, v, h) = (0.0045, 1.1e-8, 0.02, 0.8e-6);
-        let m = ehd(eta, alpha, 1000.0 * PSI, 0.06);
+        let m = ehd(eta, alpha, 1000.0 * PSI_PA, 0.06);
         let (b, w) = (40e-6, 0.5e-3);
         let p0 = 200e6;
         let q = p0 * std::f64::consts::PI * b * w / 2.0;
@@ -790,7 +790,7 @@ mod tests {
         let want = w * reference_integral(|p| eta * (alpha * p).exp() * v / h, p0, b);
         assert!((got - want).abs() < 1e-8 * want, "{got} vs {want}");
         // α = 0: F = η₀·v·2b·w/h exactly (constant stress over the strip), tolerance 1e-14.
-        let m0 = ehd(eta, 0.0, 1000.0 * PSI, 0.06);
+        let m0 = ehd(eta, 0.0, 1000.0 * PSI_PA, 0.06);
         let f0 = m0.lamina_traction(&c, v, h).force_n;
         let want0 = eta * v * 2.0 * b * w / h;
         assert!((f0 - want0).abs() < 1e-14 * want0);
@@ -839,7 +839,7 @@ mod tests {
     /// production quadrature splits at the kinks.
     #[test]
     fn mixed_lamina_against_reference() {
-        let (eta, alpha, tr, mu) = (0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
+        let (eta, alpha, tr, mu) = (0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
         let m = ehd(eta, alpha, tr, mu);
         let (b, w, p0) = (60e-6, 0.55e-3, 1.2e9);
         let c = LaminaContact {
@@ -912,7 +912,7 @@ mod tests {
         // (limit kink τ_tr/μ = 115 MPa) and 10 000 psi (1.15 GPa, above most crossings):
         // the μp crossings are searched only above τ_tr/μ, which must lose no branch change.
         let (eta, alpha, mu) = (0.0045, 1.1e-8, 0.06);
-        for tr in [0.0, 1000.0 * PSI, 10_000.0 * PSI] {
+        for tr in [0.0, 1000.0 * PSI_PA, 10_000.0 * PSI_PA] {
             kinks_sweep(ehd(eta, alpha, tr, mu));
         }
     }
@@ -942,7 +942,7 @@ mod tests {
     /// than the local slope allows), and bounded by the fully limited value.
     #[test]
     fn lamina_force_continuous_in_v() {
-        let m = ehd(0.0045, 1.1e-8, 1000.0 * PSI, 0.06);
+        let m = ehd(0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
         let c = LaminaContact {
             load_n: 1.2e9 * std::f64::consts::PI * 60e-6 * 0.55e-3 / 2.0,
             half_width_m: 60e-6,

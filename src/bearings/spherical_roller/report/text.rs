@@ -4,7 +4,7 @@ use std::fmt::Write;
 
 use crate::bearings::spherical_roller::pipeline::Analysis;
 use crate::report::Disp;
-use crate::units::Units;
+use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
 /// Human-readable report in `units`.
 pub fn to_string(a: &Analysis, units: Units) -> String {
@@ -190,7 +190,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     if let Some(th) = &a.thermal {
         let temp = |c: f64| match units {
             Units::Si => format!("{c:.1} °C"),
-            Units::Us => format!("{:.1} °F", c * 1.8 + 32.0),
+            Units::Us => format!("{:.1} °F", c * FAHRENHEIT_PER_KELVIN + 32.0),
         };
         let _ = writeln!(s);
         let _ = writeln!(
