@@ -587,7 +587,7 @@ pub fn friction(
                     }
                     let hz = &stresses.laminae[j][i][k];
                     let t = model.lamina_traction(
-                        &traction::LaminaContact {
+                        &traction::HertzStrip {
                             load_n: contact.load_n,
                             half_width_m: hz.half_width_m,
                             width_m: contact.width_m,

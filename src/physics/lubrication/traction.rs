@@ -57,9 +57,11 @@ pub enum TractionModel {
     },
 }
 
-/// One lamina's Hertz contact: load and strip dimensions.
+/// A Hertz strip (one lamina's line contact) as traction reads it: load and strip
+/// dimensions. (The spherical roller's `contacts::LaminaContact` is the contact geometry of
+/// a lamina; this is its Hertz strip.)
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct LaminaContact {
+pub struct HertzStrip {
     /// q, normal load carried by the lamina, N.
     pub load_n: f64,
     /// b, Hertz semi-width in the rolling direction, m.
@@ -68,7 +70,7 @@ pub struct LaminaContact {
     pub width_m: f64,
 }
 
-impl LaminaContact {
+impl HertzStrip {
     /// Peak Hertz pressure p₀ = 2q/(π·b·w), Pa, so that w·∫p dx = q for the semi-ellipse
     /// p(x) = p₀·√(1 − x²/b²). Zero for an unloaded or degenerate strip.
     pub fn peak_pressure_pa(&self) -> f64 {
@@ -233,7 +235,7 @@ impl TractionModel {
     /// shear stress over the entire contact area of this lamina contact").
     ///
     /// F = w·∫_{−b}^{b} τ(p(x), v, h) dx with p(x) = p₀·√(1 − x²/b²),
-    /// p₀ = [`LaminaContact::peak_pressure_pa`]; v (m/s) is taken uniform across the
+    /// p₀ = [`HertzStrip::peak_pressure_pa`]; v (m/s) is taken uniform across the
     /// strip's rolling direction and h (m) is the film thickness. Heat = |F·v| (W).
     ///
     /// Quadrature: the substitution x = b·sin φ turns the integral into
@@ -252,7 +254,7 @@ impl TractionModel {
     /// force, or the limited stress when h ≤ 0), never NaN.
     pub fn lamina_traction(
         &self,
-        contact: &LaminaContact,
+        contact: &HertzStrip,
         sliding_velocity_m_s: f64,
         film_thickness_m: f64,
     ) -> LaminaTraction {
@@ -710,7 +712,7 @@ mod tests {
             0.0045 * 1.0 / 1e-6
         );
         let m = ehd(0.0045, 1.1e-8, tr, 0.06);
-        let c = LaminaContact {
+        let c = HertzStrip {
             load_n: 500.0,
             half_width_m: 50e-6,
             width_m: 0.5e-3,
@@ -719,7 +721,7 @@ mod tests {
             let t = m.lamina_traction(&c, v, h);
             assert!(t.force_n.is_finite() && t.heat_w.is_finite());
         }
-        let unloaded = LaminaContact { load_n: 0.0, ..c };
+        let unloaded = HertzStrip { load_n: 0.0, ..c };
         assert_eq!(
             m.lamina_traction(&unloaded, 1.0, 0.0),
             LaminaTraction::default()
@@ -735,7 +737,7 @@ mod tests {
     fn constant_mode_gives_mu_q() {
         let lub = Bearing::example_aerospace().lubricant;
         let m = TractionModel::lost_lubrication(&lub);
-        let c = LaminaContact {
+        let c = HertzStrip {
             load_n: 873.2,
             half_width_m: 61e-6,
             width_m: 0.55e-3,
@@ -780,7 +782,7 @@ mod tests {
         let (b, w) = (40e-6, 0.5e-3);
         let p0 = 200e6;
         let q = p0 * std::f64::consts::PI * b * w / 2.0;
-        let c = LaminaContact {
+        let c = HertzStrip {
             load_n: q,
             half_width_m: b,
             width_m: w,
@@ -809,7 +811,7 @@ mod tests {
         let m = ehd(eta, 1e-8, 1e30, 1e30);
         for a in [0.5f64, 2.2, 10.0, 20.0, 40.0, 80.0] {
             let p0 = a / 1e-8;
-            let c = LaminaContact {
+            let c = HertzStrip {
                 load_n: p0 * std::f64::consts::PI * b * w / 2.0,
                 half_width_m: b,
                 width_m: w,
@@ -842,7 +844,7 @@ mod tests {
         let (eta, alpha, tr, mu) = (0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
         let m = ehd(eta, alpha, tr, mu);
         let (b, w, p0) = (60e-6, 0.55e-3, 1.2e9);
-        let c = LaminaContact {
+        let c = HertzStrip {
             load_n: p0 * std::f64::consts::PI * b * w / 2.0,
             half_width_m: b,
             width_m: w,
@@ -920,7 +922,7 @@ mod tests {
     fn kinks_sweep(m: TractionModel) {
         let (b, w) = (60e-6, 0.55e-3);
         for p0 in [50e6, 150e6, 600e6, 1.2e9, 2.5e9] {
-            let c = LaminaContact {
+            let c = HertzStrip {
                 load_n: p0 * std::f64::consts::PI * b * w / 2.0,
                 half_width_m: b,
                 width_m: w,
@@ -943,7 +945,7 @@ mod tests {
     #[test]
     fn lamina_force_continuous_in_v() {
         let m = ehd(0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06);
-        let c = LaminaContact {
+        let c = HertzStrip {
             load_n: 1.2e9 * std::f64::consts::PI * 60e-6 * 0.55e-3 / 2.0,
             half_width_m: 60e-6,
             width_m: 0.55e-3,
