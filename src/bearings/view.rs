@@ -2,7 +2,85 @@
 //! their columns' units, and the key outputs the fidelity bench compares. Reports and
 //! panes draw from a [`View`]; none of them re-joins a system's per-element arrays.
 
-use crate::units::Quantity;
+use crate::units::{Quantity, Units, INCH_M, LBF_N, PSI_PA};
+
+/// How a value is shown on screen: the display unit an engineer reads it in, per unit
+/// system (contact stress in MPa or ksi, film in µm or µin, deflections in mm or mil).
+/// Reports keep SI with the unit in the key; this is only for panes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Display {
+    /// Shown as computed, no unit in the header (counts, ratios, angles in degrees,
+    /// speeds in rpm, heat in W).
+    Plain,
+    /// N or lbf.
+    Force,
+    /// Load per unit length: N/mm or lbf/in.
+    LineLoad,
+    /// Deflections, approaches, offsets: mm or mil (0.001 in).
+    SmallLength,
+    /// Film thickness: µm or µin.
+    Film,
+    /// Contact stress: MPa or ksi.
+    Stress,
+}
+
+impl Display {
+    /// The SI value `v` in display units.
+    pub fn convert(self, v: f64, u: Units) -> f64 {
+        match (self, u) {
+            (Display::Plain, _) => v,
+            (Display::Force, Units::Si) => v,
+            (Display::Force, Units::Us) => v / LBF_N,
+            (Display::LineLoad, Units::Si) => v * 1e-3,
+            (Display::LineLoad, Units::Us) => v / LBF_N * INCH_M,
+            (Display::SmallLength, Units::Si) => v * 1e3,
+            (Display::SmallLength, Units::Us) => v / INCH_M * 1e3,
+            (Display::Film, Units::Si) => v * 1e6,
+            (Display::Film, Units::Us) => v / INCH_M * 1e6,
+            (Display::Stress, Units::Si) => v / 1e6,
+            (Display::Stress, Units::Us) => v / PSI_PA / 1e3,
+        }
+    }
+
+    /// The display unit's label (empty for [`Display::Plain`]).
+    pub fn unit(self, u: Units) -> &'static str {
+        match (self, u) {
+            (Display::Plain, _) => "",
+            (Display::Force, Units::Si) => "N",
+            (Display::Force, Units::Us) => "lbf",
+            (Display::LineLoad, Units::Si) => "N/mm",
+            (Display::LineLoad, Units::Us) => "lbf/in",
+            (Display::SmallLength, Units::Si) => "mm",
+            (Display::SmallLength, Units::Us) => "mil",
+            (Display::Film, Units::Si) => "µm",
+            (Display::Film, Units::Us) => "µin",
+            (Display::Stress, Units::Si) => "MPa",
+            (Display::Stress, Units::Us) => "ksi",
+        }
+    }
+
+    /// `label` followed by the display unit, if any (`"Qi lbf"`).
+    pub fn header(self, label: &str, u: Units) -> String {
+        match (label, self.unit(u)) {
+            (l, "") => l.to_string(),
+            ("", unit) => unit.to_string(),
+            (l, unit) => format!("{l} {unit}"),
+        }
+    }
+}
+
+/// How a column appears in a pane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Screen {
+    /// Header label without the unit (`"Qi"`); the display unit is appended.
+    pub label: &'static str,
+    /// Display unit.
+    pub display: Display,
+    /// Decimals shown.
+    pub precision: usize,
+    /// Column width, cells.
+    pub width: u16,
+}
 
 /// How a column's values are written to CSV (kept per column so the CSV of an existing
 /// system never changes: counts and angles plain, physical values in `{:e}`).
@@ -16,21 +94,55 @@ pub enum CsvStyle {
     Scientific,
 }
 
-/// One column of a table.
+/// One column of a table: written to CSV, shown in a pane, or both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
     /// Machine name with its SI unit, as in JSON and CSV (`inner_normal_load_n`).
     pub key: &'static str,
-    /// What the values are (decides the display unit).
+    /// What the values are (SI unit of the key).
     pub quantity: Quantity,
-    /// CSV formatting.
-    pub csv: CsvStyle,
+    /// CSV formatting; `None`: not a CSV column.
+    pub csv: Option<CsvStyle>,
+    /// Pane formatting; `None`: not shown in the pane.
+    pub screen: Option<Screen>,
 }
 
 impl Column {
-    /// A column of `quantity` values.
+    /// A CSV-only column of `quantity` values.
     pub const fn new(key: &'static str, quantity: Quantity, csv: CsvStyle) -> Column {
-        Column { key, quantity, csv }
+        Column {
+            key,
+            quantity,
+            csv: Some(csv),
+            screen: None,
+        }
+    }
+
+    /// This column shown in a pane too.
+    pub const fn shown(
+        mut self,
+        label: &'static str,
+        display: Display,
+        precision: usize,
+        width: u16,
+    ) -> Column {
+        self.screen = Some(Screen {
+            label,
+            display,
+            precision,
+            width,
+        });
+        self
+    }
+
+    /// A pane-only column.
+    pub const fn screen_only(key: &'static str, quantity: Quantity, screen: Screen) -> Column {
+        Column {
+            key,
+            quantity,
+            csv: None,
+            screen: Some(screen),
+        }
     }
 }
 
@@ -68,13 +180,70 @@ pub struct KeyOutput {
     pub role: KeyRole,
 }
 
+/// One axis of a chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartAxis {
+    /// Label without the unit (`"ψ deg"`, `"x"`); the display unit is appended.
+    pub label: &'static str,
+    /// Display unit of the values.
+    pub display: Display,
+    /// Fixed bounds in display units (e.g. 0–360°); `None`: from the data (0 to a round
+    /// ceiling for y, symmetric about 0 for x).
+    pub bounds: Option<[f64; 2]>,
+}
+
+/// A named series of SI (x, y) points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend name.
+    pub name: &'static str,
+    /// Points, SI.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// A chart: series against a common x axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chart {
+    /// Title.
+    pub title: String,
+    /// X axis.
+    pub x: ChartAxis,
+    /// Y axis.
+    pub y: ChartAxis,
+    /// Series.
+    pub series: Vec<Series>,
+    /// True when point `i` of every series belongs to element `i` (the pane marks the
+    /// selected element).
+    pub per_element: bool,
+}
+
+/// A labelled scalar for a pane's summary line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Summary {
+    /// Label without the unit.
+    pub label: &'static str,
+    /// SI value.
+    pub value: f64,
+    /// Display unit.
+    pub display: Display,
+    /// Decimals shown.
+    pub precision: usize,
+}
+
 /// Everything a solved bearing shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct View {
     /// The system's deck `type`.
     pub system: &'static str,
-    /// Per-element tables; the first is the one CSV reports.
+    /// Per-element tables; the first with CSV columns is the CSV report, the first with
+    /// screen columns the element pane.
     pub tables: Vec<Table>,
+    /// Bearing-level charts (the first is the load pane's).
+    pub charts: Vec<Chart>,
+    /// One chart per element (the load pane's detail view of the selected element).
+    pub element_charts: Vec<Chart>,
+    /// Bearing-level scalars shown under the element table.
+    pub summary: Vec<Summary>,
     /// Key outputs.
     pub key_outputs: Vec<KeyOutput>,
 }
@@ -88,5 +257,38 @@ impl View {
     /// The table called `id`.
     pub fn table(&self, id: &str) -> Option<&Table> {
         self.tables.iter().find(|t| t.id == id)
+    }
+
+    /// The table a pane shows: the first with columns meant for the screen.
+    pub fn screen_table(&self) -> Option<&Table> {
+        self.tables
+            .iter()
+            .find(|t| t.columns.iter().any(|c| c.screen.is_some()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::units::{INCH_M, LBF_N, PSI_PA};
+
+    /// Display units against their definitions (exact factors of units.rs): 1 lbf, 1 ksi,
+    /// 1 mil, 1 µin, 1 lbf/in shown as 1 in US units; SI shows N, MPa, mm, µm, N/mm.
+    #[test]
+    fn display_units_are_their_definitions() {
+        let us = |d: Display, si: f64| d.convert(si, Units::Us);
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
+        assert!(close(us(Display::Force, LBF_N), 1.0));
+        assert!(close(us(Display::Stress, 1e3 * PSI_PA), 1.0));
+        assert!(close(us(Display::SmallLength, 1e-3 * INCH_M), 1.0));
+        assert!(close(us(Display::Film, 1e-6 * INCH_M), 1.0));
+        assert!(close(us(Display::LineLoad, LBF_N / INCH_M), 1.0));
+        assert!(close(Display::Stress.convert(2.5e6, Units::Si), 2.5));
+        assert!(close(Display::SmallLength.convert(2.5e-3, Units::Si), 2.5));
+        assert!(close(Display::LineLoad.convert(2.5e3, Units::Si), 2.5));
+        assert_eq!(Display::Plain.convert(7.0, Units::Us), 7.0);
+        assert_eq!(Display::Force.header("Qi", Units::Us), "Qi lbf");
+        assert_eq!(Display::Force.header("", Units::Si), "N");
+        assert_eq!(Display::Plain.header("ψ deg", Units::Us), "ψ deg");
     }
 }

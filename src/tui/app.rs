@@ -10,8 +10,10 @@ use std::sync::Arc;
 
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
+use crate::bearings::spherical_roller;
 use crate::bearings::spherical_roller::pipeline::{Analysis, Request};
 use crate::bearings::spherical_roller::Bearing;
+use crate::bearings::view::View;
 use crate::units::Units;
 
 use super::deck_io::{self, DeckDoc, FieldInfo};
@@ -213,6 +215,8 @@ pub struct App {
     pub solve: SolveState,
     /// Newest accepted solution.
     pub analysis: Option<Arc<Analysis>>,
+    /// The system-independent view of `analysis` (tables, charts), built once per solve.
+    pub view: Option<Arc<View>>,
     /// Selected roller (0-based).
     pub roller_sel: usize,
     /// Load chart shows the load along the selected roller (per unit length) instead of the
@@ -260,6 +264,7 @@ impl App {
             last_request: Request::default(),
             solve: SolveState::Idle,
             analysis: None,
+            view: None,
             roller_sel: 0,
             chart_laminae: false,
             step: 0,
@@ -390,6 +395,7 @@ impl App {
                             .roller_sel
                             .min(view_model::roller_count(&a).saturating_sub(1));
                         self.step = self.step.min(view_model::trace_len(&a).saturating_sub(1));
+                        self.view = Some(Arc::new(spherical_roller::view::view(&a)));
                         self.analysis = Some(a);
                         // these edits are now reflected in the results
                         self.dirty_keys.retain(|_, g| *g > generation);

@@ -308,39 +308,50 @@ fn stale_note(app: &App) -> &'static str {
     }
 }
 
+/// The element table (Rollers pane): the view's screen table, each column in its display
+/// unit and precision; `—` where a stage was not run.
 fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
     let block = pane_block(app, Pane::Rollers, stale_note(app));
     let inner = block.inner(area);
     block.render(area, buf);
-    let Some(a) = app.analysis.as_deref() else {
+    let Some(view) = app.view.as_deref() else {
         Paragraph::new(no_solution_text(app)).render(inner, buf);
         return;
     };
     let [table_area, foot] =
         Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(inner);
-    let cols = view_model::roller_columns(app.display_units);
+    let u = app.display_units;
+    let (cols, rows) = view_model::table_cells(view, u);
     let header = Row::new(cols.iter().map(|c| Cell::from(c.header.clone())))
         .style(Style::default().fg(ACCENT).add_modifier(Modifier::BOLD));
-    let rows = view_model::roller_rows(a, app.display_units)
-        .into_iter()
-        .map(|r| {
-            Row::new(r.into_iter().map(|c| {
-                let style = if c == DASH {
-                    Style::default().fg(DIM)
-                } else {
-                    Style::default()
-                };
-                Cell::from(Line::from(c).right_aligned()).style(style)
-            }))
-        });
+    let rows = rows.into_iter().map(|r| {
+        Row::new(r.into_iter().map(|c| {
+            let style = if c == DASH {
+                Style::default().fg(DIM)
+            } else {
+                Style::default()
+            };
+            Cell::from(Line::from(c).right_aligned()).style(style)
+        }))
+    });
     let widths: Vec<Constraint> = cols.iter().map(|c| Constraint::Length(c.width)).collect();
     let table = Table::new(rows, widths)
         .header(header)
         .row_highlight_style(Style::default().fg(Color::Black).bg(Color::Yellow));
     let mut state = TableState::default().with_selected(Some(app.roller_sel));
     StatefulWidget::render(table, table_area, buf, &mut state);
-    let bl = view_model::bearing_lines(a, app.display_units);
-    let text: Vec<String> = bl.iter().take(2).map(|(k, v)| format!("{k} {v}")).collect();
+    let text: Vec<String> = view
+        .summary
+        .iter()
+        .take(2)
+        .map(|s| {
+            format!(
+                "{} {}",
+                s.display.header(s.label, u),
+                view_model::fixed(s.display.convert(s.value, u), s.precision)
+            )
+        })
+        .collect();
     Paragraph::new(text.join("  "))
         .style(Style::default().fg(DIM))
         .render(foot, buf);
@@ -354,53 +365,53 @@ fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
         .collect()
 }
 
+/// Series colours, in series order.
+const SERIES_COLOURS: [Color; 2] = [INNER, OUTER];
+
+/// The Load pane: the view's bearing chart, or with `c` the selected element's chart.
 fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
-    let Some(a) = app.analysis.as_deref() else {
+    let Some(view) = app.view.as_deref() else {
         let block = pane_block(app, Pane::Load, "");
         let inner = block.inner(area);
         block.render(area, buf);
         Paragraph::new(no_solution_text(app)).render(inner, buf);
         return;
     };
-    let series = if app.chart_laminae {
-        view_model::lamina_loads(a, app.roller_sel, app.display_units)
+    let chart = if app.chart_laminae {
+        view.element_charts.get(app.roller_sel)
     } else {
-        Some(view_model::load_vs_azimuth(a, app.display_units))
+        view.charts.first()
     };
-    let Some(s) = series else {
+    let Some(c) = chart else {
         pane_block(app, Pane::Load, "").render(area, buf);
         return;
     };
+    let s = view_model::chart_series(c, app.display_units);
     let block = pane_block(
         app,
         Pane::Load,
         &format!(" · {}{}", s.title, stale_note(app)),
     );
-    let inner_ds = Dataset::default()
-        .name("inner")
-        .marker(Marker::Braille)
-        .graph_type(GraphType::Line)
-        .style(Style::default().fg(INNER))
-        .data(&s.inner);
-    let outer_ds = Dataset::default()
-        .name("outer")
-        .marker(Marker::Braille)
-        .graph_type(GraphType::Line)
-        .style(Style::default().fg(OUTER))
-        .data(&s.outer);
-    let x_prec = if app.chart_laminae && s.x_bounds[1] < 10.0 {
-        2
-    } else {
-        0
-    };
-    let mut datasets = vec![inner_ds, outer_ds];
-    let marked: Vec<(f64, f64)> = if app.chart_laminae {
-        Vec::new()
-    } else {
-        [&s.inner, &s.outer]
+    let mut datasets: Vec<Dataset> = s
+        .series
+        .iter()
+        .enumerate()
+        .map(|(k, (name, points))| {
+            Dataset::default()
+                .name(*name)
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
+                .data(points)
+        })
+        .collect();
+    let marked: Vec<(f64, f64)> = if c.per_element {
+        s.series
             .iter()
-            .filter_map(|v| v.get(app.roller_sel).copied())
+            .filter_map(|(_, v)| v.get(app.roller_sel).copied())
             .collect()
+    } else {
+        Vec::new()
     };
     if !marked.is_empty() {
         datasets.push(
@@ -412,6 +423,8 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
                 .data(&marked),
         );
     }
+    // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
+    let x_prec = if s.x_bounds[1] < 10.0 { 2 } else { 0 };
     let chart = Chart::new(datasets)
         .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
         .block(block)

@@ -490,6 +490,7 @@ fn tui_snapshot_overlays_and_modes() {
     });
     app.handle(key(KeyCode::Esc));
     app.analysis = None;
+    app.view = None;
     app.focus = Pane::Rollers;
     snap("failed_solve", &app, 80, 24);
 }
@@ -878,15 +879,17 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
             .fold((f64::MAX, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
         assert!(lo > 0.0 && hi / lo - 1.0 < 1e-9, "{what}: {lo} … {hi}");
     };
-    let s = view_model::lamina_loads(&a, 0, crate::units::Units::Si).expect("roller 1");
+    let v = crate::bearings::spherical_roller::view::view(&a);
+    let s = view_model::chart_series(&v.element_charts[0], crate::units::Units::Si);
     assert_eq!(s.y_label, "N/mm");
-    flat(&s.inner.iter().map(|p| p.1).collect::<Vec<_>>(), "chart");
+    let inner = &s.series[0].1;
+    flat(&inner.iter().map(|p| p.1).collect::<Vec<_>>(), "chart");
     // The chart's level is the roller's load over its length (Q/L, here in N/mm).
     let r = &a.load.rollers[0];
     let q_over_l = r.laminae.iter().map(|l| l.inner_load_n).sum::<f64>()
         / b.geometry.effective_length_m
         * 1e-3;
-    assert!((s.inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
+    assert!((inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
     let last = view_model::trace_len(&a) - 1;
     let step = view_model::trace_step(&a, last, crate::units::Units::Si).expect("a step");
     flat(&step.inner_load, "stepper bars");

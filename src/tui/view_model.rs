@@ -8,43 +8,27 @@
 
 use crate::bearings::spherical_roller::load_distribution::{LaminaResult, TraceStep};
 use crate::bearings::spherical_roller::pipeline::Analysis;
+use crate::bearings::view::{Chart, Display, Screen, View};
 
-use crate::units::{Units, FAHRENHEIT_PER_KELVIN, INCH_M as IN_M, LBF_N, PSI_PA};
+use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
 /// Placeholder for a value that the current pipeline does not compute yet.
 pub const DASH: &str = "—";
 
 /// A force in display units (N or lbf).
 pub fn force(value_n: f64, u: Units) -> f64 {
-    match u {
-        Units::Si => value_n,
-        Units::Us => value_n / LBF_N,
-    }
+    Display::Force.convert(value_n, u)
 }
 
 /// Unit label of [`force`].
 pub fn force_unit(u: Units) -> &'static str {
-    match u {
-        Units::Si => "N",
-        Units::Us => "lbf",
-    }
+    Display::Force.unit(u)
 }
 
 /// A load per unit length (a lamina's load over its width) in display units: N/mm or
 /// lbf/in.
 pub fn line_load(value_n_m: f64, u: Units) -> f64 {
-    match u {
-        Units::Si => value_n_m * 1e-3,
-        Units::Us => value_n_m / LBF_N * IN_M,
-    }
-}
-
-/// Unit label of [`line_load`].
-pub fn line_load_unit(u: Units) -> &'static str {
-    match u {
-        Units::Si => "N/mm",
-        Units::Us => "lbf/in",
-    }
+    Display::LineLoad.convert(value_n_m, u)
 }
 
 /// Each lamina's load over its width, N/m: the load distribution along the roller. The
@@ -61,50 +45,12 @@ fn per_length(loads_n: &[f64], laminae: &[LaminaResult]) -> Vec<f64> {
 /// A small length (deflection, approach, lamina offset) in display units: mm or mil
 /// (0.001 in), which keep lamina offsets and deflections readable.
 pub fn small_length(value_m: f64, u: Units) -> f64 {
-    match u {
-        Units::Si => value_m * 1e3,
-        Units::Us => value_m / IN_M * 1e3,
-    }
-}
-
-/// Film thickness in display units (µm or µin).
-pub fn film_thickness(value_m: f64, u: Units) -> f64 {
-    match u {
-        Units::Si => value_m * 1e6,
-        Units::Us => value_m / IN_M * 1e6,
-    }
+    Display::SmallLength.convert(value_m, u)
 }
 
 /// Unit label of [`small_length`].
 pub fn small_length_unit(u: Units) -> &'static str {
-    match u {
-        Units::Si => "mm",
-        Units::Us => "mil",
-    }
-}
-
-/// Unit label of contact stress (MPa or ksi).
-pub fn stress_unit(u: Units) -> &'static str {
-    match u {
-        Units::Si => "MPa",
-        Units::Us => "ksi",
-    }
-}
-
-/// A contact stress in display units (MPa or ksi).
-pub fn stress(value_pa: f64, u: Units) -> f64 {
-    match u {
-        Units::Si => value_pa / 1e6,
-        Units::Us => value_pa / PSI_PA / 1e3,
-    }
-}
-
-/// Unit label of film thickness (µm or µin).
-pub fn film_unit(u: Units) -> &'static str {
-    match u {
-        Units::Si => "µm",
-        Units::Us => "µin",
-    }
+    Display::SmallLength.unit(u)
 }
 
 /// `v` with `prec` decimals; a result that rounds to zero prints without a sign, so
@@ -137,7 +83,7 @@ pub fn residual(v: f64) -> String {
     }
 }
 
-/// One column of the rollers table: header (with unit) and width in cells.
+/// One column of a pane table: header (with unit) and width in cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
     /// Header text, unit included.
@@ -146,60 +92,40 @@ pub struct Column {
     pub width: u16,
 }
 
-/// Columns of the rollers table, in display units.
-///
-/// Order: index, azimuth, inner and outer normal load, inner and outer contact angle,
-/// max stress, film, Λ, spin speed, heat. [`roller_rows`] fills the same order.
-pub fn roller_columns(u: Units) -> Vec<Column> {
-    let f = force_unit(u);
-    let col = |h: String, w: u16| Column {
-        header: h,
-        width: w,
+/// The screen table of a view in display units `u`: the columns meant for the pane and
+/// one row of formatted cells per element (`—` where a stage was not run). Formatting
+/// only: the values come from the bearing system's view.
+pub fn table_cells(view: &View, u: Units) -> (Vec<Column>, Vec<Vec<String>>) {
+    let Some(t) = view.screen_table() else {
+        return (Vec::new(), Vec::new());
     };
-    vec![
-        col("#".into(), 3),
-        col("ψ deg".into(), 5),
-        col(format!("Qi {f}"), 7),
-        col(format!("Qo {f}"), 7),
-        col("αi °".into(), 5),
-        col("αo °".into(), 5),
-        col(format!("σ {}", stress_unit(u)), 6),
-        col(format!("h {}", film_unit(u)), 6),
-        col("Λ".into(), 4),
-        col("spin rpm".into(), 8),
-        col("heat W".into(), 6),
-    ]
-}
-
-/// One row per roller, same order as [`roller_columns`]; `—` for stages not yet solved.
-/// The values come joined per roller from the system's view
-/// ([`crate::bearings::spherical_roller::view::rollers`]); nothing is computed here.
-pub fn roller_rows(a: &Analysis, u: Units) -> Vec<Vec<String>> {
-    let opt = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or(DASH.to_string(), f);
-    crate::bearings::spherical_roller::view::rollers(a)
+    let shown: Vec<(usize, Screen)> = t
+        .columns
         .iter()
-        .map(|rv| {
-            let r = rv.roller;
-            vec![
-                format!("{}", r.index),
-                fixed(r.azimuth_deg, 1),
-                fixed(force(r.inner.normal_load_n, u), 1),
-                fixed(force(r.outer.normal_load_n, u), 1),
-                fixed(r.inner.contact_angle_deg, 2),
-                fixed(r.outer.contact_angle_deg, 2),
-                // max of the two raceways' max Hertz stress (§4)
-                opt(rv.max_stress_pa(), &|m| fixed(stress(m, u), 0)),
-                // thinnest lamina film of the roller (§5)
-                opt(rv.min_film_m(), &|h| fixed(film_thickness(h, u), 2)),
-                // Λ of that film (eq. 6.8, conservative composite roughness)
-                opt(rv.lambda, &|l| fixed(l, 2)),
-                // roller spin relative to the cage (§7)
-                opt(rv.spin_rpm, &|x| fixed(x, 0)),
-                // contact heat of the roller, both raceways (§9)
-                opt(rv.heat_w(), &|h| fixed(h, 1)),
-            ]
+        .enumerate()
+        .filter_map(|(i, c)| c.screen.map(|s| (i, s)))
+        .collect();
+    let cols = shown
+        .iter()
+        .map(|(_, s)| Column {
+            header: s.display.header(s.label, u),
+            width: s.width,
         })
-        .collect()
+        .collect();
+    let rows = t
+        .rows
+        .iter()
+        .map(|row| {
+            shown
+                .iter()
+                .map(|&(i, s)| match row.get(i).copied().flatten() {
+                    Some(v) => fixed(s.display.convert(v, u), s.precision),
+                    None => DASH.to_string(),
+                })
+                .collect()
+        })
+        .collect();
+    (cols, rows)
 }
 
 /// Number of rollers in the solution.
@@ -207,19 +133,17 @@ pub fn roller_count(a: &Analysis) -> usize {
     a.load.rollers.len()
 }
 
-/// Series for the load chart: `(x, y)` pairs, display units.
+/// A chart in display units, with its bounds.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct LoadSeries {
+pub struct ChartSeries {
     /// Chart title.
     pub title: String,
     /// X axis label with unit.
     pub x_label: String,
     /// Y axis label with unit.
     pub y_label: String,
-    /// Inner-raceway series.
-    pub inner: Vec<(f64, f64)>,
-    /// Outer-raceway series.
-    pub outer: Vec<(f64, f64)>,
+    /// Named series of `(x, y)` points, display units.
+    pub series: Vec<(&'static str, Vec<(f64, f64)>)>,
     /// X bounds.
     pub x_bounds: [f64; 2],
     /// Y bounds (0 to a rounded-up maximum).
@@ -240,58 +164,37 @@ fn nice_ceiling(v: f64) -> f64 {
     10.0 * p
 }
 
-/// Roller normal loads (inner and outer) against azimuth, 0–360°.
-pub fn load_vs_azimuth(a: &Analysis, u: Units) -> LoadSeries {
-    let inner: Vec<(f64, f64)> = a
-        .load
-        .rollers
+/// A view's chart in display units `u`: fixed bounds where the chart gives them, else y
+/// from 0 to a round ceiling of the data and x symmetric about 0.
+pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
+    let series: Vec<(&'static str, Vec<(f64, f64)>)> = c
+        .series
         .iter()
-        .map(|r| (r.azimuth_deg, force(r.inner.normal_load_n, u)))
+        .map(|s| {
+            let pts = s
+                .points
+                .iter()
+                .map(|&(x, y)| (c.x.display.convert(x, u), c.y.display.convert(y, u)))
+                .collect();
+            (s.name, pts)
+        })
         .collect();
-    let outer: Vec<(f64, f64)> = a
-        .load
-        .rollers
+    let ymax = series
         .iter()
-        .map(|r| (r.azimuth_deg, force(r.outer.normal_load_n, u)))
-        .collect();
-    let ymax = inner.iter().chain(&outer).map(|p| p.1).fold(0.0, f64::max);
-    LoadSeries {
-        title: "roller load vs azimuth".into(),
-        x_label: "ψ deg".into(),
-        y_label: force_unit(u).into(),
-        inner,
-        outer,
-        x_bounds: [0.0, 360.0],
-        y_bounds: [0.0, nice_ceiling(ymax)],
-    }
-}
-
-/// The load distribution along roller `roller` (0-based): each lamina's load per unit
-/// length against its offset from the roller centre; edge loading shows as a rise at the
-/// ends. `None` if there is no such roller.
-pub fn lamina_loads(a: &Analysis, roller: usize, u: Units) -> Option<LoadSeries> {
-    let r = a.load.rollers.get(roller)?;
-    let series = |loads: Vec<f64>| -> Vec<(f64, f64)> {
-        per_length(&loads, &r.laminae)
-            .into_iter()
-            .zip(&r.laminae)
-            .map(|(q, l)| (small_length(l.offset_m, u), line_load(q, u)))
-            .collect()
-    };
-    let inner = series(r.laminae.iter().map(|l| l.inner_load_n).collect());
-    let outer = series(r.laminae.iter().map(|l| l.outer_load_n).collect());
-    let ymax = inner.iter().chain(&outer).map(|p| p.1).fold(0.0, f64::max);
-    let xmax = inner.iter().map(|p| p.0.abs()).fold(0.0, f64::max);
+        .flat_map(|s| s.1.iter().map(|p| p.1))
+        .fold(0.0, f64::max);
+    let xmax = series
+        .first()
+        .map_or(0.0, |s| s.1.iter().map(|p| p.0.abs()).fold(0.0, f64::max));
     let xmax = if xmax > 0.0 { xmax } else { 1.0 };
-    Some(LoadSeries {
-        title: format!("load along roller {}", r.index),
-        x_label: format!("x {}", small_length_unit(u)),
-        y_label: line_load_unit(u).into(),
-        inner,
-        outer,
-        x_bounds: [-xmax, xmax],
-        y_bounds: [0.0, nice_ceiling(ymax)],
-    })
+    ChartSeries {
+        title: c.title.clone(),
+        x_label: c.x.display.header(c.x.label, u),
+        y_label: c.y.display.header(c.y.label, u),
+        series,
+        x_bounds: c.x.bounds.unwrap_or([-xmax, xmax]),
+        y_bounds: c.y.bounds.unwrap_or([0.0, nice_ceiling(ymax)]),
+    }
 }
 
 /// What the thermal pane shows. Built by [`thermal_view`]; `None` means the deck has
@@ -530,7 +433,7 @@ pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
             .iter()
             .map(|&v| small_length(v, u))
             .collect(),
-        load_unit: line_load_unit(u).into(),
+        load_unit: Display::LineLoad.unit(u).into(),
         approach_unit: su.into(),
     })
 }

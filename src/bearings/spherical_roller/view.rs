@@ -5,7 +5,10 @@
 use super::load_distribution::{LaminaResult, RacewayContact, RollerResult};
 use super::pipeline::Analysis;
 use super::stages::{LaminaFriction, RacewayStress};
-use crate::bearings::view::{Column, CsvStyle, KeyOutput, KeyRole, Table, View};
+use crate::bearings::view::{
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Screen, Series, Summary,
+    Table, View,
+};
 use crate::physics::contact::line::LineContact;
 use crate::physics::lubrication::film;
 use crate::units::Quantity;
@@ -181,7 +184,95 @@ const ROLLER_COLUMNS: [Column; 13] = [
     Column::new("outer_loaded_laminae", Quantity::Count, CsvStyle::Integer),
 ];
 
-/// The system-independent view of an analysis: the per-roller table and the key outputs.
+/// A pane-only column.
+const fn pane(
+    key: &'static str,
+    q: Quantity,
+    label: &'static str,
+    d: Display,
+    p: usize,
+    w: u16,
+) -> Column {
+    Column::screen_only(
+        key,
+        q,
+        Screen {
+            label,
+            display: d,
+            precision: p,
+            width: w,
+        },
+    )
+}
+
+/// Columns of the Rollers pane: index, azimuth, inner and outer normal load, inner and
+/// outer contact angle, max stress (both raceways, edge laminae included), thinnest film,
+/// its Λ, spin relative to the cage, contact heat of both raceways.
+const PANE_COLUMNS: [Column; 11] = [
+    pane("index", Quantity::Count, "#", Display::Plain, 0, 3),
+    pane(
+        "azimuth_deg",
+        Quantity::Angle,
+        "ψ deg",
+        Display::Plain,
+        1,
+        5,
+    ),
+    pane(
+        "inner_normal_load_n",
+        Quantity::Force,
+        "Qi",
+        Display::Force,
+        1,
+        7,
+    ),
+    pane(
+        "outer_normal_load_n",
+        Quantity::Force,
+        "Qo",
+        Display::Force,
+        1,
+        7,
+    ),
+    pane(
+        "inner_contact_angle_deg",
+        Quantity::Angle,
+        "αi °",
+        Display::Plain,
+        2,
+        5,
+    ),
+    pane(
+        "outer_contact_angle_deg",
+        Quantity::Angle,
+        "αo °",
+        Display::Plain,
+        2,
+        5,
+    ),
+    pane(
+        "max_stress_pa",
+        Quantity::Pressure,
+        "σ",
+        Display::Stress,
+        0,
+        6,
+    ),
+    pane("min_film_m", Quantity::Length, "h", Display::Film, 2, 6),
+    pane("lambda", Quantity::Dimensionless, "Λ", Display::Plain, 2, 4),
+    pane(
+        "spin_rpm",
+        Quantity::Speed,
+        "spin rpm",
+        Display::Plain,
+        0,
+        8,
+    ),
+    pane("heat_w", Quantity::Power, "heat W", Display::Plain, 1, 6),
+];
+
+/// The system-independent view of an analysis: the per-roller tables (CSV and pane),
+/// the load charts, the ring deflections and the key outputs.
 pub fn view(a: &Analysis) -> View {
     let rows = a
         .load
@@ -208,14 +299,128 @@ pub fn view(a: &Analysis) -> View {
             .collect()
         })
         .collect();
+    let rollers = rollers(a);
+    let pane_rows = rollers
+        .iter()
+        .map(|rv| {
+            let r = rv.roller;
+            vec![
+                Some(r.index as f64),
+                Some(r.azimuth_deg),
+                Some(r.inner.normal_load_n),
+                Some(r.outer.normal_load_n),
+                Some(r.inner.contact_angle_deg),
+                Some(r.outer.contact_angle_deg),
+                rv.max_stress_pa(),
+                rv.min_film_m(),
+                rv.lambda,
+                rv.spin_rpm,
+                rv.heat_w(),
+            ]
+        })
+        .collect();
+    let load = |f: fn(&RollerResult) -> f64| -> Vec<(f64, f64)> {
+        a.load
+            .rollers
+            .iter()
+            .map(|r| (r.azimuth_deg, f(r)))
+            .collect()
+    };
+    let load_chart = Chart {
+        title: "roller load vs azimuth".into(),
+        x: ChartAxis {
+            label: "ψ deg",
+            display: Display::Plain,
+            bounds: Some([0.0, 360.0]),
+        },
+        y: ChartAxis {
+            label: "",
+            display: Display::Force,
+            bounds: None,
+        },
+        series: vec![
+            Series {
+                name: "inner",
+                points: load(|r| r.inner.normal_load_n),
+            },
+            Series {
+                name: "outer",
+                points: load(|r| r.outer.normal_load_n),
+            },
+        ],
+        per_element: true,
+    };
     View {
         system: super::SYSTEM_ID,
-        tables: vec![Table {
-            id: "rollers",
-            columns: ROLLER_COLUMNS.to_vec(),
-            rows,
-        }],
+        tables: vec![
+            Table {
+                id: "rollers",
+                columns: ROLLER_COLUMNS.to_vec(),
+                rows,
+            },
+            Table {
+                id: "rollers_pane",
+                columns: PANE_COLUMNS.to_vec(),
+                rows: pane_rows,
+            },
+        ],
+        charts: vec![load_chart],
+        element_charts: a.load.rollers.iter().map(lamina_chart).collect(),
+        summary: vec![
+            Summary {
+                label: "axial deflection",
+                value: a.load.axial_deflection_m,
+                display: Display::SmallLength,
+                precision: 4,
+            },
+            Summary {
+                label: "radial deflection",
+                value: a.load.radial_deflection_m,
+                display: Display::SmallLength,
+                precision: 4,
+            },
+        ],
         key_outputs: key_outputs(a),
+    }
+}
+
+/// The load distribution along a roller: each lamina's load per unit length against its
+/// offset from the roller centre, so edge loading shows as a rise at the ends. Per unit
+/// length because cosine slicing makes the end laminae thin: their loads alone would draw
+/// a hard-loaded end low.
+fn lamina_chart(r: &RollerResult) -> Chart {
+    let series = |name, load: fn(&LaminaResult) -> f64| Series {
+        name,
+        points: r
+            .laminae
+            .iter()
+            .map(|l| {
+                let q = if l.width_m > 0.0 {
+                    load(l) / l.width_m
+                } else {
+                    0.0
+                };
+                (l.offset_m, q)
+            })
+            .collect(),
+    };
+    Chart {
+        title: format!("load along roller {}", r.index),
+        x: ChartAxis {
+            label: "x",
+            display: Display::SmallLength,
+            bounds: None,
+        },
+        y: ChartAxis {
+            label: "",
+            display: Display::LineLoad,
+            bounds: None,
+        },
+        series: vec![
+            series("inner", |l| l.inner_load_n),
+            series("outer", |l| l.outer_load_n),
+        ],
+        per_element: false,
     }
 }
 
