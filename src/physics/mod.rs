@@ -2,8 +2,8 @@
 //!
 //! Contact mechanics (`contact`: line and point Hertz, the lamina load law, subsurface
 //! stresses), lubrication (`lubrication`: film thickness and traction), fatigue life
-//! (`life`, capacity geometry passed in), heat sources (`heat`), rolling-element
-//! kinematics (`kinematics`) and materials. Bearing systems (`crate::bearings`) compose
+//! (`life` for line contact, `life_point` for ball bearings; capacity geometry passed in),
+//! heat sources (`heat`), rolling-element kinematics (`kinematics`) and materials. Bearing systems (`crate::bearings`) compose
 //! these; nothing here imports a bearing system, the deck, a report or the UI.
 #![cfg_attr(
     not(test),
@@ -14,5 +14,6 @@ pub mod contact;
 pub mod heat;
 pub mod kinematics;
 pub mod life;
+pub mod life_point;
 pub mod lubrication;
 pub mod material;
