@@ -13,6 +13,12 @@
 //!   bearings and single- and double-row angular contact groove ball bearings".
 //! - ISO/TR 1281-1 (explanatory notes on ISO 281) for the closed form behind f_c.
 //!
+//! **Not yet checked against the primary texts** (no copy was at hand): the constant
+//! 98.1 and the exponents of Q_c agree with ISO's closed form (a test ties them to ISO's
+//! 39.9 to 0.1 % in L10) and with Harris's inch–lbf 7450; the f_c table values agree with
+//! the spot values remembered from ISO 281 Table 2. The worked Q_c/L10 test is a hand
+//! calculation, not a published example. Check both before the ball system relies on them.
+//!
 //! **Infinite life.** `f64::INFINITY` cannot be written to JSON, so every life is a
 //! [`Life`]: `Finite(Mrev or h)` or `Infinite(reason)`, where the reason says *why*:
 //! the raceway carries no load ([`InfiniteReason::Unloaded`]) or the rings do not turn
