@@ -6,7 +6,7 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::thermal::{
-    parse_thermal, run_transient, solve_steady, HeatInput, Integrator, ThermalModel,
+    parse_thermal, run_transient, solve_steady, HeatInput, HeatSource, Integrator, ThermalModel,
     TransientSettings,
 };
 use rollbench::units::Units;
@@ -18,26 +18,30 @@ fn rig() -> ThermalModel {
     parse_thermal(&table, Units::Si).expect("valid [thermal] section")
 }
 
-const HEAT: HeatInput = HeatInput {
-    inner_contacts_w: 900.0,
-    outer_contacts_w: 700.0,
-    cage_rails_w: 150.0,
-    viscous_drag_w: 350.0,
-};
+fn heat() -> HeatInput {
+    HeatInput::new()
+        .with(HeatSource::InnerContacts, 900.0)
+        .with(HeatSource::OuterContacts, 700.0)
+        .with(HeatSource::CageRails, 150.0)
+        .with(HeatSource::ViscousDrag, 350.0)
+}
 
-const LOSS_HEAT: HeatInput = HeatInput {
-    inner_contacts_w: 1100.0,
-    outer_contacts_w: 900.0,
-    cage_rails_w: 250.0,
-    viscous_drag_w: 20.0,
-};
+fn loss_heat() -> HeatInput {
+    HeatInput::new()
+        .with(HeatSource::InnerContacts, 1100.0)
+        .with(HeatSource::OuterContacts, 900.0)
+        .with(HeatSource::CageRails, 250.0)
+        .with(HeatSource::ViscousDrag, 20.0)
+}
 
 fn bench_thermal(c: &mut Criterion) {
     let model = rig();
+    let heat = heat();
+    let loss = loss_heat();
     c.bench_function("thermal/steady_rig", |b| {
-        b.iter(|| solve_steady(black_box(&model.network), black_box(&HEAT)).unwrap())
+        b.iter(|| solve_steady(black_box(&model.network), black_box(&heat)).unwrap())
     });
-    let steady = solve_steady(&model.network, &HEAT).unwrap();
+    let steady = solve_steady(&model.network, &heat).unwrap();
     for (label, integrator) in [
         ("implicit", Integrator::Implicit),
         ("explicit", Integrator::Explicit),
@@ -56,7 +60,7 @@ fn bench_thermal(c: &mut Criterion) {
                     black_box(&model.network),
                     &steady,
                     &settings,
-                    black_box(&LOSS_HEAT),
+                    black_box(&loss),
                 )
                 .unwrap()
             })

@@ -15,8 +15,8 @@ pub mod transient;
 pub use crate::deck::thermal::{parse_thermal, ThermalModel};
 pub use error::ThermalError;
 pub use network::{
-    capacity_from_material, HeatInput, HeatMechanism, Link, LinkKind, Network, Node, NodeRole,
-    DEFAULT_ROLLER_HEAT_FRACTION,
+    capacity_from_material, HeatInput, HeatMechanism, HeatSource, Link, LinkKind, Network, Node,
+    NodeRole, DEFAULT_ROLLER_HEAT_FRACTION,
 };
 pub use steady::{solve_steady, SteadyNode, SteadyResult};
 pub use transient::{

@@ -60,48 +60,114 @@ impl HeatMechanism {
     }
 }
 
-/// The pipeline's heat generation by mechanism, W (seed 000 §9: contact, cage, drag heat).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+/// Where a bearing generates heat. Each source is released into the nodes bound to its
+/// [`HeatMechanism`]; contact heat is shared with the rolling elements by the network's
+/// roller fraction. A new friction mechanism (a flange, a guide ring) is one more source
+/// here and one more entry in a system's [`HeatInput`], not a new field in every struct.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HeatSource {
+    /// All inner-raceway contacts.
+    InnerContacts,
+    /// All outer-raceway contacts.
+    OuterContacts,
+    /// Cage rails / pockets.
+    CageRails,
+    /// Viscous drag (churning), released in the oil (eq. 9.6).
+    ViscousDrag,
+}
+
+impl HeatSource {
+    /// The name used in messages (`inner_contacts_w`).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            HeatSource::InnerContacts => "inner_contacts_w",
+            HeatSource::OuterContacts => "outer_contacts_w",
+            HeatSource::CageRails => "cage_rails_w",
+            HeatSource::ViscousDrag => "viscous_drag_w",
+        }
+    }
+
+    /// The mechanism whose nodes receive this heat (the raceway's share, for contacts).
+    pub fn mechanism(self) -> HeatMechanism {
+        match self {
+            HeatSource::InnerContacts => HeatMechanism::InnerContacts,
+            HeatSource::OuterContacts => HeatMechanism::OuterContacts,
+            HeatSource::CageRails => HeatMechanism::CageRails,
+            HeatSource::ViscousDrag => HeatMechanism::ViscousDrag,
+        }
+    }
+
+    /// True for contact heat, of which the roller fraction goes into the rolling
+    /// elements ([`HeatMechanism::Rollers`]).
+    pub fn shared_with_rollers(self) -> bool {
+        matches!(self, HeatSource::InnerContacts | HeatSource::OuterContacts)
+    }
+}
+
+/// A bearing's heat generation as a list of sources, W (seed 000 §9: contact, cage, drag
+/// heat).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct HeatInput {
-    /// Heat generated in all inner-raceway contacts, W.
-    pub inner_contacts_w: f64,
-    /// Heat generated in all outer-raceway contacts, W.
-    pub outer_contacts_w: f64,
-    /// Heat generated at the cage rails / pockets, W.
-    pub cage_rails_w: f64,
-    /// Viscous drag (churning) heat, W (eq. 9.6).
-    pub viscous_drag_w: f64,
+    /// Heat by source, W, in the order the system lists them.
+    pub sources: Vec<(HeatSource, f64)>,
 }
 
 impl HeatInput {
+    /// No heat.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// With `watts` more from `source`.
+    pub fn with(mut self, source: HeatSource, watts: f64) -> Self {
+        self.sources.push((source, watts));
+        self
+    }
+
+    /// Heat from `source`, W.
+    pub fn watts(&self, source: HeatSource) -> f64 {
+        self.sources
+            .iter()
+            .filter(|(s, _)| *s == source)
+            .fold(0.0, |acc, (_, w)| acc + w)
+    }
+
     /// Total heat, W.
     pub fn total_w(&self) -> f64 {
-        self.inner_contacts_w + self.outer_contacts_w + self.cage_rails_w + self.viscous_drag_w
+        self.sources.iter().fold(0.0, |acc, (_, w)| acc + w)
     }
 
     /// Heat carried by one mechanism, W, with `roller_fraction` of each contact heat
     /// going to the rollers instead of the raceway.
     pub fn mechanism_w(&self, mechanism: HeatMechanism, roller_fraction: f64) -> f64 {
-        match mechanism {
-            HeatMechanism::InnerContacts => (1.0 - roller_fraction) * self.inner_contacts_w,
-            HeatMechanism::OuterContacts => (1.0 - roller_fraction) * self.outer_contacts_w,
-            HeatMechanism::Rollers => {
-                roller_fraction * (self.inner_contacts_w + self.outer_contacts_w)
-            }
-            HeatMechanism::CageRails => self.cage_rails_w,
-            HeatMechanism::ViscousDrag => self.viscous_drag_w,
+        if mechanism == HeatMechanism::Rollers {
+            let contacts = self
+                .sources
+                .iter()
+                .filter(|(s, _)| s.shared_with_rollers())
+                .fold(0.0, |acc, (_, w)| acc + w);
+            return roller_fraction * contacts;
         }
+        self.sources
+            .iter()
+            .filter(|(s, _)| s.mechanism() == mechanism)
+            .fold(0.0, |acc, &(s, w)| {
+                acc + if s.shared_with_rollers() {
+                    (1.0 - roller_fraction) * w
+                } else {
+                    w
+                }
+            })
     }
 
     fn check(&self) -> Result<(), ThermalError> {
-        for (field, value) in [
-            ("inner_contacts_w", self.inner_contacts_w),
-            ("outer_contacts_w", self.outer_contacts_w),
-            ("cage_rails_w", self.cage_rails_w),
-            ("viscous_drag_w", self.viscous_drag_w),
-        ] {
+        for &(source, value) in &self.sources {
             if !value.is_finite() {
-                return Err(ThermalError::InvalidHeat { field, value });
+                return Err(ThermalError::InvalidHeat {
+                    field: source.as_str(),
+                    value,
+                });
             }
         }
         Ok(())

@@ -13,30 +13,25 @@ fn rig() -> ThermalModel {
 
 /// Heat of the shipped rig in normal operation, W (~2.1 kW).
 fn rig_heat() -> HeatInput {
-    HeatInput {
-        inner_contacts_w: 900.0,
-        outer_contacts_w: 700.0,
-        cage_rails_w: 150.0,
-        viscous_drag_w: 350.0,
-    }
+    HeatInput::new()
+        .with(HeatSource::InnerContacts, 900.0)
+        .with(HeatSource::OuterContacts, 700.0)
+        .with(HeatSource::CageRails, 150.0)
+        .with(HeatSource::ViscousDrag, 350.0)
 }
 
 /// Lost-lubrication heat: more contact friction, little drag.
 fn rig_loss_heat() -> HeatInput {
-    HeatInput {
-        inner_contacts_w: 1100.0,
-        outer_contacts_w: 900.0,
-        cage_rails_w: 250.0,
-        viscous_drag_w: 20.0,
-    }
+    HeatInput::new()
+        .with(HeatSource::InnerContacts, 1100.0)
+        .with(HeatSource::OuterContacts, 900.0)
+        .with(HeatSource::CageRails, 250.0)
+        .with(HeatSource::ViscousDrag, 20.0)
 }
 
 /// Heat `q_w` delivered entirely to nodes bound to `InnerContacts` (roller fraction 0).
 fn q(q_w: f64) -> HeatInput {
-    HeatInput {
-        inner_contacts_w: q_w,
-        ..HeatInput::default()
-    }
+    HeatInput::new().with(HeatSource::InnerContacts, q_w)
 }
 
 fn continued(duration_s: f64, step_s: f64, integrator: Integrator) -> TransientSettings {
@@ -274,12 +269,11 @@ fn three_nodes_in_series_with_conduction() {
         ],
     );
     net.roller_heat_fraction = 0.0;
-    let heat = HeatInput {
-        inner_contacts_w: 30.0,
-        outer_contacts_w: 20.0,
-        cage_rails_w: 10.0,
-        viscous_drag_w: 0.0,
-    };
+    let heat = HeatInput::new()
+        .with(HeatSource::InnerContacts, 30.0)
+        .with(HeatSource::OuterContacts, 20.0)
+        .with(HeatSource::CageRails, 10.0)
+        .with(HeatSource::ViscousDrag, 0.0);
     let s = solve_steady(&net, &heat).unwrap();
     for (name, t) in [("a", 26.0), ("b", 32.0), ("c", 37.0)] {
         let got = s.temperature_c(name).unwrap();
@@ -306,11 +300,9 @@ fn contact_heat_split_between_raceway_and_rollers() {
         ],
     );
     net.roller_heat_fraction = 0.3;
-    let heat = HeatInput {
-        inner_contacts_w: 100.0,
-        outer_contacts_w: 50.0,
-        ..HeatInput::default()
-    };
+    let heat = HeatInput::new()
+        .with(HeatSource::InnerContacts, 100.0)
+        .with(HeatSource::OuterContacts, 50.0);
     let s = solve_steady(&net, &heat).unwrap();
     for (name, t) in [("ir", 70.0), ("or", 35.0), ("ro", 45.0)] {
         assert!(close(s.temperature_c(name).unwrap(), t, 1e-12), "{name}");
@@ -340,10 +332,7 @@ fn mass_transport_chain() {
         ],
     );
     net.roller_heat_fraction = 0.0;
-    let heat = HeatInput {
-        viscous_drag_w: 1000.0,
-        ..HeatInput::default()
-    };
+    let heat = HeatInput::new().with(HeatSource::ViscousDrag, 1000.0);
     let s = solve_steady(&net, &heat).unwrap();
     assert!(close(s.temperature_c("cavity").unwrap(), 90.0, 1e-12));
     assert!(close(s.temperature_c("drain").unwrap(), 90.0, 1e-12));
@@ -512,9 +501,8 @@ fn oil_coupled_heat_reaches_fixed_point() {
         vec![Link::conductance("oil", "sink", 10.0)],
     );
     net.roller_heat_fraction = 0.0;
-    let heat = OilCoupled(|t_oil: f64| HeatInput {
-        viscous_drag_w: 600.0 - 2.0 * (t_oil - 20.0),
-        ..HeatInput::default()
+    let heat = OilCoupled(|t_oil: f64| {
+        HeatInput::new().with(HeatSource::ViscousDrag, 600.0 - 2.0 * (t_oil - 20.0))
     });
     for integrator in [Integrator::Implicit, Integrator::Explicit] {
         let r = run_transient_from(
@@ -929,7 +917,7 @@ mod props {
             let mut heated = heated[..n].to_vec();
             heated[n - 1] = true;
             let net = network(&parents, &g[..n], &heated, &oil[..n]);
-            let heat = HeatInput { cage_rails_w: q_w, ..HeatInput::default() };
+            let heat = HeatInput::new().with(HeatSource::CageRails, q_w);
             let s = solve_steady(&net, &heat).unwrap();
             prop_assert!(s.balance_w.abs() <= 1e-9 * s.heat_in_w.max(1.0));
             for node in &s.nodes {
@@ -937,4 +925,28 @@ mod props {
             }
         }
     }
+}
+
+#[test]
+fn heat_sources_are_conserved_across_mechanisms() {
+    // Conservation: whatever the roller fraction, the heat released into the mechanisms
+    // (raceway shares, rollers, cage, drag) sums to the heat generated, to round-off; a
+    // source listed twice adds up (a system may report e.g. two flange contacts).
+    let heat = rig_heat().with(HeatSource::CageRails, 25.0);
+    assert_eq!(heat.watts(HeatSource::CageRails), 175.0);
+    for f in [0.0, 0.3, 0.5, 1.0] {
+        let released: f64 = HeatMechanism::ALL
+            .iter()
+            .map(|&m| heat.mechanism_w(m, f))
+            .sum();
+        assert!(
+            (released - heat.total_w()).abs() <= 1e-12 * heat.total_w(),
+            "f = {f}"
+        );
+        assert_eq!(
+            heat.mechanism_w(HeatMechanism::Rollers, f),
+            f * (900.0 + 700.0)
+        );
+    }
+    assert_eq!(heat.total_w(), 900.0 + 700.0 + 150.0 + 350.0 + 25.0);
 }

@@ -20,6 +20,8 @@ use nalgebra::{DVector, Dyn};
 use serde::{Deserialize, Serialize};
 
 use super::error::ThermalError;
+use std::borrow::Cow;
+
 use super::network::{HeatInput, HeatMechanism, Network, NodeRole};
 use super::steady::{SteadyResult, System};
 
@@ -80,8 +82,9 @@ impl Default for TransientSettings {
 /// Heat supplied during the transient, possibly depending on the oil temperature
 /// (viscosity coupling).
 pub trait HeatSchedule {
-    /// Heat by mechanism, W, at oil temperature `oil_temp_c` (°C).
-    fn heat_input(&self, oil_temp_c: f64) -> HeatInput;
+    /// Heat by source, W, at oil temperature `oil_temp_c` (°C); borrowed when it does not
+    /// depend on it (no allocation per step).
+    fn heat_input(&self, oil_temp_c: f64) -> Cow<'_, HeatInput>;
     /// True when the heat depends on the oil temperature (an oil node is then required).
     fn is_coupled(&self) -> bool {
         true
@@ -89,8 +92,8 @@ pub trait HeatSchedule {
 }
 
 impl HeatSchedule for HeatInput {
-    fn heat_input(&self, _oil_temp_c: f64) -> HeatInput {
-        *self
+    fn heat_input(&self, _oil_temp_c: f64) -> Cow<'_, HeatInput> {
+        Cow::Borrowed(self)
     }
     fn is_coupled(&self) -> bool {
         false
@@ -102,8 +105,8 @@ impl HeatSchedule for HeatInput {
 pub struct OilCoupled<F>(pub F);
 
 impl<F: Fn(f64) -> HeatInput> HeatSchedule for OilCoupled<F> {
-    fn heat_input(&self, oil_temp_c: f64) -> HeatInput {
-        (self.0)(oil_temp_c)
+    fn heat_input(&self, oil_temp_c: f64) -> Cow<'_, HeatInput> {
+        Cow::Owned((self.0)(oil_temp_c))
     }
 }
 

@@ -666,10 +666,7 @@ fn thermal_cases(out: &mut Vec<Case>) {
         oil_node: None,
         stop_at_limits: false,
     };
-    let heat = thermal::HeatInput {
-        inner_contacts_w: q,
-        ..thermal::HeatInput::default()
-    };
+    let heat = thermal::HeatInput::new().with(thermal::HeatSource::InnerContacts, q);
     let computed = thermal::run_transient_from(&net, &[t0, t_inf], &settings, &heat)
         .ok()
         .and_then(|r| r.node("body").and_then(|n| n.temperature_c.last().copied()))

@@ -15,7 +15,7 @@ use crate::bearings::spherical_roller::{Bearing, DynamicLoads};
 use crate::bearings::SolveError;
 use crate::physics::kinematics::InternalSpeeds;
 use crate::pipeline::Stage;
-use crate::thermal::{self, HeatInput, SteadyResult, ThermalModel, TransientResult};
+use crate::thermal::{self, HeatInput, HeatSource, SteadyResult, ThermalModel, TransientResult};
 
 /// What the caller needs computed.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,12 +82,11 @@ pub struct ThermalOut {
 }
 
 fn heat_input(f: &Friction) -> HeatInput {
-    HeatInput {
-        inner_contacts_w: f.heat.inner_contacts_w,
-        outer_contacts_w: f.heat.outer_contacts_w,
-        cage_rails_w: f.heat.cage_rails_w,
-        viscous_drag_w: f.heat.viscous_drag_w,
-    }
+    HeatInput::new()
+        .with(HeatSource::InnerContacts, f.heat.inner_contacts_w)
+        .with(HeatSource::OuterContacts, f.heat.outer_contacts_w)
+        .with(HeatSource::CageRails, f.heat.cage_rails_w)
+        .with(HeatSource::ViscousDrag, f.heat.viscous_drag_w)
 }
 
 fn thermal_err(e: thermal::ThermalError) -> SolveError {
