@@ -22,6 +22,8 @@ variants=(
   "--set geometry.diametral_clearance=0"
   "--set solver.laminae=21"
   "--set solver.laminae=151"
+  "--set nope=1"
+  "--set geometry.roller_count=1"
 )
 fail=0; n=0
 for deck in decks/*.toml; do
