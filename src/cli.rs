@@ -27,7 +27,9 @@ pub enum Command {
         /// Report format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
-        /// Write the report to FILE instead of standard output.
+        /// Write the report to FILE instead of standard output (`-`: standard output).
+        /// A regular file is replaced atomically (through a symbolic link); a read-only
+        /// file and the deck itself are refused; devices and FIFOs are written in place.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
         /// Skip the loss-of-oil thermal transient (the steady state is still solved).

@@ -9,7 +9,7 @@ use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
 use rollbench::cli::{load_deck, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::{self, Units};
-use rollbench::files::write_atomic;
+use rollbench::files::{same_file, write_atomic};
 use rollbench::numerics::cancel::Cancel;
 use rollbench::report;
 
@@ -52,6 +52,17 @@ fn main() -> ExitCode {
             output,
             no_transient,
         }) => {
+            // Never write the report over the deck being read (checked before solving).
+            if let Some(out) = &output {
+                if same_file(out, &deck) {
+                    eprintln!(
+                        "--output {}: is the deck being read ({}); refusing to overwrite it",
+                        out.display(),
+                        deck.display()
+                    );
+                    return ExitCode::from(1);
+                }
+            }
             let case = match load_case(&deck, &cli.set) {
                 Ok(c) => c,
                 Err(e) => {
@@ -77,7 +88,7 @@ fn main() -> ExitCode {
             let text = report::render(solution.as_ref(), format, case.units());
             match output {
                 Some(path) => {
-                    if let Err(e) = write_atomic(&path, &text) {
+                    if let Err(e) = write_atomic(&path, &text).map(drop) {
                         eprintln!("cannot write {}: {e}", path.display());
                         return ExitCode::from(1);
                     }

@@ -269,3 +269,56 @@ fn help_lists_the_commands() {
         assert!(s.contains(c), "{c}");
     }
 }
+
+/// `run --output` never writes the report over the deck it reads (by its own path,
+/// through a symbolic link or a hard link): exit 1, deck untouched. `--output -` is
+/// standard output. (Before: the deck was replaced by the CSV report.)
+#[test]
+fn output_never_overwrites_the_deck() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let deck = dir.path().join("deck.toml");
+    let text = std::fs::read_to_string(format!("{}/decks/radial_si.toml", root()))
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(&deck, &text).unwrap_or_else(|e| panic!("{e}"));
+    let link = dir.path().join("link.toml");
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(&deck, &link).unwrap_or_else(|e| panic!("{e}"));
+    for out in [deck.clone(), link.clone()] {
+        let Ok(r) = bin()
+            .args([
+                "run",
+                &deck.to_string_lossy(),
+                "--format",
+                "csv",
+                "--output",
+            ])
+            .arg(&out)
+            .output()
+        else {
+            panic!("spawn")
+        };
+        let msg = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(1), "{msg}");
+        assert!(msg.contains("deck being read"), "{msg}");
+        assert_eq!(
+            std::fs::read_to_string(&deck).ok().as_deref(),
+            Some(text.as_str())
+        );
+    }
+    let Ok(r) = bin()
+        .args([
+            "run",
+            &deck.to_string_lossy(),
+            "--format",
+            "csv",
+            "--output",
+            "-",
+        ])
+        .output()
+    else {
+        panic!("spawn")
+    };
+    assert_eq!(r.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&r.stdout).lines().count(), 1 + 18);
+    assert!(!dir.path().join("-").exists());
+}

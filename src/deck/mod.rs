@@ -334,8 +334,10 @@ impl Deck {
 
     /// Saves the deck atomically: temporary file in the same directory, fsync, the
     /// previous file kept as `<file name>.bak`, then rename. A failure leaves the
-    /// existing file untouched.
-    pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
+    /// existing file untouched. A symbolic link is saved through (the file it points to
+    /// is replaced), a read-only deck is refused; see [`crate::files`]. Returns how the
+    /// file was written, for the caller to say so.
+    pub fn save(&self, path: impl AsRef<Path>) -> Result<crate::files::Written, DeckErrors> {
         crate::files::save_with_backup(path.as_ref(), &self.to_toml_string()).map_err(|e| {
             DeckErrors::from(DeckError::Io {
                 path: e.path,

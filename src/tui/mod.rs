@@ -157,9 +157,19 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 Vec::new()
             }
             Command::Save { path, deck } => {
-                let r = deck.save(&path).map(|()| path);
+                let r = deck.save(&path);
                 save_failed |= r.is_err();
-                app.handle(AppEvent::Saved(r))
+                let how = match &r {
+                    Ok(crate::files::Written::Replaced { via: None, .. }) | Err(_) => None,
+                    Ok(w) => Some(format!("saved {w}")),
+                };
+                let more = app.handle(AppEvent::Saved(r.map(|_| path)));
+                // Say what happened when it was not a plain replace (through a link,
+                // in place to a device).
+                if how.is_some() {
+                    app.message = how;
+                }
+                more
             }
             Command::Open(path) => {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));
