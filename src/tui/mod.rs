@@ -53,7 +53,7 @@ pub fn run_workbench_deck(
 ) -> color_eyre::Result<()> {
     let on_disk = source_path
         .as_ref()
-        .and_then(|p| std::fs::read_to_string(p).ok());
+        .and_then(|p| crate::deck::read_deck_text(p).ok());
     let mut app = App::new(DeckDoc::from_deck(deck), source_path);
     if let Some(text) = on_disk {
         app.saved_text = text;

@@ -47,9 +47,8 @@ impl BearingSystem for SphericalRoller {
         overrides: &[String],
     ) -> Result<Box<dyn Case>, DeckErrors> {
         let mut deck = Deck::parse(text, source_name)?;
-        for s in overrides {
-            deck.set_assignment(s)?;
-        }
+        // All overrides first, then one validation: their order never matters.
+        deck.apply_assignments(overrides)?;
         let thermal = deck.thermal_model()?;
         Ok(Box::new(SphericalCase { deck, thermal }))
     }
