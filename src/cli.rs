@@ -27,7 +27,9 @@ pub enum Command {
         /// Report format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
-        /// Write the report to FILE instead of standard output.
+        /// Write the report to FILE instead of standard output (`-`: standard output).
+        /// A regular file is replaced atomically (through a symbolic link); a read-only
+        /// file and the deck itself are refused; devices and FIFOs are written in place.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
         /// Skip the loss-of-oil thermal transient (the steady state is still solved).
@@ -54,6 +56,8 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Text)]
         format: TableFormat,
     },
+    /// List every key `--set` accepts, with its units and allowed range.
+    Keys,
     /// Run time against error over laminae × force tolerance (default: every deck in decks/).
     Bench {
         /// Deck file (TOML); default: every deck in ./decks, or the embedded aerospace deck.
@@ -77,6 +81,21 @@ pub enum Format {
     Text,
     Json,
     Csv,
+}
+
+/// Exit codes of the binary, one meaning each (documented in README.md, "Command line").
+pub mod exit {
+    /// Success.
+    pub const OK: u8 = 0;
+    /// Invalid input: deck, `--set`, a file that cannot be read or written, or a refused
+    /// `--output`.
+    pub const INVALID_INPUT: u8 = 1;
+    /// The solver failed (run, bench): the message names the stage and the numbers.
+    pub const SOLVE_FAILED: u8 = 2;
+    /// `validate`: a reference case is outside its tolerance.
+    pub const VALIDATION_FAILED: u8 = 3;
+    /// Command-line usage error (unknown option or value, `--set` where it means nothing).
+    pub const USAGE: u8 = 64;
 }
 
 /// Unit systems on the command line.

@@ -7,9 +7,9 @@ use std::path::Path;
 
 use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
-use rollbench::cli::{load_deck, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::cli::{exit, load_deck, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::{self, Units};
-use rollbench::files::write_atomic;
+use rollbench::files::{same_file, write_atomic};
 use rollbench::numerics::cancel::Cancel;
 use rollbench::report;
 
@@ -25,14 +25,42 @@ fn load_case(path: &Path, overrides: &[String]) -> Result<Box<dyn Case>, String>
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            // --help and --version print and succeed; usage errors have their own code.
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() {
+                exit::USAGE
+            } else {
+                exit::OK
+            });
+        }
+    };
+    // --set is global (it applies to the workbench, run, check and bench); where it would be
+    // silently ignored it is refused.
+    if !cli.set.is_empty() {
+        let ignored = match &cli.command {
+            Some(Command::Template { .. }) => Some("template"),
+            Some(Command::Validate { .. }) => Some("validate"),
+            Some(Command::Keys) => Some("keys"),
+            _ => None,
+        };
+        if let Some(cmd) = ignored {
+            eprintln!(
+                "--set {}: `rollbench {cmd}` takes no overrides (use --set with run, check, bench or the workbench)",
+                cli.set.join(" --set ")
+            );
+            return ExitCode::from(exit::USAGE);
+        }
+    }
     match cli.command {
         None => {
             let deck = match load_deck(cli.deck.as_deref(), &cli.set) {
                 Ok(d) => d,
                 Err(e) => {
                     eprintln!("{e}");
-                    return ExitCode::from(1);
+                    return ExitCode::from(exit::INVALID_INPUT);
                 }
             };
             if let Err(e) = color_eyre::install() {
@@ -42,7 +70,7 @@ fn main() -> ExitCode {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("workbench: {e:?}");
-                    ExitCode::from(1)
+                    ExitCode::from(exit::INVALID_INPUT)
                 }
             }
         }
@@ -52,11 +80,22 @@ fn main() -> ExitCode {
             output,
             no_transient,
         }) => {
+            // Never write the report over the deck being read (checked before solving).
+            if let Some(out) = &output {
+                if same_file(out, &deck) {
+                    eprintln!(
+                        "--output {}: is the deck being read ({}); refusing to overwrite it",
+                        out.display(),
+                        deck.display()
+                    );
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            }
             let case = match load_case(&deck, &cli.set) {
                 Ok(c) => c,
                 Err(e) => {
                     eprintln!("{e}");
-                    return ExitCode::from(1);
+                    return ExitCode::from(exit::INVALID_INPUT);
                 }
             };
             let options = RunOptions {
@@ -66,7 +105,7 @@ fn main() -> ExitCode {
                 Ok(s) => s,
                 Err(e) => {
                     eprintln!("solve failed: {e}");
-                    return ExitCode::from(2);
+                    return ExitCode::from(exit::SOLVE_FAILED);
                 }
             };
             let format = match format {
@@ -77,9 +116,9 @@ fn main() -> ExitCode {
             let text = report::render(solution.as_ref(), format, case.units());
             match output {
                 Some(path) => {
-                    if let Err(e) = write_atomic(&path, &text) {
+                    if let Err(e) = write_atomic(&path, &text).map(drop) {
                         eprintln!("cannot write {}: {e}", path.display());
-                        return ExitCode::from(1);
+                        return ExitCode::from(exit::INVALID_INPUT);
                     }
                 }
                 None => print!("{text}"),
@@ -93,7 +132,7 @@ fn main() -> ExitCode {
             }
             Err(e) => {
                 eprintln!("{e}");
-                ExitCode::from(1)
+                ExitCode::from(exit::INVALID_INPUT)
             }
         },
         Some(Command::Template { units, r#type }) => {
@@ -112,7 +151,7 @@ fn main() -> ExitCode {
                         r#type,
                         bearings::known_types()
                     );
-                    ExitCode::from(1)
+                    ExitCode::from(exit::INVALID_INPUT)
                 }
             }
         }
@@ -123,10 +162,14 @@ fn main() -> ExitCode {
                 TableFormat::Json => println!("{:#}", rollbench::verify::cases::to_json(&cases)),
             }
             ExitCode::from(if rollbench::verify::cases::all_pass(&cases) {
-                0
+                exit::OK
             } else {
-                1
+                exit::VALIDATION_FAILED
             })
+        }
+        Some(Command::Keys) => {
+            print!("{}", deck::keys_table());
+            ExitCode::SUCCESS
         }
         Some(Command::Bench { deck, format }) => {
             match rollbench::verify::fidelity::bench_command(
@@ -140,7 +183,15 @@ fn main() -> ExitCode {
                 }
                 Err(e) => {
                     eprintln!("{e}");
-                    ExitCode::from(1)
+                    // A deck that cannot be read or parsed is invalid input; a reference
+                    // run that fails is a solver failure, as for `run`.
+                    ExitCode::from(
+                        if e.contains(rollbench::verify::fidelity::REFERENCE_RUN_FAILED) {
+                            exit::SOLVE_FAILED
+                        } else {
+                            exit::INVALID_INPUT
+                        },
+                    )
                 }
             }
         }

@@ -269,3 +269,191 @@ fn help_lists_the_commands() {
         assert!(s.contains(c), "{c}");
     }
 }
+
+/// `run --output` never writes the report over the deck it reads (by its own path,
+/// through a symbolic link or a hard link): exit 1, deck untouched. `--output -` is
+/// standard output. (Before: the deck was replaced by the CSV report.)
+#[test]
+fn output_never_overwrites_the_deck() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let deck = dir.path().join("deck.toml");
+    let text = std::fs::read_to_string(format!("{}/decks/radial_si.toml", root()))
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(&deck, &text).unwrap_or_else(|e| panic!("{e}"));
+    let link = dir.path().join("link.toml");
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(&deck, &link).unwrap_or_else(|e| panic!("{e}"));
+    for out in [deck.clone(), link.clone()] {
+        let Ok(r) = bin()
+            .args([
+                "run",
+                &deck.to_string_lossy(),
+                "--format",
+                "csv",
+                "--output",
+            ])
+            .arg(&out)
+            .output()
+        else {
+            panic!("spawn")
+        };
+        let msg = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(1), "{msg}");
+        assert!(msg.contains("deck being read"), "{msg}");
+        assert_eq!(
+            std::fs::read_to_string(&deck).ok().as_deref(),
+            Some(text.as_str())
+        );
+    }
+    let Ok(r) = bin()
+        .args([
+            "run",
+            &deck.to_string_lossy(),
+            "--format",
+            "csv",
+            "--output",
+            "-",
+        ])
+        .output()
+    else {
+        panic!("spawn")
+    };
+    assert_eq!(r.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&r.stdout).lines().count(), 1 + 18);
+    assert!(!dir.path().join("-").exists());
+}
+
+fn run_args(args: &[&str]) -> (Option<i32>, String, String) {
+    let Ok(o) = bin().args(args).output() else {
+        panic!("spawn")
+    };
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// One meaning per exit code (README "Command line"): 0 ok, 1 invalid input, 2 solver
+/// failure, 3 validate failed (not exercised: every case passes), 64 usage. Before,
+/// usage errors shared 2 with solver failures and `template --set` / `validate --set`
+/// silently ignored the overrides.
+#[test]
+fn exit_codes_have_one_meaning_each() {
+    let aero = format!("{}/decks/aerospace.toml", root());
+    let radial = format!("{}/decks/radial_si.toml", root());
+    assert_eq!(run_args(&["run", &aero, "--format", "xml"]).0, Some(64));
+    let (code, _, err) = run_args(&["template", "--set", "operating.axial_load=1"]);
+    assert_eq!(code, Some(64), "{err}");
+    assert!(err.contains("takes no overrides"), "{err}");
+    assert_eq!(run_args(&["validate", "--set", "a=1"]).0, Some(64));
+    assert_eq!(run_args(&["check", "/no/such/deck.toml"]).0, Some(1));
+    let (code, _, err) = run_args(&["check", &aero, "--set", "operating.inner_spd=1"]);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("did you mean operating.inner_speed"), "{err}");
+    // A zero-contact-angle bearing under a large axial load: a solver failure (2) whose
+    // message describes that case, not an angular-contact bearing without axial load.
+    let (code, _, err) = run_args(&["run", &radial, "--set", "operating.axial_load=68430"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("zero contact angle cannot carry the axial load"),
+        "{err}"
+    );
+    assert!(!err.contains("needs an axial load"), "{err}");
+    let (code, out, _) = run_args(&["keys"]);
+    assert_eq!(code, Some(0));
+    assert!(
+        out.contains("solver.force_tolerance") && out.contains("thermal."),
+        "{out}"
+    );
+}
+
+/// A loaded bearing whose rings do not turn relative to each other has an infinite life
+/// in hours, said so in JSON (`life.infinite_life_reason`) and text; never "unloaded".
+#[test]
+fn life_is_infinite_not_unloaded_without_relative_speed() {
+    let aero = format!("{}/decks/aerospace.toml", root());
+    let same = [
+        "--set",
+        "operating.inner_speed=0",
+        "--set",
+        "operating.outer_speed=0",
+    ];
+    let mut args = vec!["run", aero.as_str(), "--no-transient"];
+    args.extend(same);
+    let (code, text, err) = run_args(&args);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!text.contains("unloaded"), "{text}");
+    assert!(text.contains("infinite"), "{text}");
+    args.extend(["--format", "json"]);
+    let (_, json, _) = run_args(&args);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
+    assert!(v["life"]["l10_bearing_mrev"].is_number(), "{}", v["life"]);
+    assert!(
+        v["life"]["infinite_life_reason"]
+            .as_str()
+            .is_some_and(|s| s.contains("do not turn")),
+        "{}",
+        v["life"]
+    );
+}
+
+/// Converged means converged: a tolerance above the cap is refused; the thrust deck at
+/// an absurd speed no longer reports zero roller loads as a converged answer.
+#[test]
+fn loose_tolerance_refused_and_residuals_checked() {
+    let aero = format!("{}/decks/aerospace.toml", root());
+    let (code, _, err) = run_args(&["check", &aero, "--set", "solver.force_tolerance=0.1"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("solver.force_tolerance"), "{err}");
+    let thrust = format!("{}/decks/thrust.toml", root());
+    let (code, _, err) = run_args(&[
+        "run",
+        &thrust,
+        "--no-transient",
+        "--format",
+        "json",
+        "--set",
+        "operating.inner_speed=1000000",
+        "--set",
+        "solver.force_tolerance=1e-4",
+    ]);
+    assert_ne!(code, Some(0), "converged?\n{err}");
+}
+
+/// The thermal transient never aborts or writes hundreds of MB: a 10⁶-step run keeps at
+/// most 4000 samples and says so; absurd durations are refused (exit 1) with the range.
+#[test]
+fn transient_is_bounded() {
+    let aero = format!("{}/decks/aerospace.toml", root());
+    let (code, json, err) = run_args(&[
+        "run",
+        &aero,
+        "--format",
+        "json",
+        "--set",
+        "thermal.transient.duration=1e6",
+        "--set",
+        "thermal.transient.scenario=continued",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(json.len() < 20_000_000, "{}", json.len());
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
+    let t = &v["thermal"]["transient"];
+    assert_eq!(t["sample_every_steps"], 250);
+    assert!(t["time_s"].as_array().map_or(0, Vec::len) <= 4001);
+    for (d, s) in [("1e20", "1e20"), ("1e308", "1e-308"), ("1e9", "1e9")] {
+        let (code, _, err) = run_args(&[
+            "run",
+            &aero,
+            "--set",
+            &format!("thermal.transient.duration={d}"),
+            "--set",
+            &format!("thermal.transient.step={s}"),
+            "--set",
+            "thermal.transient.integrator=explicit",
+        ]);
+        assert_eq!(code, Some(1), "{d}/{s}: {err}");
+        assert!(err.contains("allowed"), "{err}");
+    }
+}

@@ -122,7 +122,7 @@ fn bearing() -> impl Strategy<Value = Bearing> {
     );
     let solver = (
         1usize..200,
-        1e-14..1e-3f64,
+        1e-14..1e-4f64, // solver.force_tolerance is capped at 1e-4
         1usize..500,
         1usize..500,
         0.0..0.1f64,

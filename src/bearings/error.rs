@@ -20,6 +20,16 @@ pub enum SolveError {
         residual: f64,
         tolerance: f64,
     },
+    /// The solver declared convergence but a residual exceeds the deck's tolerance
+    /// relative to the applied load (see `spherical_roller::converged`).
+    #[error("the solution does not meet its tolerance: {what} residual {residual_n:.3e} N exceeds {allowed_n:.3e} N (solver.force_tolerance {force_tolerance:.1e} of the applied load {applied_n:.1} N)")]
+    ResidualAboveTolerance {
+        what: &'static str,
+        residual_n: f64,
+        allowed_n: f64,
+        applied_n: f64,
+        force_tolerance: f64,
+    },
     /// A linear system could not be solved.
     #[error("singular matrix in {stage}")]
     Singular { stage: &'static str },

@@ -126,13 +126,6 @@ pub enum DeckError {
         /// The rule broken, in words.
         rule: String,
     },
-    /// A command-line override (`--set key=value`) could not be applied; the message names
-    /// the override and the reason.
-    #[error("{message}")]
-    Override {
-        /// What went wrong, prefixed with the override.
-        message: String,
-    },
     /// The `[thermal]` network is invalid (the message names node, link and field).
     #[error("{source_name}: [thermal]: {message}")]
     Thermal {
@@ -161,10 +154,9 @@ impl DeckError {
             | DeckError::WrongType { location, .. }
             | DeckError::OutOfRange { location, .. }
             | DeckError::Invalid { location, .. } => Some(location),
-            DeckError::Io { .. }
-            | DeckError::NotEditable { .. }
-            | DeckError::Thermal { .. }
-            | DeckError::Override { .. } => None,
+            DeckError::Io { .. } | DeckError::NotEditable { .. } | DeckError::Thermal { .. } => {
+                None
+            }
         }
     }
 
@@ -177,10 +169,7 @@ impl DeckError {
             | DeckError::OutOfRange { key, .. }
             | DeckError::Invalid { key, .. }
             | DeckError::NotEditable { key, .. } => Some(key),
-            DeckError::Io { .. }
-            | DeckError::Syntax { .. }
-            | DeckError::Thermal { .. }
-            | DeckError::Override { .. } => None,
+            DeckError::Io { .. } | DeckError::Syntax { .. } | DeckError::Thermal { .. } => None,
         }
     }
 }

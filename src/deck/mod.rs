@@ -85,11 +85,7 @@ impl Deck {
     /// Reads and parses a deck file; errors name the file.
     pub fn load(path: impl AsRef<Path>) -> Result<Deck, DeckErrors> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|source| DeckError::Io {
-            path: path.to_path_buf(),
-            action: "cannot read deck",
-            source,
-        })?;
+        let text = read_deck_text(path)?;
         let name = path.display().to_string();
         Deck::parse(&text, &name)
     }
@@ -106,18 +102,37 @@ impl Deck {
         Ok(deck)
     }
 
-    /// Applies the command line's `key=value` overrides in order (deck units); the error
-    /// names the override.
+    /// Applies the command line's `key=value` overrides (deck units); see
+    /// [`Deck::apply_assignments`]. The error is the messages as text.
     pub fn apply_overrides(&mut self, overrides: &[String]) -> Result<(), String> {
-        for s in overrides {
-            let Some((k, v)) = s.split_once('=') else {
-                return Err(format!(
-                    "--set {s}: expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4"
-                ));
-            };
-            self.set(k.trim(), v.trim())
-                .map_err(|e| format!("--set {s}: {e}"))?;
+        self.apply_assignments(overrides).map_err(|e| e.to_string())
+    }
+
+    /// Applies `key.path=value` assignments (as for `--set`, deck units): every one is
+    /// written into the deck first, then the result is validated once, so the order of
+    /// the assignments never changes the verdict. A malformed assignment or an unknown
+    /// key (with the close matches) is reported as such; on any error the deck is
+    /// unchanged.
+    pub fn apply_assignments(&mut self, assignments: &[String]) -> Result<(), DeckErrors> {
+        if assignments.is_empty() {
+            return Ok(());
         }
+        let mut doc = self.doc.clone();
+        for a in assignments {
+            let Some((k, v)) = a.split_once('=') else {
+                return Err(DeckError::NotEditable {
+                    key: a.to_string(),
+                    reason: "expected KEY=VALUE, e.g. --set geometry.pitch_diameter=3.4".into(),
+                }
+                .into());
+            };
+            self.edit(&mut doc, k.trim(), v.trim())?;
+        }
+        let parsed = validate::parse_text(&doc.to_string(), &self.source_name)?;
+        self.units = parsed.units;
+        self.bearing = parsed.bearing;
+        self.thermal = parsed.thermal;
+        self.doc = doc;
         Ok(())
     }
 
@@ -153,6 +168,20 @@ impl Deck {
     /// Comments are kept; the whole deck is re-validated and `bearing` updated. On error
     /// the deck is unchanged.
     pub fn set(&mut self, key_path: &str, value: &str) -> Result<(), DeckErrors> {
+        let mut doc = self.doc.clone();
+        self.edit(&mut doc, key_path, value)?;
+        let text = doc.to_string();
+        let parsed = validate::parse_text(&text, &self.source_name)?;
+        self.units = parsed.units;
+        self.bearing = parsed.bearing;
+        self.thermal = parsed.thermal;
+        self.doc = doc;
+        Ok(())
+    }
+
+    /// Writes one value into `doc` (a copy of this deck's document) without validating;
+    /// see [`Deck::set`].
+    fn edit(&self, doc: &mut DocumentMut, key_path: &str, value: &str) -> Result<(), DeckErrors> {
         let not_editable = |reason: &str| {
             DeckErrors::from(DeckError::NotEditable {
                 key: key_path.to_string(),
@@ -174,9 +203,7 @@ impl Deck {
             && parts.get(1).is_some_and(|b| MATERIAL_BODIES.contains(b));
         let is_thermal = parts.len() > 1 && parts.first() == Some(&"thermal");
         if !(key_path == "name" || spec.is_some() || is_body || is_thermal) {
-            return Err(not_editable(
-                "unknown key (see rollbench::deck::fields() for the editable keys)",
-            ));
+            return Err(not_editable(&unknown_key_hint(key_path)));
         }
         let wants_string = key_path == "name"
             || is_body
@@ -192,7 +219,6 @@ impl Deck {
             _ => Value::from(trimmed),
         };
 
-        let mut doc = self.doc.clone();
         // A material given as a preset name becomes an inline table before one of its
         // properties is edited.
         if parts.len() == 3 && parts.first() == Some(&"materials") {
@@ -254,12 +280,6 @@ impl Deck {
                 }
             }
         }
-        let text = doc.to_string();
-        let parsed = validate::parse_text(&text, &self.source_name)?;
-        self.units = parsed.units;
-        self.bearing = parsed.bearing;
-        self.thermal = parsed.thermal;
-        self.doc = doc;
         Ok(())
     }
 
@@ -334,8 +354,10 @@ impl Deck {
 
     /// Saves the deck atomically: temporary file in the same directory, fsync, the
     /// previous file kept as `<file name>.bak`, then rename. A failure leaves the
-    /// existing file untouched.
-    pub fn save(&self, path: impl AsRef<Path>) -> Result<(), DeckErrors> {
+    /// existing file untouched. A symbolic link is saved through (the file it points to
+    /// is replaced), a read-only deck is refused; see [`crate::files`]. Returns how the
+    /// file was written, for the caller to say so.
+    pub fn save(&self, path: impl AsRef<Path>) -> Result<crate::files::Written, DeckErrors> {
         crate::files::save_with_backup(path.as_ref(), &self.to_toml_string()).map_err(|e| {
             DeckErrors::from(DeckError::Io {
                 path: e.path,
@@ -346,15 +368,53 @@ impl Deck {
     }
 }
 
-/// Reads a deck file's text; errors name the file.
+/// Largest deck file read, bytes (4 MiB: a deck is a few kB; this bounds what an endless
+/// stream such as `/dev/zero` can make the reader hold).
+pub const MAX_DECK_BYTES: u64 = 4 << 20;
+
+/// Reads a deck file's text, at most [`MAX_DECK_BYTES`]; errors name the file, and for a
+/// file that is not UTF-8 the byte offset, line and column of the first invalid byte.
 pub fn read_deck_text(path: &Path) -> Result<String, DeckErrors> {
-    std::fs::read_to_string(path).map_err(|source| {
+    use std::io::Read;
+    let io_err = |source: std::io::Error| -> DeckErrors {
         DeckError::Io {
             path: path.to_path_buf(),
             action: "cannot read deck",
             source,
         }
         .into()
+    };
+    let file = std::fs::File::open(path).map_err(io_err)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_DECK_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io_err)?;
+    if bytes.len() as u64 > MAX_DECK_BYTES {
+        return Err(io_err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!(
+                "larger than the deck size limit of {} MiB ({MAX_DECK_BYTES} bytes); reading stopped there",
+                MAX_DECK_BYTES >> 20
+            ),
+        )));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let offset = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let before = bytes.get(..offset).unwrap_or(bytes);
+        let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+        let line_start = before.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+        let column = String::from_utf8_lossy(before.get(line_start..).unwrap_or(&[]))
+            .chars()
+            .count()
+            + 1;
+        let byte = bytes.get(offset).copied().unwrap_or(0);
+        io_err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!(
+                "not UTF-8 text: invalid byte 0x{byte:02x} at byte offset {offset} (line {line}, column {column}); save the deck as UTF-8"
+            ),
+        ))
     })
 }
 
@@ -408,6 +468,112 @@ pub fn system_of(
             }
             .into()
         }),
+    }
+}
+
+/// Every key `--set` and [`Deck::set`] accept: `name`, each field of [`fields()`], the
+/// material bodies (a preset name or a table), and `thermal.…` (any key of the
+/// `[thermal]` table, checked by the thermal section's parser).
+pub fn editable_keys() -> Vec<&'static str> {
+    let mut keys = vec!["name"];
+    keys.extend(fields().iter().map(|f| f.key));
+    // One per MATERIAL_BODIES entry (a preset name or an inline table).
+    keys.extend([
+        "materials.roller",
+        "materials.inner_ring",
+        "materials.outer_ring",
+    ]);
+    keys.push("thermal.transient.duration");
+    keys.push("thermal.transient.step");
+    keys.push("thermal.transient.integrator");
+    keys.push("thermal.transient.scenario");
+    keys.push("thermal.transient.split_fraction");
+    keys.push("thermal.transient.oil_node");
+    keys.push("thermal.transient.stop_at_limits");
+    keys.dedup();
+    keys
+}
+
+/// The table `rollbench keys` prints: every editable key with its units and allowed range
+/// in SI and US units, then `name`, the material bodies and the `[thermal]` keys.
+pub fn keys_table() -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    let _ = writeln!(s, "{:<40} {:<36} allowed (us)", "key", "allowed (si)");
+    for f in fields() {
+        let allowed = |u: Units| match f.kind {
+            FieldKind::Choice(list) => list.join(" | "),
+            _ => f.allowed(u),
+        };
+        let _ = writeln!(
+            s,
+            "{:<40} {:<36} {}",
+            f.key,
+            allowed(Units::Si),
+            allowed(Units::Us)
+        );
+    }
+    let _ = writeln!(s, "{:<40} any string", "name");
+    for k in [
+        "materials.roller",
+        "materials.inner_ring",
+        "materials.outer_ring",
+    ] {
+        let presets: Vec<&str> = MATERIAL_PRESETS.iter().map(|(n, _)| *n).collect();
+        let _ = writeln!(s, "{:<40} one of {}", k, presets.join(", "));
+    }
+    let _ = writeln!(
+        s,
+        "{:<40} the [thermal] section (see `rollbench template`); e.g. thermal.transient.duration",
+        "thermal.<table>.<key>"
+    );
+    s
+}
+
+/// Levenshtein distance of two short keys (characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev.get(j).copied().unwrap_or(0) + usize::from(ca != *cb);
+            let del = prev.get(j + 1).copied().unwrap_or(0) + 1;
+            let ins = cur.get(j).copied().unwrap_or(0) + 1;
+            if let Some(c) = cur.get_mut(j + 1) {
+                *c = sub.min(del).min(ins);
+            }
+        }
+        prev = cur;
+    }
+    prev.last().copied().unwrap_or(0)
+}
+
+/// The editable keys closest to `key` (typos, a wrong table, a missing table): at most
+/// five, closest first.
+pub fn close_keys(key: &str) -> Vec<&'static str> {
+    let leaf = key.rsplit('.').next().unwrap_or(key);
+    let mut scored: Vec<(usize, &'static str)> = editable_keys()
+        .into_iter()
+        .filter_map(|k| {
+            let k_leaf = k.rsplit('.').next().unwrap_or(k);
+            let d = edit_distance(key, k).min(edit_distance(leaf, k_leaf) + 1);
+            let limit = (key.len() / 3).clamp(2, 6);
+            (d <= limit || (leaf.len() >= 4 && k_leaf.contains(leaf))).then_some((d, k))
+        })
+        .collect();
+    scored.sort();
+    scored.into_iter().take(5).map(|(_, k)| k).collect()
+}
+
+/// The message for an unknown `--set` key: the close matches and where the full list is.
+fn unknown_key_hint(key: &str) -> String {
+    let close = close_keys(key);
+    let list = "`rollbench keys` lists every editable key with its allowed range";
+    if close.is_empty() {
+        format!("unknown key ({list})")
+    } else {
+        format!("unknown key; did you mean {}? ({list})", close.join(", "))
     }
 }
 

@@ -38,7 +38,7 @@
 //! | cage.drag_factor | 0 ≤ Ψ ≤ 100 |
 //! | cage.mass | 0 ≤ m ≤ 1e4 kg |
 //! | solver.laminae | 1 ≤ Γ ≤ 2000 |
-//! | solver.force_tolerance | 1e-16 ≤ x ≤ 0.1 |
+//! | solver.force_tolerance | 1e-16 ≤ x ≤ 1e-4 |
 //! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
@@ -501,7 +501,7 @@ static FIELDS: [FieldSpec; 61] = [
     // --- solver ---
     field!("solver.laminae", "solver", "Laminae Γ", Count, I, 1.0, false, 2000.0, false, Presence::Default(SOLVER_DEFAULTS.laminae as f64),
         "laminae per roller", get: |b| b.solver.laminae as f64, set: |b, v| b.solver.laminae = to_count(v)),
-    field!("solver.force_tolerance", "solver", "Force tolerance", Dimensionless, R, 1e-16, false, 0.1, false,
+    field!("solver.force_tolerance", "solver", "Force tolerance", Dimensionless, R, 1e-16, false, 1e-4, false,
         Presence::Default(SOLVER_DEFAULTS.force_tolerance),
         "equilibrium force tolerance relative to the reference load",
         get: |b| b.solver.force_tolerance, set: |b, v| b.solver.force_tolerance = v),

@@ -552,3 +552,89 @@ fn every_registered_system_reads_its_template_and_example() {
         assert_eq!(case.system().id(), system.id());
     }
 }
+
+/// Overrides are all applied, then validated once: the order never changes the verdict
+/// (before, each was validated alone, so a pair that is only valid together failed in one
+/// order and passed in the other).
+#[test]
+fn overrides_validate_once_whatever_the_order() {
+    let base = || Deck::parse(DEFAULT_DECK, "aerospace").unwrap_or_else(|e| panic!("{e}"));
+    // Pitch diameter and roller count must fit together: shrink both.
+    let a = "geometry.roller_count=6".to_string();
+    let find = |k: &str| base().get(k).unwrap_or_default();
+    let pd: f64 = find("geometry.pitch_diameter").parse().unwrap_or(0.0);
+    let b = format!("geometry.pitch_diameter={}", pd * 0.45);
+    let mut one = base();
+    let mut two = base();
+    let r1 = one.apply_overrides(&[a.clone(), b.clone()]).is_ok();
+    let r2 = two.apply_overrides(&[b.clone(), a.clone()]).is_ok();
+    assert_eq!(r1, r2, "order changed the verdict");
+    let e = base()
+        .apply_overrides(&["operating.inner_spd=5".to_string()])
+        .map_err(|e| e.to_string());
+    assert!(
+        matches!(&e, Err(m) if m.contains("operating.inner_speed") && m.contains("rollbench keys")),
+        "{e:?}"
+    );
+}
+
+/// A deck larger than the limit is refused with the limit named, without reading it all;
+/// a non-UTF-8 deck names the byte offset, line and column. (Before: /dev/zero was read
+/// up to 4 GB; the UTF-8 error had no position.)
+#[test]
+fn reading_is_bounded_and_locates_bad_bytes() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let big = dir.path().join("big.toml");
+    std::fs::write(&big, vec![b'#'; (MAX_DECK_BYTES + 10) as usize])
+        .unwrap_or_else(|e| panic!("{e}"));
+    let e = read_deck_text(&big).map_err(|e| e.to_string());
+    assert!(matches!(&e, Err(m) if m.contains("4 MiB")), "{e:?}");
+    #[cfg(unix)]
+    {
+        let e = read_deck_text(Path::new("/dev/zero")).map_err(|e| e.to_string());
+        assert!(matches!(&e, Err(m) if m.contains("size limit")), "{e:?}");
+    }
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(&bad, b"units = \"si\"\nname = \"a\xff\"\n").unwrap_or_else(|e| panic!("{e}"));
+    let e = Deck::load(&bad).map_err(|e| e.to_string());
+    assert!(
+        matches!(&e, Err(m) if m.contains("byte offset 22") && m.contains("line 2, column 10")),
+        "{e:?}"
+    );
+}
+
+/// `[thermal]`: absurd durations and steps are refused at validation with the allowed
+/// range; a non-finite temperature is named by its deck key.
+#[test]
+fn thermal_bounds_at_validation() {
+    for (set, want) in [
+        (vec!["thermal.transient.duration=1e20"], "duration ≤ 1e7"),
+        (
+            vec![
+                "thermal.transient.duration=1e6",
+                "thermal.transient.step=1e-3",
+            ],
+            "duration / step ≤ 1e6",
+        ),
+        (vec!["thermal.transient.step=1e-308"], "duration / step"),
+    ] {
+        let set: Vec<String> = set.into_iter().map(String::from).collect();
+        let mut d = Deck::parse(DEFAULT_DECK, "aerospace").unwrap_or_else(|e| panic!("{e}"));
+        let r = d
+            .apply_overrides(&set)
+            .and_then(|()| d.thermal_model().map(drop).map_err(|e| e.to_string()));
+        assert!(matches!(&r, Err(m) if m.contains(want)), "{set:?}: {r:?}");
+    }
+    let text = DEFAULT_DECK.replacen("fixed_temperature = 80.0", "fixed_temperature = inf", 1);
+    assert_ne!(text, DEFAULT_DECK);
+    {
+        let d = Deck::parse(&text, "aerospace");
+        let r = d
+            .map_err(|e| e.to_string())
+            .and_then(|d| d.thermal_model().map(drop).map_err(|e| e.to_string()));
+        assert!(
+            matches!(&r, Err(m) if m.contains("fixed_temperature")),
+            "{r:?}"
+        );
+    }
+}

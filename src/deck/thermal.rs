@@ -231,6 +231,9 @@ pub struct ThermalModel {
     pub transient: TransientSettings,
 }
 
+/// Longest transient duration (and step) a deck may ask for, s: 10⁷ s, about 116 days.
+pub const MAX_DURATION_S: f64 = 1e7;
+
 fn deck_err(location: impl Into<String>, message: impl Into<String>) -> ThermalError {
     ThermalError::Deck {
         location: location.into(),
@@ -345,16 +348,28 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
             transient.stop_at_limits = b;
         }
         transient.oil_node = td.oil_node;
-        for (field, v) in [
-            ("duration", transient.duration_s),
-            ("step", transient.step_s),
+        for (field, v, max) in [
+            ("duration", transient.duration_s, MAX_DURATION_S),
+            ("step", transient.step_s, MAX_DURATION_S),
         ] {
-            if !(v.is_finite() && v > 0.0) {
+            if !(v.is_finite() && v > 0.0 && v <= max) {
                 return Err(deck_err(
                     format!("[thermal.transient] field '{field}'"),
-                    format!("must be > 0 s, got {v}"),
+                    format!("allowed 0 < {field} ≤ {max:e} s, got {v:e} s"),
                 ));
             }
+        }
+        let steps = (transient.duration_s / transient.step_s).ceil();
+        if steps.is_nan() || steps > crate::thermal::transient::MAX_STEPS {
+            return Err(deck_err(
+                "[thermal.transient] field 'step'",
+                format!(
+                    "allowed duration / step ≤ {:e} steps, got {steps:e} ({:e} s / {:e} s): lengthen the step",
+                    crate::thermal::transient::MAX_STEPS,
+                    transient.duration_s,
+                    transient.step_s
+                ),
+            ));
         }
         if !(0.0..=1.0).contains(&network.roller_heat_fraction) {
             return Err(deck_err(
@@ -426,6 +441,18 @@ fn convert_node(d: &NodeDeck, u: Units, loc: &str) -> Result<Node, ThermalError>
         if let Some(v) = v {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(field_err(loc, field, format!("must be >= 0, got {v}")));
+            }
+        }
+    }
+    // Temperatures are checked here, under their deck names (the network checks them
+    // again under its SI names).
+    for (field, v) in [
+        ("fixed_temperature", d.fixed_temperature),
+        ("limit", d.limit),
+    ] {
+        if let Some(v) = v {
+            if !v.is_finite() {
+                return Err(field_err(loc, field, format!("must be finite, got {v}")));
             }
         }
     }

@@ -372,7 +372,18 @@ pub struct LifeResult {
     pub adjusted_l10_outer_mrev: Option<f64>,
     /// Adjusted raceway lives combined by eq. 6.6, Mrev (§6.2).
     pub adjusted_l10_bearing_mrev: Option<f64>,
+    /// Why `l10_bearing_h` (or the bearing life) is `None`: the life is infinite, never
+    /// "unloaded" for a loaded bearing. [`INFINITE_NOT_TURNING`] when the rings do not
+    /// turn relative to each other (no load cycles), [`INFINITE_UNLOADED`] when no raceway
+    /// carries load; `None` when the life is finite.
+    pub infinite_life_reason: Option<&'static str>,
 }
+
+/// [`LifeResult::infinite_life_reason`] when the rings do not turn relative to each other.
+pub const INFINITE_NOT_TURNING: &str =
+    "infinite: the rings do not turn relative to each other (no load cycles)";
+/// [`LifeResult::infinite_life_reason`] when neither raceway carries load.
+pub const INFINITE_UNLOADED: &str = "infinite: no raceway carries load (no fatigue)";
 
 /// Computes all life outputs of seed §6 from the per-roller equivalent loads: capacities
 /// (6.2), mean loads (6.3 for the rotating raceway, 6.4 for the other), raceway and
@@ -398,6 +409,11 @@ pub fn bearing_life(inp: &LifeInputs) -> LifeResult {
     let l10_outer_mrev = raceway_l10(capacity_outer_n, mean_load_outer_n);
     let l10_bearing_mrev = bearing_l10(l10_inner_mrev, l10_outer_mrev);
     let l10_bearing_h = life_hours(l10_bearing_mrev, inp.relative_speed_rad_s);
+    let infinite_life_reason = match (l10_bearing_mrev, l10_bearing_h) {
+        (None, _) => Some(INFINITE_UNLOADED),
+        (Some(_), None) => Some(INFINITE_NOT_TURNING),
+        (Some(_), Some(_)) => None,
+    };
 
     let (lubrication_factor_inner, lubrication_factor_outer) = match inp.factors.method {
         LifeMethod::Asme => (
@@ -445,6 +461,7 @@ pub fn bearing_life(inp: &LifeInputs) -> LifeResult {
         adjusted_l10_inner_mrev,
         adjusted_l10_outer_mrev,
         adjusted_l10_bearing_mrev: bearing_l10(adjusted_l10_inner_mrev, adjusted_l10_outer_mrev),
+        infinite_life_reason,
     }
 }
 

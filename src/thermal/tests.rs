@@ -91,8 +91,12 @@ fn one_node_implicit_matches_exponential() {
         &q(Q1),
     )
     .unwrap();
-    assert_eq!(res.time_s.len(), 5001);
-    assert!((res.time_s[5000] - 500.0).abs() < 1e-12);
+    // 5000 steps, more than MAX_SAMPLES: every second step is stored (and the last).
+    assert_eq!(res.sample_every_steps, 2);
+    assert_eq!(res.stats.steps, 5000);
+    assert_eq!(res.time_s.len(), 2501);
+    assert!((res.time_s[2500] - 500.0).abs() < 1e-12);
+    assert!((res.time_s[1] - 0.2).abs() < 1e-12);
     let err = max_error(&res, C1, G1, Q1, TINF, T0);
     assert!(err < 0.01, "max error {err} K");
     assert_eq!(res.stats.factorizations, 1);
@@ -949,4 +953,25 @@ fn heat_sources_are_conserved_across_mechanisms() {
         );
     }
     assert_eq!(heat.total_w(), 900.0 + 700.0 + 150.0 + 350.0 + 25.0);
+}
+
+/// Absurd counts are refused, never wrapped: `duration = step = 1e20` with the explicit
+/// integrator used to overflow `(dt / b).floor() as usize + 1` to 0 substeps and report
+/// "limit not reached"; a run needing more than MAX_SUBSTEPS explicit substeps or more
+/// than MAX_STEPS steps is an InvalidSetting error.
+#[test]
+fn transient_counts_are_checked() {
+    let net = one_node(C1, G1, TINF);
+    for (d, s, i) in [
+        (1e20, 1e20, Integrator::Explicit),
+        (1e11, 1e11, Integrator::Explicit),
+        (1e308, 1e-308, Integrator::Implicit),
+        (1e7, 1.0, Integrator::Implicit),
+    ] {
+        let r = run_transient_from(&net, &[T0, TINF], &continued(d, s, i), &q(Q1));
+        assert!(
+            matches!(r, Err(ThermalError::InvalidSetting { .. })),
+            "{d} {s} {i:?}: {r:?}"
+        );
+    }
 }

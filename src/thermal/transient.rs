@@ -149,6 +149,10 @@ pub struct TransientResult {
     pub nodes: Vec<TransientNode>,
     /// Integration statistics.
     pub stats: TransientStats,
+    /// Output steps per stored sample: 1 keeps every step; a run longer than
+    /// [`MAX_SAMPLES`] steps keeps every k-th step and the last (times to limit are still
+    /// found at every step).
+    pub sample_every_steps: usize,
 }
 
 impl TransientResult {
@@ -191,6 +195,17 @@ fn stable_bound(sys: &System) -> Option<f64> {
 
 /// Explicit substeps between two checks of the cancellation flag.
 const CANCEL_CHECK_SUBSTEPS: usize = 256;
+
+/// Most output steps a transient may take (`duration / step`); the deck's `[thermal]`
+/// parser rejects more with the allowed range, and [`run_transient_cancellable`] refuses
+/// them too.
+pub const MAX_STEPS: f64 = 1e6;
+/// Most explicit substeps a transient may take in all (`duration / explicit bound`):
+/// beyond it the explicit integrator would run for minutes; the implicit one is the answer.
+pub const MAX_SUBSTEPS: f64 = 1e8;
+/// Most samples stored per node: longer runs keep every k-th step (and the last), and say
+/// so in [`TransientResult::sample_every_steps`].
+pub const MAX_SAMPLES: usize = 4000;
 
 /// Runs the transient from a steady state (seed 000 §10.3: "the element's steady-state
 /// temperature … is used as the initial value at time t = 0").
@@ -289,9 +304,39 @@ pub fn run_transient_cancellable(
         explicit_bound_s: bound,
     };
     let mut lu: Option<(f64, LU<f64, Dyn, Dyn>)> = None;
-    let n_steps = ((settings.duration_s / settings.step_s) - 1e-9)
+    // Every conversion of a user number to a count is checked: an absurd duration/step
+    // is refused, never wrapped or saturated into a wrong run.
+    let steps_f = ((settings.duration_s / settings.step_s) - 1e-9)
         .ceil()
-        .max(1.0) as usize;
+        .max(1.0);
+    if steps_f.is_nan() || steps_f > MAX_STEPS {
+        return Err(ThermalError::InvalidSetting {
+            field: "duration_s / step_s".into(),
+            reason: format!(
+                "{} steps of {} s for {} s; at most {MAX_STEPS:e} steps",
+                fmt_count(steps_f),
+                settings.step_s,
+                settings.duration_s
+            ),
+        });
+    }
+    if settings.integrator == Integrator::Explicit {
+        if let Some(b) = bound.filter(|&b| b > 0.0) {
+            let total = (settings.duration_s / b).ceil() + steps_f;
+            if total.is_nan() || total > MAX_SUBSTEPS {
+                return Err(ThermalError::InvalidSetting {
+                    field: "integrator".into(),
+                    reason: format!(
+                        "the explicit integrator would need about {} substeps below its stability bound of {b:.3e} s (at most {MAX_SUBSTEPS:e}); use integrator = \"implicit\"",
+                        fmt_count(total)
+                    ),
+                });
+            }
+        }
+    }
+    let n_steps = steps_f as usize;
+    let sample_every = n_steps.div_ceil(MAX_SAMPLES).max(1);
+    let mut last_t: Vec<f64> = t_all.clone();
     let mut now = 0.0;
     for k in 1..=n_steps {
         if cancelled() {
@@ -334,8 +379,9 @@ pub fn run_transient_cancellable(
                 stats.substeps += 1;
             }
             Integrator::Explicit => {
+                // Bounded above by the MAX_SUBSTEPS check before the loop.
                 let n_sub = match bound {
-                    Some(b) if dt >= b => (dt / b).floor() as usize + 1,
+                    Some(b) if dt >= b => ((dt / b).floor() + 1.0).min(MAX_SUBSTEPS) as usize,
                     _ => 1,
                 };
                 let h = dt / n_sub as f64;
@@ -376,7 +422,7 @@ pub fn run_transient_cancellable(
         stats.steps += 1;
         for (i, limit) in limits.iter().enumerate() {
             if let (Some(l), None) = (limit, reached[i]) {
-                let prev = history[i].last().copied().unwrap_or(t_all[i]);
+                let prev = last_t[i];
                 if t_all[i] >= *l {
                     let frac = if t_all[i] > prev {
                         ((l - prev) / (t_all[i] - prev)).clamp(0.0, 1.0)
@@ -387,16 +433,20 @@ pub fn run_transient_cancellable(
                 }
             }
         }
-        time_s.push(next);
-        for (h, &x) in history.iter_mut().zip(&t_all) {
-            h.push(x);
-        }
+        last_t.clone_from(&t_all);
         now = next;
         let all_reached = limits
             .iter()
             .zip(&reached)
             .all(|(l, r)| l.is_none() || r.is_some());
-        if settings.stop_at_limits && any_limit && all_reached {
+        let stop = settings.stop_at_limits && any_limit && all_reached;
+        if k % sample_every == 0 || k == n_steps || stop {
+            time_s.push(next);
+            for (h, &x) in history.iter_mut().zip(&t_all) {
+                h.push(x);
+            }
+        }
+        if stop {
             break;
         }
     }
@@ -417,7 +467,17 @@ pub fn run_transient_cancellable(
         time_s,
         nodes,
         stats,
+        sample_every_steps: sample_every,
     })
+}
+
+/// A count held in an `f64`, for messages: plain up to 10¹², else in e-notation.
+fn fmt_count(x: f64) -> String {
+    if x.abs() < 1e12 {
+        format!("{x:.0}")
+    } else {
+        format!("{x:.3e}")
+    }
 }
 
 fn check_settings(s: &TransientSettings) -> Result<(), ThermalError> {

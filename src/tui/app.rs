@@ -370,6 +370,15 @@ impl App {
                 if key.kind == KeyEventKind::Release {
                     return Vec::new();
                 }
+                // While only "terminal too small" is shown, keys would act unseen: ignore
+                // all but quitting (q, Ctrl-c).
+                let too_small = self.size.0 < MIN_SIZE.0 || self.size.1 < MIN_SIZE.1;
+                let quit = matches!(key.code, KeyCode::Char('q'))
+                    || (matches!(key.code, KeyCode::Char('c'))
+                        && key.modifiers.contains(KeyModifiers::CONTROL));
+                if too_small && !quit {
+                    return Vec::new();
+                }
                 self.on_key(key)
             }
             AppEvent::Resize(w, h) => {

@@ -137,8 +137,9 @@ impl DeckDoc {
     }
 
     /// Saves atomically (temporary file then rename; previous file kept as `.bak`).
-    /// On failure the existing file is untouched.
-    pub fn save(&self, path: &Path) -> Result<(), String> {
+    /// On failure the existing file is untouched. Links are saved through, read-only
+    /// decks refused (see [`crate::files`]); the result says how the file was written.
+    pub fn save(&self, path: &Path) -> Result<crate::files::Written, String> {
         self.deck.save(path).map_err(|e| e.to_string())
     }
 

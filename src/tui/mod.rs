@@ -53,7 +53,7 @@ pub fn run_workbench_deck(
 ) -> color_eyre::Result<()> {
     let on_disk = source_path
         .as_ref()
-        .and_then(|p| std::fs::read_to_string(p).ok());
+        .and_then(|p| crate::deck::read_deck_text(p).ok());
     let mut app = App::new(DeckDoc::from_deck(deck), source_path);
     if let Some(text) = on_disk {
         app.saved_text = text;
@@ -157,9 +157,19 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 Vec::new()
             }
             Command::Save { path, deck } => {
-                let r = deck.save(&path).map(|()| path);
+                let r = deck.save(&path);
                 save_failed |= r.is_err();
-                app.handle(AppEvent::Saved(r))
+                let how = match &r {
+                    Ok(crate::files::Written::Replaced { via: None, .. }) | Err(_) => None,
+                    Ok(w) => Some(format!("saved {w}")),
+                };
+                let more = app.handle(AppEvent::Saved(r.map(|_| path)));
+                // Say what happened when it was not a plain replace (through a link,
+                // in place to a device).
+                if how.is_some() {
+                    app.message = how;
+                }
+                more
             }
             Command::Open(path) => {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));

@@ -894,3 +894,19 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
     let step = view_model::trace_step(&a, last, crate::units::Units::Si).expect("a step");
     flat(&step.inner_load, "stepper bars");
 }
+
+/// While only "terminal too small" is shown, keys do nothing unseen (Tab and `u` used to
+/// change the pane and the units); `q` still quits. (Fails on the previous code.)
+#[test]
+fn too_small_terminal_ignores_keys() {
+    let mut app = deck_app();
+    app.handle(AppEvent::Resize(40, 10));
+    let before = (app.focus, app.display_units, app.mode.clone());
+    app.handle(key(KeyCode::Tab));
+    app.handle(ch('u'));
+    app.handle(ch('S'));
+    assert_eq!((app.focus, app.display_units, app.mode.clone()), before);
+    app.handle(AppEvent::Resize(100, 30));
+    app.handle(ch('u'));
+    assert_ne!(app.display_units, before.1);
+}

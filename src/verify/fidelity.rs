@@ -539,6 +539,10 @@ pub fn bench_decks(
         .collect()
 }
 
+/// Marks a `bench` error that is a solver failure of a deck's reference run (the binary
+/// exits 2 for those, 1 for a deck it cannot read).
+pub const REFERENCE_RUN_FAILED: &str = "reference run failed";
+
 /// `rollbench bench`: the tables of every deck as text, or JSON (one object for one deck,
 /// an array for several).
 pub fn bench_command(
@@ -551,7 +555,7 @@ pub fn bench_command(
     for (name, deck) in &decks {
         let thermal = deck.thermal_model().map_err(|e| e.to_string())?;
         let t = measure_grid(name, &deck.bearing, thermal.as_ref())
-            .map_err(|e| format!("{name}: reference run failed: {e}"))?;
+            .map_err(|e| format!("{name}: {REFERENCE_RUN_FAILED}: {e}"))?;
         tables.push(t);
     }
     if json {

@@ -3,6 +3,7 @@
 //! centrifugal and gyroscopic loads, stresses, EHD film, life, speeds, heat.
 
 pub mod contacts;
+pub mod converged;
 pub mod geometry;
 pub mod input;
 pub mod load_distribution;

@@ -481,7 +481,11 @@ fn load_stage(
     } else {
         (estimate, None)
     };
-    let fine = dynamic_iteration(bearing, start, warm, request.trace_roller, cancel)?;
+    let fine = dynamic_iteration(bearing, start, warm, request.trace_roller, cancel)
+        .map_err(|e| super::converged::describe_case(bearing, e))?;
+    // Converged means converged: the deck's tolerance on every residual, relative to the
+    // applied load.
+    super::converged::check_residuals(bearing, &fine.load)?;
     add_stats(&mut stats, &fine.load.stats);
     let mut load = fine.load;
     load.stats = stats;

@@ -5,7 +5,7 @@ use super::pipeline::{self, Analysis, Request};
 use super::report;
 use crate::bearings::view::View;
 use crate::bearings::{BearingSystem, Case, RunOptions, Solution};
-use crate::deck::{Deck, DeckError, DeckErrors};
+use crate::deck::{Deck, DeckErrors};
 use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
 use crate::units::Units;
@@ -47,8 +47,8 @@ impl BearingSystem for SphericalRoller {
         overrides: &[String],
     ) -> Result<Box<dyn Case>, DeckErrors> {
         let mut deck = Deck::parse(text, source_name)?;
-        deck.apply_overrides(overrides)
-            .map_err(|message| DeckErrors::from(DeckError::Override { message }))?;
+        // All overrides first, then one validation: their order never matters.
+        deck.apply_assignments(overrides)?;
         let thermal = deck.thermal_model()?;
         Ok(Box::new(SphericalCase { deck, thermal }))
     }

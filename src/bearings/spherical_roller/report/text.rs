@@ -155,11 +155,17 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         let _ = writeln!(s, "  capacity inner {:.1} {f}, outer {:.1} {f}; mean load inner {:.1} {f}, outer {:.1} {f}", r.capacity_inner_n * d.force.0, r.capacity_outer_n * d.force.0, r.mean_load_inner_n * d.force.0, r.mean_load_outer_n * d.force.0, f = d.force.1);
         let _ = writeln!(
             s,
-            "  L-10 inner {} Mrev, outer {} Mrev, bearing {} Mrev ({} h)",
+            "  L-10 inner {} Mrev, outer {} Mrev, bearing {} Mrev ({})",
             opt(r.l10_inner_mrev),
             opt(r.l10_outer_mrev),
             opt(r.l10_bearing_mrev),
-            opt(r.l10_bearing_h)
+            match (r.l10_bearing_h, r.infinite_life_reason) {
+                (Some(h), _) => format!("{h:.4e} h"),
+                // A loaded bearing whose rings do not turn relative to each other is not
+                // "unloaded": its life in hours is infinite, and the report says why.
+                (None, Some(why)) => format!("hours {why}"),
+                (None, None) => "unloaded h".to_string(),
+            }
         );
         let _ = writeln!(s, "  film parameter inner {:.3}, outer {:.3}; lubrication factor inner {:.3}, outer {:.3}; material factor {:.2}", r.lambda_inner, r.lambda_outer, r.lubrication_factor_inner, r.lubrication_factor_outer, r.material_factor);
         let _ = writeln!(
