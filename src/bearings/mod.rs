@@ -44,6 +44,8 @@ pub trait BearingSystem: Sync {
     fn title(&self) -> &'static str;
     /// The method and its source (seed document).
     fn method(&self) -> &'static str;
+    /// The workbench panes this system offers, in switcher order.
+    fn panes(&self) -> &'static [view::PaneSpec];
     /// A fully commented deck in `units` that parses back.
     fn template(&self, units: Units) -> String;
     /// The shipped example deck (text), embedded in the binary.

@@ -230,6 +230,30 @@ pub struct Summary {
     pub precision: usize,
 }
 
+/// What a workbench pane shows (the front end has one renderer per kind).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PaneKind {
+    /// The deck's inputs, editable.
+    Inputs,
+    /// The element table ([`View::screen_table`]).
+    Elements,
+    /// The bearing chart and, per element, its detail chart.
+    Chart,
+    /// The thermal network.
+    Thermal,
+    /// The equilibrium stepper.
+    Stepper,
+}
+
+/// A pane a bearing system offers: its kind and the title it goes by ("Rollers", "Balls").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PaneSpec {
+    /// What it shows.
+    pub kind: PaneKind,
+    /// Its title in the pane switcher and on its border.
+    pub title: &'static str,
+}
+
 /// Everything a solved bearing shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct View {

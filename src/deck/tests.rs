@@ -550,6 +550,13 @@ fn every_registered_system_reads_its_template_and_example() {
             .load(system.example_deck(), "example", &[])
             .unwrap_or_else(|e| panic!("{}: {e}", system.id()));
         assert_eq!(case.system().id(), system.id());
+        // The workbench needs the inputs pane and an element pane; each kind once.
+        let kinds: Vec<_> = system.panes().iter().map(|p| p.kind).collect();
+        assert_eq!(kinds.first(), Some(&crate::bearings::view::PaneKind::Inputs));
+        assert!(kinds.contains(&crate::bearings::view::PaneKind::Elements));
+        for (i, k) in kinds.iter().enumerate() {
+            assert!(!kinds[..i].contains(k), "{}: {k:?} twice", system.id());
+        }
     }
 }
 

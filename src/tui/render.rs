@@ -14,6 +14,7 @@ use ratatui::widgets::{
 use super::app::{App, Mode, Pane, PromptKind, SolveState, KEYS, MIN_SIZE};
 use super::deck_io;
 use super::view_model::{self, DASH};
+use crate::bearings::view::PaneKind;
 
 const ACCENT: Color = Color::Cyan;
 const INNER: Color = Color::Cyan;
@@ -101,7 +102,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         ));
     }
     for (i, p) in Pane::ALL.iter().enumerate() {
-        let label = format!(" {}:{} ", i + 1, p.title());
+        let label = format!(" {}:{} ", i + 1, pane_title(app, *p));
         let style = if *p == app.focus {
             Style::default().fg(Color::Black).bg(Color::White)
         } else if app.visible(*p) {
@@ -154,6 +155,21 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
 }
 
+/// A pane's title as the deck's bearing system names it ("Rollers", "Balls"), falling
+/// back to the pane's own name.
+fn pane_title(app: &App, pane: Pane) -> &'static str {
+    let kind = match pane {
+        Pane::Inputs => PaneKind::Inputs,
+        Pane::Rollers => PaneKind::Elements,
+        Pane::Load => PaneKind::Chart,
+        Pane::Thermal => PaneKind::Thermal,
+        Pane::Stepper => PaneKind::Stepper,
+    };
+    crate::bearings::system(app.deck.system_id())
+        .and_then(|s| s.panes().iter().find(|p| p.kind == kind))
+        .map_or(pane.title(), |p| p.title)
+}
+
 fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
     let focused = app.focus == pane;
     let style = if focused {
@@ -164,7 +180,10 @@ fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
     Block::default()
         .borders(Borders::ALL)
         .border_style(style)
-        .title(Span::styled(format!(" {}{} ", pane.title(), extra), style))
+        .title(Span::styled(
+            format!(" {}{} ", pane_title(app, pane), extra),
+            style,
+        ))
 }
 
 fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {

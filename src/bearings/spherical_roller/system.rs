@@ -3,7 +3,7 @@
 
 use super::pipeline::{self, Analysis, Request};
 use super::report;
-use crate::bearings::view::View;
+use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{BearingSystem, Case, RunOptions, Solution};
 use crate::deck::{Deck, DeckErrors};
 use crate::numerics::cancel::Cancel;
@@ -30,6 +30,32 @@ impl BearingSystem for SphericalRoller {
 
     fn method(&self) -> &'static str {
         "SASHBEAN lamina method (A. K. Aggarwal, NASA CR-191182, 1993)"
+    }
+
+    fn panes(&self) -> &'static [PaneSpec] {
+        const PANES: [PaneSpec; 5] = [
+            PaneSpec {
+                kind: PaneKind::Inputs,
+                title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Elements,
+                title: "Rollers",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart,
+                title: "Load",
+            },
+            PaneSpec {
+                kind: PaneKind::Thermal,
+                title: "Thermal",
+            },
+            PaneSpec {
+                kind: PaneKind::Stepper,
+                title: "Stepper",
+            },
+        ];
+        &PANES
     }
 
     fn template(&self, units: Units) -> String {
