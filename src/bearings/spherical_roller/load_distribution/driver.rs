@@ -1,0 +1,430 @@
+//! The Newton driver of the load distribution: each roller's 3-unknown equilibrium at a
+//! given ring deflection, the sweep over the unique rollers with the condensed ring
+//! stiffness (Schur complement), the cold start from the rigid-roller estimate and the
+//! inertial prediction of a warm start.
+
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+
+use super::problem::{Problem, RollerEval};
+use super::{InertialSensitivity, TraceStep};
+use crate::bearings::spherical_roller::Bearing;
+use crate::bearings::SolveError;
+
+impl Problem {
+    /// Solve one roller's equilibrium at ring deflection u, starting from q.
+    #[allow(clippy::too_many_arguments)]
+    fn solve_roller(
+        &self,
+        index: usize,
+        cphi: f64,
+        u: [f64; 2],
+        q: &mut Vector3<f64>,
+        iterations: &mut usize,
+        mut trace: Option<(&mut Vec<TraceStep>, usize)>,
+    ) -> Result<RollerEval, SolveError> {
+        let scale_t = 1e-3 * 2.0 * self.l_ref; // initial trust radius in translation, m
+        let mut trust = scale_t;
+        // The accepted trial of the line search is evaluated with its Hessian, so it is the
+        // next iterate's evaluation: one contact sweep per Newton iteration, not two.
+        let mut ev = self.eval(cphi, u, q, true);
+        for it in 0..self.max_roller_it {
+            if let Some((steps, ring_it)) = trace.as_mut() {
+                steps.push(self.trace_step(*ring_it, it, cphi, u, q, &ev.g_q));
+            }
+            let res = self.roller_residual(&ev.g_q);
+            if !res.is_finite() {
+                return Err(SolveError::NonFinite {
+                    stage: "roller equilibrium",
+                    what: format!("roller {} residual", index + 1),
+                });
+            }
+            if res <= self.roller_tol.get() {
+                return Ok(ev);
+            }
+            *iterations += 1;
+            let step = newton_step3(&ev.h_qq, &ev.g_q, self.l_ref);
+            // Trust region in the scaled norm (translation m, pitch × l_ref).
+            let len = (step[0].powi(2) + step[1].powi(2) + (step[2] * self.l_ref).powi(2)).sqrt();
+            let (step, capped) = if len > trust {
+                (step * (trust / len), true)
+            } else {
+                (step, false)
+            };
+            let slope = ev.g_q.dot(&step);
+            let mut lambda = 1.0;
+            let mut accepted = None;
+            for _ in 0..40 {
+                let trial = *q + lambda * step;
+                let e2 = self.eval(cphi, u, &trial, true);
+                // Armijo on the energy without round-off slack: near convergence energy differences
+                // drown in round-off and the gradient test below decides.
+                let ok_energy = e2.energy < ev.energy + 1e-4 * lambda * slope;
+                let ok_grad = self.roller_residual(&e2.g_q) < 0.5 * res;
+                if ok_energy || ok_grad {
+                    *q = trial;
+                    accepted = Some(e2);
+                    break;
+                }
+                lambda *= 0.5;
+            }
+            let Some(next) = accepted else {
+                // No descent even at 2⁻⁴⁰ of the step: the residual is at round-off level.
+                let r = self.roller_residual(&ev.g_q);
+                if r <= 1e3 * self.tol {
+                    return Ok(ev);
+                }
+                return Err(SolveError::RollerNotConverged {
+                    roller: index + 1,
+                    iterations: it + 1,
+                    residual: r,
+                    tolerance: self.tol,
+                });
+            };
+            ev = next;
+            if lambda == 1.0 && capped {
+                // Grow the trust radius, but never beyond a tenth of the roller diameter:
+                // a roller out of contact has no stiffness along its normal, and an
+                // unbounded radius lets one Newton step throw it metres away.
+                trust = (trust * 4.0).min(self.max_step);
+            } else if lambda < 1.0 {
+                // Shrink to the step actually taken (len is the uncapped Newton length).
+                trust = (lambda * len.min(trust)).max(1e-9 * scale_t);
+            }
+        }
+        let r = self.roller_residual(&ev.g_q);
+        if r <= self.tol {
+            return Ok(ev);
+        }
+        Err(SolveError::RollerNotConverged {
+            roller: index + 1,
+            iterations: self.max_roller_it,
+            residual: r,
+            tolerance: self.tol,
+        })
+    }
+
+    /// Solve all unique rollers at u; returns Σ energy, condensed gradient and stiffness.
+    pub(super) fn solve_rollers(
+        &self,
+        u: [f64; 2],
+        qs: &mut [Vector3<f64>],
+        roller_its: &mut usize,
+        trace: &mut Option<(usize, Vec<TraceStep>)>,
+        ring_it: usize,
+    ) -> Result<RingState, SolveError> {
+        let mut sens = Vec::with_capacity(qs.len());
+        let mut inertial_roller = Vec::with_capacity(qs.len());
+        let mut inertial_ring = Vec::with_capacity(qs.len());
+        let mut energy = -(self.load[0] * u[0] + self.load[1] * u[1]);
+        let mut g = Vector2::new(-self.load[0], -self.load[1]);
+        let mut k = Matrix2::zeros();
+        let mut worst = 0.0f64;
+        for (j, (&(cphi, mult), q)) in self.unique.iter().zip(qs.iter_mut()).enumerate() {
+            let tr = match trace {
+                Some((idx, steps)) if *idx == j => Some((steps, ring_it)),
+                _ => None,
+            };
+            let ev = self.solve_roller(j, cphi, u, q, roller_its, tr)?;
+            worst = worst.max(self.roller_residual(&ev.g_q));
+            // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
+            // with every roller kept in equilibrium).
+            let hqu = ev.h_uq.transpose();
+            let factor = Factor3::new(&ev.h_qq, self.l_ref);
+            let x = factor.solve_mat(&hqu);
+            k += mult * (ev.h_uu - ev.h_uq * x);
+            // The roller stopped at a residual r ≤ roller_tol; left as is, Z such residuals add
+            // up to a ring-force error of order Z·r, a noise floor that can sit above the
+            // ring tolerance and stall the ring line search. One more Newton step from the
+            // Hessian already at hand, dq = −H_qq⁻¹g_q, carried to the ring force
+            // (g_u + H_uq·dq) and the energy (+½g_qᵀdq), leaves an error of order r²
+            // instead. The roller moves by dq too, so later warm starts inherit it; the
+            // residuals reported at the end are re-evaluated, never taken from this.
+            // The step is trusted only while it is tiny against the contact approaches
+            // (10⁻⁶·D): a roller held in a soft direction by the cage spring alone can turn
+            // a small residual into a long step the quadratic model does not cover.
+            let mut dq = factor.solve_vec(&ev.g_q);
+            let len = (dq[0].powi(2) + dq[1].powi(2) + (dq[2] * self.l_ref).powi(2)).sqrt();
+            if len.is_nan() || len > 1e-5 * self.max_step {
+                dq = Vector3::zeros();
+            }
+            *q -= dq;
+            energy += mult * (ev.energy - 0.5 * ev.g_q.dot(&dq));
+            g += mult * (ev.g_u - ev.h_uq * dq);
+            // dq/du = −H_qq⁻¹ H_qu: predicts each roller's equilibrium at a trial ring step.
+            sens.push(-x);
+            // Response to the inertial loads (radial force, pitching moment).
+            let e = nalgebra::Matrix3x2::new(0.0, 0.0, 1.0, 0.0, 0.0, 1.0);
+            let pf = factor.solve_mat(&e);
+            inertial_ring.push(mult * (ev.h_uq * pf));
+            inertial_roller.push(pf);
+        }
+        Ok(RingState {
+            energy,
+            g,
+            k,
+            sens,
+            inertial_roller,
+            inertial_ring,
+            worst,
+        })
+    }
+
+    /// A cold start from the rigid-roller estimate: each roller replaced by one nonlinear
+    /// spring along the nominal contact normal n, its inner and outer contacts in series with
+    /// every lamina at the same approach (Q = K·δ^(10/9), K = Γ·k per raceway, so the pair
+    /// gives Q = [Δ/(K_i^(−0.9) + K_o^(−0.9))]^(10/9) for a total approach Δ), and the ring
+    /// deflection u that balances the applied loads found by Newton on that 2-unknown convex
+    /// energy: Δ_j = n_x·u_a + n_r·u_r·cos φ_j − c/2·cos β (the diametral clearance c opens
+    /// at the outer raceway). Each roller then starts where it splits Δ_j between its two
+    /// contacts at equal load. It ignores crowning, tilt and the inertial loads, so it is
+    /// only a starting point: the solve itself is unchanged (tested). When the estimate has no
+    /// meaning (no load, no equilibrium within D/10, or a singular direction with load on
+    /// it) the start stays at zero, as before.
+    pub(super) fn cold_start(&self, b: &Bearing) -> ([f64; 2], Vec<Vector3<f64>>) {
+        let zero = ([0.0, 0.0], vec![Vector3::zeros(); self.unique.len()]);
+        if self.load[0] == 0.0 && self.load[1] == 0.0 {
+            return zero;
+        }
+        let n = self.geom.normal;
+        // A lamina whose crown normal is tilted from n by θ_l sees the approach e·cos θ_l and
+        // pushes back along its own normal: Σ_l w_l·cos^(19/9) θ_l laminae-equivalents
+        // (cos θ_l = h_l/R for conforming crowns, where this makes the estimate exact).
+        let tilt_sum = |inner: bool| -> f64 {
+            self.geom
+                .laminae
+                .iter()
+                .map(|l| {
+                    let rest = crate::bearings::spherical_roller::geometry::Pitch {
+                        sin: 0.0,
+                        cos_minus_one: 0.0,
+                    };
+                    let a = self.geom.approach_with(l, inner, [0.0; 3], [0.0; 2], rest);
+                    let c = (a.normal[0] * n[0] + a.normal[1] * n[1]).abs();
+                    // c^(19/9) = c²·c^(1/9): the hot loop's root instead of a pow call.
+                    l.weight * c * c * crate::physics::contact::lamina_law::ninth_root(c)
+                })
+                .sum()
+        };
+        let (ki, ko) = (
+            tilt_sum(true) * self.law_in.stiffness,
+            tilt_sum(false) * self.law_out.stiffness,
+        );
+        let ci = ki.powf(-0.9);
+        let co = ko.powf(-0.9);
+        let c_pair = ci + co;
+        let gap = 0.5 * b.geometry.diametral_clearance_m * n[1];
+        // Energy, gradient and Hessian of the rigid-roller model at u.
+        let model = |u: [f64; 2]| {
+            let mut e = -(self.load[0] * u[0] + self.load[1] * u[1]);
+            let mut g = Vector2::new(-self.load[0], -self.load[1]);
+            let mut h = Matrix2::zeros();
+            for &(cphi, mult) in &self.unique {
+                let m = Vector2::new(n[0], n[1] * cphi);
+                let d = m.dot(&Vector2::new(u[0], u[1])) - gap;
+                if d > 0.0 {
+                    let x = d / c_pair;
+                    let x19 = crate::physics::contact::lamina_law::ninth_root(x);
+                    let q = x * x19;
+                    let dq = (10.0 / 9.0) * x19 / c_pair;
+                    e += mult * (9.0 / 19.0) * q * d;
+                    g += mult * q * m;
+                    h += mult * dq * m * m.transpose();
+                }
+            }
+            (e, g, h)
+        };
+        let d = b.geometry.roller_diameter_m;
+        let mut u = [0.0, 0.0];
+        let (mut e, mut g, mut h) = model(u);
+        let f_ref = self.load[0].abs().max(self.load[1].abs());
+        // Solved to the solve's own force tolerance where it can be (quadratic convergence:
+        // one or two steps past 1e-6): where the estimate is exact (conforming crowns) the
+        // first sweep then already meets the ring tolerance. Steps that round-off stops
+        // (no energy decrease, no halving of the force) end the search; the estimate counts
+        // as solved when it got within 1e-6 of the load.
+        let mut solved = false;
+        for _ in 0..60 {
+            if g.amax() <= 0.1 * self.tol {
+                solved = true;
+                break;
+            }
+            // Newton with a floor on the stiffness so that a ring with no roller in contact
+            // yet moves (by at most D/100 per step) toward contact.
+            let step = newton_step2(&h, &g);
+            let len = step.amax();
+            let step = if len > 0.01 * d {
+                step * (0.01 * d / len)
+            } else {
+                step
+            };
+            let mut lambda = 1.0;
+            let mut moved = false;
+            for _ in 0..30 {
+                let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
+                let (e2, g2, h2) = model(trial);
+                if e2 < e || g2.amax() < 0.5 * g.amax() {
+                    (u, e, g, h) = (trial, e2, g2, h2);
+                    moved = true;
+                    break;
+                }
+                lambda *= 0.5;
+            }
+            if !moved {
+                solved = g.amax() <= 1e-6 * f_ref;
+                break;
+            }
+            if u[0].abs().max(u[1].abs()) > 0.1 * d {
+                return zero;
+            }
+        }
+        if !solved {
+            return zero;
+        }
+        let qs = self
+            .unique
+            .iter()
+            .map(|&(cphi, _)| {
+                let dj = n[0] * u[0] + n[1] * u[1] * cphi;
+                let total = dj - gap;
+                let s = if total > 0.0 {
+                    // Equal load Q: δ_i = Q^0.9·K_i^(−0.9) = Δ·c_i/(c_i + c_o).
+                    dj - total * ci / c_pair
+                } else {
+                    dj.clamp(0.0, gap.max(0.0))
+                };
+                Vector3::new(s * n[0], s * n[1], 0.0)
+            })
+            .collect();
+        (u, qs)
+    }
+
+    /// Move a warm start by the first-order response to the change of inertial loads from
+    /// the warm solution's to this problem's (see [`InertialSensitivity`]). The ring move is
+    /// skipped when it would exceed the initial ring trust radius (10⁻³·D), and a roller's
+    /// move when it exceeds the roller trust cap (10⁻²·D; a roller touching one raceway is
+    /// held only by the soft cage spring, where the linear response is no guide): such
+    /// rollers start from their old position and Newton takes them from there.
+    pub(super) fn predict_inertial(
+        &self,
+        w: &InertialSensitivity,
+        u: &mut [f64; 2],
+        qs: &mut [Vector3<f64>],
+    ) {
+        if w.roller.len() != qs.len() {
+            return;
+        }
+        let c = Vector2::new(self.cf - w.cf, -(self.gm - w.gm));
+        if c[0] == 0.0 && c[1] == 0.0 {
+            return;
+        }
+        let r: Vector2<f64> = w.ring.iter().map(|m| m * c).sum();
+        let du = -newton_step2(&w.k, &(-r));
+        let du_len = du[0].abs().max(du[1].abs());
+        if du_len.is_nan() || du_len > 0.01 * self.max_step {
+            return;
+        }
+        u[0] += du[0];
+        u[1] += du[1];
+        for ((q, p), s) in qs.iter_mut().zip(&w.roller).zip(&w.sens) {
+            let d = p * c + s * du;
+            if d[0].abs().max(d[1].abs()).max((d[2] * self.l_ref).abs()) <= 0.1 * self.max_step {
+                *q += d;
+            }
+        }
+    }
+}
+
+/// The ring-level state at one ring deflection: energy, ring force residual, condensed
+/// stiffness and each roller's sensitivity dq/du.
+pub(super) struct RingState {
+    pub(super) energy: f64,
+    pub(super) g: Vector2<f64>,
+    pub(super) k: Matrix2<f64>,
+    pub(super) sens: Vec<nalgebra::Matrix3x2<f64>>,
+    /// H_qq⁻¹[e_r, e_α] per roller and its ring-force image m·H_uq·H_qq⁻¹[e_r, e_α].
+    pub(super) inertial_roller: Vec<nalgebra::Matrix3x2<f64>>,
+    pub(super) inertial_ring: Vec<Matrix2<f64>>,
+    /// Largest scaled roller residual, before the one-step Newton correction of
+    /// `solve_rollers` (which only shrinks it).
+    pub(super) worst: f64,
+}
+
+/// Newton step −H⁻¹g for a 3×3 symmetric H, shifted to positive definite if needed.
+fn newton_step3(h: &Matrix3<f64>, g: &Vector3<f64>, l_ref: f64) -> Vector3<f64> {
+    // Scale pitch by l_ref so the three unknowns have comparable units.
+    let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
+    let hs = s * h * s;
+    let gs = s * g;
+    let tr = hs.trace().abs().max(1e-300);
+    let mut mu = 0.0;
+    for _ in 0..40 {
+        let m = hs + Matrix3::identity() * mu;
+        if let Some(ch) = m.cholesky() {
+            return s * (-ch.solve(&gs));
+        }
+        mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
+    }
+    // H indefinite beyond repair: steepest descent scaled by the trace.
+    s * (-gs / tr)
+}
+
+/// H_qq of one roller factored once (scaled and, if need be, shifted to positive definite
+/// like the Newton step) for the condensation's three solves; `None` when no shift helps,
+/// and then every solve gives zero.
+struct Factor3(Option<(nalgebra::Cholesky<f64, nalgebra::U3>, Matrix3<f64>)>);
+
+impl Factor3 {
+    fn new(h: &Matrix3<f64>, l_ref: f64) -> Self {
+        let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
+        let hs = s * h * s;
+        let tr = hs.trace().abs().max(1e-300);
+        let mut mu = 0.0;
+        for _ in 0..40 {
+            let m = hs + Matrix3::identity() * mu;
+            if let Some(ch) = m.cholesky() {
+                return Factor3(Some((ch, s)));
+            }
+            mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
+        }
+        Factor3(None)
+    }
+
+    /// X = H⁻¹B.
+    fn solve_mat(&self, b: &nalgebra::Matrix3x2<f64>) -> nalgebra::Matrix3x2<f64> {
+        match &self.0 {
+            Some((ch, s)) => s * ch.solve(&(s * b)),
+            None => nalgebra::Matrix3x2::zeros(),
+        }
+    }
+
+    /// x = H⁻¹b.
+    fn solve_vec(&self, b: &Vector3<f64>) -> Vector3<f64> {
+        match &self.0 {
+            Some((ch, s)) => s * ch.solve(&(s * b)),
+            None => Vector3::zeros(),
+        }
+    }
+}
+
+pub(super) fn newton_step2(k: &Matrix2<f64>, g: &Vector2<f64>) -> Vector2<f64> {
+    let tr = k.trace().abs();
+    let mut mu = 0.0;
+    for _ in 0..60 {
+        let m = k + Matrix2::identity() * mu;
+        if let Some(ch) = m.cholesky() {
+            return -ch.solve(g);
+        }
+        mu = if mu == 0.0 {
+            (1e-10 * tr).max(1e-30)
+        } else {
+            mu * 10.0
+        };
+    }
+    -g / tr.max(1e-30)
+}
+
+/// Unique (symmetry) index of roller `r` (0-based): rollers j and Z−j mirror each other.
+pub(super) fn unique_index(r: usize, z: usize) -> usize {
+    let r = r % z.max(1);
+    r.min(z - r)
+}
