@@ -6,4 +6,5 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod newton;
 pub mod pchip;
