@@ -3,12 +3,13 @@
 //! stiffness (Schur complement), the cold start from the rigid-roller estimate and the
 //! inertial prediction of a warm start.
 
-use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+use nalgebra::{Matrix2, Vector2, Vector3};
 
 use super::problem::{Problem, RollerEval};
 use super::{InertialSensitivity, TraceStep};
 use crate::bearings::spherical_roller::Bearing;
 use crate::bearings::SolveError;
+use crate::numerics::newton::{newton_step2, newton_step3, Factor3};
 
 impl Problem {
     /// Solve one roller's equilibrium at ring deflection u, starting from q.
@@ -42,7 +43,7 @@ impl Problem {
                 return Ok(ev);
             }
             *iterations += 1;
-            let step = newton_step3(&ev.h_qq, &ev.g_q, self.l_ref);
+            let step = newton_step3(&ev.h_qq, &ev.g_q, &self.scale);
             // Trust region in the scaled norm (translation m, pitch × l_ref).
             let len = (step[0].powi(2) + step[1].powi(2) + (step[2] * self.l_ref).powi(2)).sqrt();
             let (step, capped) = if len > trust {
@@ -129,8 +130,8 @@ impl Problem {
             // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
             // with every roller kept in equilibrium).
             let hqu = ev.h_uq.transpose();
-            let factor = Factor3::new(&ev.h_qq, self.l_ref);
-            let x = factor.solve_mat(&hqu);
+            let factor = Factor3::new(&ev.h_qq, &self.scale);
+            let x = factor.solve(&hqu);
             k += mult * (ev.h_uu - ev.h_uq * x);
             // The roller stopped at a residual r ≤ roller_tol; left as is, Z such residuals add
             // up to a ring-force error of order Z·r, a noise floor that can sit above the
@@ -142,7 +143,7 @@ impl Problem {
             // The step is trusted only while it is tiny against the contact approaches
             // (10⁻⁶·D): a roller held in a soft direction by the cage spring alone can turn
             // a small residual into a long step the quadratic model does not cover.
-            let mut dq = factor.solve_vec(&ev.g_q);
+            let mut dq = factor.solve(&ev.g_q);
             let len = (dq[0].powi(2) + dq[1].powi(2) + (dq[2] * self.l_ref).powi(2)).sqrt();
             if len.is_nan() || len > 1e-5 * self.max_step {
                 dq = Vector3::zeros();
@@ -154,7 +155,7 @@ impl Problem {
             sens.push(-x);
             // Response to the inertial loads (radial force, pitching moment).
             let e = nalgebra::Matrix3x2::new(0.0, 0.0, 1.0, 0.0, 0.0, 1.0);
-            let pf = factor.solve_mat(&e);
+            let pf = factor.solve(&e);
             inertial_ring.push(mult * (ev.h_uq * pf));
             inertial_roller.push(pf);
         }
@@ -347,84 +348,4 @@ pub(super) struct RingState {
     /// Largest scaled roller residual, before the one-step Newton correction of
     /// `solve_rollers` (which only shrinks it).
     pub(super) worst: f64,
-}
-
-/// Newton step −H⁻¹g for a 3×3 symmetric H, shifted to positive definite if needed.
-fn newton_step3(h: &Matrix3<f64>, g: &Vector3<f64>, l_ref: f64) -> Vector3<f64> {
-    // Scale pitch by l_ref so the three unknowns have comparable units.
-    let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
-    let hs = s * h * s;
-    let gs = s * g;
-    let tr = hs.trace().abs().max(1e-300);
-    let mut mu = 0.0;
-    for _ in 0..40 {
-        let m = hs + Matrix3::identity() * mu;
-        if let Some(ch) = m.cholesky() {
-            return s * (-ch.solve(&gs));
-        }
-        mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
-    }
-    // H indefinite beyond repair: steepest descent scaled by the trace.
-    s * (-gs / tr)
-}
-
-/// H_qq of one roller factored once (scaled and, if need be, shifted to positive definite
-/// like the Newton step) for the condensation's three solves; `None` when no shift helps,
-/// and then every solve gives zero.
-struct Factor3(Option<(nalgebra::Cholesky<f64, nalgebra::U3>, Matrix3<f64>)>);
-
-impl Factor3 {
-    fn new(h: &Matrix3<f64>, l_ref: f64) -> Self {
-        let s = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0 / l_ref));
-        let hs = s * h * s;
-        let tr = hs.trace().abs().max(1e-300);
-        let mut mu = 0.0;
-        for _ in 0..40 {
-            let m = hs + Matrix3::identity() * mu;
-            if let Some(ch) = m.cholesky() {
-                return Factor3(Some((ch, s)));
-            }
-            mu = if mu == 0.0 { 1e-10 * tr } else { mu * 10.0 };
-        }
-        Factor3(None)
-    }
-
-    /// X = H⁻¹B.
-    fn solve_mat(&self, b: &nalgebra::Matrix3x2<f64>) -> nalgebra::Matrix3x2<f64> {
-        match &self.0 {
-            Some((ch, s)) => s * ch.solve(&(s * b)),
-            None => nalgebra::Matrix3x2::zeros(),
-        }
-    }
-
-    /// x = H⁻¹b.
-    fn solve_vec(&self, b: &Vector3<f64>) -> Vector3<f64> {
-        match &self.0 {
-            Some((ch, s)) => s * ch.solve(&(s * b)),
-            None => Vector3::zeros(),
-        }
-    }
-}
-
-pub(super) fn newton_step2(k: &Matrix2<f64>, g: &Vector2<f64>) -> Vector2<f64> {
-    let tr = k.trace().abs();
-    let mut mu = 0.0;
-    for _ in 0..60 {
-        let m = k + Matrix2::identity() * mu;
-        if let Some(ch) = m.cholesky() {
-            return -ch.solve(g);
-        }
-        mu = if mu == 0.0 {
-            (1e-10 * tr).max(1e-30)
-        } else {
-            mu * 10.0
-        };
-    }
-    -g / tr.max(1e-30)
-}
-
-/// Unique (symmetry) index of roller `r` (0-based): rollers j and Z−j mirror each other.
-pub(super) fn unique_index(r: usize, z: usize) -> usize {
-    let r = r % z.max(1);
-    r.min(z - r)
 }

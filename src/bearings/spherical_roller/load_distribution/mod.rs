@@ -33,9 +33,9 @@ use crate::bearings::spherical_roller::roller::RollerMass;
 use crate::bearings::spherical_roller::Bearing;
 use crate::bearings::SolveError;
 
+use crate::numerics::newton::newton_step2;
 use diagnostics::{diagnose, tipped_over, unrestrained};
-use driver::{newton_step2, unique_index};
-use problem::{assemble, Problem};
+use problem::{assemble, unique_index, Problem};
 
 /// Speeds that set the dynamic loads: cage orbit and roller spin relative to the cage (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

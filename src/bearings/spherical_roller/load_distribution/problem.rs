@@ -4,7 +4,6 @@
 
 use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 
-use super::driver::unique_index;
 use super::{
     gyroscopic_moment, DynamicSpeeds, LaminaResult, LoadDistribution, RacewayContact, Residuals,
     RollerResult, SolveStats, TraceStep, WarmStart,
@@ -37,6 +36,9 @@ pub(super) struct Problem {
     pub(super) roller_tol: std::cell::Cell<f64>,
     /// Largest roller step (trust radius), m: 0.1·D.
     pub(super) max_step: f64,
+    /// Scale of the roller unknowns (axial, radial, pitch) in the Newton step: pitch by
+    /// l_ref so the three unknowns have comparable units.
+    pub(super) scale: Vector3<f64>,
 }
 
 /// Scalar sums of one roller's energy, gradient and Hessian blocks (upper triangles).
@@ -217,6 +219,7 @@ impl Problem {
             evals: std::cell::Cell::new(0),
             roller_tol: std::cell::Cell::new(0.0),
             max_step: 0.1 * g.roller_diameter_m,
+            scale: Vector3::new(1.0, 1.0, 1.0 / l_ref),
         }
     }
 
@@ -580,4 +583,10 @@ fn raceway_contact(laminae: &[LaminaResult], inner: bool, beta_deg: f64) -> Race
             }
         }
     }
+}
+
+/// Unique (symmetry) index of roller `r` (0-based): rollers j and Z−j mirror each other.
+pub(super) fn unique_index(r: usize, z: usize) -> usize {
+    let r = r % z.max(1);
+    r.min(z - r)
 }
