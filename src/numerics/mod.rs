@@ -1,6 +1,6 @@
 //! Shared numerics, independent of any bearing: cooperative cancellation, monotone
-//! interpolation, and (as systems need them) Newton and ODE solvers in the
-//! problem / solver / result style.
+//! interpolation, Newton's method for small dense systems ([`newton`]), and (as systems
+//! need them) ODE solvers, in the problem / solver / result style.
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
