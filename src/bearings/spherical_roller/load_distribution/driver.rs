@@ -3,17 +3,25 @@
 //! stiffness (Schur complement), the cold start from the rigid-roller estimate and the
 //! inertial prediction of a warm start.
 
-use nalgebra::{Matrix2, Vector2, Vector3};
+use std::sync::atomic::{AtomicBool, Ordering};
 
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+
+use super::diagnostics::diagnose;
 use super::problem::{Problem, RollerEval};
-use super::{InertialSensitivity, TraceStep};
+use super::{InertialSensitivity, SolveOptions, SolveStats, TraceStep};
 use crate::bearings::spherical_roller::Bearing;
 use crate::bearings::SolveError;
-use crate::numerics::newton::{newton_step2, newton_step3, Factor3};
+use crate::numerics::newton::{
+    cap_step, newton_step2, newton_step3, Backtracking, Factor3, Newton, NewtonSystem, Termination,
+    TrustRegion,
+};
 
 impl Problem {
-    /// Solve one roller's equilibrium at ring deflection u, starting from q.
-    #[allow(clippy::too_many_arguments)]
+    /// Solve one roller's equilibrium at ring deflection u, starting from q: the shared
+    /// damped Newton ([`Newton`]) on [`RollerSystem`]. A line search that stalls with the
+    /// residual within 10³ of the tolerance, or a budget that runs out within it, still
+    /// counts as converged; `q` is left where Newton left it either way.
     fn solve_roller(
         &self,
         index: usize,
@@ -21,87 +29,69 @@ impl Problem {
         u: [f64; 2],
         q: &mut Vector3<f64>,
         iterations: &mut usize,
-        mut trace: Option<(&mut Vec<TraceStep>, usize)>,
+        trace: Option<(&mut Vec<TraceStep>, usize)>,
     ) -> Result<RollerEval, SolveError> {
         let scale_t = 1e-3 * 2.0 * self.l_ref; // initial trust radius in translation, m
-        let mut trust = scale_t;
-        // The accepted trial of the line search is evaluated with its Hessian, so it is the
-        // next iterate's evaluation: one contact sweep per Newton iteration, not two.
-        let mut ev = self.eval(cphi, u, q, true);
-        for it in 0..self.max_roller_it {
-            if let Some((steps, ring_it)) = trace.as_mut() {
-                steps.push(self.trace_step(*ring_it, it, cphi, u, q, &ev.g_q));
-            }
-            let res = self.roller_residual(&ev.g_q);
-            if !res.is_finite() {
-                return Err(SolveError::NonFinite {
-                    stage: "roller equilibrium",
-                    what: format!("roller {} residual", index + 1),
-                });
-            }
-            if res <= self.roller_tol.get() {
-                return Ok(ev);
-            }
-            *iterations += 1;
-            let step = newton_step3(&ev.h_qq, &ev.g_q, &self.scale);
-            // Trust region in the scaled norm (translation m, pitch × l_ref).
-            let len = (step[0].powi(2) + step[1].powi(2) + (step[2] * self.l_ref).powi(2)).sqrt();
-            let (step, capped) = if len > trust {
-                (step * (trust / len), true)
-            } else {
-                (step, false)
-            };
-            let slope = ev.g_q.dot(&step);
-            let mut lambda = 1.0;
-            let mut accepted = None;
-            for _ in 0..40 {
-                let trial = *q + lambda * step;
-                let e2 = self.eval(cphi, u, &trial, true);
-                // Armijo on the energy without round-off slack: near convergence energy differences
-                // drown in round-off and the gradient test below decides.
-                let ok_energy = e2.energy < ev.energy + 1e-4 * lambda * slope;
-                let ok_grad = self.roller_residual(&e2.g_q) < 0.5 * res;
-                if ok_energy || ok_grad {
-                    *q = trial;
-                    accepted = Some(e2);
-                    break;
-                }
-                lambda *= 0.5;
-            }
-            let Some(next) = accepted else {
-                // No descent even at 2⁻⁴⁰ of the step: the residual is at round-off level.
-                let r = self.roller_residual(&ev.g_q);
-                if r <= 1e3 * self.tol {
-                    return Ok(ev);
-                }
-                return Err(SolveError::RollerNotConverged {
-                    roller: index + 1,
-                    iterations: it + 1,
-                    residual: r,
-                    tolerance: self.tol,
-                });
-            };
-            ev = next;
-            if lambda == 1.0 && capped {
-                // Grow the trust radius, but never beyond a tenth of the roller diameter:
-                // a roller out of contact has no stiffness along its normal, and an
-                // unbounded radius lets one Newton step throw it metres away.
-                trust = (trust * 4.0).min(self.max_step);
-            } else if lambda < 1.0 {
-                // Shrink to the step actually taken (len is the uncapped Newton length).
-                trust = (lambda * len.min(trust)).max(1e-9 * scale_t);
-            }
-        }
-        let r = self.roller_residual(&ev.g_q);
-        if r <= self.tol {
-            return Ok(ev);
-        }
-        Err(SolveError::RollerNotConverged {
+        let newton = Newton {
+            max_iterations: self.max_roller_it,
+            tolerance: self.roller_tol.get(),
+            // Grow the trust radius, but never beyond a tenth of the roller diameter:
+            // a roller out of contact has no stiffness along its normal, and an
+            // unbounded radius lets one Newton step throw it metres away.
+            trust: TrustRegion::new(scale_t, 1e-9 * scale_t, self.max_step),
+            line_search: Backtracking::default(),
+        };
+        let mut system = RollerSystem {
+            p: self,
+            cphi,
+            u,
+            trace,
+        };
+        let solved = newton.solve(&mut system, q);
+        *iterations += solved.stats.iterations;
+        let not_converged = |iterations, residual| SolveError::RollerNotConverged {
             roller: index + 1,
-            iterations: self.max_roller_it,
-            residual: r,
+            iterations,
+            residual,
             tolerance: self.tol,
-        })
+        };
+        match solved.termination {
+            Termination::Converged { .. } => Ok(solved.eval),
+            Termination::NonFinite { .. } => Err(SolveError::NonFinite {
+                stage: "roller equilibrium",
+                what: format!("roller {} residual", index + 1),
+            }),
+            // No descent even at 2⁻⁴⁰ of the step: the residual is at round-off level.
+            Termination::Stalled {
+                iterations,
+                residual,
+            } => {
+                if residual <= 1e3 * self.tol {
+                    Ok(solved.eval)
+                } else {
+                    Err(not_converged(iterations, residual))
+                }
+            }
+            Termination::NotConverged {
+                iterations,
+                residual,
+                ..
+            } => {
+                if residual <= self.tol {
+                    Ok(solved.eval)
+                } else {
+                    Err(not_converged(iterations, residual))
+                }
+            }
+            // Neither happens (the shifted Cholesky step always exists, nothing cancels a
+            // roller); should they, the roller did not converge.
+            Termination::SingularJacobian { iteration } | Termination::Cancelled { iteration } => {
+                Err(not_converged(
+                    iteration + 1,
+                    self.roller_residual(&solved.eval.g_q),
+                ))
+            }
+        }
     }
 
     /// Solve all unique rollers at u; returns Σ energy, condensed gradient and stiffness.
@@ -130,6 +120,9 @@ impl Problem {
             // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
             // with every roller kept in equilibrium).
             let hqu = ev.h_uq.transpose();
+            // H_qq factored once (scaled and, if need be, shifted to positive definite like
+            // the Newton step) for the condensation's three solves; when no shift helps, every
+            // solve gives zero.
             let factor = Factor3::new(&ev.h_qq, &self.scale);
             let x = factor.solve(&hqu);
             k += mult * (ev.h_uu - ev.h_uq * x);
@@ -252,28 +245,21 @@ impl Problem {
             // Newton with a floor on the stiffness so that a ring with no roller in contact
             // yet moves (by at most D/100 per step) toward contact.
             let step = newton_step2(&h, &g);
-            let len = step.amax();
-            let step = if len > 0.01 * d {
-                step * (0.01 * d / len)
-            } else {
-                step
+            let (step, _) = cap_step(step, step.amax(), 0.01 * d);
+            let line_search = Backtracking {
+                max_trials: 30,
+                ..Backtracking::default()
             };
-            let mut lambda = 1.0;
-            let mut moved = false;
-            for _ in 0..30 {
+            let moved = line_search.search(|lambda| {
                 let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
                 let (e2, g2, h2) = model(trial);
-                if e2 < e || g2.amax() < 0.5 * g.amax() {
-                    (u, e, g, h) = (trial, e2, g2, h2);
-                    moved = true;
-                    break;
-                }
-                lambda *= 0.5;
-            }
-            if !moved {
+                (e2 < e || g2.amax() < 0.5 * g.amax()).then_some((trial, e2, g2, h2))
+            });
+            let Some((_, next)) = moved else {
                 solved = g.amax() <= 1e-6 * f_ref;
                 break;
-            }
+            };
+            (u, e, g, h) = next;
             if u[0].abs().max(u[1].abs()) > 0.1 * d {
                 return zero;
             }
@@ -333,6 +319,136 @@ impl Problem {
             }
         }
     }
+
+    /// The start of a solve: the warm start when it fits this bearing's rollers, else the
+    /// cold start ([`Problem::cold_start`]); moved by the inertial prediction when the warm
+    /// start carries its sensitivities ([`Problem::predict_inertial`]).
+    pub(super) fn start(
+        &self,
+        b: &Bearing,
+        options: &SolveOptions,
+    ) -> ([f64; 2], Vec<Vector3<f64>>) {
+        let n_unique = self.unique.len();
+        let (mut u, mut qs) = match &options.warm_start {
+            Some(w) if w.rollers.len() == n_unique => (
+                w.ring,
+                w.rollers
+                    .iter()
+                    .map(|r| Vector3::new(r[0], r[1], r[2]))
+                    .collect::<Vec<_>>(),
+            ),
+            _ => self.cold_start(b),
+        };
+        if let Some(w) = options
+            .warm_start
+            .as_ref()
+            .and_then(|w| w.inertial.as_ref())
+        {
+            self.predict_inertial(w, &mut u, &mut qs);
+        }
+        (u, qs)
+    }
+
+    /// The bearing's (ring) equilibrium, eq. 3.12–3.13: Newton on the ring deflection u with
+    /// the condensed stiffness of [`RingState`], each trial ring deflection re-solving every
+    /// roller from its first-order prediction, inexact (the rollers' tolerance follows the
+    /// ring residual), with the shared trust radius and line search. It stays a loop of its
+    /// own rather than a [`NewtonSystem`]: its evaluation (a roller sweep) can fail, starts
+    /// from the current state's sensitivities, and a converged ring with loose rollers is
+    /// re-swept at the same deflection. `u` and `qs` are left at the last accepted iterate and
+    /// its state is returned with how the iteration ended; a failed roller sweep is returned
+    /// as its diagnosed error.
+    pub(super) fn solve_ring(
+        &self,
+        b: &Bearing,
+        u: &mut [f64; 2],
+        qs: &mut Vec<Vector3<f64>>,
+        stats: &mut SolveStats,
+        trace: &mut Option<(usize, Vec<TraceStep>)>,
+        cancel: Option<&AtomicBool>,
+    ) -> Result<(Termination, RingState), SolveError> {
+        let d = b.geometry.roller_diameter_m;
+        let mut trust = TrustRegion::new(1e-3 * d, 1e-12 * d, 0.1 * d);
+        let line_search = Backtracking::default();
+        let max_it = b.solver.max_iterations.max(1);
+        // The first roller solves, before any ring residual is known, only need to be good enough
+        // to measure it: 10⁻³ of the reference force (inexact Newton; the tolerance tightens with
+        // the ring residual and is the deck's at convergence).
+        self.roller_tol.set(self.tol.max(1e-3 * self.f_ref));
+        let mut state = self
+            .solve_rollers(*u, qs, &mut stats.roller_iterations, trace, 0)
+            .map_err(|e| diagnose(b, *u, qs, e))?;
+        for it in 0..max_it {
+            if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+                return Ok((Termination::Cancelled { iteration: it }, state));
+            }
+            let (energy, g, k) = (state.energy, state.g, state.k);
+            let ring_res = g[0].abs().max(g[1].abs());
+            if !ring_res.is_finite() {
+                return Ok((Termination::NonFinite { iteration: it }, state));
+            }
+            if ring_res <= self.tol {
+                // Converged when every roller also met the deck's tolerance, whatever tolerance
+                // it was asked for (a good start often gives that in the first sweep).
+                if self.roller_tol.get() <= self.tol || state.worst <= self.tol {
+                    let converged = Termination::Converged {
+                        iterations: it,
+                        residual: ring_res,
+                    };
+                    return Ok((converged, state));
+                }
+                // Converged with loose rollers: tighten them at this ring deflection and re-check.
+                self.roller_tol.set(self.tol);
+                state = self
+                    .solve_rollers(*u, qs, &mut stats.roller_iterations, trace, it)
+                    .map_err(|e| diagnose(b, *u, qs, e))?;
+                continue;
+            }
+            // Inexact Newton: rollers to 1e-3 of the ring residual (never below the tolerance).
+            self.roller_tol.set(self.tol.max(1e-3 * ring_res));
+            stats.iterations = it + 1;
+            let step = newton_step2(&k, &g);
+            let len = (step[0].powi(2) + step[1].powi(2)).sqrt();
+            let (step, capped) = trust.cap(step, len);
+            let slope = g.dot(&step);
+            let accepted = line_search.try_search(|lambda| {
+                let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
+                // Predict each roller at the trial from its sensitivity (first-order warm start).
+                let du = Vector2::new(trial[0] - u[0], trial[1] - u[1]);
+                let mut qt: Vec<Vector3<f64>> = qs
+                    .iter()
+                    .zip(&state.sens)
+                    .map(|(q, x)| q + x * du)
+                    .collect();
+                // A roller that fails while the rings have already drifted beyond D/2 is a
+                // symptom of the missing restraint: report that.
+                let st = self
+                    .solve_rollers(trial, &mut qt, &mut stats.roller_iterations, trace, it + 1)
+                    .map_err(|e| diagnose(b, trial, &qt, e))?;
+                let res = st.g[0].abs().max(st.g[1].abs());
+                let ok = line_search.accepts(energy, slope, ring_res, lambda, st.energy, res);
+                Ok(ok.then_some((trial, qt, st)))
+            })?;
+            let Some((lambda, (trial, qt, st))) = accepted else {
+                let stalled = Termination::Stalled {
+                    iterations: it + 1,
+                    residual: ring_res,
+                };
+                return Ok((stalled, state));
+            };
+            *u = trial;
+            *qs = qt;
+            state = st;
+            trust.update(lambda, len, capped);
+        }
+        let g = state.g;
+        let not_converged = Termination::NotConverged {
+            iterations: max_it,
+            residual: g[0].abs().max(g[1].abs()),
+            tolerance: self.tol,
+        };
+        Ok((not_converged, state))
+    }
 }
 
 /// The ring-level state at one ring deflection: energy, ring force residual, condensed
@@ -348,4 +464,73 @@ pub(super) struct RingState {
     /// Largest scaled roller residual, before the one-step Newton correction of
     /// `solve_rollers` (which only shrinks it).
     pub(super) worst: f64,
+}
+
+/// One roller's equilibrium at a fixed ring deflection as a [`NewtonSystem`]: the gradient
+/// of its potential energy in q = (axial, radial, pitch) (eq. 3.9–3.11), its Hessian H_qq,
+/// the energy as the line search's merit.
+struct RollerSystem<'a> {
+    p: &'a Problem,
+    cphi: f64,
+    u: [f64; 2],
+    /// The stepper's record of this roller's iterations and the ring iteration they belong to.
+    trace: Option<(&'a mut Vec<TraceStep>, usize)>,
+}
+
+impl NewtonSystem<3> for RollerSystem<'_> {
+    type Eval = RollerEval;
+
+    /// The accepted trial of the line search is evaluated with its Hessian, so it is the
+    /// next iterate's evaluation: one contact sweep per Newton iteration, not two.
+    #[inline]
+    fn evaluate(&mut self, q: &Vector3<f64>) -> RollerEval {
+        self.p.eval(self.cphi, self.u, q, true)
+    }
+
+    #[inline]
+    fn residual<'e>(&self, e: &'e RollerEval) -> &'e Vector3<f64> {
+        &e.g_q
+    }
+
+    #[inline]
+    fn jacobian<'e>(&self, e: &'e RollerEval) -> &'e Matrix3<f64> {
+        &e.h_qq
+    }
+
+    #[inline]
+    fn residual_norm(&self, g: &Vector3<f64>) -> f64 {
+        self.p.roller_residual(g)
+    }
+
+    /// Armijo on the energy without round-off slack: near convergence energy differences
+    /// drown in round-off and the gradient test decides.
+    #[inline]
+    fn merit(&self, e: &RollerEval) -> f64 {
+        e.energy
+    }
+
+    #[inline]
+    fn slope(&self, e: &RollerEval, step: &Vector3<f64>) -> f64 {
+        e.g_q.dot(step)
+    }
+
+    #[inline]
+    fn newton_step(&self, e: &RollerEval) -> Option<Vector3<f64>> {
+        Some(newton_step3(&e.h_qq, &e.g_q, &self.p.scale))
+    }
+
+    /// Trust region in the scaled norm (translation m, pitch × l_ref).
+    #[inline]
+    fn step_length(&self, step: &Vector3<f64>) -> f64 {
+        (step[0].powi(2) + step[1].powi(2) + (step[2] * self.p.l_ref).powi(2)).sqrt()
+    }
+
+    fn observe(&mut self, it: usize, q: &Vector3<f64>, e: &RollerEval) {
+        if let Some((steps, ring_it)) = self.trace.as_mut() {
+            steps.push(
+                self.p
+                    .trace_step(*ring_it, it, self.cphi, self.u, q, &e.g_q),
+            );
+        }
+    }
 }

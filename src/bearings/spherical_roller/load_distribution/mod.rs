@@ -23,18 +23,18 @@
 //! of 10⁻⁴·D). Its reaction is reported per roller (`cage_force_n`, `cage_moment_nm`); for
 //! rollers loaded at both raceways it is a negligible fraction of the contact loads (tested).
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
-use nalgebra::{Matrix2, Vector2, Vector3};
+use nalgebra::Matrix2;
 use serde::Serialize;
 
 use crate::bearings::spherical_roller::roller::RollerMass;
 use crate::bearings::spherical_roller::Bearing;
 use crate::bearings::SolveError;
+use crate::numerics::newton::Termination;
 
-use crate::numerics::newton::newton_step2;
-use diagnostics::{diagnose, tipped_over, unrestrained};
+use diagnostics::{tipped_over, unrestrained};
 use problem::{assemble, unique_index, Problem};
 
 /// Speeds that set the dynamic loads: cage orbit and roller spin relative to the cage (rad/s).
@@ -272,140 +272,51 @@ pub fn solve(
         speeds,
         options.force_tolerance.unwrap_or(b.solver.force_tolerance),
     );
-    let n_unique = p.unique.len();
-    let (mut u, mut qs) = match &options.warm_start {
-        Some(w) if w.rollers.len() == n_unique => (
-            w.ring,
-            w.rollers
-                .iter()
-                .map(|r| Vector3::new(r[0], r[1], r[2]))
-                .collect::<Vec<_>>(),
-        ),
-        _ => p.cold_start(b),
-    };
-    if let Some(w) = options
-        .warm_start
-        .as_ref()
-        .and_then(|w| w.inertial.as_ref())
-    {
-        p.predict_inertial(w, &mut u, &mut qs);
-    }
+    let (mut u, mut qs) = p.start(b, options);
     let mut trace = options
         .trace_roller
         .map(|r| (unique_index(r, b.geometry.roller_count), Vec::new()));
     let mut stats = SolveStats::default();
-    let d = b.geometry.roller_diameter_m;
-    let mut trust = 1e-3 * d;
-    let max_it = b.solver.max_iterations.max(1);
-    // The first roller solves, before any ring residual is known, only need to be good enough
-    // to measure it: 10⁻³ of the reference force (inexact Newton; the tolerance tightens with
-    // the ring residual and is the deck's at convergence).
-    p.roller_tol.set(p.tol.max(1e-3 * p.f_ref));
-    let mut state = p
-        .solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, 0)
-        .map_err(|e| diagnose(b, u, &qs, e))?;
-    let mut converged = false;
-    let mut ring_res;
-    for it in 0..max_it {
-        if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
-            return Err(SolveError::Cancelled);
-        }
-        let (energy, g, k) = (state.energy, state.g, state.k);
-        ring_res = g[0].abs().max(g[1].abs());
-        if !ring_res.is_finite() {
+    let (termination, state) = p.solve_ring(b, &mut u, &mut qs, &mut stats, &mut trace, cancel)?;
+    let not_converged = |iterations, residual_n| {
+        unrestrained(b, u).unwrap_or(SolveError::NotConverged {
+            iterations,
+            residual_n,
+            tolerance_n: p.tol,
+        })
+    };
+    match termination {
+        Termination::Converged { .. } => {}
+        Termination::Cancelled { .. } => return Err(SolveError::Cancelled),
+        Termination::NonFinite { .. } => {
             return Err(SolveError::NonFinite {
                 stage: "ring equilibrium",
                 what: "ring force residual".into(),
-            });
+            })
         }
-        if ring_res <= p.tol {
-            // Converged when every roller also met the deck's tolerance, whatever tolerance
-            // it was asked for (a good start often gives that in the first sweep).
-            if p.roller_tol.get() <= p.tol || state.worst <= p.tol {
-                converged = true;
-                break;
-            }
-            // Converged with loose rollers: tighten them at this ring deflection and re-check.
-            p.roller_tol.set(p.tol);
-            state = p
-                .solve_rollers(u, &mut qs, &mut stats.roller_iterations, &mut trace, it)
-                .map_err(|e| diagnose(b, u, &qs, e))?;
-            continue;
-        }
-        // Inexact Newton: rollers to 1e-3 of the ring residual (never below the tolerance).
-        p.roller_tol.set(p.tol.max(1e-3 * ring_res));
-        stats.iterations = it + 1;
-        let step = newton_step2(&k, &g);
-        let len = (step[0].powi(2) + step[1].powi(2)).sqrt();
-        let (step, capped) = if len > trust {
-            (step * (trust / len), true)
-        } else {
-            (step, false)
-        };
-        let slope = g.dot(&step);
-        let mut lambda = 1.0;
-        let mut accepted = None;
-        for _ in 0..40 {
-            let trial = [u[0] + lambda * step[0], u[1] + lambda * step[1]];
-            // Predict each roller at the trial from its sensitivity (first-order warm start).
-            let du = Vector2::new(trial[0] - u[0], trial[1] - u[1]);
-            let mut qt: Vec<Vector3<f64>> = qs
-                .iter()
-                .zip(&state.sens)
-                .map(|(q, x)| q + x * du)
-                .collect();
-            // A roller that fails while the rings have already drifted beyond D/2 is a
-            // symptom of the missing restraint: report that.
-            let st = p
-                .solve_rollers(
-                    trial,
-                    &mut qt,
-                    &mut stats.roller_iterations,
-                    &mut trace,
-                    it + 1,
-                )
-                .map_err(|e| diagnose(b, trial, &qt, e))?;
-            let ok_energy = st.energy < energy + 1e-4 * lambda * slope;
-            let ok_grad = st.g[0].abs().max(st.g[1].abs()) < 0.5 * ring_res;
-            if ok_energy || ok_grad {
-                accepted = Some((trial, qt, st));
-                break;
-            }
-            lambda *= 0.5;
-        }
-        match accepted {
-            Some((trial, qt, st)) => {
-                u = trial;
-                qs = qt;
-                state = st;
-            }
-            None => {
-                if ring_res <= 1e3 * p.tol {
-                    converged = true;
-                    break;
-                }
-                return Err(unrestrained(b, u).unwrap_or(SolveError::NotConverged {
-                    iterations: it + 1,
-                    residual_n: ring_res,
-                    tolerance_n: p.tol,
-                }));
+        // No acceptable ring step: converged when the residual is within 10³ of the
+        // tolerance (round-off), else the rings have no equilibrium we can reach.
+        Termination::Stalled {
+            iterations,
+            residual,
+        } => {
+            if residual > 1e3 * p.tol {
+                return Err(not_converged(iterations, residual));
             }
         }
-        if lambda == 1.0 && capped {
-            trust = (trust * 4.0).min(0.1 * d);
-        } else if lambda < 1.0 {
-            trust = (lambda * len.min(trust)).max(1e-12 * d);
+        Termination::NotConverged {
+            iterations,
+            residual,
+            ..
+        } => {
+            if residual > p.tol {
+                return Err(not_converged(iterations, residual));
+            }
         }
-    }
-    if !converged {
-        let g = state.g;
-        ring_res = g[0].abs().max(g[1].abs());
-        if ring_res > p.tol {
-            return Err(unrestrained(b, u).unwrap_or(SolveError::NotConverged {
-                iterations: max_it,
-                residual_n: ring_res,
-                tolerance_n: p.tol,
-            }));
+        // The shifted Cholesky step always exists: not reached, and not converged if it were.
+        Termination::SingularJacobian { iteration } => {
+            let g = state.g;
+            return Err(not_converged(iteration + 1, g[0].abs().max(g[1].abs())));
         }
     }
     // A converged state with the rings more than D/2 apart is outside the model (the rings
