@@ -224,6 +224,7 @@ impl Problem {
     }
 
     /// Inertial generalised load on a roller: (axial, radial, pitch).
+    #[inline]
     pub(super) fn f_ext(&self) -> Vector3<f64> {
         // Σ contact + inertial = 0 with inertial = (0, +CF, −M_req) (App. D: the raceways
         // must supply M_req, so the roller "loads" them with −M_req).
@@ -236,7 +237,9 @@ impl Problem {
     /// matrix form of [`Problem::eval_reference`] (kept for the tests, which compare the two
     /// to round-off), with the symmetric blocks accumulated once, the inner and outer
     /// contacts specialised at compile time, and δ^(1/9) by the law's own
-    /// [`crate::physics::contact::lamina_law::ninth_root`].
+    /// [`crate::physics::contact::lamina_law::ninth_root`]. Inlined into its callers in
+    /// the driver (another codegen unit), where `hessian` is a constant.
+    #[inline]
     pub(super) fn eval(
         &self,
         cphi: f64,
@@ -263,6 +266,7 @@ impl Problem {
     }
 
     /// Inertial loads and the cage pocket springs (shared by both evaluations).
+    #[inline]
     pub(super) fn add_inertia_and_cage(
         &self,
         ev: &mut RollerEval,
@@ -359,6 +363,7 @@ impl Problem {
     }
 
     /// Scaled residual norm of a roller gradient (forces in N, moment over l_ref).
+    #[inline]
     pub(super) fn roller_residual(&self, g: &Vector3<f64>) -> f64 {
         g[0].abs().max(g[1].abs()).max(g[2].abs() / self.l_ref)
     }
