@@ -22,6 +22,18 @@
 //! pitch (stiffness = `cage_stiffness_ratio` × the roller's contact stiffness at an approach
 //! of 10⁻⁴·D). Its reaction is reported per roller (`cage_force_n`, `cage_moment_nm`); for
 //! rollers loaded at both raceways it is a negligible fraction of the contact loads (tested).
+//!
+//! Layout: this file holds the results and [`solve`]; `problem` the set-up and one roller's
+//! energy, gradient and Hessian (the hot loop) and the results' assembly; `driver` the roller
+//! and ring Newton iterations and the starts; `diagnostics` the typed errors of a solve that
+//! left the model. The Newton machinery itself (step solvers, trust radius, line search,
+//! termination, the driver of the roller iteration) is shared: [`crate::numerics::newton`].
+
+mod diagnostics;
+mod driver;
+mod problem;
+#[cfg(test)]
+mod tests;
 
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
@@ -304,6 +316,9 @@ pub fn solve(
                 return Err(not_converged(iterations, residual));
             }
         }
+        // Out of iterations: accepted within the tolerance. The test is `>`, as it always
+        // was: a NaN residual here would pass (it takes a last accepted ring state with a
+        // finite, decreased energy and a NaN force).
         Termination::NotConverged {
             iterations,
             residual,
@@ -369,9 +384,3 @@ pub(crate) fn solved_at_rest() -> (Bearing, LoadDistribution) {
     .unwrap_or_else(|e| panic!("{e}"));
     (b, ld)
 }
-
-mod diagnostics;
-mod driver;
-mod problem;
-#[cfg(test)]
-mod tests;
