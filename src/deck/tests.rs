@@ -552,7 +552,10 @@ fn every_registered_system_reads_its_template_and_example() {
         assert_eq!(case.system().id(), system.id());
         // The workbench needs the inputs pane and an element pane; each kind once.
         let kinds: Vec<_> = system.panes().iter().map(|p| p.kind).collect();
-        assert_eq!(kinds.first(), Some(&crate::bearings::view::PaneKind::Inputs));
+        assert_eq!(
+            kinds.first(),
+            Some(&crate::bearings::view::PaneKind::Inputs)
+        );
         assert!(kinds.contains(&crate::bearings::view::PaneKind::Elements));
         for (i, k) in kinds.iter().enumerate() {
             assert!(!kinds[..i].contains(k), "{}: {k:?} twice", system.id());

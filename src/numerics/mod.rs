@@ -1,11 +1,13 @@
-//! Shared numerics, independent of any bearing: cooperative cancellation, monotone
-//! interpolation, and (as systems need them) Newton and ODE solvers in the
-//! problem / solver / result style.
+//! Shared numerics, independent of any bearing, in the problem / solver / result style:
+//! cooperative cancellation ([`cancel`]), Newton's method for small dense systems
+//! ([`newton`]), ODE integrators with dense output and events ([`ode`]), and monotone
+//! interpolation ([`pchip`]).
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
 pub mod cancel;
+pub mod newton;
 pub mod ode;
 pub mod pchip;
