@@ -55,20 +55,6 @@ impl Deck {
     /// Parses and validates deck text; `source_name` (e.g. a file name) prefixes every
     /// error location. All errors found are returned together.
     pub fn parse(text: &str, source_name: &str) -> Result<Deck, DeckErrors> {
-        // A deck of another bearing system is not a spherical roller deck.
-        let system = system_of(text, source_name)?;
-        if system.id() != crate::bearings::spherical_roller::SYSTEM_ID {
-            return Err(DeckError::Invalid {
-                location: Location::start(source_name),
-                key: "type".into(),
-                value: format!("\"{}\"", system.id()),
-                rule: format!(
-                    "this deck reader reads \"{}\" decks",
-                    crate::bearings::spherical_roller::SYSTEM_ID
-                ),
-            }
-            .into());
-        }
         let parsed = validate::parse_text(text, source_name)?;
         let doc = text
             .parse::<DocumentMut>()

@@ -129,6 +129,28 @@ pub(crate) fn parse_text(text: &str, source: &str) -> Result<Parsed, DeckErrors>
     top.extend_from_slice(GROUPS);
     check_keys(&mut ctx, root, "", &top);
 
+    // `type`: this reader reads spherical roller decks; another system's deck (or an
+    // unknown system) is refused at its line, naming the known systems.
+    if let Some(item) = root.get("type") {
+        let id = crate::bearings::spherical_roller::SYSTEM_ID;
+        if item.as_str() != Some(id) {
+            let (location, value) = ctx.at(item);
+            let rule = match item.as_str().and_then(crate::bearings::system) {
+                Some(_) => format!("this deck reader reads \"{id}\" decks"),
+                None => format!(
+                    "unknown bearing system (known: {})",
+                    crate::bearings::known_types()
+                ),
+            };
+            ctx.errors.push(DeckError::Invalid {
+                location,
+                key: "type".into(),
+                value,
+                rule,
+            });
+        }
+    }
+
     // units
     let units = match root.get("units") {
         None => {
