@@ -3,6 +3,7 @@
 use std::fmt::Write;
 
 use crate::bearings::spherical_roller::pipeline::Analysis;
+use crate::bearings::spherical_roller::view;
 use crate::report::Disp;
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
@@ -93,7 +94,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
             r.outer.loaded_laminae
         );
     }
-    if let Some(st) = &a.stresses {
+    if a.stresses.is_some() {
         let _ = writeln!(s);
         let _ = writeln!(
             s,
@@ -115,15 +116,14 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
             format!("h {}", d.small_len.1),
             format!("Pe {}", d.force.1)
         );
-        for (j, r) in st.rollers.iter().enumerate() {
-            for (k, race) in ["in", "out"].iter().enumerate() {
-                let rs = &r[k];
-                let h = a
-                    .films
-                    .as_ref()
-                    .and_then(|f| f.min_film[j][k])
+        for (j, rv) in view::rollers(a).iter().enumerate() {
+            for (c, race) in rv.contacts.iter().zip(["in", "out"]) {
+                let Some(rs) = c.stress else { continue };
+                let h = c
+                    .min_film_m
+                    .flatten()
                     .map_or("-".to_string(), |h| format!("{:.3}", h * d.small_len.0));
-                let pe = a.life.as_ref().map_or(0.0, |l| l.equivalent_loads_n[j][k]);
+                let pe = c.equivalent_load_n.unwrap_or(0.0);
                 let _ = writeln!(
                     s,
                     "{:>3} {:>4} {:>9.1} {:>9.1} {:>9.4} {:>9.5} {:>9.4} {:>9.1} {:>9.1} {:>9} {:>9.1}",
