@@ -22,7 +22,7 @@
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
 
-use crate::bearings::spherical_roller::FilmModel;
+use crate::physics::lubrication::FilmModel;
 
 /// One lamina's EHD inputs, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -32,7 +32,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::bearings::spherical_roller::Lubricant;
+use crate::physics::lubrication::Lubricant;
 
 /// Traction law at a concentrated contact (seed 000 §9.2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
