@@ -87,6 +87,10 @@ pub enum AppEvent {
     Saved(Result<PathBuf, String>),
     /// An open (or revert) finished.
     Opened(Result<(Box<DeckDoc>, PathBuf), String>),
+    /// The process received this termination signal (SIGTERM, SIGINT, SIGHUP, SIGQUIT):
+    /// leave at once, without asking (the runtime restores the terminal and exits with
+    /// 128 + the signal number).
+    Signal(i32),
 }
 
 /// One solve request for the worker.
@@ -232,6 +236,8 @@ pub struct App {
     pub quit: bool,
     /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
     pub quit_after_save: bool,
+    /// The termination signal that ended the app, if any ([`AppEvent::Signal`]).
+    pub signal: Option<i32>,
 }
 
 /// Terminal size at or above which all panes are shown together.
@@ -272,6 +278,7 @@ impl App {
             message: None,
             quit: false,
             quit_after_save: false,
+            signal: None,
         }
     }
 
@@ -448,6 +455,12 @@ impl App {
             AppEvent::Opened(Err(e)) => {
                 self.message = Some(format!("open failed: {e}"));
                 Vec::new()
+            }
+            AppEvent::Signal(n) => {
+                // A signal is not a question: quit even with unsaved changes or a prompt open.
+                self.signal = Some(n);
+                self.quit = true;
+                vec![Command::Quit]
             }
         }
     }

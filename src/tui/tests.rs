@@ -910,3 +910,42 @@ fn too_small_terminal_ignores_keys() {
     app.handle(ch('u'));
     assert_ne!(app.display_units, before.1);
 }
+
+/// A termination signal quits at once, even with unsaved changes and a prompt open, and
+/// the app remembers it (the runtime exits with 128 + signal after restoring the terminal).
+#[test]
+fn signal_quits_without_asking() {
+    let mut app = deck_app();
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1250");
+    run_sync(&mut app, c);
+    assert!(app.unsaved());
+    app.handle(ch('S'));
+    let cmds = app.handle(AppEvent::Signal(signal_hook::consts::SIGTERM));
+    assert_eq!(cmds, vec![Command::Quit]);
+    assert!(app.quit);
+    assert_eq!(app.signal, Some(15));
+    let i = Interrupted {
+        signal: 15,
+        unsaved: true,
+    };
+    assert_eq!(i.exit_code(), 143);
+    assert!(i.to_string().contains("SIGTERM"), "{i}");
+}
+
+/// The loop leaves on a signal event although the deck is unsaved.
+#[test]
+fn run_loop_leaves_on_a_signal() {
+    let (tx, rx) = mpsc::channel();
+    let mut worker =
+        Worker::spawn(tx.clone(), Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
+    let mut app = deck_app();
+    app.saved_text = String::new(); // unsaved
+    tx.send(ch('q')).expect("send"); // asks (unsaved)
+    tx.send(AppEvent::Signal(signal_hook::consts::SIGHUP))
+        .expect("send");
+    let app = run_loop(&mut terminal, app, &rx, &mut worker).expect("loop");
+    assert!(app.quit);
+    assert_eq!(app.signal, Some(signal_hook::consts::SIGHUP));
+}
