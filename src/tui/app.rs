@@ -91,6 +91,13 @@ pub enum AppEvent {
     /// leave at once, without asking (the runtime restores the terminal and exits with
     /// 128 + the signal number).
     Signal(i32),
+    /// The runtime looked at a save-as target ([`Command::CheckSaveTarget`]).
+    SaveTargetChecked {
+        /// The typed path.
+        path: PathBuf,
+        /// Something (file, link, directory, device) already exists there.
+        exists: bool,
+    },
 }
 
 /// One solve request for the worker.
@@ -118,6 +125,9 @@ pub enum Command {
     },
     /// Load a deck from this path, then report [`AppEvent::Opened`].
     Open(PathBuf),
+    /// Save as: see whether this path already exists, then report
+    /// [`AppEvent::SaveTargetChecked`] (the app asks before replacing it).
+    CheckSaveTarget(PathBuf),
     /// Leave the workbench.
     Quit,
 }
@@ -176,6 +186,11 @@ pub enum Mode {
     ConfirmQuit,
     /// Revert requested with unsaved changes.
     ConfirmRevert,
+    /// Save as over a file that exists.
+    ConfirmOverwrite {
+        /// The existing target.
+        path: PathBuf,
+    },
     /// Help overlay.
     Help,
 }
@@ -456,6 +471,17 @@ impl App {
                 self.message = Some(format!("open failed: {e}"));
                 Vec::new()
             }
+            AppEvent::SaveTargetChecked { path, exists } => {
+                if exists {
+                    self.mode = Mode::ConfirmOverwrite { path };
+                    Vec::new()
+                } else {
+                    vec![Command::Save {
+                        path,
+                        deck: Box::new(self.deck.clone()),
+                    }]
+                }
+            }
             AppEvent::Signal(n) => {
                 // A signal is not a question: quit even with unsaved changes or a prompt open.
                 self.signal = Some(n);
@@ -499,6 +525,23 @@ impl App {
                 }
                 _ => {
                     self.mode = Mode::Normal;
+                    Vec::new()
+                }
+            },
+            Mode::ConfirmOverwrite { path } => match key.code {
+                KeyCode::Char('y') | KeyCode::Char('Y') => {
+                    self.mode = Mode::Normal;
+                    vec![Command::Save {
+                        path,
+                        deck: Box::new(self.deck.clone()),
+                    }]
+                }
+                _ => {
+                    // back to the prompt to choose another name (Esc there cancels)
+                    self.mode = Mode::Prompt {
+                        kind: PromptKind::SaveAs,
+                        buffer: path.display().to_string(),
+                    };
                     Vec::new()
                 }
             },
@@ -857,10 +900,15 @@ impl App {
                     return Vec::new();
                 }
                 return match kind {
-                    PromptKind::SaveAs => vec![Command::Save {
-                        path,
-                        deck: Box::new(self.deck.clone()),
-                    }],
+                    // the deck's own file: a plain save (no question, like Ctrl-s)
+                    PromptKind::SaveAs if self.path.as_ref() == Some(&path) => {
+                        vec![Command::Save {
+                            path,
+                            deck: Box::new(self.deck.clone()),
+                        }]
+                    }
+                    // another path: ask first if it exists (checked by the runtime)
+                    PromptKind::SaveAs => vec![Command::CheckSaveTarget(path)],
                     PromptKind::Open => vec![Command::Open(path)],
                 };
             }

@@ -259,6 +259,11 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 }
                 more
             }
+            Command::CheckSaveTarget(path) => {
+                // symlink_metadata: a dangling link or a FIFO exists too
+                let exists = std::fs::symlink_metadata(&path).is_ok();
+                app.handle(AppEvent::SaveTargetChecked { path, exists })
+            }
             Command::Open(path) => {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));
                 app.handle(AppEvent::Opened(r))
