@@ -145,7 +145,7 @@ absent "Inputs [US]"      # the alternate screen is gone: terminal restored
 # 9. Signals: the workbench runs in the foreground of an interactive shell; kill -SIG on
 #    its pid must leave the terminal as it found it and exit with 128 + signal.
 tm new-session -d -s sig -x 80 -y 24 \
-    "env -i PATH='$PATH' HOME='$WORK' TERM=xterm-256color PS1='sh\$ ' bash --norc --noprofile -i"
+    "env -i PATH='$PATH' HOME='$WORK' HISTFILE= TERM=xterm-256color PS1='sh\$ ' bash --norc --noprofile -i"
 TARGET="sig"
 wait_for 'sh$'
 keys "cd '$WORK'" Enter
