@@ -27,7 +27,10 @@ fi
 if [ -z "${ROLLBENCH_BIN:-}" ]; then
     cargo build --release --quiet --bin rollbench
     TARGET_DIR="${CARGO_TARGET_DIR:-target}"
-    ROLLBENCH_BIN="$(pwd)/$TARGET_DIR/release/rollbench"
+    case "$TARGET_DIR" in
+        /*) ROLLBENCH_BIN="$TARGET_DIR/release/rollbench" ;;   # absolute CARGO_TARGET_DIR
+        *) ROLLBENCH_BIN="$(pwd)/$TARGET_DIR/release/rollbench" ;;
+    esac
 fi
 [ -x "$ROLLBENCH_BIN" ] || { echo "e2e: no binary at $ROLLBENCH_BIN" >&2; exit 1; }
 
