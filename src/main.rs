@@ -69,6 +69,10 @@ fn main() -> ExitCode {
             match rollbench::tui::run_workbench_deck(deck, cli.deck.clone()) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
+                    if let Some(i) = e.downcast_ref::<rollbench::tui::Interrupted>() {
+                        eprintln!("rollbench: {i}");
+                        return ExitCode::from(i.exit_code());
+                    }
                     eprintln!("workbench: {e:?}");
                     ExitCode::from(exit::INVALID_INPUT)
                 }

@@ -288,3 +288,156 @@ fn mutation_outcome_mix() {
     );
     assert!(ok > 0 && syntax > 0 && rules > 0, "{ok} {syntax} {rules}");
 }
+
+// ------------------------------------------------------------ --set combinations
+
+/// Keys `--set` is tried on, each with values that pass and values that do not
+/// (`geometry.roller_count` must be an integer in range, crown radii interact through the
+/// cross-field rules, `thermal.…` is checked by the `[thermal]` parser), plus keys that do
+/// not exist and an assignment without `=`.
+const SET_KEYS: [(&str, &[&str]); 12] = [
+    (
+        "geometry.roller_count",
+        &["16", "18", "0", "-3", "2.5", "100000"],
+    ),
+    ("geometry.roller_crown_radius", &["20", "0.2", "0", "-1"]),
+    ("geometry.inner_crown_radius", &["20", "0.2", "nan"]),
+    ("geometry.outer_crown_radius", &["20", "0.2", "inf"]),
+    ("operating.inner_speed", &["10000", "0", "-5", "1e12"]),
+    ("operating.axial_load", &["500", "0", "-1", "\"x\""]),
+    ("solver.force_tolerance", &["1e-6", "1e-4", "0.05", "0"]),
+    ("thermal.transient.duration", &["600", "-1", "1e20", "nan"]),
+    ("thermal.transient.step", &["1", "0", "1e-12"]),
+    ("geometry.roler_count", &["16"]),
+    ("zzz.unknown", &["1"]),
+    ("no-equals-sign", &[""]),
+];
+
+/// A `--set` list: distinct keys (so that order could only matter through validation),
+/// each with one of its values, in random order.
+fn set_list() -> impl Strategy<Value = Vec<String>> {
+    proptest::sample::subsequence((0..SET_KEYS.len()).collect::<Vec<_>>(), 1..=5)
+        .prop_flat_map(|keys| {
+            let values: Vec<_> = keys
+                .iter()
+                .map(|&k| (Just(k), 0..SET_KEYS[k].1.len()))
+                .collect();
+            values
+        })
+        .prop_map(|kv| {
+            kv.into_iter()
+                .map(|(k, v)| {
+                    let (key, values) = SET_KEYS[k];
+                    if key == "no-equals-sign" {
+                        key.to_string()
+                    } else {
+                        format!("{key}={}", values[v])
+                    }
+                })
+                .collect::<Vec<_>>()
+        })
+        .prop_shuffle()
+}
+
+/// Applies `sets` to the aerospace deck, then builds its `[thermal]` model (what `run`
+/// does): the resulting bearing and thermal table, or the error text.
+fn apply_sets(sets: &[String]) -> Result<String, String> {
+    let mut deck =
+        Deck::parse(rollbench::deck::DEFAULT_DECK, "aero.toml").map_err(|e| e.to_string())?;
+    deck.apply_assignments(sets).map_err(|e| e.to_string())?;
+    deck.thermal_model().map_err(|e| e.to_string())?;
+    Ok(format!("{:?}\n{:?}", deck.bearing, deck.thermal))
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 192, ..Config::default() })]
+    /// Random `--set` lists never panic; a rejected list names one of its keys (or the
+    /// `[thermal]` field); and the verdict, and an accepted deck, do not depend on the
+    /// order of the assignments.
+    #[test]
+    fn set_combinations_never_panic_and_ignore_order(sets in set_list()) {
+        let forward = apply_sets(&sets);
+        let mut reversed = sets.clone();
+        reversed.reverse();
+        let backward = apply_sets(&reversed);
+        match (&forward, &backward) {
+            (Ok(a), Ok(b)) => prop_assert_eq!(a, b),
+            (Err(e), Err(_)) => {
+                let named = sets.iter().any(|s| {
+                    let key = s.split_once('=').map_or(s.as_str(), |(k, _)| k);
+                    let last = key.rsplit('.').next().unwrap_or(key);
+                    e.contains(key) || e.contains(&format!("'{last}'"))
+                });
+                prop_assert!(named, "{sets:?}: {e}");
+            }
+            _ => prop_assert!(false, "order changed the verdict: {sets:?}\n{forward:?}\n{backward:?}"),
+        }
+    }
+}
+
+// ------------------------------------------------------------ [thermal] fields
+
+/// Numbers tried in every numeric field of the shipped `[thermal]` sections.
+const THERMAL_WEIRD: [&str; 9] = [
+    "0", "-0", "-1", "-1e-300", "1e308", "5e-324", "nan", "inf", "-inf",
+];
+
+/// Every numeric field of every shipped `[thermal]` section, set to each weird number:
+/// `[thermal]` never panics, and a field the parser rejects is named with its line.
+#[test]
+fn thermal_fields_mutated_never_panic_and_are_named() {
+    let (mut tried, mut rejected) = (0usize, 0usize);
+    for (name, text) in shipped() {
+        let lines: Vec<&str> = text.lines().collect();
+        let Some(start) = lines.iter().position(|l| l.trim() == "[thermal]") else {
+            continue;
+        };
+        for (i, line) in lines.iter().enumerate().skip(start) {
+            let Some((key, value)) = line.split_once('=') else {
+                continue;
+            };
+            let value = value.split('#').next().unwrap_or("").trim();
+            if value.parse::<f64>().is_err() {
+                continue; // strings, arrays, booleans
+            }
+            let field = key.trim();
+            for weird in THERMAL_WEIRD {
+                let mut mutated = lines.clone();
+                let new_line = format!("{field} = {weird}");
+                mutated[i] = &new_line;
+                let mutated = mutated.join("\n");
+                tried += 1;
+                let outcome = std::panic::catch_unwind(|| check_in_process(&mutated));
+                let Ok(result) = outcome else {
+                    panic!("{name}: {field} = {weird} (line {}) panicked", i + 1);
+                };
+                let Err(e) = result else { continue };
+                rejected += 1;
+                // A bad number is named as the field it is in, at its line; a legal number
+                // that makes the network invalid names the node or link.
+                let bad = weird
+                    .parse::<f64>()
+                    .map_or(true, |v| !(v.is_finite() && v >= 0.0));
+                if e.contains(&format!("'{field}'")) {
+                    assert!(
+                        e.contains(&format!("fuzz.toml:{}:", i + 1))
+                            || e.contains("duration / step"),
+                        "{name}: {field} = {weird}: error not at line {}: {e}",
+                        i + 1
+                    );
+                } else {
+                    assert!(
+                        !bad || field == "duration",
+                        "{name}: {field} = {weird}: field not named: {e}"
+                    );
+                    assert!(
+                        e.contains("node") || e.contains("link") || e.contains("step"),
+                        "{name}: {field} = {weird}: {e}"
+                    );
+                }
+            }
+        }
+    }
+    println!("[thermal] fields: {tried} mutants, {rejected} rejected");
+    assert!(tried > 100 && rejected > 0, "{tried} {rejected}");
+}

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # End-to-end run of the real workbench binary in an 80×24 tmux session: switch panes,
 # move the roller selection, open the stepper, edit a deck value (valid and invalid),
-# then quit through the unsaved-changes prompt. Asserts on `tmux capture-pane` text.
+# then quit through the unsaved-changes prompt. Then, in a shell, each termination signal
+# (TERM, INT, HUP, QUIT) sent to the workbench restores the terminal (echo, canonical
+# mode, main screen, cursor shown) and exits with 128 + signal. Asserts on
+# `tmux capture-pane` text and the pane's flags.
 # Exits non-zero on the first failed expectation, printing the screen.
 #
 # Usage: tests/e2e_tmux.sh            (from anywhere; builds the release binary)
@@ -24,7 +27,10 @@ fi
 if [ -z "${ROLLBENCH_BIN:-}" ]; then
     cargo build --release --quiet --bin rollbench
     TARGET_DIR="${CARGO_TARGET_DIR:-target}"
-    ROLLBENCH_BIN="$(pwd)/$TARGET_DIR/release/rollbench"
+    case "$TARGET_DIR" in
+        /*) ROLLBENCH_BIN="$TARGET_DIR/release/rollbench" ;;   # absolute CARGO_TARGET_DIR
+        *) ROLLBENCH_BIN="$(pwd)/$TARGET_DIR/release/rollbench" ;;
+    esac
 fi
 [ -x "$ROLLBENCH_BIN" ] || { echo "e2e: no binary at $ROLLBENCH_BIN" >&2; exit 1; }
 
@@ -38,7 +44,8 @@ cleanup() {
 trap cleanup EXIT
 
 tm() { tmux -L "$SOCK" "$@"; }
-screen() { tm capture-pane -p -t "$SESSION"; }
+TARGET="$SESSION"                 # the session the helpers below look at
+screen() { tm capture-pane -p -t "$TARGET"; }
 fail() {
     echo "e2e FAILED: $*" >&2
     echo "----- screen -----" >&2
@@ -59,7 +66,7 @@ wait_for() {
 absent() {
     if screen | grep -qF -- "$1"; then fail "did not expect \"$1\" on screen"; fi
 }
-keys() { tm send-keys -t "$SESSION" "$@"; sleep 0.15; }
+keys() { tm send-keys -t "$TARGET" "$@"; sleep 0.15; }
 
 tm new-session -d -s "$SESSION" -x 80 -y 24 \
     "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN'; echo \"EXITED:\$?\"; sleep 60"
@@ -137,5 +144,36 @@ wait_for "Unsaved changes"
 keys y
 wait_for "EXITED:0"
 absent "Inputs [US]"      # the alternate screen is gone: terminal restored
+
+# 9. Signals: the workbench runs in the foreground of an interactive shell; kill -SIG on
+#    its pid must leave the terminal as it found it and exit with 128 + signal.
+tm new-session -d -s sig -x 80 -y 24 \
+    "env -i PATH='$PATH' HOME='$WORK' HISTFILE= TERM=xterm-256color PS1='sh\$ ' bash --norc --noprofile -i"
+TARGET="sig"
+wait_for 'sh$'
+keys "cd '$WORK'" Enter
+shell_pid="$(tm list-panes -t sig -F '#{pane_pid}')"
+for sig_code in TERM:143 INT:130 HUP:129 QUIT:131; do
+    sig="${sig_code%%:*}" code="${sig_code##*:}"
+    keys clear Enter
+    keys "'$ROLLBENCH_BIN'; echo \"EXITED:\$?\"" Enter
+    wait_for "Inputs [US]"
+    wait_for "solved in"
+    pid=""
+    for ((i = 0; i < 50; i++)); do
+        pid="$(pgrep -P "$shell_pid" | head -n 1 || true)"
+        [ -z "$pid" ] || break
+        sleep 0.1
+    done
+    [ -n "$pid" ] || fail "SIG$sig: no workbench process under the shell ($shell_pid)"
+    kill "-$sig" "$pid"
+    wait_for "EXITED:$code"
+    absent "Inputs [US]"
+    [ "$(tm display -p -t sig '#{alternate_on}')" = 0 ] || fail "SIG$sig: still in the alternate screen"
+    [ "$(tm display -p -t sig '#{cursor_flag}')" = 1 ] || fail "SIG$sig: cursor still hidden"
+    keys clear Enter
+    keys "stty -a | tr ' ;' '\\n\\n' | grep -xE 'echo|icanon' | sort | tr '\\n' ' '; echo STTY" Enter
+    wait_for "echo icanon STTY"
+done
 
 echo "e2e: ok"

@@ -127,10 +127,11 @@ pub enum DeckError {
         rule: String,
     },
     /// The `[thermal]` network is invalid (the message names node, link and field).
-    #[error("{source_name}: [thermal]: {message}")]
+    #[error("{location}: [thermal]: {message}")]
     Thermal {
-        /// The deck's source name.
-        source_name: String,
+        /// Where the offending field, node or link is (the `[thermal]` header for the
+        /// network as a whole).
+        location: Location,
         /// What is wrong.
         message: String,
     },
@@ -153,10 +154,9 @@ impl DeckError {
             | DeckError::Missing { location, .. }
             | DeckError::WrongType { location, .. }
             | DeckError::OutOfRange { location, .. }
-            | DeckError::Invalid { location, .. } => Some(location),
-            DeckError::Io { .. } | DeckError::NotEditable { .. } | DeckError::Thermal { .. } => {
-                None
-            }
+            | DeckError::Invalid { location, .. }
+            | DeckError::Thermal { location, .. } => Some(location),
+            DeckError::Io { .. } | DeckError::NotEditable { .. } => None,
         }
     }
 

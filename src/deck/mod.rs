@@ -127,16 +127,80 @@ impl Deck {
     pub fn thermal_model(&self) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
         match &self.thermal {
             None => Ok(None),
-            Some(t) => thermal::parse_thermal(t, self.units)
+            Some(t) => thermal::parse_thermal_located(t, self.units)
                 .map(Some)
                 .map_err(|e| {
+                    let message = match &e.error {
+                        crate::thermal::ThermalError::Deck { location, message } => {
+                            format!("{location}: {message}")
+                        }
+                        other => other.to_string(),
+                    };
                     DeckError::Thermal {
-                        source_name: self.source_name.clone(),
-                        message: e.to_string(),
+                        location: self.thermal_location(&e.path),
+                        message,
                     }
                     .into()
                 }),
         }
+    }
+
+    /// Line and column of the deepest node of `path` (inside `[thermal]`) found in the
+    /// deck's text: the field's value, else its entry, else the `[thermal]` header.
+    fn thermal_location(&self, path: &[thermal::PathSeg]) -> Location {
+        let text = self.doc.to_string();
+        let Ok(doc) = toml_edit::Document::parse(text.as_str()) else {
+            return Location::start(&self.source_name);
+        };
+        fn span_of(item: &Item) -> Option<std::ops::Range<usize>> {
+            match item {
+                Item::Value(v) => v.span(),
+                Item::Table(t) => t.span(),
+                Item::ArrayOfTables(a) => a.span(),
+                Item::None => None,
+            }
+        }
+        // Walk items (tables, arrays of tables), their tables and values (inline
+        // tables, arrays).
+        #[derive(Clone, Copy)]
+        enum Node<'a> {
+            Item(&'a Item),
+            Table(&'a toml_edit::Table),
+            Value(&'a Value),
+        }
+        let Some(root) = doc.as_table().get("thermal") else {
+            return Location::start(&self.source_name);
+        };
+        let mut best = span_of(root);
+        let mut node = Node::Item(root);
+        for seg in path {
+            use thermal::PathSeg::{Index, Key};
+            let value = match node {
+                Node::Item(Item::Value(v)) | Node::Value(v) => Some(v),
+                _ => None,
+            };
+            let next = match (node, value, seg) {
+                (Node::Item(Item::Table(t)), _, Key(k)) | (Node::Table(t), _, Key(k)) => {
+                    t.get(k).map(Node::Item)
+                }
+                (Node::Item(Item::ArrayOfTables(a)), _, Index(i)) => a.get(*i).map(Node::Table),
+                (_, Some(Value::InlineTable(t)), Key(k)) => t.get(k).map(Node::Value),
+                (_, Some(Value::Array(a)), Index(i)) => a.get(*i).map(Node::Value),
+                _ => None,
+            };
+            let Some(n) = next else { break };
+            let span = match n {
+                Node::Item(i) => span_of(i),
+                Node::Table(t) => t.span(),
+                Node::Value(v) => v.span(),
+            };
+            if span.is_some() {
+                best = span;
+            }
+            node = n;
+        }
+        let offset = best.map_or(0, |s| s.start);
+        Location::at(&self.source_name, &text, offset)
     }
 
     /// The source name given to [`Deck::parse`] (file path for [`Deck::load`]).

@@ -648,3 +648,72 @@ fn thermal_bounds_at_validation() {
         );
     }
 }
+
+/// `[thermal]` errors give the file, line and column of the offending field (like the
+/// rest of the deck) and use the deck's key names. (Fails on the previous code: the
+/// message was `t.toml: [thermal]: …` with no line or column.)
+#[test]
+fn thermal_errors_have_line_and_column() {
+    let line_col = |text: &str, needle: &str| -> (usize, usize) {
+        let at = text.find(needle).expect("needle in deck");
+        let eq = text[at..].find('=').expect("=") + at;
+        let value = eq + 1 + text[eq + 1..].len() - text[eq + 1..].trim_start().len();
+        let l = Location::at("t.toml", text, value);
+        (l.line, l.column)
+    };
+    let thermal_err = |text: &str| -> DeckError {
+        let deck = Deck::parse(text, "t.toml").expect("the bearing part is valid");
+        let mut errs = deck.thermal_model().expect_err("bad [thermal]").0;
+        assert_eq!(errs.len(), 1);
+        errs.remove(0)
+    };
+    let base = DEFAULT_DECK;
+    // a node field
+    let text = base.replacen("fixed_temperature = 80.0", "fixed_temperature = inf", 1);
+    let e = thermal_err(&text);
+    let (line, col) = line_col(&text, "fixed_temperature = inf");
+    let msg = e.to_string();
+    assert!(
+        msg.starts_with(&format!("t.toml:{line}:{col}: [thermal]:")),
+        "{msg}"
+    );
+    assert!(
+        msg.contains("node 'oil_in' field 'fixed_temperature'"),
+        "{msg}"
+    );
+    assert!(!msg.contains("fixed_c"), "{msg}");
+    assert_eq!(e.location().map(|l| l.line), Some(line));
+    // a link field
+    let text = base.replacen("mass_flow = 0.05", "mass_flow = -0.05", 1);
+    let msg = thermal_err(&text).to_string();
+    let (line, col) = line_col(&text, "mass_flow = -0.05");
+    assert!(msg.starts_with(&format!("t.toml:{line}:{col}:")), "{msg}");
+    assert!(msg.contains("field 'mass_flow'"), "{msg}");
+    // a transient field
+    let text = base.replacen("duration = 3600.0", "duration = -1.0", 1);
+    let msg = thermal_err(&text).to_string();
+    let (line, col) = line_col(&text, "duration = -1.0");
+    assert!(msg.starts_with(&format!("t.toml:{line}:{col}:")), "{msg}");
+    assert!(msg.contains("'duration'"), "{msg}");
+    // a network error (a link to a node that does not exist): the link's `to`
+    let text = base.replacen("to = \"oil_cavity\"", "to = \"oil_cavty\"", 1);
+    let msg = thermal_err(&text).to_string();
+    let (line, col) = line_col(&text, "to = \"oil_cavty\"");
+    assert!(msg.starts_with(&format!("t.toml:{line}:{col}:")), "{msg}");
+    assert!(msg.contains("unknown node 'oil_cavty'"), "{msg}");
+    // a field a node does not have: the node's header line
+    let text = base.replacen(
+        "name = \"oil_in\"\n",
+        "name = \"oil_in\"\ncolour = 1.0\n",
+        1,
+    );
+    let msg = thermal_err(&text).to_string();
+    let header = text[..text.find("name = \"oil_in\"").expect("oil_in")]
+        .rfind("[[thermal.nodes]]")
+        .expect("header");
+    let l = Location::at("t.toml", &text, header);
+    assert!(
+        msg.starts_with(&format!("t.toml:{}:{}:", l.line, l.column)),
+        "{msg}"
+    );
+}

@@ -241,6 +241,45 @@ fn deck_err(location: impl Into<String>, message: impl Into<String>) -> ThermalE
     }
 }
 
+/// One step of the way from the `[thermal]` table to the entry an error is about.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PathSeg {
+    /// A key of a table.
+    Key(String),
+    /// An element of an array (of tables).
+    Index(usize),
+}
+
+/// A `[thermal]` error and where it is: the keys and indices from the `[thermal]` table
+/// to the offending entry or field (empty: the section as a whole), so that the deck can
+/// give its line and column.
+#[derive(Debug, Clone)]
+pub struct LocatedThermalError {
+    /// The error.
+    pub error: ThermalError,
+    /// Path inside `[thermal]`, e.g. `nodes`, 2, `fixed_temperature`.
+    pub path: Vec<PathSeg>,
+}
+
+fn key(k: &str) -> PathSeg {
+    PathSeg::Key(k.to_string())
+}
+
+/// Adds a path to an error (a closure for `map_err`).
+fn at(path: Vec<PathSeg>) -> impl FnOnce(ThermalError) -> LocatedThermalError {
+    move |error| LocatedThermalError { error, path }
+}
+
+/// Prefixes `outer` to the path of an error from inside an entry.
+fn within(outer: Vec<PathSeg>) -> impl FnOnce(LocatedThermalError) -> LocatedThermalError {
+    move |mut e| {
+        let mut path = outer;
+        path.append(&mut e.path);
+        e.path = path;
+        e
+    }
+}
+
 fn entry_name(v: &toml::Value) -> Option<String> {
     v.get("name").and_then(|n| n.as_str()).map(str::to_string)
 }
@@ -263,18 +302,26 @@ fn array<'a>(section: &'a toml::Table, key: &str) -> Result<&'a [toml::Value], T
 /// is deserialised on its own so errors name the node or link and the field; the network
 /// is then validated (names, signs, grounding).
 pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, ThermalError> {
+    parse_thermal_located(table, units).map_err(|e| e.error)
+}
+
+/// [`parse_thermal`], with the path inside `[thermal]` of what an error is about.
+pub fn parse_thermal_located(
+    table: &toml::Table,
+    units: Units,
+) -> Result<ThermalModel, LocatedThermalError> {
     let section = match table.get("thermal") {
         Some(toml::Value::Table(t)) => t,
-        Some(_) => return Err(deck_err("[thermal]", "expected a table")),
+        Some(_) => return Err(at(vec![])(deck_err("[thermal]", "expected a table"))),
         None if table.contains_key("nodes") => table,
-        None => return Err(deck_err("[thermal]", "section missing")),
+        None => return Err(at(vec![])(deck_err("[thermal]", "section missing"))),
     };
-    for key in section.keys() {
-        if !matches!(key.as_str(), "nodes" | "links" | "transient" | "units") {
-            return Err(deck_err(
+    for k in section.keys() {
+        if !matches!(k.as_str(), "nodes" | "links" | "transient" | "units") {
+            return Err(at(vec![key(k)])(deck_err(
                 "[thermal]",
-                format!("unknown key '{key}' (expected units, nodes, links, transient)"),
-            ));
+                format!("unknown key '{k}' (expected units, nodes, links, transient)"),
+            )));
         }
     }
     // `[thermal] units = "si" | "us"` overrides the deck's unit system for this section, so a
@@ -284,14 +331,16 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
         Some(toml::Value::String(u)) if u == "si" => Units::Si,
         Some(toml::Value::String(u)) if u == "us" => Units::Us,
         Some(other) => {
-            return Err(deck_err(
+            return Err(at(vec![key("units")])(deck_err(
                 "[thermal] key 'units'",
                 format!("{other} is not allowed (allowed: \"si\" or \"us\")"),
-            ))
+            )))
         }
     };
     let mut nodes = Vec::new();
-    for (i, v) in array(section, "nodes")?.iter().enumerate() {
+    let nodes_array = array(section, "nodes").map_err(at(vec![key("nodes")]))?;
+    for (i, v) in nodes_array.iter().enumerate() {
+        let here = vec![key("nodes"), PathSeg::Index(i)];
         let loc = match entry_name(v) {
             Some(n) => format!("node '{n}'"),
             None => format!("node #{}", i + 1),
@@ -299,11 +348,14 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
         let d: NodeDeck = v
             .clone()
             .try_into()
-            .map_err(|e: toml::de::Error| deck_err(&loc, e.message().trim().to_string()))?;
-        nodes.push(convert_node(&d, units, &loc)?);
+            .map_err(|e: toml::de::Error| deck_err(&loc, e.message().trim().to_string()))
+            .map_err(at(here.clone()))?;
+        nodes.push(convert_node(&d, units, &loc).map_err(within(here))?);
     }
     let mut links = Vec::new();
-    for (i, v) in array(section, "links")?.iter().enumerate() {
+    let links_array = array(section, "links").map_err(at(vec![key("links")]))?;
+    for (i, v) in links_array.iter().enumerate() {
+        let here = vec![key("links"), PathSeg::Index(i)];
         let loc = match (entry_name(v), v.get("from"), v.get("to")) {
             (Some(n), _, _) => format!("link '{n}'"),
             (None, Some(f), Some(t)) => format!(
@@ -317,14 +369,20 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
         let d: LinkDeck = v
             .clone()
             .try_into()
-            .map_err(|e: toml::de::Error| deck_err(&loc, e.message().trim().to_string()))?;
-        links.push(convert_link(&d, units, &loc)?);
+            .map_err(|e: toml::de::Error| deck_err(&loc, e.message().trim().to_string()))
+            .map_err(at(here.clone()))?;
+        links.push(convert_link(&d, units, &loc).map_err(within(here))?);
     }
     let td: Option<TransientDeck> = match section.get("transient") {
         None => None,
-        Some(v) => Some(v.clone().try_into().map_err(|e: toml::de::Error| {
-            deck_err("[thermal.transient]", e.message().trim().to_string())
-        })?),
+        Some(v) => Some(
+            v.clone()
+                .try_into()
+                .map_err(|e: toml::de::Error| {
+                    deck_err("[thermal.transient]", e.message().trim().to_string())
+                })
+                .map_err(at(vec![key("transient")]))?,
+        ),
     };
     let mut network = Network::new(nodes, links);
     let mut transient = TransientSettings::default();
@@ -353,15 +411,15 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
             ("step", transient.step_s, MAX_DURATION_S),
         ] {
             if !(v.is_finite() && v > 0.0 && v <= max) {
-                return Err(deck_err(
+                return Err(at(vec![key("transient"), key(field)])(deck_err(
                     format!("[thermal.transient] field '{field}'"),
                     format!("allowed 0 < {field} ≤ {max:e} s, got {v:e} s"),
-                ));
+                )));
             }
         }
         let steps = (transient.duration_s / transient.step_s).ceil();
         if steps.is_nan() || steps > crate::thermal::transient::MAX_STEPS {
-            return Err(deck_err(
+            return Err(at(vec![key("transient"), key("step")])(deck_err(
                 "[thermal.transient] field 'step'",
                 format!(
                     "allowed duration / step ≤ {:e} steps, got {steps:e} ({:e} s / {:e} s): lengthen the step",
@@ -369,34 +427,85 @@ pub fn parse_thermal(table: &toml::Table, units: Units) -> Result<ThermalModel, 
                     transient.duration_s,
                     transient.step_s
                 ),
-            ));
+            )));
         }
         if !(0.0..=1.0).contains(&network.roller_heat_fraction) {
-            return Err(deck_err(
+            return Err(at(vec![key("transient"), key("split_fraction")])(deck_err(
                 "[thermal.transient] field 'split_fraction'",
                 format!("must be in [0, 1], got {}", network.roller_heat_fraction),
-            ));
+            )));
         }
         if let Some(o) = &transient.oil_node {
             if network.node_index(o).is_none() {
-                return Err(deck_err(
+                return Err(at(vec![key("transient"), key("oil_node")])(deck_err(
                     "[thermal.transient] field 'oil_node'",
                     format!("unknown node '{o}'"),
-                ));
+                )));
             }
         }
     } else {
         network.roller_heat_fraction = DEFAULT_ROLLER_HEAT_FRACTION;
     }
-    network.check_grounded()?;
+    network
+        .check_grounded()
+        .map_err(|e| at(network_path(&e, nodes_array, links_array))(e))?;
     Ok(ThermalModel { network, transient })
 }
 
-fn field_err(loc: &str, field: &str, message: impl Into<String>) -> ThermalError {
-    deck_err(format!("{loc} field '{field}'"), message)
+/// Where a network error (which names nodes and links, not entries) is: the node or
+/// link entry it names, by name (a link without a name is called `from-to`).
+fn network_path(e: &ThermalError, nodes: &[toml::Value], links: &[toml::Value]) -> Vec<PathSeg> {
+    let node_at = |name: &str| {
+        nodes
+            .iter()
+            .rposition(|v| entry_name(v).as_deref() == Some(name))
+            .map(|i| vec![key("nodes"), PathSeg::Index(i)])
+    };
+    let link_at = |name: &str| {
+        links
+            .iter()
+            .rposition(|v| {
+                let s = |k: &str| v.get(k).and_then(|x| x.as_str()).unwrap_or("?").to_string();
+                entry_name(v).unwrap_or_else(|| format!("{}-{}", s("from"), s("to"))) == name
+            })
+            .map(|i| vec![key("links"), PathSeg::Index(i)])
+    };
+    let path = match e {
+        ThermalError::DuplicateNode { name }
+        | ThermalError::Ungrounded { node: name }
+        | ThermalError::ZeroCapacity { node: name }
+        | ThermalError::HeatOnFixedNode { node: name, .. }
+        | ThermalError::InvalidNodeValue { node: name, .. } => node_at(name),
+        ThermalError::UnknownNode { link, node } | ThermalError::SelfLink { link, node } => {
+            link_at(link).map(|mut p| {
+                let which = links
+                    .get(match p.last() {
+                        Some(PathSeg::Index(i)) => *i,
+                        _ => usize::MAX,
+                    })
+                    .and_then(|v| {
+                        ["to", "from"]
+                            .into_iter()
+                            .find(|k| v.get(*k).and_then(|x| x.as_str()) == Some(node))
+                    });
+                if let Some(k) = which {
+                    p.push(key(k));
+                }
+                p
+            })
+        }
+        ThermalError::DuplicateLink { name }
+        | ThermalError::InvalidLinkValue { link: name, .. } => link_at(name),
+        _ => None,
+    };
+    path.unwrap_or_default()
 }
 
-fn convert_node(d: &NodeDeck, u: Units, loc: &str) -> Result<Node, ThermalError> {
+fn field_err(loc: &str, field: &str, message: impl Into<String>) -> LocatedThermalError {
+    at(vec![key(field)])(deck_err(format!("{loc} field '{field}'"), message))
+}
+
+fn convert_node(d: &NodeDeck, u: Units, loc: &str) -> Result<Node, LocatedThermalError> {
     let material = [d.density, d.specific_heat, d.volume];
     let n_material = material.iter().filter(|x| x.is_some()).count();
     let capacity_j_k = match (d.capacity, n_material) {
@@ -474,7 +583,7 @@ fn convert_node(d: &NodeDeck, u: Units, loc: &str) -> Result<Node, ThermalError>
     })
 }
 
-fn convert_link(d: &LinkDeck, u: Units, loc: &str) -> Result<Link, ThermalError> {
+fn convert_link(d: &LinkDeck, u: Units, loc: &str) -> Result<Link, LocatedThermalError> {
     let all: [(&str, Option<f64>); 8] = [
         ("conductivity", d.conductivity),
         ("area", d.area),

@@ -87,6 +87,17 @@ pub enum AppEvent {
     Saved(Result<PathBuf, String>),
     /// An open (or revert) finished.
     Opened(Result<(Box<DeckDoc>, PathBuf), String>),
+    /// The process received this termination signal (SIGTERM, SIGINT, SIGHUP, SIGQUIT):
+    /// leave at once, without asking (the runtime restores the terminal and exits with
+    /// 128 + the signal number).
+    Signal(i32),
+    /// The runtime looked at a save-as target ([`Command::CheckSaveTarget`]).
+    SaveTargetChecked {
+        /// The typed path.
+        path: PathBuf,
+        /// Something (file, link, directory, device) already exists there.
+        exists: bool,
+    },
 }
 
 /// One solve request for the worker.
@@ -114,6 +125,9 @@ pub enum Command {
     },
     /// Load a deck from this path, then report [`AppEvent::Opened`].
     Open(PathBuf),
+    /// Save as: see whether this path already exists, then report
+    /// [`AppEvent::SaveTargetChecked`] (the app asks before replacing it).
+    CheckSaveTarget(PathBuf),
     /// Leave the workbench.
     Quit,
 }
@@ -172,6 +186,11 @@ pub enum Mode {
     ConfirmQuit,
     /// Revert requested with unsaved changes.
     ConfirmRevert,
+    /// Save as over a file that exists.
+    ConfirmOverwrite {
+        /// The existing target.
+        path: PathBuf,
+    },
     /// Help overlay.
     Help,
 }
@@ -232,6 +251,8 @@ pub struct App {
     pub quit: bool,
     /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
     pub quit_after_save: bool,
+    /// The termination signal that ended the app, if any ([`AppEvent::Signal`]).
+    pub signal: Option<i32>,
 }
 
 /// Terminal size at or above which all panes are shown together.
@@ -272,6 +293,7 @@ impl App {
             message: None,
             quit: false,
             quit_after_save: false,
+            signal: None,
         }
     }
 
@@ -449,6 +471,23 @@ impl App {
                 self.message = Some(format!("open failed: {e}"));
                 Vec::new()
             }
+            AppEvent::SaveTargetChecked { path, exists } => {
+                if exists {
+                    self.mode = Mode::ConfirmOverwrite { path };
+                    Vec::new()
+                } else {
+                    vec![Command::Save {
+                        path,
+                        deck: Box::new(self.deck.clone()),
+                    }]
+                }
+            }
+            AppEvent::Signal(n) => {
+                // A signal is not a question: quit even with unsaved changes or a prompt open.
+                self.signal = Some(n);
+                self.quit = true;
+                vec![Command::Quit]
+            }
         }
     }
 
@@ -486,6 +525,23 @@ impl App {
                 }
                 _ => {
                     self.mode = Mode::Normal;
+                    Vec::new()
+                }
+            },
+            Mode::ConfirmOverwrite { path } => match key.code {
+                KeyCode::Char('y') | KeyCode::Char('Y') => {
+                    self.mode = Mode::Normal;
+                    vec![Command::Save {
+                        path,
+                        deck: Box::new(self.deck.clone()),
+                    }]
+                }
+                _ => {
+                    // back to the prompt to choose another name (Esc there cancels)
+                    self.mode = Mode::Prompt {
+                        kind: PromptKind::SaveAs,
+                        buffer: path.display().to_string(),
+                    };
                     Vec::new()
                 }
             },
@@ -844,10 +900,15 @@ impl App {
                     return Vec::new();
                 }
                 return match kind {
-                    PromptKind::SaveAs => vec![Command::Save {
-                        path,
-                        deck: Box::new(self.deck.clone()),
-                    }],
+                    // the deck's own file: a plain save (no question, like Ctrl-s)
+                    PromptKind::SaveAs if self.path.as_ref() == Some(&path) => {
+                        vec![Command::Save {
+                            path,
+                            deck: Box::new(self.deck.clone()),
+                        }]
+                    }
+                    // another path: ask first if it exists (checked by the runtime)
+                    PromptKind::SaveAs => vec![Command::CheckSaveTarget(path)],
                     PromptKind::Open => vec![Command::Open(path)],
                 };
             }

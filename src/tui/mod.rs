@@ -23,6 +23,7 @@ use std::path::PathBuf;
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Once;
 use std::thread;
+use std::time::Duration;
 
 use color_eyre::eyre::eyre;
 use ratatui::backend::Backend;
@@ -61,21 +62,108 @@ pub fn run_workbench_deck(
     run_app(app)
 }
 
-/// Takes over the terminal, runs the loop, restores the terminal on every exit path.
+/// The workbench was ended by a termination signal; the terminal has been restored.
+/// `main` exits with [`Interrupted::exit_code`] (128 + the signal number, as a shell
+/// reports a process killed by that signal).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("stopped by {} (signal {signal}); terminal restored{}", signal_name(*.signal), if *.unsaved { ", unsaved changes lost" } else { "" })]
+pub struct Interrupted {
+    /// The signal number.
+    pub signal: i32,
+    /// The deck had unsaved changes.
+    pub unsaved: bool,
+}
+
+impl Interrupted {
+    /// 128 + the signal number.
+    pub fn exit_code(&self) -> u8 {
+        u8::try_from(128 + self.signal).unwrap_or(u8::MAX)
+    }
+}
+
+/// The signals that end the workbench (each restores the terminal first).
+pub const TERM_SIGNALS: [i32; 4] = [
+    signal_hook::consts::SIGTERM,
+    signal_hook::consts::SIGINT,
+    signal_hook::consts::SIGHUP,
+    signal_hook::consts::SIGQUIT,
+];
+
+/// How long the loop has to come round after a signal before the signal thread restores
+/// the terminal and exits by itself (a save or solve that does not stop in time).
+const SIGNAL_GRACE: Duration = Duration::from_secs(2);
+
+fn signal_name(signal: i32) -> &'static str {
+    match signal {
+        signal_hook::consts::SIGTERM => "SIGTERM",
+        signal_hook::consts::SIGINT => "SIGINT",
+        signal_hook::consts::SIGHUP => "SIGHUP",
+        signal_hook::consts::SIGQUIT => "SIGQUIT",
+        _ => "a signal",
+    }
+}
+
+/// Takes over the terminal, runs the loop, restores the terminal on every exit path,
+/// termination signals included ([`Interrupted`]).
 fn run_app(app: App) -> color_eyre::Result<()> {
+    let (tx, rx) = mpsc::channel();
+    // Before the terminal is taken over: a signal from here on is seen by the loop.
+    let signals = spawn_signal_thread(tx.clone())?;
     let mut terminal = ratatui::try_init()?;
     install_solver_panic_filter();
-    let (tx, rx) = mpsc::channel();
-    spawn_input_thread(tx.clone())?;
-    let result = (|| -> color_eyre::Result<()> {
+    let result = (|| -> color_eyre::Result<App> {
+        spawn_input_thread(tx.clone())?;
         let mut worker = Worker::spawn(tx.clone(), pipeline_solver())?;
-        run_loop(&mut terminal, app, &rx, &mut worker)?;
-        Ok(())
+        run_loop(&mut terminal, app, &rx, &mut worker)
     })();
     let restored = ratatui::try_restore();
-    result?;
+    signals.close();
+    let app = result?;
     restored?;
-    Ok(())
+    match app.signal {
+        Some(signal) => Err(Interrupted {
+            signal,
+            unsaved: app.unsaved(),
+        }
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// Turns SIGTERM, SIGINT, SIGHUP and SIGQUIT into [`AppEvent::Signal`] so that the loop
+/// leaves and the terminal is restored. If the loop has not left [`SIGNAL_GRACE`] after
+/// the first signal, or a second signal comes, this thread restores the terminal and
+/// exits (128 + signal) itself.
+fn spawn_signal_thread(tx: Sender<AppEvent>) -> std::io::Result<signal_hook::iterator::Handle> {
+    let mut signals = signal_hook::iterator::Signals::new(TERM_SIGNALS)?;
+    let handle = signals.handle();
+    thread::Builder::new()
+        .name("signals".into())
+        .spawn(move || {
+            let mut first = true;
+            for signal in signals.forever() {
+                if !first {
+                    force_exit(signal);
+                }
+                first = false;
+                if tx.send(AppEvent::Signal(signal)).is_err() {
+                    force_exit(signal);
+                }
+                let _ = thread::Builder::new()
+                    .name("signal-grace".into())
+                    .spawn(move || {
+                        thread::sleep(SIGNAL_GRACE);
+                        force_exit(signal);
+                    });
+            }
+        })?;
+    Ok(handle)
+}
+
+/// Last resort after a signal: restore the terminal and leave with 128 + signal.
+fn force_exit(signal: i32) -> ! {
+    let _ = ratatui::try_restore();
+    std::process::exit(128 + signal)
 }
 
 /// Panics on the solver thread are caught by the worker and shown as a failed solve;
@@ -171,12 +259,17 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 }
                 more
             }
+            Command::CheckSaveTarget(path) => {
+                // symlink_metadata: a dangling link or a FIFO exists too
+                let exists = std::fs::symlink_metadata(&path).is_ok();
+                app.handle(AppEvent::SaveTargetChecked { path, exists })
+            }
             Command::Open(path) => {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));
                 app.handle(AppEvent::Opened(r))
             }
             Command::Quit => {
-                if save_failed {
+                if save_failed && app.signal.is_none() {
                     app.quit = false; // never lose a deck: stay when the save failed
                 } else {
                     app.quit = true;

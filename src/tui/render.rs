@@ -67,6 +67,15 @@ impl Widget for &App {
                 area,
                 buf,
             ),
+            Mode::ConfirmOverwrite { path } => render_confirm(
+                "File exists",
+                &format!(
+                    "{} exists · y replace it · any other key: choose another name",
+                    path.display()
+                ),
+                area,
+                buf,
+            ),
             Mode::ConfirmRevert => render_confirm(
                 "Revert",
                 "y discard unsaved changes and reload the file · any other key: keep",
@@ -707,7 +716,9 @@ fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
     let hints = match &app.mode {
         Mode::Editing { .. } => "Enter commit · Esc cancel · ←→ move · ↑↓ cycle choices · Backspace/Del erase",
         Mode::Prompt { .. } => "type a path · Enter confirm · Esc cancel",
-        Mode::ConfirmQuit | Mode::ConfirmRevert => "answer the prompt",
+        Mode::ConfirmQuit | Mode::ConfirmRevert | Mode::ConfirmOverwrite { .. } => {
+            "answer the prompt"
+        }
         Mode::Help => "any key closes help",
         Mode::Normal => match app.focus {
             Pane::Inputs => "Tab pane · jk move · Enter edit · u units · ^z/^y undo/redo · ^s save · ? help · q quit",

@@ -246,7 +246,16 @@ fn tui_save_prompt_and_quit_prompt() {
     for c in "out.toml".chars() {
         app.handle(ch(c));
     }
+    // another path: the runtime first checks whether it exists; it does not: save
     let cmds = app.handle(key(KeyCode::Enter));
+    assert_eq!(
+        cmds,
+        vec![Command::CheckSaveTarget(PathBuf::from("out.toml"))]
+    );
+    let cmds = app.handle(AppEvent::SaveTargetChecked {
+        path: PathBuf::from("out.toml"),
+        exists: false,
+    });
     match cmds.as_slice() {
         [Command::Save { path, .. }] => assert_eq!(path, &PathBuf::from("out.toml")),
         c => panic!("expected save, got {c:?}"),
@@ -909,4 +918,122 @@ fn too_small_terminal_ignores_keys() {
     app.handle(AppEvent::Resize(100, 30));
     app.handle(ch('u'));
     assert_ne!(app.display_units, before.1);
+}
+
+/// `S` (save as) onto a file that exists asks first: `y` replaces it, any other key goes
+/// back to the prompt; nothing is written before the answer. Saving as the deck's own
+/// file does not ask. (Fails on the previous code: Enter saved at once.)
+#[test]
+fn save_as_asks_before_replacing_an_existing_file() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let target = dir.path().join("other.toml");
+    std::fs::write(&target, "# someone else's deck\n").expect("write");
+    let (tx, _rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut app = deck_app();
+    let type_target = |app: &mut App| {
+        app.handle(ch('S'));
+        for _ in 0..80 {
+            app.handle(key(KeyCode::Backspace));
+        }
+        for c in target.display().to_string().chars() {
+            app.handle(ch(c));
+        }
+        app.handle(key(KeyCode::Enter))
+    };
+    // Pure transitions: the existence check is a command for the runtime.
+    let cmds = type_target(&mut app);
+    assert_eq!(cmds, vec![Command::CheckSaveTarget(target.clone())]);
+    let cmds = app.handle(AppEvent::SaveTargetChecked {
+        path: target.clone(),
+        exists: true,
+    });
+    assert!(cmds.is_empty(), "{cmds:?}");
+    assert_eq!(
+        app.mode,
+        Mode::ConfirmOverwrite {
+            path: target.clone()
+        }
+    );
+    // n: back to the prompt with the name, nothing written
+    assert!(app.handle(ch('n')).is_empty());
+    assert_eq!(
+        app.mode,
+        Mode::Prompt {
+            kind: PromptKind::SaveAs,
+            buffer: target.display().to_string()
+        }
+    );
+    app.handle(key(KeyCode::Esc));
+    assert_eq!(app.mode, Mode::Normal);
+    // Through the runtime: the file exists, so it asks; y replaces it.
+    let cmds = type_target(&mut app);
+    perform(&mut app, cmds, &mut worker);
+    assert!(matches!(app.mode, Mode::ConfirmOverwrite { .. }));
+    assert_eq!(
+        std::fs::read_to_string(&target).expect("read"),
+        "# someone else's deck\n"
+    );
+    let cmds = app.handle(ch('y'));
+    perform(&mut app, cmds, &mut worker);
+    assert_eq!(app.mode, Mode::Normal);
+    assert_eq!(app.path.as_deref(), Some(target.as_path()));
+    assert_eq!(
+        DeckDoc::load(&target).expect("load").bearing(),
+        app.deck.bearing()
+    );
+    // Now it is the deck's own file: save as onto it saves without asking.
+    let cmds = type_target(&mut app);
+    assert!(
+        matches!(cmds.as_slice(), [Command::Save { path, .. }] if *path == target),
+        "{cmds:?}"
+    );
+}
+
+#[test]
+fn tui_snapshot_confirm_overwrite() {
+    let mut app = solved_app(Pane::Inputs, 80, 24);
+    app.mode = Mode::ConfirmOverwrite {
+        path: PathBuf::from("decks/industrial.toml"),
+    };
+    snap("confirm_overwrite", &app, 80, 24);
+}
+
+/// A termination signal quits at once, even with unsaved changes and a prompt open, and
+/// the app remembers it (the runtime exits with 128 + signal after restoring the terminal).
+#[test]
+fn signal_quits_without_asking() {
+    let mut app = deck_app();
+    select_field(&mut app, "operating.axial_load");
+    let c = type_value(&mut app, "1250");
+    run_sync(&mut app, c);
+    assert!(app.unsaved());
+    app.handle(ch('S'));
+    let cmds = app.handle(AppEvent::Signal(signal_hook::consts::SIGTERM));
+    assert_eq!(cmds, vec![Command::Quit]);
+    assert!(app.quit);
+    assert_eq!(app.signal, Some(15));
+    let i = Interrupted {
+        signal: 15,
+        unsaved: true,
+    };
+    assert_eq!(i.exit_code(), 143);
+    assert!(i.to_string().contains("SIGTERM"), "{i}");
+}
+
+/// The loop leaves on a signal event although the deck is unsaved.
+#[test]
+fn run_loop_leaves_on_a_signal() {
+    let (tx, rx) = mpsc::channel();
+    let mut worker =
+        Worker::spawn(tx.clone(), Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
+    let mut app = deck_app();
+    app.saved_text = String::new(); // unsaved
+    tx.send(ch('q')).expect("send"); // asks (unsaved)
+    tx.send(AppEvent::Signal(signal_hook::consts::SIGHUP))
+        .expect("send");
+    let app = run_loop(&mut terminal, app, &rx, &mut worker).expect("loop");
+    assert!(app.quit);
+    assert_eq!(app.signal, Some(signal_hook::consts::SIGHUP));
 }
