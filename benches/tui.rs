@@ -10,19 +10,24 @@ use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 
-use rollbench::bearings::spherical_roller::pipeline;
+use rollbench::numerics::cancel::Cancel;
 use rollbench::tui::{App, AppEvent, Command, DeckDoc, Pane};
 
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
 }
 
-/// Runs every solve command inline, as the worker would.
+/// Runs every solve command inline, as the worker would (a fresh session each time: no
+/// stage is reused, as before the sessions kept a cache).
 fn solve_inline(app: &mut App, cmds: Vec<Command>) {
     for c in cmds {
         if let Command::Solve(job) = c {
-            let outcome = pipeline::run(&job.bearing, &job.request, None)
-                .map(Arc::new)
+            let outcome = job
+                .case
+                .system()
+                .session()
+                .solve(&*job.case, job.detail, &Cancel::NONE)
+                .map(|s| Arc::new(s.view()))
                 .map_err(|e| e.to_string());
             let more = app.handle(AppEvent::Solved {
                 generation: job.generation,
@@ -51,7 +56,7 @@ fn draw(c: &mut Criterion) {
     for pane in [Pane::Inputs, Pane::Stepper] {
         let app = solved_app(120, 40, pane);
         let mut terminal = Terminal::new(TestBackend::new(120, 40)).unwrap_or_else(|e| match e {});
-        group.bench_function(format!("full_frame_120x40_{}", pane.title()), |b| {
+        group.bench_function(format!("full_frame_120x40_{}", app.pane_title(pane)), |b| {
             b.iter(|| {
                 terminal
                     .draw(|f| f.render_widget(black_box(&app), f.area()))

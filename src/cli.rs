@@ -1,6 +1,6 @@
 //! Command line (clap): a thin layer over the library.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
@@ -103,9 +103,4 @@ pub mod exit {
 pub enum UnitsArg {
     Si,
     Us,
-}
-
-/// Load a deck from a path (or the embedded default) and apply `--set` overrides.
-pub fn load_deck(path: Option<&Path>, sets: &[String]) -> Result<crate::deck::Deck, String> {
-    crate::deck::Deck::load_with_overrides(path, sets)
 }

@@ -7,7 +7,7 @@ use std::path::Path;
 
 use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
-use rollbench::cli::{exit, load_deck, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::cli::{exit, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::{self, Units};
 use rollbench::files::{same_file, write_atomic};
 use rollbench::numerics::cancel::Cancel;
@@ -16,12 +16,27 @@ use rollbench::report;
 /// Reads the deck at `path`, finds its bearing system by `type`, and has that system
 /// parse it with the `--set` overrides.
 fn load_case(path: &Path, overrides: &[String]) -> Result<Box<dyn Case>, String> {
-    let text = deck::read_deck_text(path).map_err(|e| e.to_string())?;
-    let name = path.display().to_string();
-    let system = deck::system_of(&text, &name).map_err(|e| e.to_string())?;
-    system
-        .load(&text, &name, overrides)
-        .map_err(|e| e.to_string())
+    bearings::load_file(path, overrides).map_err(|e| e.to_string())
+}
+
+/// The deck at `path`, or the default system's embedded example deck when there is none.
+fn load_case_or_default(
+    path: Option<&Path>,
+    overrides: &[String],
+) -> Result<Box<dyn Case>, String> {
+    match path {
+        Some(p) => load_case(p, overrides),
+        None => {
+            let system = bearings::system(bearings::DEFAULT_SYSTEM)
+                .ok_or_else(|| "no default bearing system registered".to_string())?;
+            bearings::load_case(
+                system.example_deck(),
+                "decks/aerospace.toml (embedded)",
+                overrides,
+            )
+            .map_err(|e| e.to_string())
+        }
+    }
 }
 
 fn main() -> ExitCode {
@@ -56,8 +71,8 @@ fn main() -> ExitCode {
     }
     match cli.command {
         None => {
-            let deck = match load_deck(cli.deck.as_deref(), &cli.set) {
-                Ok(d) => d,
+            let case = match load_case_or_default(cli.deck.as_deref(), &cli.set) {
+                Ok(c) => c,
                 Err(e) => {
                     eprintln!("{e}");
                     return ExitCode::from(exit::INVALID_INPUT);
@@ -66,7 +81,7 @@ fn main() -> ExitCode {
             if let Err(e) = color_eyre::install() {
                 eprintln!("{e}");
             }
-            match rollbench::tui::run_workbench_deck(deck, cli.deck.clone()) {
+            match rollbench::tui::run_workbench_case(case, cli.deck.clone()) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     if let Some(i) = e.downcast_ref::<rollbench::tui::Interrupted>() {

@@ -18,7 +18,7 @@ pub mod view;
 
 pub use error::SolveError;
 
-use crate::deck::DeckErrors;
+use crate::deck::{DeckErrors, FieldMeta};
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
 
@@ -36,6 +36,16 @@ pub struct RunOptions {
     pub skip_transient: bool,
 }
 
+/// What the workbench asks of a solve beyond the report's defaults: only what the panes on
+/// screen show is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Detail {
+    /// Record the equilibrium iterations of this element (0-based) for the stepper.
+    pub trace_element: Option<usize>,
+    /// Run the expensive time simulations (the thermal transient).
+    pub transient: bool,
+}
+
 /// A bearing system: how its decks are read, solved and shown.
 pub trait BearingSystem: Sync {
     /// The deck's `type`, e.g. `"spherical-roller"`.
@@ -44,8 +54,14 @@ pub trait BearingSystem: Sync {
     fn title(&self) -> &'static str;
     /// The method and its source (seed document).
     fn method(&self) -> &'static str;
+    /// What one rolling element is called (`"roller"`, `"ball"`), for the stepper and
+    /// status lines.
+    fn element_name(&self) -> &'static str;
     /// The workbench panes this system offers, in switcher order.
     fn panes(&self) -> &'static [view::PaneSpec];
+    /// A solver for the workbench that keeps what it computed between solves, so an edit
+    /// re-runs only the stages whose inputs it changed.
+    fn session(&self) -> Box<dyn Session>;
     /// A fully commented deck in `units` that parses back.
     fn template(&self, units: Units) -> String;
     /// The shipped example deck (text), embedded in the binary.
@@ -61,17 +77,75 @@ pub trait BearingSystem: Sync {
 }
 
 /// One validated deck of a system, ready to solve.
-pub trait Case: Send {
+pub trait Case: Send + Sync {
     /// The system the deck belongs to.
     fn system(&self) -> &'static dyn BearingSystem;
+    /// For the system's own [`Session`] to reach its concrete case.
+    fn as_any(&self) -> &dyn std::any::Any;
     /// The unit system the deck is written in (text reports use it).
     fn units(&self) -> Units;
     /// Solve everything a full report shows.
     fn solve(&self, options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String>;
+
+    // The deck behind the case, for the workbench's editor (values in deck units).
+
+    /// The deck's `name`.
+    fn name(&self) -> &str;
+    /// Where the deck was read from (errors name it).
+    fn source_name(&self) -> &str;
+    /// The deck's editable scalar fields, in deck order.
+    fn fields(&self) -> Vec<&'static FieldMeta>;
+    /// The SI value of field `key` in effect (choice index for choices); `None` for keys
+    /// that are not fields.
+    fn field_si(&self, key: &str) -> Option<f64>;
+    /// The value of `key` as written in the deck (deck units; strings unquoted), or in
+    /// effect where the deck omits it.
+    fn get(&self, key: &str) -> Option<String>;
+    /// The case with `key` set to `value` (deck units), the whole deck re-validated;
+    /// comments and layout kept.
+    fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors>;
+    /// The deck's text (what a save writes).
+    fn text(&self) -> String;
+    /// Saves the deck (atomic, previous file kept as `.bak`; see [`crate::files`]).
+    fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors>;
+    /// True if the deck has a time simulation that [`Detail::transient`] turns on.
+    fn has_transient(&self) -> bool;
+}
+
+/// Reads deck text of any system: its `type` picks the system, which parses, applies the
+/// `key=value` overrides (deck units) and validates.
+pub fn load_case(
+    text: &str,
+    source_name: &str,
+    overrides: &[String],
+) -> Result<Box<dyn Case>, DeckErrors> {
+    crate::deck::system_of(text, source_name)?.load(text, source_name, overrides)
+}
+
+/// Reads a deck file of any system (bounded read; see [`crate::deck::read_deck_text`]).
+pub fn load_file(
+    path: &std::path::Path,
+    overrides: &[String],
+) -> Result<Box<dyn Case>, DeckErrors> {
+    let text = crate::deck::read_deck_text(path)?;
+    load_case(&text, &path.display().to_string(), overrides)
+}
+
+/// The workbench's solver of one system's cases; see [`BearingSystem::session`].
+pub trait Session: Send {
+    /// Solves `case` (a case of this session's system) with the extra `detail` the panes
+    /// on screen need. `cancel` is checked between iterations: a cancelled solve returns
+    /// [`SolveError::Cancelled`].
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError>;
 }
 
 /// A solved case: what reports and panes draw from.
-pub trait Solution {
+pub trait Solution: Send + Sync {
     /// Tables, summary lines and key outputs, SI, each with its unit.
     fn view(&self) -> view::View;
     /// The JSON report (SI, units in key names; a contract: fields are added, never

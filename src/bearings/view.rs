@@ -22,6 +22,8 @@ pub enum Display {
     Film,
     /// Contact stress: MPa or ksi.
     Stress,
+    /// Small angles (tilts, misalignments): mrad in both systems.
+    SmallAngle,
 }
 
 impl Display {
@@ -39,6 +41,7 @@ impl Display {
             (Display::Film, Units::Us) => v / INCH_M * 1e6,
             (Display::Stress, Units::Si) => v / 1e6,
             (Display::Stress, Units::Us) => v / PSI_PA / 1e3,
+            (Display::SmallAngle, _) => v * 1e3,
         }
     }
 
@@ -56,6 +59,7 @@ impl Display {
             (Display::Film, Units::Us) => "µin",
             (Display::Stress, Units::Si) => "MPa",
             (Display::Stress, Units::Us) => "ksi",
+            (Display::SmallAngle, _) => "mrad",
         }
     }
 
@@ -254,6 +258,121 @@ pub struct PaneSpec {
     pub title: &'static str,
 }
 
+/// How a stepper line's values are written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TraceFormat {
+    /// Whole numbers joined by ` / ` (outer / inner iteration).
+    Counts,
+    /// Signed decimals (`+0.01234`), this many decimals, in the line's display unit.
+    Signed(usize),
+    /// Residuals: engineering form with sign, `≈0` below solver noise (1e-6).
+    Residual,
+}
+
+/// One label/value line of a stepper step (values SI, comma-joined on screen).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TraceLine {
+    /// Label without the unit; the display unit is appended.
+    pub label: &'static str,
+    /// Display unit of the values.
+    pub display: Display,
+    /// How the values are written.
+    pub format: TraceFormat,
+    /// The values, SI.
+    pub values: Vec<f64>,
+}
+
+/// A row of bars across an element (one per lamina or slice), scaled with the other rows
+/// of its group.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TraceBars {
+    /// Row label (`"inner load"`).
+    pub label: &'static str,
+    /// Display unit of the values.
+    pub display: Display,
+    /// Rows of one group share a full scale.
+    pub group: usize,
+    /// Colour slot: 0 the inner race's colour, 1 the outer's.
+    pub side: usize,
+    /// Decimals of the group's full-scale value.
+    pub precision: usize,
+    /// The values, SI.
+    pub values: Vec<f64>,
+}
+
+/// One recorded iteration of an element's equilibrium solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TraceStep {
+    /// Outer (ring) and inner (element) iteration numbers.
+    pub iteration: [usize; 2],
+    /// Residuals, SI, one per [`Trace::residuals`] column.
+    pub residuals: Vec<f64>,
+    /// Label/value lines.
+    pub lines: Vec<TraceLine>,
+    /// Bar rows.
+    pub bars: Vec<TraceBars>,
+}
+
+/// A residual column of the stepper's history list.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TraceColumn {
+    /// Label without the unit (`"ax"`); the display unit is appended.
+    pub label: &'static str,
+    /// Display unit.
+    pub display: Display,
+}
+
+/// The equilibrium iterations of one element, as the stepper steps through them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    /// The traced element (0-based).
+    pub element: usize,
+    /// Residual columns of the history list.
+    pub residuals: Vec<TraceColumn>,
+    /// The steps, in order.
+    pub steps: Vec<TraceStep>,
+}
+
+/// One node's transient temperatures.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeSeries {
+    /// Node name.
+    pub name: String,
+    /// Temperatures, °C, at [`Transient::time_s`].
+    pub temperature_c: Vec<f64>,
+    /// Time to reach the node's limit, s (`None`: not reached or no limit).
+    pub time_to_limit_s: Option<f64>,
+}
+
+/// A thermal transient.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Transient {
+    /// Sample times, s.
+    pub time_s: Vec<f64>,
+    /// One series per node.
+    pub nodes: Vec<NodeSeries>,
+}
+
+/// A thermal network's results.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalResults {
+    /// Steady-state temperature of each node: name and °C.
+    pub steady: Vec<(String, f64)>,
+    /// The transient, when it was run.
+    pub transient: Option<Transient>,
+}
+
+/// Solver work counters of a solve (the status bar).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveStats {
+    /// Outer (ring) iterations.
+    pub iterations: usize,
+    /// Inner (element) iterations, all elements.
+    pub inner_iterations: usize,
+    /// Wall time of the solve, s.
+    pub wall_time_s: f64,
+}
+
 /// Everything a solved bearing shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct View {
@@ -270,6 +389,12 @@ pub struct View {
     pub summary: Vec<Summary>,
     /// Key outputs.
     pub key_outputs: Vec<KeyOutput>,
+    /// The stepper's trace of the requested element, when one was requested.
+    pub trace: Option<Trace>,
+    /// The thermal network's results, when the deck has one.
+    pub thermal: Option<ThermalResults>,
+    /// Solver work counters.
+    pub stats: SolveStats,
 }
 
 impl View {

@@ -28,6 +28,10 @@ pub use schema::{
 };
 pub use template::template;
 
+/// The metadata of an editable field (key, label, unit, range) without its access to a
+/// particular system's input type.
+pub type FieldMeta = FieldSpec;
+
 use std::path::Path;
 
 use toml_edit::{DocumentMut, Item, Value};

@@ -10,64 +10,18 @@ use std::sync::Arc;
 
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
-use crate::bearings::spherical_roller;
-use crate::bearings::spherical_roller::pipeline::{Analysis, Request};
-use crate::bearings::spherical_roller::Bearing;
-use crate::bearings::view::View;
+use crate::bearings::view::{PaneKind, View};
+use crate::bearings::{Case, Detail};
 use crate::units::Units;
 
 use super::deck_io::{self, DeckDoc, FieldInfo};
-use super::view_model;
 
-/// The panes, in Tab order.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Pane {
-    /// Deck fields.
-    Inputs,
-    /// Per-roller table.
-    Rollers,
-    /// Load chart.
-    Load,
-    /// Thermal pane.
-    Thermal,
-    /// Roller stepper.
-    Stepper,
-}
+/// A workbench pane: what it shows. The panes on offer, their order and their titles
+/// ("Rollers", "Balls") come from the deck's bearing system ([`App::panes`]).
+pub type Pane = PaneKind;
 
-impl Pane {
-    /// All panes in Tab order.
-    pub const ALL: [Pane; 5] = [
-        Pane::Inputs,
-        Pane::Rollers,
-        Pane::Load,
-        Pane::Thermal,
-        Pane::Stepper,
-    ];
-
-    /// Title shown on the pane border and the switcher.
-    pub fn title(self) -> &'static str {
-        match self {
-            Pane::Inputs => "Inputs",
-            Pane::Rollers => "Rollers",
-            Pane::Load => "Load",
-            Pane::Thermal => "Thermal",
-            Pane::Stepper => "Stepper",
-        }
-    }
-
-    fn index(self) -> usize {
-        Pane::ALL.iter().position(|p| *p == self).unwrap_or(0)
-    }
-
-    fn offset(self, by: isize) -> Pane {
-        let n = Pane::ALL.len() as isize;
-        let i = (self.index() as isize + by).rem_euclid(n) as usize;
-        Pane::ALL.get(i).copied().unwrap_or(Pane::Inputs)
-    }
-}
-
-/// Outcome of a solve as delivered to the UI.
-pub type SolveOutcome = Result<Arc<Analysis>, String>;
+/// Outcome of a solve as delivered to the UI: the solution's view.
+pub type SolveOutcome = Result<Arc<View>, String>;
 
 /// Everything that can happen to the app.
 #[derive(Debug, Clone)]
@@ -101,14 +55,33 @@ pub enum AppEvent {
 }
 
 /// One solve request for the worker.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone)]
 pub struct SolveJob {
     /// Generation; the newest wins.
     pub generation: u64,
-    /// The bearing to solve (SI).
-    pub bearing: Bearing,
-    /// What to compute (trace roller, thermal transient).
-    pub request: Request,
+    /// The deck to solve.
+    pub case: Arc<dyn Case>,
+    /// What the panes on screen need beyond the defaults (stepper trace, transient).
+    pub detail: Detail,
+}
+
+impl std::fmt::Debug for SolveJob {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SolveJob")
+            .field("generation", &self.generation)
+            .field("system", &self.case.system().id())
+            .field("detail", &self.detail)
+            .finish()
+    }
+}
+
+impl PartialEq for SolveJob {
+    fn eq(&self, other: &Self) -> bool {
+        self.generation == other.generation
+            && self.detail == other.detail
+            && self.case.system().id() == other.case.system().id()
+            && self.case.text() == other.case.text()
+    }
 }
 
 /// Side effects requested by [`App::handle`].
@@ -228,13 +201,11 @@ pub struct App {
     pub redo: Vec<(DeckDoc, Option<&'static str>)>,
     /// Last submitted solve generation.
     pub generation: u64,
-    /// Request of the last submitted solve.
-    pub last_request: Request,
+    /// What the last submitted solve was asked for.
+    pub last_request: Detail,
     /// Solver state.
     pub solve: SolveState,
-    /// Newest accepted solution.
-    pub analysis: Option<Arc<Analysis>>,
-    /// The system-independent view of `analysis` (tables, charts), built once per solve.
+    /// The newest accepted solution's view (tables, charts, trace, thermal).
     pub view: Option<Arc<View>>,
     /// Selected roller (0-based).
     pub roller_sel: usize,
@@ -267,6 +238,7 @@ impl App {
     pub fn new(deck: DeckDoc, path: Option<PathBuf>) -> App {
         let deck_text = deck.text();
         let display_units = deck.units();
+        let fields = deck.fields();
         App {
             deck,
             path,
@@ -275,16 +247,15 @@ impl App {
             display_units,
             focus: Pane::Inputs,
             size: (80, 24),
-            fields: deck_io::field_list(),
+            fields,
             input_sel: 0,
             mode: Mode::Normal,
             dirty_keys: BTreeMap::new(),
             undo: Vec::new(),
             redo: Vec::new(),
             generation: 0,
-            last_request: Request::default(),
+            last_request: Detail::default(),
             solve: SolveState::Idle,
-            analysis: None,
             view: None,
             roller_sel: 0,
             chart_laminae: false,
@@ -300,6 +271,35 @@ impl App {
     /// The first solve.
     pub fn start(&mut self) -> Vec<Command> {
         vec![self.submit()]
+    }
+
+    /// The panes the deck's bearing system offers, in Tab order.
+    pub fn panes(&self) -> Vec<Pane> {
+        self.deck.system().panes().iter().map(|p| p.kind).collect()
+    }
+
+    /// A pane's title as the deck's bearing system names it ("Rollers", "Balls").
+    pub fn pane_title(&self, pane: Pane) -> &'static str {
+        self.deck
+            .system()
+            .panes()
+            .iter()
+            .find(|p| p.kind == pane)
+            .map_or("", |p| p.title)
+    }
+
+    /// The pane `by` places after (before, if negative) the focused one, cyclically.
+    fn pane_offset(&self, by: isize) -> Pane {
+        let panes = self.panes();
+        let n = panes.len().max(1) as isize;
+        let here = panes.iter().position(|p| *p == self.focus).unwrap_or(0) as isize;
+        let i = (here + by).rem_euclid(n) as usize;
+        panes.get(i).copied().unwrap_or(Pane::Inputs)
+    }
+
+    /// What one rolling element is called ("roller", "ball").
+    pub fn element_name(&self) -> &'static str {
+        self.deck.system().element_name()
     }
 
     /// True if the deck's text differs from the last saved/opened text (so undoing back
@@ -336,29 +336,21 @@ impl App {
     /// What the visible panes need from the solver: the stepper's trace and the thermal
     /// transient only when their panes are on screen; the other stages (contact, heat)
     /// take `Request`'s defaults.
-    pub fn wanted_request(&self) -> Request {
-        Request {
-            trace_roller: self.visible(Pane::Stepper).then_some(self.roller_sel),
-            thermal_transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
-            thermal: self.deck.thermal_model(),
-            ..Request::default()
+    pub fn wanted_request(&self) -> Detail {
+        Detail {
+            trace_element: self.visible(Pane::Stepper).then_some(self.roller_sel),
+            transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
         }
     }
 
-    /// Number of rollers in the newest solution (or the deck).
+    /// Number of rolling elements in the newest solution (0 before the first).
     pub fn roller_count(&self) -> usize {
-        self.analysis
-            .as_deref()
-            .map(view_model::roller_count)
-            .unwrap_or(self.deck.bearing().geometry.roller_count)
+        self.view.as_deref().map_or(0, view_element_count)
     }
 
     /// Number of recorded stepper steps.
     pub fn trace_len(&self) -> usize {
-        self.analysis
-            .as_deref()
-            .map(view_model::trace_len)
-            .unwrap_or(0)
+        self.view.as_deref().map_or(0, view_trace_len)
     }
 
     fn submit(&mut self) -> Command {
@@ -367,8 +359,8 @@ impl App {
         self.solve = SolveState::Running;
         Command::Solve(Box::new(SolveJob {
             generation: self.generation,
-            bearing: self.deck.bearing().clone(),
-            request: self.last_request.clone(),
+            case: self.deck.case(),
+            detail: self.last_request,
         }))
     }
 
@@ -376,8 +368,8 @@ impl App {
     fn resolve_if_needed(&mut self) -> Vec<Command> {
         let want = self.wanted_request();
         let have = &self.last_request;
-        let need_trace = want.trace_roller.is_some() && want.trace_roller != have.trace_roller;
-        let need_thermal = want.thermal_transient && !have.thermal_transient;
+        let need_trace = want.trace_element.is_some() && want.trace_element != have.trace_element;
+        let need_thermal = want.transient && !have.transient;
         if need_trace || need_thermal {
             vec![self.submit()]
         } else {
@@ -415,19 +407,18 @@ impl App {
                     return Vec::new(); // stale: a newer job is pending
                 }
                 match outcome {
-                    Ok(a) => {
-                        let s = view_model::solve_summary(&a);
+                    Ok(view) => {
+                        let s = view.stats;
                         self.solve = SolveState::Solved {
                             iterations: s.iterations,
-                            roller_iterations: s.roller_iterations,
-                            wall_ms: s.wall_ms,
+                            roller_iterations: s.inner_iterations,
+                            wall_ms: s.wall_time_s * 1e3,
                         };
                         self.roller_sel = self
                             .roller_sel
-                            .min(view_model::roller_count(&a).saturating_sub(1));
-                        self.step = self.step.min(view_model::trace_len(&a).saturating_sub(1));
-                        self.view = Some(Arc::new(spherical_roller::view::view(&a)));
-                        self.analysis = Some(a);
+                            .min(view_element_count(&view).saturating_sub(1));
+                        self.step = self.step.min(view_trace_len(&view).saturating_sub(1));
+                        self.view = Some(view);
                         // these edits are now reflected in the results
                         self.dirty_keys.retain(|_, g| *g > generation);
                     }
@@ -465,6 +456,11 @@ impl App {
                 self.path = Some(path);
                 self.dirty_keys.clear();
                 self.input_sel = 0;
+                // another deck may be another bearing system: its fields and panes
+                self.fields = self.deck.fields();
+                if !self.panes().contains(&self.focus) {
+                    self.focus = Pane::Inputs;
+                }
                 vec![self.submit()]
             }
             AppEvent::Opened(Err(e)) => {
@@ -622,11 +618,11 @@ impl App {
                 self.chart_laminae = !self.chart_laminae;
                 Vec::new()
             }
-            KeyCode::Tab => self.focus_to(self.focus.offset(1)),
-            KeyCode::BackTab => self.focus_to(self.focus.offset(-1)),
-            KeyCode::Char(d @ '1'..='5') => {
+            KeyCode::Tab => self.focus_to(self.pane_offset(1)),
+            KeyCode::BackTab => self.focus_to(self.pane_offset(-1)),
+            KeyCode::Char(d @ '1'..='9') => {
                 let i = (d as usize).saturating_sub('1' as usize);
-                match Pane::ALL.get(i) {
+                match self.panes().get(i) {
                     Some(p) => self.focus_to(*p),
                     None => Vec::new(),
                 }
@@ -679,7 +675,7 @@ impl App {
                 self.input_sel = step(self.input_sel, self.fields.len());
                 Vec::new()
             }
-            Pane::Rollers | Pane::Load | Pane::Stepper => {
+            Pane::Elements | Pane::Chart | Pane::Stepper => {
                 let before = self.roller_sel;
                 self.roller_sel = step(self.roller_sel, self.roller_count());
                 if before != self.roller_sel {
@@ -708,7 +704,7 @@ impl App {
                 }
                 Vec::new()
             }
-            Pane::Load | Pane::Rollers => {
+            Pane::Chart | Pane::Elements => {
                 let n = self.roller_count();
                 if n > 0 {
                     self.roller_sel =
@@ -734,7 +730,7 @@ impl App {
                 }
                 Vec::new()
             }
-            Pane::Rollers | Pane::Load => {
+            Pane::Elements | Pane::Chart if self.panes().contains(&Pane::Stepper) => {
                 self.step = 0;
                 self.focus_to(Pane::Stepper)
             }
@@ -777,7 +773,7 @@ impl App {
             KeyCode::Up | KeyCode::Down => {
                 // choice fields: cycle through the allowed values
                 let key_path = self.fields.get(self.input_sel).map(|f| f.key);
-                if let Some(list) = key_path.and_then(deck_io::choices) {
+                if let Some(list) = key_path.and_then(|k| self.deck.choices(k)) {
                     let n = list.len();
                     if n > 0 {
                         let cur = list.iter().position(|c| *c == buffer.trim());
@@ -921,6 +917,16 @@ impl App {
         self.mode = Mode::Prompt { kind, buffer };
         Vec::new()
     }
+}
+
+/// Rows of the view's element table.
+fn view_element_count(view: &View) -> usize {
+    view.screen_table().map_or(0, |t| t.rows.len())
+}
+
+/// Steps of the view's stepper trace.
+fn view_trace_len(view: &View) -> usize {
+    view.trace.as_ref().map_or(0, |t| t.steps.len())
 }
 
 /// Every key binding, for the help overlay and the README: (keys, context, action).

@@ -1,14 +1,15 @@
-//! Thin adapter between the TUI and [`crate::deck`]: the only TUI file that knows how a
-//! deck is parsed, edited, converted and saved.
+//! Thin adapter between the TUI and a bearing system's deck ([`Case`]): the only TUI file
+//! that knows how a deck is parsed, edited and saved.
 //!
 //! Values are shown and typed in *display* units, which the `u` key flips between SI
 //! and US without touching the deck: an edit typed in the other system is converted to
-//! the deck's own units before [`Deck::set`] validates and applies it.
+//! the deck's own units before [`Case::with_value`] validates and applies it.
 
 use std::path::Path;
+use std::sync::Arc;
 
-use crate::bearings::spherical_roller::Bearing;
-use crate::deck::{self, Deck, DeckError, DeckErrors, FieldKind, FieldSpec};
+use crate::bearings::{self, BearingSystem, Case};
+use crate::deck::{DeckError, DeckErrors, FieldKind, FieldMeta};
 
 use crate::units::Units;
 
@@ -39,54 +40,9 @@ pub struct FieldInfo {
     pub label: &'static str,
 }
 
-/// Every editable field, in deck order.
-pub fn field_list() -> Vec<FieldInfo> {
-    deck::fields()
-        .iter()
-        .map(|s| FieldInfo {
-            key: s.key,
-            group: s.group,
-            label: s.label,
-        })
-        .collect()
-}
-
-/// Unit label of `key` in `units` (empty for dimensionless and choices).
-pub fn unit(key: &str, units: Units) -> &'static str {
-    match deck::field(key) {
-        Some(s) if matches!(s.kind, FieldKind::Real) => s.unit(units),
-        _ => "",
-    }
-}
-
-/// The allowed values of a choice field (`None` for numbers).
-pub fn choices(key: &str) -> Option<&'static [&'static str]> {
-    match deck::field(key)?.kind {
-        FieldKind::Choice(list) => Some(list),
-        _ => None,
-    }
-}
-
-/// Allowed values of `key` in `units`, for inline validation messages.
-pub fn allowed(key: &str, units: Units) -> String {
-    match deck::field(key) {
-        Some(FieldSpec {
-            kind: FieldKind::Choice(list),
-            ..
-        }) => format!("one of {}", list.join(", ")),
-        Some(s) => s.allowed(units),
-        None => String::new(),
-    }
-}
-
 /// Formats a number to 6 significant digits without trailing zeros (the deck's format).
 pub fn fmt_num(v: f64) -> String {
     crate::deck::format_short(v)
-}
-
-/// Default deck text (the shipped aerospace deck).
-pub fn default_text() -> String {
-    deck::DEFAULT_DECK.to_string()
 }
 
 /// One compact line per error, for the status bar and the inline edit error.
@@ -104,35 +60,48 @@ fn describe(errors: &DeckErrors) -> String {
         .join("; ")
 }
 
-/// A deck under edit.
-#[derive(Debug, Clone)]
+/// A deck under edit: a validated case of some bearing system. Immutable and shared: an
+/// edit makes a new case, so undo keeps the old one and a solve job holds its own.
+#[derive(Clone)]
 pub struct DeckDoc {
-    deck: Deck,
+    case: Arc<dyn Case>,
+}
+
+impl std::fmt::Debug for DeckDoc {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("DeckDoc")
+            .field("system", &self.system_id())
+            .field("source", &self.case.source_name())
+            .finish()
+    }
 }
 
 impl PartialEq for DeckDoc {
     fn eq(&self, other: &Self) -> bool {
-        self.deck.units == other.deck.units && self.text() == other.text()
+        self.system_id() == other.system_id()
+            && self.units() == other.units()
+            && self.text() == other.text()
     }
 }
 
 impl DeckDoc {
-    /// Parses and validates deck text; errors are readable lines with key and line.
+    /// Parses and validates deck text of any system (its `type`); errors are readable
+    /// lines with key and line.
     pub fn parse(text: &str, source_name: &str) -> Result<DeckDoc, String> {
-        Deck::parse(text, source_name)
-            .map(|deck| DeckDoc { deck })
+        bearings::load_case(text, source_name, &[])
+            .map(DeckDoc::from_case)
             .map_err(|e| e.to_string())
     }
 
-    /// Wraps an already parsed deck (e.g. the CLI's, with `--set` overrides applied).
-    pub fn from_deck(deck: Deck) -> DeckDoc {
-        DeckDoc { deck }
+    /// Wraps an already loaded case (e.g. the CLI's, with `--set` overrides applied).
+    pub fn from_case(case: Box<dyn Case>) -> DeckDoc {
+        DeckDoc { case: case.into() }
     }
 
     /// Reads and parses a deck file.
     pub fn load(path: &Path) -> Result<DeckDoc, String> {
-        Deck::load(path)
-            .map(|deck| DeckDoc { deck })
+        bearings::load_file(path, &[])
+            .map(DeckDoc::from_case)
             .map_err(|e| e.to_string())
     }
 
@@ -140,69 +109,115 @@ impl DeckDoc {
     /// On failure the existing file is untouched. Links are saved through, read-only
     /// decks refused (see [`crate::files`]); the result says how the file was written.
     pub fn save(&self, path: &Path) -> Result<crate::files::Written, String> {
-        self.deck.save(path).map_err(|e| e.to_string())
+        self.case.save(path).map_err(|e| e.to_string())
     }
 
     /// Unit system the deck is written in.
     pub fn units(&self) -> Units {
-        self.deck.units
+        self.case.units()
     }
 
-    /// The resolved SI bearing.
-    pub fn bearing(&self) -> &Bearing {
-        &self.deck.bearing
+    /// The validated case (what the solver takes).
+    pub fn case(&self) -> Arc<dyn Case> {
+        Arc::clone(&self.case)
     }
 
-    /// The wrapped deck.
-    pub fn deck(&self) -> &Deck {
-        &self.deck
+    /// The deck's bearing system.
+    pub fn system(&self) -> &'static dyn BearingSystem {
+        self.case.system()
     }
 
     /// The deck's bearing system (its `type`).
     pub fn system_id(&self) -> &'static str {
-        crate::bearings::spherical_roller::SYSTEM_ID
+        self.case.system().id()
     }
 
     /// The deck's name.
     pub fn name(&self) -> &str {
-        &self.deck.bearing.name
+        self.case.name()
     }
 
-    /// True if the deck has a `[thermal]` model.
+    /// True if the deck has a thermal model (with its transient).
     pub fn has_thermal(&self) -> bool {
-        self.deck.thermal.is_some()
-    }
-
-    /// The deck's thermal network (None when absent or invalid; `check` reports why).
-    pub fn thermal_model(&self) -> Option<crate::thermal::ThermalModel> {
-        self.deck.thermal_model().ok().flatten()
+        self.case.has_transient()
     }
 
     /// The deck as text (what a save writes).
     pub fn text(&self) -> String {
-        self.deck.to_toml_string()
+        self.case.text()
+    }
+
+    /// Every editable field, in deck order.
+    pub fn fields(&self) -> Vec<FieldInfo> {
+        self.case
+            .fields()
+            .into_iter()
+            .map(|s| FieldInfo {
+                key: s.key,
+                group: s.group,
+                label: s.label,
+            })
+            .collect()
+    }
+
+    fn field(&self, key: &str) -> Option<&'static FieldMeta> {
+        self.case.fields().into_iter().find(|f| f.key == key)
+    }
+
+    /// Unit label of `key` in `units` (empty for dimensionless and choices).
+    pub fn unit(&self, key: &str, units: Units) -> &'static str {
+        match self.field(key) {
+            Some(s) if matches!(s.kind, FieldKind::Real) => s.unit(units),
+            _ => "",
+        }
+    }
+
+    /// The allowed values of a choice field (`None` for numbers).
+    pub fn choices(&self, key: &str) -> Option<&'static [&'static str]> {
+        match self.field(key)?.kind {
+            FieldKind::Choice(list) => Some(list),
+            _ => None,
+        }
+    }
+
+    /// Allowed values of `key` in `units`, for inline validation messages.
+    pub fn allowed(&self, key: &str, units: Units) -> String {
+        match self.field(key) {
+            Some(s) => match s.kind {
+                FieldKind::Choice(list) => format!("one of {}", list.join(", ")),
+                _ => s.allowed(units),
+            },
+            None => String::new(),
+        }
+    }
+
+    /// The value of real field `spec` in `display` units, 6 significant digits.
+    fn converted(&self, spec: &FieldMeta, display: Units) -> Option<String> {
+        let si = self.case.field_si(spec.key)?;
+        Some(fmt_num(spec.from_si(si, display)))
     }
 
     /// The value of `key` in `display` units: as written when those are the deck's
     /// units, else converted to 6 significant digits. `—` for unknown keys.
     pub fn value(&self, key: &str, display: Units) -> String {
-        let Some(spec) = deck::field(key) else {
+        let Some(spec) = self.field(key) else {
             return "—".into();
         };
-        match spec.kind {
-            FieldKind::Real if display != self.deck.units => {
-                fmt_num(spec.from_si(spec.get_si(&self.deck.bearing), display))
-            }
-            _ => self.deck.get(key).unwrap_or_else(|| "—".into()),
-        }
+        let converted = match spec.kind {
+            FieldKind::Real if display != self.units() => self.converted(spec, display),
+            _ => None,
+        };
+        converted
+            .or_else(|| self.case.get(key))
+            .unwrap_or_else(|| "—".into())
     }
 
     /// The value of `key` for the inputs pane: like [`DeckDoc::value`] but reals are
     /// always shown to 6 significant digits so the column lines up.
     pub fn display_value(&self, key: &str, display: Units) -> String {
-        match deck::field(key) {
+        match self.field(key) {
             Some(spec) if matches!(spec.kind, FieldKind::Real) => {
-                fmt_num(spec.from_si(spec.get_si(&self.deck.bearing), display))
+                self.converted(spec, display).unwrap_or_else(|| "—".into())
             }
             _ => self.value(key, display),
         }
@@ -212,7 +227,9 @@ impl DeckDoc {
     /// whole deck; on error the deck is unchanged and the message names the allowed
     /// range in `display` units.
     pub fn set_value(&mut self, key: &str, text: &str, display: Units) -> Result<(), String> {
-        let spec = deck::field(key).ok_or_else(|| format!("{key}: not editable"))?;
+        let spec = self
+            .field(key)
+            .ok_or_else(|| format!("{key}: not editable"))?;
         let text = text.trim();
         let deck_text = match spec.kind {
             FieldKind::Choice(list) => {
@@ -229,25 +246,30 @@ impl DeckDoc {
                 if integer && v.fract() != 0.0 {
                     return Err(format!(
                         "expected a whole number; {}",
-                        allowed(key, display)
+                        self.allowed(key, display)
                     ));
                 }
                 let si = if integer { v } else { spec.to_si(v, display) };
                 if !spec.in_range(si) {
-                    return Err(format!("out of range: {}", allowed(key, display)));
+                    return Err(format!("out of range: {}", self.allowed(key, display)));
                 }
                 if integer {
                     format!("{}", v as i64)
-                } else if display == self.deck.units {
+                } else if display == self.units() {
                     text.to_string()
                 } else {
                     // 12 significant digits: drops conversion noise (3.5000000000000004).
-                    let v = spec.from_si(si, self.deck.units);
+                    let v = spec.from_si(si, self.units());
                     let rounded: f64 = format!("{v:.11e}").parse().unwrap_or(v);
                     format!("{rounded:?}")
                 }
             }
         };
-        self.deck.set(key, &deck_text).map_err(|e| describe(&e))
+        let case = self
+            .case
+            .with_value(key, &deck_text)
+            .map_err(|e| describe(&e))?;
+        self.case = case.into();
+        Ok(())
     }
 }

@@ -6,8 +6,9 @@
 //! redraws only after events, so an idle workbench uses no CPU.
 //!
 //! Modules: [`app`] (state, transitions, key table), [`render`] (panes), [`view_model`]
-//! (the only reader of `Analysis`), [`deck_io`] (the only user of the deck module),
-//! [`worker`] (solver thread).
+//! (formatting of a solution's view), [`deck_io`] (the deck under edit, of any bearing
+//! system), [`worker`] (solver thread). Nothing here knows a particular bearing system:
+//! the panes, their titles and contents come from the deck's system and its view.
 
 pub mod app;
 pub mod deck_io;
@@ -31,7 +32,7 @@ use ratatui::Terminal;
 
 pub use app::{App, AppEvent, Command, Pane, KEYS};
 pub use deck_io::DeckDoc;
-pub use worker::{pipeline_solver, Solver, Worker};
+pub use worker::{session_solver, Solver, Worker};
 
 /// Opens the workbench on `deck_text` (read from `source_path`, if any) in the current
 /// terminal, and restores the terminal on every exit path. `color_eyre::install()` must
@@ -48,14 +49,14 @@ pub fn run_workbench(deck_text: &str, source_path: Option<PathBuf>) -> color_eyr
 /// Like [`run_workbench`] for a deck the caller already parsed (the CLI's, with any
 /// `--set` overrides). If the deck differs from the file at `source_path` (overrides
 /// applied), it starts marked unsaved.
-pub fn run_workbench_deck(
-    deck: crate::deck::Deck,
+pub fn run_workbench_case(
+    case: Box<dyn crate::bearings::Case>,
     source_path: Option<PathBuf>,
 ) -> color_eyre::Result<()> {
     let on_disk = source_path
         .as_ref()
         .and_then(|p| crate::deck::read_deck_text(p).ok());
-    let mut app = App::new(DeckDoc::from_deck(deck), source_path);
+    let mut app = App::new(DeckDoc::from_case(case), source_path);
     if let Some(text) = on_disk {
         app.saved_text = text;
     }
@@ -113,7 +114,7 @@ fn run_app(app: App) -> color_eyre::Result<()> {
     install_solver_panic_filter();
     let result = (|| -> color_eyre::Result<App> {
         spawn_input_thread(tx.clone())?;
-        let mut worker = Worker::spawn(tx.clone(), pipeline_solver())?;
+        let mut worker = Worker::spawn(tx.clone(), session_solver())?;
         run_loop(&mut terminal, app, &rx, &mut worker)
     })();
     let restored = ratatui::try_restore();

@@ -14,7 +14,6 @@ use ratatui::widgets::{
 use super::app::{App, Mode, Pane, PromptKind, SolveState, KEYS, MIN_SIZE};
 use super::deck_io;
 use super::view_model::{self, DASH};
-use crate::bearings::view::PaneKind;
 
 const ACCENT: Color = Color::Cyan;
 const INNER: Color = Color::Cyan;
@@ -45,11 +44,17 @@ impl Widget for &App {
             let [chart, side] =
                 Layout::horizontal([Constraint::Percentage(split), Constraint::Min(0)])
                     .areas(bottom);
+            let panes = self.panes();
+            let offered = |p: Pane| panes.contains(&p);
             render_pane(self, Pane::Inputs, left, buf);
-            render_pane(self, Pane::Rollers, top, buf);
-            render_pane(self, Pane::Load, chart, buf);
-            if self.focus == Pane::Stepper {
-                render_pane(self, Pane::Stepper, side, buf);
+            render_pane(self, Pane::Elements, top, buf);
+            render_pane(self, Pane::Chart, chart, buf);
+            // The side shows the stepper while it has the focus (or when the system
+            // has no thermal pane), else the thermal network.
+            if self.focus == Pane::Stepper || !offered(Pane::Thermal) {
+                if offered(Pane::Stepper) {
+                    render_pane(self, Pane::Stepper, side, buf);
+                }
             } else {
                 render_pane(self, Pane::Thermal, side, buf);
             }
@@ -110,8 +115,8 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
                 .add_modifier(Modifier::BOLD),
         ));
     }
-    for (i, p) in Pane::ALL.iter().enumerate() {
-        let label = format!(" {}:{} ", i + 1, pane_title(app, *p));
+    for (i, p) in app.panes().iter().enumerate() {
+        let label = format!(" {}:{} ", i + 1, app.pane_title(*p));
         let style = if *p == app.focus {
             Style::default().fg(Color::Black).bg(Color::White)
         } else if app.visible(*p) {
@@ -164,21 +169,6 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
 }
 
-/// A pane's title as the deck's bearing system names it ("Rollers", "Balls"), falling
-/// back to the pane's own name.
-fn pane_title(app: &App, pane: Pane) -> &'static str {
-    let kind = match pane {
-        Pane::Inputs => PaneKind::Inputs,
-        Pane::Rollers => PaneKind::Elements,
-        Pane::Load => PaneKind::Chart,
-        Pane::Thermal => PaneKind::Thermal,
-        Pane::Stepper => PaneKind::Stepper,
-    };
-    crate::bearings::system(app.deck.system_id())
-        .and_then(|s| s.panes().iter().find(|p| p.kind == kind))
-        .map_or(pane.title(), |p| p.title)
-}
-
 fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
     let focused = app.focus == pane;
     let style = if focused {
@@ -190,7 +180,7 @@ fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
         .borders(Borders::ALL)
         .border_style(style)
         .title(Span::styled(
-            format!(" {}{} ", pane_title(app, pane), extra),
+            format!(" {}{} ", app.pane_title(pane), extra),
             style,
         ))
 }
@@ -198,8 +188,8 @@ fn pane_block(app: &App, pane: Pane, extra: &str) -> Block<'static> {
 fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
     match pane {
         Pane::Inputs => render_inputs(app, area, buf),
-        Pane::Rollers => render_rollers(app, area, buf),
-        Pane::Load => render_load(app, area, buf),
+        Pane::Elements => render_rollers(app, area, buf),
+        Pane::Chart => render_load(app, area, buf),
         Pane::Thermal => render_thermal(app, area, buf),
         Pane::Stepper => render_stepper(app, area, buf),
     }
@@ -248,7 +238,7 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
             if dirty { "•" } else { " " },
             Style::default().fg(Color::Yellow),
         );
-        let unit = deck_io::unit(f.key, app.display_units);
+        let unit = app.deck.unit(f.key, app.display_units);
         let label = Span::raw(truncate(f.label, label_w));
         match (&app.mode, selected && app.focus == Pane::Inputs) {
             (
@@ -279,7 +269,7 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
                     Span::styled(after, edit),
                     Span::raw(format!(" {unit}")),
                 ]));
-                let allowed = deck_io::allowed(f.key, app.display_units);
+                let allowed = app.deck.allowed(f.key, app.display_units);
                 match error {
                     Some(e) => lines.push(Line::styled(
                         format!("  ✗ {e}"),
@@ -330,7 +320,7 @@ fn no_solution_text(app: &App) -> String {
 
 /// Title note when the panes show an older solution than the deck (last solve failed).
 fn stale_note(app: &App) -> &'static str {
-    match (&app.solve, &app.analysis) {
+    match (&app.solve, &app.view) {
         (SolveState::Failed(_), Some(_)) => " · last good solve",
         _ => "",
     }
@@ -339,7 +329,7 @@ fn stale_note(app: &App) -> &'static str {
 /// The element table (Rollers pane): the view's screen table, each column in its display
 /// unit and precision; `—` where a stage was not run.
 fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
-    let block = pane_block(app, Pane::Rollers, stale_note(app));
+    let block = pane_block(app, Pane::Elements, stale_note(app));
     let inner = block.inner(area);
     block.render(area, buf);
     let Some(view) = app.view.as_deref() else {
@@ -399,7 +389,7 @@ const SERIES_COLOURS: [Color; 2] = [INNER, OUTER];
 /// The Load pane: the view's bearing chart, or with `c` the selected element's chart.
 fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
     let Some(view) = app.view.as_deref() else {
-        let block = pane_block(app, Pane::Load, "");
+        let block = pane_block(app, Pane::Chart, "");
         let inner = block.inner(area);
         block.render(area, buf);
         Paragraph::new(no_solution_text(app)).render(inner, buf);
@@ -411,13 +401,13 @@ fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
         view.charts.first()
     };
     let Some(c) = chart else {
-        pane_block(app, Pane::Load, "").render(area, buf);
+        pane_block(app, Pane::Chart, "").render(area, buf);
         return;
     };
     let s = view_model::chart_series(c, app.display_units);
     let block = pane_block(
         app,
-        Pane::Load,
+        Pane::Chart,
         &format!(" · {}{}", s.title, stale_note(app)),
     );
     let mut datasets: Vec<Dataset> = s
@@ -478,9 +468,10 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     let inner = block.inner(area);
     block.render(area, buf);
     let view = app
-        .analysis
+        .view
         .as_deref()
-        .and_then(|a| view_model::thermal_view(a, app.display_units, app.thermal_node));
+        .and_then(|v| v.thermal.as_ref())
+        .map(|th| view_model::thermal_view(th, app.display_units, app.thermal_node));
     let Some(t) = view else {
         let msg = if app.deck.has_thermal() {
             "thermal results not available in this build"
@@ -562,24 +553,23 @@ fn bar_row(values: &[f64], max: f64) -> String {
 
 fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
     let n = app.trace_len();
+    let element = app.element_name();
     let extra = if n > 0 {
         format!(
-            " · roller {} · step {}/{}",
+            " · {element} {} · step {}/{}",
             app.roller_sel + 1,
             app.step + 1,
             n
         )
     } else {
-        format!(" · roller {}", app.roller_sel + 1)
+        format!(" · {element} {}", app.roller_sel + 1)
     };
     let block = pane_block(app, Pane::Stepper, &extra);
     let inner = block.inner(area);
     block.render(area, buf);
-    let view = app
-        .analysis
-        .as_deref()
-        .and_then(|a| view_model::trace_step(a, app.step, app.display_units));
-    let Some(v) = view else {
+    let trace = app.view.as_deref().and_then(|v| v.trace.as_ref());
+    let view = trace.and_then(|t| view_model::trace_step(t, app.step, app.display_units));
+    let (Some(trace), Some(v)) = (trace, view) else {
         let msg = match &app.solve {
             SolveState::Failed(r) => format!("no trace: {r}"),
             SolveState::Running => "recording the equilibrium iterations…".into(),
@@ -601,48 +591,35 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
             ])
         })
         .collect();
-    let lmax = v
-        .inner_load
-        .iter()
-        .chain(&v.outer_load)
-        .copied()
-        .fold(0.0, f64::max);
-    let amax = v
-        .inner_approach
-        .iter()
-        .chain(&v.outer_approach)
-        .copied()
-        .fold(0.0, f64::max);
+    // Each group of bar rows shares one full scale (loads with loads, approaches with
+    // approaches), listed after the rows.
+    let mut scales: Vec<(usize, f64, usize, &str)> = Vec::new();
+    for b in &v.bars {
+        let max = b.values.iter().copied().fold(0.0, f64::max);
+        match scales.iter_mut().find(|s| s.0 == b.group) {
+            Some(s) => s.1 = s.1.max(max),
+            None => scales.push((b.group, max, b.precision, b.unit)),
+        }
+    }
     lines.push(Line::raw(""));
-    lines.push(Line::from(vec![
-        Span::styled(format!("{:<lw$}", "inner load"), Style::default().fg(DIM)),
-        Span::styled(bar_row(&v.inner_load, lmax), Style::default().fg(INNER)),
-    ]));
-    lines.push(Line::from(vec![
-        Span::styled(format!("{:<lw$}", "outer load"), Style::default().fg(DIM)),
-        Span::styled(bar_row(&v.outer_load, lmax), Style::default().fg(OUTER)),
-    ]));
-    lines.push(Line::from(vec![
-        Span::styled(
-            format!("{:<lw$}", "inner approach"),
+    for b in &v.bars {
+        let max = scales.iter().find(|s| s.0 == b.group).map_or(0.0, |s| s.1);
+        let colour = if b.side == 0 { INNER } else { OUTER };
+        lines.push(Line::from(vec![
+            Span::styled(format!("{:<lw$}", b.label), Style::default().fg(DIM)),
+            Span::styled(bar_row(&b.values, max), Style::default().fg(colour)),
+        ]));
+    }
+    if !scales.is_empty() {
+        let full: Vec<String> = scales
+            .iter()
+            .map(|(_, max, prec, unit)| format!("{max:.prec$} {unit}"))
+            .collect();
+        lines.push(Line::styled(
+            format!("{:<lw$}{}", "full scale", full.join(" / ")),
             Style::default().fg(DIM),
-        ),
-        Span::styled(bar_row(&v.inner_approach, amax), Style::default().fg(INNER)),
-    ]));
-    lines.push(Line::from(vec![
-        Span::styled(
-            format!("{:<lw$}", "outer approach"),
-            Style::default().fg(DIM),
-        ),
-        Span::styled(bar_row(&v.outer_approach, amax), Style::default().fg(OUTER)),
-    ]));
-    lines.push(Line::styled(
-        format!(
-            "{:<lw$}{:.1} {} / {:.5} {}",
-            "full scale", lmax, v.load_unit, amax, v.approach_unit
-        ),
-        Style::default().fg(DIM),
-    ));
+        ));
+    }
     let used = lines.len() as u16 + 1;
     let [top, history] =
         Layout::vertical([Constraint::Length(used), Constraint::Min(0)]).areas(inner);
@@ -650,17 +627,14 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
     if history.height < 3 {
         return;
     }
-    let Some(a) = app.analysis.as_deref() else {
-        return;
-    };
-    let rows = view_model::trace_rows(a, app.display_units);
+    let rows = view_model::trace_rows(trace, app.display_units);
     let shown = history.height.saturating_sub(1) as usize;
     let first = app
         .step
         .saturating_sub(shown / 2)
         .min(rows.len().saturating_sub(shown));
     let mut hist: Vec<Line> = vec![Line::styled(
-        view_model::trace_header(app.display_units),
+        view_model::trace_header(trace, app.display_units),
         Style::default().fg(ACCENT),
     )];
     for (i, r) in rows.iter().enumerate().skip(first).take(shown) {
@@ -722,7 +696,7 @@ fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Help => "any key closes help",
         Mode::Normal => match app.focus {
             Pane::Inputs => "Tab pane · jk move · Enter edit · u units · ^z/^y undo/redo · ^s save · ? help · q quit",
-            Pane::Rollers | Pane::Load => "Tab pane · jk roller · Enter stepper · c chart · u units · ^s save · ? help · q quit",
+            Pane::Elements | Pane::Chart => "Tab pane · jk roller · Enter stepper · c chart · u units · ^s save · ? help · q quit",
             Pane::Stepper => "Tab pane · hl step · PgUp/PgDn ±10 · jk roller · u units · ? help · q quit",
             Pane::Thermal => "Tab pane · jk node · u units · ^s save · ? help · q quit",
         },

@@ -15,8 +15,9 @@ use ratatui::Terminal;
 
 use super::app::{Mode, PromptKind, SolveState};
 use super::*;
-use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
-use crate::bearings::SolveError;
+use crate::bearings::view::View;
+use crate::bearings::{Detail, SolveError};
+use crate::numerics::cancel::Cancel;
 
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
@@ -29,10 +30,17 @@ fn ctrl(c: char) -> AppEvent {
 }
 
 /// Solves a job synchronously, with the wall time zeroed so snapshots are stable.
-fn solve_now(job: &app::SolveJob) -> Analysis {
-    let mut a = pipeline::run(&job.bearing, &job.request, None).expect("aerospace solves");
-    a.load.stats.wall_time_s = 0.0;
-    a
+fn solve_now(job: &app::SolveJob) -> View {
+    solve_view(job).expect("the deck solves")
+}
+
+/// Solves a job synchronously through its system's session (as the worker does), with
+/// the wall time zeroed so snapshots are stable.
+fn solve_view(job: &app::SolveJob) -> Result<View, SolveError> {
+    let mut session = job.case.system().session();
+    let mut v = session.solve(&*job.case, job.detail, &Cancel::NONE)?.view();
+    v.stats.wall_time_s = 0.0;
+    Ok(v)
 }
 
 /// Feeds every solve command back as a result, like the worker would (but inline).
@@ -119,7 +127,8 @@ fn tui_edit_commits_marks_and_solves() {
         panic!("expected one solve, got {cmds:?}");
     };
     assert_eq!(job.generation, app.generation);
-    assert!((job.bearing.operating.radial_load_n - 4000.0 * crate::units::LBF_N).abs() < 1e-6);
+    let radial = job.case.field_si("operating.radial_load").expect("a field");
+    assert!((radial - 4000.0 * crate::units::LBF_N).abs() < 1e-6);
     run_sync(&mut app, cmds);
     assert!(app.dirty_keys.is_empty());
     assert!(matches!(app.solve, SolveState::Solved { .. }));
@@ -276,19 +285,19 @@ fn tui_save_prompt_and_quit_prompt() {
 
 #[test]
 fn tui_quit_without_changes_is_immediate() {
-    let mut app = solved_app(Pane::Rollers, 80, 24);
+    let mut app = solved_app(Pane::Elements, 80, 24);
     assert_eq!(app.handle(ch('q')), vec![Command::Quit]);
 }
 
 #[test]
 fn tui_stepper_navigation() {
-    let mut app = solved_app(Pane::Rollers, 80, 24);
+    let mut app = solved_app(Pane::Elements, 80, 24);
     app.handle(ch('j'));
     assert_eq!(app.roller_sel, 1);
     let cmds = app.handle(key(KeyCode::Enter));
     assert_eq!(app.focus, Pane::Stepper);
     match cmds.as_slice() {
-        [Command::Solve(job)] => assert_eq!(job.request.trace_roller, Some(1)),
+        [Command::Solve(job)] => assert_eq!(job.detail.trace_element, Some(1)),
         c => panic!("expected a traced solve, got {c:?}"),
     }
     run_sync(&mut app, cmds);
@@ -315,7 +324,7 @@ fn tui_stepper_navigation() {
     // another roller: new trace requested, step reset
     let cmds = app.handle(ch('j'));
     assert_eq!(app.step, 0);
-    assert!(matches!(cmds.as_slice(), [Command::Solve(j)] if j.request.trace_roller == Some(2)));
+    assert!(matches!(cmds.as_slice(), [Command::Solve(j)] if j.detail.trace_element == Some(2)));
 }
 
 #[test]
@@ -345,15 +354,12 @@ fn tui_stale_result_is_dropped() {
 #[test]
 fn tui_thermal_pane_requests_transient_only_when_visible() {
     let mut app = solved_app(Pane::Inputs, 80, 24);
-    assert!(!app.last_request.thermal_transient);
-    assert_eq!(app.last_request.trace_roller, None);
+    assert!(!app.last_request.transient);
+    assert_eq!(app.last_request.trace_element, None);
     // the aerospace deck has no [thermal] table: nothing extra requested
     let cmds = app.handle(ch('4'));
     assert_eq!(app.focus, Pane::Thermal);
-    assert_eq!(
-        app.wanted_request().thermal_transient,
-        app.deck.has_thermal()
-    );
+    assert_eq!(app.wanted_request().transient, app.deck.has_thermal());
     if !app.deck.has_thermal() {
         assert!(cmds.is_empty());
     }
@@ -380,7 +386,7 @@ fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
     perform(&mut app, cmds, &mut worker);
     assert!(!app.unsaved(), "{:?}", app.message);
     let back = DeckDoc::load(&path).expect("reload");
-    assert_eq!(back.bearing(), app.deck.bearing());
+    assert_eq!(back.text(), app.deck.text());
     assert_eq!(back, app.deck);
     assert!(dir.path().join("deck.toml.bak").exists());
 
@@ -445,9 +451,10 @@ fn snap(name: &str, app: &App, w: u16, h: u16) {
 #[test]
 fn tui_snapshot_every_pane() {
     for (w, h) in [(80, 24), (120, 40)] {
-        for pane in Pane::ALL {
+        for pane in deck_app().panes() {
             let app = solved_app(pane, w, h);
-            snap(&format!("pane_{}", pane.title().to_lowercase()), &app, w, h);
+            let title = app.pane_title(pane).to_lowercase();
+            snap(&format!("pane_{title}"), &app, w, h);
         }
     }
 }
@@ -469,12 +476,12 @@ fn tui_snapshot_overlays_and_modes() {
         app.handle(key(KeyCode::Enter));
         snap("editing", &app, w, h);
 
-        let mut app = solved_app(Pane::Load, w, h);
+        let mut app = solved_app(Pane::Chart, w, h);
         app.handle(ch('j'));
         app.handle(ch('c'));
         snap("lamina_chart", &app, w, h);
 
-        let mut app = solved_app(Pane::Rollers, w, h);
+        let mut app = solved_app(Pane::Elements, w, h);
         app.handle(ch('u'));
         snap("rollers_si", &app, w, h);
 
@@ -498,15 +505,15 @@ fn tui_snapshot_overlays_and_modes() {
         outcome: Err("solver panicked: deliberate".into()),
     });
     app.handle(key(KeyCode::Esc));
-    app.analysis = None;
     app.view = None;
-    app.focus = Pane::Rollers;
+    app.view = None;
+    app.focus = Pane::Elements;
     snap("failed_solve", &app, 80, 24);
 }
 
 #[test]
 fn tui_tiny_sizes_do_not_panic() {
-    for pane in Pane::ALL {
+    for pane in deck_app().panes() {
         let mut app = solved_app(pane, 80, 24);
         for (w, h) in [
             (1, 1),
@@ -532,8 +539,8 @@ fn tui_tiny_sizes_do_not_panic() {
 fn job(generation: u64) -> app::SolveJob {
     app::SolveJob {
         generation,
-        bearing: crate::bearings::spherical_roller::Bearing::example_aerospace(),
-        request: Request::default(),
+        case: deck_app().deck.case(),
+        detail: Detail::default(),
     }
 }
 
@@ -611,7 +618,7 @@ fn tui_worker_panic_becomes_failed_solve() {
     app.handle(ev);
     assert!(matches!(app.solve, SolveState::Failed(ref m) if m.contains("panicked")));
     // the worker survives and solves the next job
-    let ok: Solver = pipeline_solver();
+    let ok: Solver = session_solver();
     drop(worker);
     let (tx, rx) = mpsc::channel();
     let mut worker = Worker::spawn(tx, ok).expect("spawn");
@@ -629,7 +636,7 @@ fn tui_worker_panic_becomes_failed_solve() {
 fn tui_event_loop_end_to_end_on_test_backend() {
     let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
     let (tx, rx) = mpsc::channel();
-    let mut worker = Worker::spawn(tx.clone(), pipeline_solver()).expect("spawn");
+    let mut worker = Worker::spawn(tx.clone(), session_solver()).expect("spawn");
     let app = deck_app();
     let script = std::thread::spawn({
         let tx = tx.clone();
@@ -643,9 +650,9 @@ fn tui_event_loop_end_to_end_on_test_backend() {
     let app = run_loop(&mut terminal, app, &rx, &mut worker).expect("loop");
     let _ = script.join();
     assert!(app.quit);
-    assert_eq!(app.focus, Pane::Rollers);
+    assert_eq!(app.focus, Pane::Elements);
     assert_eq!(app.roller_sel, 2);
-    assert!(app.analysis.is_some());
+    assert!(app.view.is_some());
     let screen = terminal.backend().to_string();
     assert!(screen.contains("Rollers"), "{screen}");
 }
@@ -668,9 +675,9 @@ fn tui_snapshot_shipped_decks() {
             .unwrap_or_default();
         let deck = DeckDoc::load(&path).expect("shipped deck loads");
         for (pane, w, h) in [
-            (Pane::Rollers, 80, 24),
-            (Pane::Load, 80, 24),
-            (Pane::Rollers, 120, 40),
+            (Pane::Elements, 80, 24),
+            (Pane::Chart, 80, 24),
+            (Pane::Elements, 120, 40),
         ] {
             let mut app = App::new(
                 deck.clone(),
@@ -680,12 +687,7 @@ fn tui_snapshot_shipped_decks() {
             let cmds = app.start();
             for c in cmds {
                 if let Command::Solve(job) = c {
-                    let outcome = pipeline::run(&job.bearing, &job.request, None)
-                        .map(|mut a| {
-                            a.load.stats.wall_time_s = 0.0;
-                            Arc::new(a)
-                        })
-                        .map_err(|e| e.to_string());
+                    let outcome = solve_view(&job).map(Arc::new).map_err(|e| e.to_string());
                     app.handle(AppEvent::Solved {
                         generation: job.generation,
                         outcome,
@@ -694,7 +696,7 @@ fn tui_snapshot_shipped_decks() {
             }
             app.focus = pane;
             snap(
-                &format!("deck_{stem}_{}", pane.title().to_lowercase()),
+                &format!("deck_{stem}_{}", app.pane_title(pane).to_lowercase()),
                 &app,
                 w,
                 h,
@@ -733,18 +735,20 @@ fn tui_choice_field_cycles_with_arrows() {
         app.deck.value("lubricant.film_model", app.display_units),
         "dowson-higginson"
     );
-    assert_eq!(
-        app.deck.bearing().lubricant.film_model,
-        crate::bearings::spherical_roller::FilmModel::DowsonHigginson
-    );
+    // the case behind the deck took it: the choice's index in the film model list
+    let film = app.deck.case().field_si("lubricant.film_model");
+    let dh = crate::deck::FILM_MODELS
+        .iter()
+        .position(|m| *m == "dowson-higginson");
+    assert_eq!(film.map(|f| f as usize), dh);
 }
 
 #[test]
 fn tui_parsed_deck_text_round_trips_unchanged() {
-    // run_workbench_deck compares the file text with the deck's text to decide
+    // run_workbench_case compares the file text with the deck's text to decide
     // "unsaved": an unmodified deck must give back its file byte for byte.
-    let deck = crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "x").expect("deck");
-    let doc = DeckDoc::from_deck(deck);
+    let case = crate::bearings::load_case(crate::deck::DEFAULT_DECK, "x", &[]).expect("deck");
+    let doc = DeckDoc::from_case(case);
     assert_eq!(doc.text(), crate::deck::DEFAULT_DECK);
 }
 
@@ -816,7 +820,7 @@ fn tui_event_loop_survives_solver_panic() {
     let _ = forward.join();
     drop(worker);
     assert!(app.quit);
-    assert_eq!(app.focus, Pane::Rollers);
+    assert_eq!(app.focus, Pane::Elements);
     match &app.solve {
         SolveState::Failed(m) => assert!(m.contains("deliberate solver panic"), "{m}"),
         s => panic!("expected a failed solve, got {s:?}"),
@@ -860,8 +864,8 @@ fn tui_quit_prompt_save_without_file_asks_for_a_name_then_quits() {
     assert!(app.quit, "{:?}", app.message);
     assert!(target.exists());
     assert_eq!(
-        DeckDoc::load(&target).expect("load").bearing(),
-        app.deck.bearing()
+        DeckDoc::load(&target).expect("load").text(),
+        app.deck.text()
     );
 }
 
@@ -877,11 +881,12 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
     g.roller_crown_radius_m = 1e4;
     g.inner_crown_radius_m = 1e4;
     g.outer_crown_radius_m = 1e4;
-    let req = Request {
+    let req = crate::bearings::spherical_roller::pipeline::Request {
         trace_roller: Some(0),
-        ..Request::default()
+        ..Default::default()
     };
-    let a = pipeline::run(&b, &req, None).unwrap_or_else(|e| panic!("{e}"));
+    let a = crate::bearings::spherical_roller::pipeline::run(&b, &req, None)
+        .unwrap_or_else(|e| panic!("{e}"));
     let flat = |v: &[f64], what: &str| {
         let (lo, hi) = v
             .iter()
@@ -899,9 +904,11 @@ fn load_chart_is_the_load_per_length_along_the_roller() {
         / b.geometry.effective_length_m
         * 1e-3;
     assert!((inner[0].1 / q_over_l - 1.0).abs() < 1e-9);
-    let last = view_model::trace_len(&a) - 1;
-    let step = view_model::trace_step(&a, last, crate::units::Units::Si).expect("a step");
-    flat(&step.inner_load, "stepper bars");
+    let trace = v.trace.as_ref().expect("a trace");
+    let last = trace.steps.len() - 1;
+    let step = view_model::trace_step(trace, last, crate::units::Units::Si).expect("a step");
+    let inner_load = &step.bars.first().expect("bars").values;
+    flat(inner_load, "stepper bars");
 }
 
 /// While only "terminal too small" is shown, keys do nothing unseen (Tab and `u` used to
@@ -979,8 +986,8 @@ fn save_as_asks_before_replacing_an_existing_file() {
     assert_eq!(app.mode, Mode::Normal);
     assert_eq!(app.path.as_deref(), Some(target.as_path()));
     assert_eq!(
-        DeckDoc::load(&target).expect("load").bearing(),
-        app.deck.bearing()
+        DeckDoc::load(&target).expect("load").text(),
+        app.deck.text()
     );
     // Now it is the deck's own file: save as onto it saves without asking.
     let cmds = type_target(&mut app);

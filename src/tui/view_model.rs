@@ -1,14 +1,9 @@
-//! The one place where the TUI reads an [`Analysis`].
-//!
-//! Every function here turns solver output into plain rows and series (strings with
-//! fixed precision, or `f64` pairs for charts) in the chosen display [`Units`]. Panes
-//! never touch `Analysis` directly, so when a new pipeline stage lands (stresses, film,
-//! spin, heat, thermal) only this module changes: fill the matching `—` cell or the
-//! [`ThermalView`].
+//! Formatting of a solution's [`View`] for the panes: every function here turns the
+//! view's SI tables, charts, trace and thermal results into plain rows and series
+//! (strings with fixed precision, or `f64` pairs for charts) in the chosen display
+//! [`Units`]. The view comes from the bearing system; nothing here knows which one.
 
-use crate::bearings::spherical_roller::load_distribution::{LaminaResult, TraceStep};
-use crate::bearings::spherical_roller::pipeline::Analysis;
-use crate::bearings::view::{Chart, Display, Screen, View};
+use crate::bearings::view::{Chart, Display, Screen, ThermalResults, Trace, TraceFormat, View};
 
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
@@ -29,17 +24,6 @@ pub fn force_unit(u: Units) -> &'static str {
 /// lbf/in.
 pub fn line_load(value_n_m: f64, u: Units) -> f64 {
     Display::LineLoad.convert(value_n_m, u)
-}
-
-/// Each lamina's load over its width, N/m: the load distribution along the roller. The
-/// laminae are not equally wide (cosine slicing puts thin ones at the ends), so their
-/// loads alone would draw the thin end laminae low however hard the end is loaded.
-fn per_length(loads_n: &[f64], laminae: &[LaminaResult]) -> Vec<f64> {
-    loads_n
-        .iter()
-        .zip(laminae)
-        .map(|(&q, l)| if l.width_m > 0.0 { q / l.width_m } else { 0.0 })
-        .collect()
 }
 
 /// A small length (deflection, approach, lamina offset) in display units: mm or mil
@@ -128,11 +112,6 @@ pub fn table_cells(view: &View, u: Units) -> (Vec<Column>, Vec<Vec<String>>) {
     (cols, rows)
 }
 
-/// Number of rollers in the solution.
-pub fn roller_count(a: &Analysis) -> usize {
-    a.load.rollers.len()
-}
-
 /// A chart in display units, with its bounds.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ChartSeries {
@@ -217,17 +196,15 @@ pub struct ThermalView {
 
 /// The thermal pane's data; `node` picks the node whose transient is plotted (`None`
 /// or out of range: the hottest).
-pub fn thermal_view(a: &Analysis, u: Units, node: Option<usize>) -> Option<ThermalView> {
-    let th = a.thermal.as_ref()?;
+pub fn thermal_view(th: &ThermalResults, u: Units, node: Option<usize>) -> ThermalView {
     let (conv, unit): (fn(f64) -> f64, &str) = match u {
         Units::Si => (|c| c, "°C"),
         Units::Us => (|c| c * FAHRENHEIT_PER_KELVIN + 32.0, "°F"),
     };
     let steady: Vec<(String, f64)> = th
         .steady
-        .nodes
         .iter()
-        .map(|n| (n.name.clone(), conv(n.temperature_c)))
+        .map(|(name, t)| (name.clone(), conv(*t)))
         .collect();
     let mut view = ThermalView {
         steady,
@@ -255,185 +232,99 @@ pub fn thermal_view(a: &Analysis, u: Units, node: Option<usize>) -> Option<Therm
             view.time_to_limit_s = n.time_to_limit_s;
         }
     }
-    Some(view)
+    view
 }
 
-/// Solver work counters for the status bar.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SolveSummary {
-    /// Ring (outer Newton) iterations.
-    pub iterations: usize,
-    /// Roller Newton iterations.
-    pub roller_iterations: usize,
-    /// Lamina contact evaluations.
-    pub lamina_evaluations: usize,
-    /// Wall time, ms.
-    pub wall_ms: f64,
-    /// True if the load distribution converged.
-    pub converged: bool,
+/// One row of bars of a stepper step, display units.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BarRow {
+    /// Row label.
+    pub label: &'static str,
+    /// Rows of one group share a full scale.
+    pub group: usize,
+    /// Colour slot (0 inner, 1 outer).
+    pub side: usize,
+    /// Decimals of the group's full-scale value.
+    pub precision: usize,
+    /// Unit label.
+    pub unit: &'static str,
+    /// Values, display units.
+    pub values: Vec<f64>,
 }
 
-/// Counters of a solve.
-pub fn solve_summary(a: &Analysis) -> SolveSummary {
-    let s = &a.load.stats;
-    SolveSummary {
-        iterations: s.iterations,
-        roller_iterations: s.roller_iterations,
-        lamina_evaluations: s.lamina_evaluations,
-        wall_ms: s.wall_time_s * 1e3,
-        converged: a.load.converged,
-    }
-}
-
-/// Bearing-level results as label/value lines (ring deflections, residuals).
-pub fn bearing_lines(a: &Analysis, u: Units) -> Vec<(String, String)> {
-    let l = &a.load;
-    let su = small_length_unit(u);
-    let fu = force_unit(u);
-    vec![
-        (
-            format!("axial deflection {su}"),
-            fixed(small_length(l.axial_deflection_m, u), 4),
-        ),
-        (
-            format!("radial deflection {su}"),
-            fixed(small_length(l.radial_deflection_m, u), 4),
-        ),
-        (
-            format!("residual radial {fu}"),
-            residual(force(l.residuals.bearing_radial_n, u)),
-        ),
-        (
-            format!("residual axial {fu}"),
-            residual(force(l.residuals.bearing_axial_n, u)),
-        ),
-    ]
-}
-
-/// One step of the roller stepper, formatted.
+/// One step of the element stepper, formatted.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct StepView {
     /// Label/value lines: iteration numbers, displacements, residuals.
     pub lines: Vec<(String, String)>,
-    /// Inner lamina loads per unit length, display units (for the bar row).
-    pub inner_load: Vec<f64>,
-    /// Outer lamina loads per unit length, display units.
-    pub outer_load: Vec<f64>,
-    /// Inner lamina approaches, display small-length units.
-    pub inner_approach: Vec<f64>,
-    /// Outer lamina approaches, display small-length units.
-    pub outer_approach: Vec<f64>,
-    /// Load-per-length unit label of the bar rows.
-    pub load_unit: String,
-    /// Approach unit label.
-    pub approach_unit: String,
-}
-
-/// Number of recorded trace steps.
-pub fn trace_len(a: &Analysis) -> usize {
-    a.trace.len()
+    /// Bar rows (loads and approaches along the element).
+    pub bars: Vec<BarRow>,
 }
 
 /// One line per recorded step for the stepper's history list: step number (1-based),
-/// ring/roller iteration and the three residuals (axial N or lbf, radial, moment N·m).
-pub fn trace_rows(a: &Analysis, u: Units) -> Vec<String> {
-    a.trace
+/// outer/inner iteration and the residuals in their display units.
+pub fn trace_rows(t: &Trace, u: Units) -> Vec<String> {
+    t.steps
         .iter()
         .enumerate()
-        .map(|(i, t)| {
-            format!(
-                "{:>3}  {:>2}/{:<2}  {:>10} {:>10} {:>10}",
+        .map(|(i, step)| {
+            let mut row = format!(
+                "{:>3}  {:>2}/{:<2} ",
                 i + 1,
-                t.ring_iteration,
-                t.roller_iteration,
-                residual(force(t.residual[0], u)),
-                residual(force(t.residual[1], u)),
-                residual(t.residual[2])
-            )
+                step.iteration[0],
+                step.iteration[1]
+            );
+            for (c, v) in t.residuals.iter().zip(&step.residuals) {
+                row.push_str(&format!(" {:>10}", residual(c.display.convert(*v, u))));
+            }
+            row
         })
         .collect()
 }
 
 /// Header of [`trace_rows`].
-pub fn trace_header(u: Units) -> String {
-    let f = force_unit(u);
-    format!(
-        "{:>3}  {:<5}  {:>10} {:>10} {:>10}",
-        "#",
-        "it",
-        format!("ax {f}"),
-        format!("rad {f}"),
-        "mom N·m"
-    )
+pub fn trace_header(t: &Trace, u: Units) -> String {
+    let mut h = format!("{:>3}  {:<5} ", "#", "it");
+    for c in &t.residuals {
+        h.push_str(&format!(" {:>10}", c.display.header(c.label, u)));
+    }
+    h
 }
 
-/// Formats trace step `step` (0-based); `None` when out of range or nothing recorded.
-pub fn trace_step(a: &Analysis, step: usize, u: Units) -> Option<StepView> {
-    let t: &TraceStep = a.trace.get(step)?;
-    let su = small_length_unit(u);
-    let fu = force_unit(u);
-    let lines = vec![
-        (
-            "ring/roller iter".to_string(),
-            format!("{} / {}", t.ring_iteration, t.roller_iteration),
-        ),
-        (
-            format!("ring ax,rad {su}"),
-            format!(
-                "{}, {}",
-                signed(small_length(t.ring[0], u), 5),
-                signed(small_length(t.ring[1], u), 5)
-            ),
-        ),
-        (
-            format!("roller ax,rad {su}"),
-            format!(
-                "{}, {}",
-                signed(small_length(t.roller[0], u), 5),
-                signed(small_length(t.roller[1], u), 5)
-            ),
-        ),
-        (
-            "roller pitch mrad".to_string(),
-            signed(t.roller[2] * 1e3, 5),
-        ),
-        (
-            format!("resid ax,rad {fu}"),
-            format!(
-                "{}, {}",
-                residual(force(t.residual[0], u)),
-                residual(force(t.residual[1], u))
-            ),
-        ),
-        ("resid moment N·m".to_string(), residual(t.residual[2])),
-    ];
-    // The traced roller's laminae (every roller is sliced alike) give the widths.
-    let laminae = a
-        .load
-        .rollers
-        .first()
-        .map_or(&[][..], |r| r.laminae.as_slice());
-    let bars = |loads: &[f64]| -> Vec<f64> {
-        per_length(loads, laminae)
-            .into_iter()
-            .map(|q| line_load(q, u))
-            .collect()
-    };
-    Some(StepView {
-        lines,
-        inner_load: bars(&t.inner_load_n),
-        outer_load: bars(&t.outer_load_n),
-        inner_approach: t
-            .inner_approach_m
-            .iter()
-            .map(|&v| small_length(v, u))
-            .collect(),
-        outer_approach: t
-            .outer_approach_m
-            .iter()
-            .map(|&v| small_length(v, u))
-            .collect(),
-        load_unit: Display::LineLoad.unit(u).into(),
-        approach_unit: su.into(),
-    })
+/// Formats trace step `step` (0-based); `None` when out of range.
+pub fn trace_step(t: &Trace, step: usize, u: Units) -> Option<StepView> {
+    let s = t.steps.get(step)?;
+    let lines = s
+        .lines
+        .iter()
+        .map(|l| {
+            let values: Vec<String> = l
+                .values
+                .iter()
+                .map(|&v| match l.format {
+                    TraceFormat::Counts => format!("{}", v.round() as i64),
+                    TraceFormat::Signed(prec) => signed(l.display.convert(v, u), prec),
+                    TraceFormat::Residual => residual(l.display.convert(v, u)),
+                })
+                .collect();
+            let sep = match l.format {
+                TraceFormat::Counts => " / ",
+                _ => ", ",
+            };
+            (l.display.header(l.label, u), values.join(sep))
+        })
+        .collect();
+    let bars = s
+        .bars
+        .iter()
+        .map(|b| BarRow {
+            label: b.label,
+            group: b.group,
+            side: b.side,
+            precision: b.precision,
+            unit: b.display.unit(u),
+            values: b.values.iter().map(|&v| b.display.convert(v, u)).collect(),
+        })
+        .collect();
+    Some(StepView { lines, bars })
 }

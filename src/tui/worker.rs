@@ -11,35 +11,54 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Arc;
 use std::thread::{self, JoinHandle};
 
-use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
-use crate::bearings::spherical_roller::Bearing;
-use crate::bearings::SolveError;
+use crate::bearings::view::View;
+use crate::bearings::{Case, Detail, Session, SolveError};
+use crate::numerics::cancel::Cancel;
 
 use super::app::{AppEvent, SolveJob};
 
 /// Name of the solver thread (the panic filter in `tui/mod.rs` keys on it).
 pub const SOLVER_THREAD: &str = "solver";
 
-/// The function the worker calls: `pipeline::run` in the app, anything in tests.
+/// The function the worker calls: the deck's system's session in the app, anything in
+/// tests. It returns the solution's view (built on the solver thread, so the UI thread
+/// only draws).
 pub type Solver =
-    Arc<dyn Fn(&Bearing, &Request, &AtomicBool) -> Result<Analysis, SolveError> + Send + Sync>;
+    Arc<dyn Fn(&dyn Case, Detail, &AtomicBool) -> Result<View, SolveError> + Send + Sync>;
 
-/// The real pipeline, with its stage cache kept across jobs: an edit re-runs only the
-/// stages whose inputs it changed (only the solver thread calls it; the mutex is
-/// uncontended, and a panic inside a solve poisons nothing we rely on: a poisoned cache is
-/// replaced by an empty one).
-pub fn pipeline_solver() -> Solver {
-    let cache = Arc::new(std::sync::Mutex::new(pipeline::Pipeline::new()));
-    Arc::new(move |b, r, cancel| {
-        let mut guard = match cache.lock() {
+/// The real solvers: one [`Session`] per bearing system, kept across jobs so an edit
+/// re-runs only the stages whose inputs it changed (only the solver thread calls it; the
+/// mutex is uncontended, and a panic inside a solve poisons nothing we rely on: a
+/// poisoned set of sessions is replaced by an empty one).
+pub fn session_solver() -> Solver {
+    type Sessions = Vec<(&'static str, Box<dyn Session>)>;
+    let sessions: Arc<std::sync::Mutex<Sessions>> = Arc::default();
+    Arc::new(move |case, detail, cancel| {
+        let mut guard = match sessions.lock() {
             Ok(g) => g,
             Err(poisoned) => {
                 let mut g = poisoned.into_inner();
-                *g = pipeline::Pipeline::new();
+                g.clear();
                 g
             }
         };
-        guard.run(b, r.thermal.as_ref(), r, Some(cancel))
+        let system = case.system();
+        let index = match guard.iter().position(|(id, _)| *id == system.id()) {
+            Some(i) => i,
+            None => {
+                guard.push((system.id(), system.session()));
+                guard.len() - 1
+            }
+        };
+        let Some((_, session)) = guard.get_mut(index) else {
+            return Err(SolveError::Stage {
+                stage: "session",
+                message: format!("no session for {}", system.id()),
+            });
+        };
+        session
+            .solve(case, detail, &Cancel::new(cancel))
+            .map(|s| s.view())
     })
 }
 
@@ -115,15 +134,15 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
         }
         let SolveJob {
             generation,
-            bearing,
-            request,
+            case,
+            detail,
         } = &job.job;
-        let outcome = catch_unwind(AssertUnwindSafe(|| solver(bearing, request, &job.cancel)));
+        let outcome = catch_unwind(AssertUnwindSafe(|| solver(&**case, *detail, &job.cancel)));
         if job.cancel.load(Ordering::Acquire) {
             continue; // superseded while solving: stale
         }
         let outcome = match outcome {
-            Ok(Ok(a)) => Ok(Arc::new(a)),
+            Ok(Ok(view)) => Ok(Arc::new(view)),
             Ok(Err(SolveError::Cancelled)) => continue,
             Ok(Err(e)) => Err(e.to_string()),
             Err(p) => Err(format!("solver panicked: {}", panic_text(p.as_ref()))),

@@ -69,6 +69,9 @@ pub struct Analysis {
     /// Stepper trace of the requested roller (empty unless requested).
     #[serde(skip)]
     pub trace: Vec<TraceStep>,
+    /// The roller `trace` follows (0-based), when one was requested.
+    #[serde(skip)]
+    pub trace_roller: Option<usize>,
 }
 
 /// §10 results.
@@ -151,6 +154,8 @@ struct LoadStage {
     speeds: InternalSpeeds,
     iterations: usize,
     trace: Vec<TraceStep>,
+    /// The roller `trace` follows.
+    trace_roller: Option<usize>,
 }
 
 /// The inputs each stage reads: an edit that changes none of a stage's inputs (nor an
@@ -413,6 +418,7 @@ impl Parts {
             life,
             friction: self.friction,
             trace: ls.trace,
+            trace_roller: ls.trace_roller,
         })
     }
 }
@@ -496,6 +502,7 @@ fn load_stage(
         speeds: fine.speeds,
         iterations: iterations + fine.iterations,
         trace,
+        trace_roller: request.trace_roller,
     })
 }
 

@@ -4,8 +4,8 @@
 use super::pipeline::{self, Analysis, Request};
 use super::report;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
-use crate::bearings::{BearingSystem, Case, RunOptions, Solution};
-use crate::deck::{Deck, DeckErrors};
+use crate::bearings::{BearingSystem, Case, Detail, RunOptions, Session, Solution, SolveError};
+use crate::deck::{Deck, DeckErrors, FieldMeta};
 use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
 use crate::units::Units;
@@ -30,6 +30,14 @@ impl BearingSystem for SphericalRoller {
 
     fn method(&self) -> &'static str {
         "SASHBEAN lamina method (A. K. Aggarwal, NASA CR-191182, 1993)"
+    }
+
+    fn element_name(&self) -> &'static str {
+        "roller"
+    }
+
+    fn session(&self) -> Box<dyn Session> {
+        Box::new(SphericalSession::default())
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
@@ -93,6 +101,10 @@ impl Case for SphericalCase {
         &SYSTEM
     }
 
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+
     fn units(&self) -> Units {
         self.deck.units
     }
@@ -111,6 +123,45 @@ impl Case for SphericalCase {
         .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
         .map_err(|e| e.to_string())
     }
+
+    fn name(&self) -> &str {
+        &self.deck.bearing.name
+    }
+
+    fn source_name(&self) -> &str {
+        self.deck.source_name()
+    }
+
+    fn fields(&self) -> Vec<&'static FieldMeta> {
+        crate::deck::fields().iter().collect()
+    }
+
+    fn field_si(&self, key: &str) -> Option<f64> {
+        crate::deck::field(key).map(|f| f.get_si(&self.deck.bearing))
+    }
+
+    fn get(&self, key: &str) -> Option<String> {
+        self.deck.get(key)
+    }
+
+    fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors> {
+        let mut deck = self.deck.clone();
+        deck.set(key, value)?;
+        let thermal = deck.thermal_model()?;
+        Ok(Box::new(SphericalCase { deck, thermal }))
+    }
+
+    fn text(&self) -> String {
+        self.deck.to_toml_string()
+    }
+
+    fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors> {
+        self.deck.save(path)
+    }
+
+    fn has_transient(&self) -> bool {
+        self.thermal.is_some()
+    }
 }
 
 /// A solved spherical roller bearing.
@@ -127,5 +178,53 @@ impl Solution for SphericalSolution {
 
     fn text(&self, units: Units) -> String {
         report::text::to_string(&self.0, units)
+    }
+}
+
+/// The workbench's spherical roller solver: the staged pipeline with its cache kept
+/// between solves, so an edit re-runs only the stages whose inputs it changed.
+#[derive(Default)]
+pub struct SphericalSession {
+    pipeline: pipeline::Pipeline,
+}
+
+impl SphericalSession {
+    /// Stage run counters since the session began.
+    pub fn counters(&self) -> pipeline::StageCounters {
+        self.pipeline.counters()
+    }
+}
+
+impl Session for SphericalSession {
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let Some(case) = case.as_any().downcast_ref::<SphericalCase>() else {
+            return Err(SolveError::Stage {
+                stage: "session",
+                message: format!(
+                    "a {} deck was given to the {} solver",
+                    case.system().id(),
+                    SYSTEM_ID
+                ),
+            });
+        };
+        let request = Request {
+            trace_roller: detail.trace_element,
+            thermal_transient: detail.transient && case.thermal.is_some(),
+            thermal: case.thermal.clone(),
+            ..Request::default()
+        };
+        self.pipeline
+            .run(
+                &case.deck.bearing,
+                case.thermal.as_ref(),
+                &request,
+                cancel.flag(),
+            )
+            .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
     }
 }

@@ -6,8 +6,9 @@ use super::load_distribution::{LaminaResult, RacewayContact, RollerResult};
 use super::pipeline::Analysis;
 use super::stages::{LaminaFriction, RacewayStress};
 use crate::bearings::view::{
-    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Screen, Series, Summary,
-    Table, View,
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, NodeSeries, Screen, Series,
+    SolveStats, Summary, Table, ThermalResults, Trace, TraceBars, TraceColumn, TraceFormat,
+    TraceLine, TraceStep, Transient, View,
 };
 use crate::physics::contact::line::LineContact;
 use crate::physics::lubrication::film;
@@ -381,7 +382,175 @@ pub fn view(a: &Analysis) -> View {
             },
         ],
         key_outputs: key_outputs(a),
+        trace: trace(a),
+        thermal: thermal(a),
+        stats: SolveStats {
+            iterations: a.load.stats.iterations,
+            inner_iterations: a.load.stats.roller_iterations,
+            wall_time_s: a.load.stats.wall_time_s,
+        },
     }
+}
+
+/// The stepper's trace of the requested roller: ring and roller displacements, the
+/// roller's three residuals, and per lamina the loads per unit length and approaches.
+/// Per unit length because cosine slicing makes the end laminae thin (see
+/// [`lamina_chart`]); every roller is sliced alike, so roller 1 gives the widths.
+fn trace(a: &Analysis) -> Option<Trace> {
+    if a.trace.is_empty() {
+        return None;
+    }
+    let element = a.trace_roller?;
+    let widths: Vec<f64> = a
+        .load
+        .rollers
+        .first()
+        .map(|r| r.laminae.iter().map(|l| l.width_m).collect())
+        .unwrap_or_default();
+    let per_length = |loads: &[f64]| -> Vec<f64> {
+        loads
+            .iter()
+            .zip(&widths)
+            .map(|(&q, &w)| if w > 0.0 { q / w } else { 0.0 })
+            .collect()
+    };
+    let line = |label, display, format, values: Vec<f64>| TraceLine {
+        label,
+        display,
+        format,
+        values,
+    };
+    let bars = |label, display, group, side, precision, values| TraceBars {
+        label,
+        display,
+        group,
+        side,
+        precision,
+        values,
+    };
+    let steps = a
+        .trace
+        .iter()
+        .map(|t| TraceStep {
+            iteration: [t.ring_iteration, t.roller_iteration],
+            residuals: t.residual.to_vec(),
+            lines: vec![
+                line(
+                    "ring/roller iter",
+                    Display::Plain,
+                    TraceFormat::Counts,
+                    vec![t.ring_iteration as f64, t.roller_iteration as f64],
+                ),
+                line(
+                    "ring ax,rad",
+                    Display::SmallLength,
+                    TraceFormat::Signed(5),
+                    t.ring.to_vec(),
+                ),
+                line(
+                    "roller ax,rad",
+                    Display::SmallLength,
+                    TraceFormat::Signed(5),
+                    t.roller[..2].to_vec(),
+                ),
+                line(
+                    "roller pitch",
+                    Display::SmallAngle,
+                    TraceFormat::Signed(5),
+                    vec![t.roller[2]],
+                ),
+                line(
+                    "resid ax,rad",
+                    Display::Force,
+                    TraceFormat::Residual,
+                    t.residual[..2].to_vec(),
+                ),
+                line(
+                    "resid moment N·m",
+                    Display::Plain,
+                    TraceFormat::Residual,
+                    vec![t.residual[2]],
+                ),
+            ],
+            bars: vec![
+                bars(
+                    "inner load",
+                    Display::LineLoad,
+                    0,
+                    0,
+                    1,
+                    per_length(&t.inner_load_n),
+                ),
+                bars(
+                    "outer load",
+                    Display::LineLoad,
+                    0,
+                    1,
+                    1,
+                    per_length(&t.outer_load_n),
+                ),
+                bars(
+                    "inner approach",
+                    Display::SmallLength,
+                    1,
+                    0,
+                    5,
+                    t.inner_approach_m.clone(),
+                ),
+                bars(
+                    "outer approach",
+                    Display::SmallLength,
+                    1,
+                    1,
+                    5,
+                    t.outer_approach_m.clone(),
+                ),
+            ],
+        })
+        .collect();
+    Some(Trace {
+        element,
+        residuals: vec![
+            TraceColumn {
+                label: "ax",
+                display: Display::Force,
+            },
+            TraceColumn {
+                label: "rad",
+                display: Display::Force,
+            },
+            TraceColumn {
+                label: "mom N·m",
+                display: Display::Plain,
+            },
+        ],
+        steps,
+    })
+}
+
+/// The §10 network's temperatures, when the deck has one.
+fn thermal(a: &Analysis) -> Option<ThermalResults> {
+    let th = a.thermal.as_ref()?;
+    Some(ThermalResults {
+        steady: th
+            .steady
+            .nodes
+            .iter()
+            .map(|n| (n.name.clone(), n.temperature_c))
+            .collect(),
+        transient: th.transient.as_ref().map(|tr| Transient {
+            time_s: tr.time_s.clone(),
+            nodes: tr
+                .nodes
+                .iter()
+                .map(|n| NodeSeries {
+                    name: n.name.clone(),
+                    temperature_c: n.temperature_c.clone(),
+                    time_to_limit_s: n.time_to_limit_s,
+                })
+                .collect(),
+        }),
+    })
 }
 
 /// The load distribution along a roller: each lamina's load per unit length against its
