@@ -1,12 +1,12 @@
-//! Full pipeline (no transient) on each shipped deck at the deck's default fidelity and at
-//! the recommended one (cheapest grid cell with max-stress and L-10 errors below 0.1 % and
-//! the other key outputs within 1 %, from `rollbench::verify::fidelity::measure_grid`, measured once
-//! in the set-up).
+//! Full solve (no transient) of each shipped deck whose bearing system has a fidelity study,
+//! at the deck's default fidelity and at the recommended one (cheapest grid cell with the
+//! target key outputs within 0.1 % and the other key outputs within 1 %, from
+//! `rollbench::verify::fidelity::measure_grid`, measured once in the set-up).
 use criterion::{criterion_group, criterion_main, Criterion};
-use rollbench::deck::Deck;
-use rollbench::verify::fidelity::{self, Fidelity};
+use rollbench::bearings::{self, Case};
+use rollbench::verify::fidelity;
 
-fn decks() -> Vec<(String, Deck)> {
+fn decks() -> Vec<(String, Box<dyn Case>)> {
     let mut paths: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))
         .map(|d| d.filter_map(|e| e.ok()).map(|e| e.path()).collect())
         .unwrap_or_default();
@@ -19,36 +19,39 @@ fn decks() -> Vec<(String, Deck)> {
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default();
-            Deck::load(&p).ok().map(|d| (name, d))
+            bearings::load_file(&p, &[]).ok().map(|c| (name, c))
         })
         .collect()
 }
 
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("pipeline_fidelity");
-    for (name, deck) in decks() {
-        let thermal = deck.thermal_model().ok().flatten();
-        let b = deck.bearing.clone();
-        let default = Fidelity::of(&b);
+    for (name, case) in decks() {
+        let (Some(grid), Some(default)) = (case.system().fidelity_grid(), case.fidelity()) else {
+            continue;
+        };
         let mut points = vec![("default", default)];
-        if let Some(r) = fidelity::measure_grid(&name, &b, thermal.as_ref())
+        if let Some(r) = fidelity::measure_grid(&name, &*case)
             .ok()
             .and_then(|t| t.recommended)
         {
-            points.push((
-                "recommended",
-                Fidelity {
-                    laminae: r.laminae,
-                    tolerance: r.tolerance,
-                },
-            ));
+            points.push(("recommended", r.fidelity));
         }
         for (label, f) in points {
-            let bf = f.apply(&b);
-            let id = format!("{name}/{label}/G{}_tol{:.0e}", f.laminae, f.tolerance);
-            g.bench_function(&id, |bch| {
-                bch.iter(|| fidelity::run_once(&bf, thermal.as_ref()))
-            });
+            let Some(at) = case.with_fidelity(f) else {
+                continue;
+            };
+            // The spherical roller's ids keep their names ("G81_tol1e-9").
+            let sym = if grid.resolution_key == "laminae" {
+                "G"
+            } else {
+                "n"
+            };
+            let id = format!(
+                "{name}/{label}/{sym}{}_tol{:.0e}",
+                f.resolution, f.tolerance
+            );
+            g.bench_function(&id, |bch| bch.iter(|| fidelity::run_once(&*at)));
         }
     }
     g.finish();

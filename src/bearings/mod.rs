@@ -46,6 +46,32 @@ pub struct Detail {
     pub transient: bool,
 }
 
+/// A fidelity setting of a case: how finely its elements are discretised (laminae,
+/// slices) and how tightly its equilibria are solved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fidelity {
+    /// Laminae or slices per element.
+    pub resolution: usize,
+    /// Force tolerance of the equilibria, relative (dimensionless).
+    pub tolerance: f64,
+}
+
+/// A system's run-time-against-error study (`rollbench bench`): the grid of fidelities and
+/// the reference they are compared with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FidelityGrid {
+    /// The JSON name of the resolution (`"laminae"`, `"slices"`).
+    pub resolution_key: &'static str,
+    /// Its symbol in text tables (`"Γ"`).
+    pub resolution_symbol: &'static str,
+    /// Resolutions of the grid, ascending.
+    pub resolutions: &'static [usize],
+    /// Tolerances of the grid, loosest first.
+    pub tolerances: &'static [f64],
+    /// The high-fidelity reference.
+    pub reference: Fidelity,
+}
+
 /// A bearing system: how its decks are read, solved and shown.
 pub trait BearingSystem: Sync {
     /// The deck's `type`, e.g. `"spherical-roller"`.
@@ -62,6 +88,10 @@ pub trait BearingSystem: Sync {
     /// A solver for the workbench that keeps what it computed between solves, so an edit
     /// re-runs only the stages whose inputs it changed.
     fn session(&self) -> Box<dyn Session>;
+    /// The fidelity study of `rollbench bench`; `None` when the system has none.
+    fn fidelity_grid(&self) -> Option<FidelityGrid> {
+        None
+    }
     /// A fully commented deck in `units` that parses back.
     fn template(&self, units: Units) -> String;
     /// The shipped example deck (text), embedded in the binary.
@@ -110,6 +140,16 @@ pub trait Case: Send + Sync {
     fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors>;
     /// True if the deck has a time simulation that [`Detail::transient`] turns on.
     fn has_transient(&self) -> bool;
+    /// The deck's own fidelity, when the system has a fidelity study.
+    fn fidelity(&self) -> Option<Fidelity> {
+        None
+    }
+    /// The case at fidelity `f` (every other input unchanged); `None` when the system has
+    /// no fidelity settings.
+    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
+        let _ = f;
+        None
+    }
 }
 
 /// Reads deck text of any system: its `type` picks the system, which parses, applies the

@@ -171,11 +171,15 @@ pub enum KeyRole {
     Guard,
 }
 
-/// One scalar a user judges a design by.
+/// One scalar a user judges a design by. Its value is in the unit its name ends with
+/// (SI, except temperatures in °C with [`Quantity::Temperature`]: their relative errors
+/// are taken in kelvin).
 #[derive(Debug, Clone, PartialEq)]
 pub struct KeyOutput {
     /// Machine name with unit (`max_stress_pa`).
     pub name: &'static str,
+    /// Short column label for text tables (`"σmax"`).
+    pub label: &'static str,
     /// SI value; `None` when it does not exist (an unloaded bearing's life).
     pub value: Option<f64>,
     /// What it is (display unit).

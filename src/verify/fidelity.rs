@@ -1,7 +1,13 @@
-//! Run time against error (issue 7): the key outputs of the full pipeline (no transient)
-//! at each fidelity of a grid — laminae Γ × force tolerance — compared with a
-//! high-fidelity reference run (Γ = 400, tolerance 10⁻¹⁰, the round-off floor of the
-//! equilibria), with the median wall time of each cell.
+//! Run time against error (issue 7), for every bearing system with a fidelity study
+//! ([`BearingSystem::fidelity_grid`]): the key outputs of its view
+//! ([`crate::bearings::view::View::key_outputs`]) from a full solve (no transient) at each
+//! fidelity of its grid — resolution (laminae, slices) × force tolerance — compared with a
+//! high-fidelity reference run, with the median wall time of each cell. Key outputs with
+//! [`KeyRole::Target`] must meet [`TARGET_ERROR`], those with [`KeyRole::Guard`]
+//! [`GUARD_ERROR`].
+//!
+//! For the spherical roller (grid Γ × tolerance, reference Γ = 400 at 10⁻¹⁰, the round-off
+//! floor of the equilibria):
 //!
 //! Odd against even Γ: an odd Γ puts a lamina on the roller mid-plane, where a crowned
 //! roller's approach is largest, so the most loaded lamina samples the crown apex; with an
@@ -33,29 +39,19 @@
 
 use std::time::Instant;
 
-use serde::Serialize;
+use crate::bearings::view::{KeyOutput, KeyRole, View};
+use crate::bearings::{Case, Fidelity, FidelityGrid, RunOptions};
+use crate::numerics::cancel::Cancel;
+use crate::units::{Quantity, CELSIUS_ZERO_K};
 
-use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
-use crate::bearings::spherical_roller::Bearing;
-use crate::bearings::SolveError;
-use crate::thermal::ThermalModel;
-use crate::units::CELSIUS_ZERO_K;
-
-/// Laminae of the grid (Γ).
-pub const GRID_LAMINAE: [usize; 12] = [5, 7, 11, 15, 21, 31, 41, 61, 81, 121, 201, 400];
-/// Force tolerances of the grid (relative to the reference load, dimensionless).
-pub const GRID_TOLERANCES: [f64; 3] = [1e-4, 1e-6, 1e-9];
-/// The reference fidelity: Γ = 400, tolerance 10⁻¹⁰ (tighter stalls at round-off).
-pub const REFERENCE: Fidelity = Fidelity {
-    laminae: 400,
-    tolerance: 1e-10,
-};
-/// Accuracy target of the recommended fidelity: relative error of max stress and L-10.
+/// Accuracy target of the recommended fidelity: relative error of the target key outputs
+/// (spherical roller: max stress and L-10).
 pub const TARGET_ERROR: f64 = 1e-3;
-/// Guard on the other key outputs of the recommended fidelity (max roller load, cage speed,
-/// total heat, hottest steady temperature in kelvin): relative error. One per cent is well
-/// inside the uncertainty of the traction and heat-transfer models themselves, so a cell
-/// within it changes no engineering conclusion; a cell outside it (16 % on the heat) would.
+/// Guard on the other key outputs of the recommended fidelity (spherical roller: max roller
+/// load, cage speed, total heat, hottest steady temperature in kelvin): relative error. One
+/// per cent is well inside the uncertainty of the traction and heat-transfer models
+/// themselves, so a cell within it changes no engineering conclusion; a cell outside it
+/// (16 % on the heat) would.
 pub const GUARD_ERROR: f64 = 1e-2;
 /// Wall-time budget of one grid cell, s (the median is taken over the runs that fit,
 /// at least [`MIN_RUNS`] and at most [`MAX_RUNS`]).
@@ -64,65 +60,6 @@ pub const CELL_BUDGET_S: f64 = 0.3;
 pub const MIN_RUNS: usize = 3;
 /// Most timed runs per cell.
 pub const MAX_RUNS: usize = 51;
-
-/// Laminae and force tolerance of one run.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Fidelity {
-    /// Γ, laminae per roller.
-    pub laminae: usize,
-    /// Force tolerance of the equilibria, relative (dimensionless).
-    pub tolerance: f64,
-}
-
-impl Fidelity {
-    /// The fidelity a bearing is set to.
-    pub fn of(b: &Bearing) -> Fidelity {
-        Fidelity {
-            laminae: b.solver.laminae,
-            tolerance: b.solver.force_tolerance,
-        }
-    }
-
-    /// `b` at this fidelity.
-    pub fn apply(&self, b: &Bearing) -> Bearing {
-        let mut out = b.clone();
-        out.solver.laminae = self.laminae;
-        out.solver.force_tolerance = self.tolerance;
-        out
-    }
-}
-
-/// The key outputs compared across fidelities.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct KeyOutputs {
-    /// Largest raceway normal load of any roller, N.
-    pub max_roller_load_n: f64,
-    /// Largest contact (Hertz) stress of any lamina, Pa.
-    pub max_stress_pa: f64,
-    /// Bearing L-10, Mrev (None when no raceway is loaded).
-    pub l10_mrev: Option<f64>,
-    /// Cage speed, rpm.
-    pub cage_speed_rpm: f64,
-    /// Total heat generation, W.
-    pub total_heat_w: f64,
-    /// Hottest free node of the steady thermal network, °C (None without a network).
-    pub hottest_temperature_c: Option<f64>,
-}
-
-/// The key outputs of an analysis, as its bearing system's view defines them
-/// ([`crate::bearings::view::View::key_outputs`]).
-pub fn key_outputs(a: &Analysis) -> KeyOutputs {
-    let v = crate::bearings::spherical_roller::view::view(a);
-    let get = |name: &str| v.key(name).and_then(|k| k.value);
-    KeyOutputs {
-        max_roller_load_n: get("max_roller_load_n").unwrap_or(0.0),
-        max_stress_pa: get("max_stress_pa").unwrap_or(0.0),
-        l10_mrev: get("l10_mrev"),
-        cage_speed_rpm: get("cage_speed_rpm").unwrap_or(0.0),
-        total_heat_w: get("total_heat_w").unwrap_or(0.0),
-        hottest_temperature_c: get("hottest_temperature_c"),
-    }
-}
 
 /// Relative error |x − r|/|r|; 0 when both are 0, absolute |x| when only r is 0.
 pub fn relative_error(x: f64, reference: f64) -> f64 {
@@ -147,7 +84,7 @@ fn relative_error_opt(x: Option<f64>, reference: Option<f64>) -> Option<f64> {
 }
 
 /// Relative error of temperatures on the absolute (kelvin) scale: a ratio to a Celsius
-/// value would depend on the arbitrary zero of the scale.
+/// value would depend on the arbitrary zero of the scale. No network, no error (`None`).
 fn relative_temperature_error(x: Option<f64>, reference: Option<f64>) -> Option<f64> {
     match (x, reference) {
         (Some(a), Some(b)) => Some(relative_error(a + CELSIUS_ZERO_K, b + CELSIUS_ZERO_K)),
@@ -155,82 +92,112 @@ fn relative_temperature_error(x: Option<f64>, reference: Option<f64>) -> Option<
     }
 }
 
+/// The error of one key output in one cell.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KeyError {
+    /// The key output's name (`max_stress_pa`).
+    pub name: &'static str,
+    /// Short label for text tables.
+    pub label: &'static str,
+    /// Target or guard.
+    pub role: KeyRole,
+    /// Relative error against the reference (`None`: the output does not exist in one of
+    /// the two runs, or the run failed).
+    pub error: Option<f64>,
+}
+
+impl KeyError {
+    /// The JSON field of the error: `err_` and the name without its unit
+    /// (`max_stress_pa` → `err_max_stress`).
+    pub fn json_key(&self) -> String {
+        let stem = self.name.rsplit_once('_').map_or(self.name, |(s, _)| s);
+        format!("err_{stem}")
+    }
+}
+
+/// The errors of `x` against the reference `r`, key output by key output (matched by
+/// name; the reference's list decides the columns).
+fn key_errors(x: &[KeyOutput], r: &[KeyOutput]) -> Vec<KeyError> {
+    r.iter()
+        .map(|k| {
+            let v = x.iter().find(|o| o.name == k.name).and_then(|o| o.value);
+            let error = if k.quantity == Quantity::Temperature {
+                relative_temperature_error(v, k.value)
+            } else {
+                relative_error_opt(v, k.value)
+            };
+            KeyError {
+                name: k.name,
+                label: k.label,
+                role: k.role,
+                error,
+            }
+        })
+        .collect()
+}
+
 /// One cell of the grid. Errors are relative to the reference run (dimensionless);
 /// `None` (JSON null) when the quantity does not exist (no thermal network) or the run failed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Row {
-    /// Γ of this cell.
-    pub laminae: usize,
-    /// Force tolerance of this cell.
-    pub tolerance: f64,
-    /// Median wall time of the full pipeline (no transient), s.
+    /// The cell's fidelity.
+    pub fidelity: Fidelity,
+    /// Median wall time of the full solve (no transient), s.
     pub median_s: f64,
-    /// Relative error of the max roller load.
-    pub err_max_roller_load: Option<f64>,
-    /// Relative error of the max contact stress.
-    pub err_max_stress: Option<f64>,
-    /// Relative error of the bearing L-10.
-    pub err_l10: Option<f64>,
-    /// Relative error of the cage speed.
-    pub err_cage_speed: Option<f64>,
-    /// Relative error of the total heat.
-    pub err_total_heat: Option<f64>,
-    /// Relative error of the hottest steady node temperature (in kelvin).
-    pub err_hottest_temperature: Option<f64>,
+    /// The key outputs' errors, in the view's order.
+    pub errors: Vec<KeyError>,
     /// Why the run failed, if it did.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub failure: Option<String>,
 }
 
 impl Row {
-    /// True when max-stress and L-10 errors are both below [`TARGET_ERROR`] and every
-    /// other key output that exists is within [`GUARD_ERROR`].
+    /// True when every target key output's error is below [`TARGET_ERROR`] and every
+    /// guarded one that exists is within [`GUARD_ERROR`].
     pub fn meets_target(&self) -> bool {
-        let guarded = [
-            self.err_max_roller_load,
-            self.err_cage_speed,
-            self.err_total_heat,
-            self.err_hottest_temperature,
-        ];
         self.failure.is_none()
-            && self.err_max_stress.is_some_and(|e| e < TARGET_ERROR)
-            && self.err_l10.is_some_and(|e| e < TARGET_ERROR)
-            && guarded.iter().flatten().all(|&e| e < GUARD_ERROR)
+            && self.errors.iter().all(|e| match e.role {
+                KeyRole::Target => e.error.is_some_and(|x| x < TARGET_ERROR),
+                KeyRole::Guard => e.error.is_none_or(|x| x < GUARD_ERROR),
+            })
+    }
+
+    /// The error of the key output called `name`.
+    pub fn error(&self, name: &str) -> Option<f64> {
+        self.errors
+            .iter()
+            .find(|e| e.name == name)
+            .and_then(|e| e.error)
     }
 }
 
 /// The recommended fidelity and its cost.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Recommended {
-    /// Γ.
-    pub laminae: usize,
-    /// Force tolerance.
-    pub tolerance: f64,
+    /// The fidelity.
+    pub fidelity: Fidelity,
     /// Median wall time, s.
     pub median_s: f64,
 }
 
 /// Run time against error for one deck.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct FidelityTable {
     /// Deck name (file stem or the bearing's name).
     pub deck: String,
+    /// The system's grid (names of the resolution).
+    pub grid: FidelityGrid,
     /// The reference fidelity.
     pub reference: Fidelity,
     /// Key outputs of the reference run.
-    pub reference_outputs: KeyOutputs,
+    pub reference_outputs: Vec<KeyOutput>,
     /// Median wall time of the reference run, s.
     pub reference_median_s: f64,
-    /// Grid cells, laminae-major.
+    /// Grid cells, resolution-major.
     pub rows: Vec<Row>,
     /// The deck's own settings.
     pub default: Fidelity,
     /// Cheapest row that [meets the target](Row::meets_target) (None if none).
     pub recommended: Option<Recommended>,
-    /// [`TARGET_ERROR`]: the bound on max-stress and L-10 errors of the recommendation.
-    pub target_error: f64,
-    /// [`GUARD_ERROR`]: the bound on the other key outputs' errors of the recommendation.
-    pub guard_error: f64,
     /// Whether the deck's own fidelity [meets the target](Row::meets_target); None when it
     /// is not a cell of the grid.
     pub default_meets_target: Option<bool>,
@@ -239,25 +206,30 @@ pub struct FidelityTable {
 impl FidelityTable {
     /// The grid row at the deck's own fidelity, if the grid has it.
     pub fn default_row(&self) -> Option<&Row> {
-        self.rows
-            .iter()
-            .find(|r| r.laminae == self.default.laminae && r.tolerance == self.default.tolerance)
+        self.rows.iter().find(|r| r.fidelity == self.default)
     }
 }
 
-/// Run the pipeline (no transient) on `b` once.
-pub fn run_once(b: &Bearing, thermal: Option<&ThermalModel>) -> Result<Analysis, SolveError> {
-    pipeline::run_with_thermal(b, thermal, &Request::default(), None)
+/// Solve `case` once (no transient) and return its view.
+pub fn run_once(case: &dyn Case) -> Result<View, String> {
+    let options = RunOptions {
+        skip_transient: true,
+    };
+    case.solve(options, Cancel::NONE).map(|s| s.view())
 }
 
-/// Median wall time (s) of repeated runs within [`CELL_BUDGET_S`], and the last result.
-pub fn timed(b: &Bearing, thermal: Option<&ThermalModel>) -> (f64, Result<Analysis, SolveError>) {
+/// Median wall time (s) of repeated solves within [`CELL_BUDGET_S`], and the last
+/// result's view (built outside the timed region).
+pub fn timed(case: &dyn Case) -> (f64, Result<View, String>) {
+    let options = RunOptions {
+        skip_transient: true,
+    };
     let mut times = Vec::new();
     let start = Instant::now();
     let mut last;
     loop {
         let t = Instant::now();
-        last = run_once(b, thermal);
+        last = case.solve(options, Cancel::NONE);
         times.push(t.elapsed().as_secs_f64());
         let spent = start.elapsed().as_secs_f64();
         if last.is_err()
@@ -273,61 +245,56 @@ pub fn timed(b: &Bearing, thermal: Option<&ThermalModel>) -> (f64, Result<Analys
     }
     times.sort_by(f64::total_cmp);
     let median = times.get(times.len() / 2).copied().unwrap_or(f64::NAN);
-    (median, last)
+    (median, last.map(|s| s.view()))
 }
 
-/// Errors of `x` against the reference outputs.
-fn row(f: Fidelity, median_s: f64, x: &KeyOutputs, r: &KeyOutputs) -> Row {
-    Row {
-        laminae: f.laminae,
-        tolerance: f.tolerance,
-        median_s,
-        err_max_roller_load: Some(relative_error(x.max_roller_load_n, r.max_roller_load_n)),
-        err_max_stress: Some(relative_error(x.max_stress_pa, r.max_stress_pa)),
-        err_l10: relative_error_opt(x.l10_mrev, r.l10_mrev),
-        err_cage_speed: Some(relative_error(x.cage_speed_rpm, r.cage_speed_rpm)),
-        err_total_heat: Some(relative_error(x.total_heat_w, r.total_heat_w)),
-        err_hottest_temperature: relative_temperature_error(
-            x.hottest_temperature_c,
-            r.hottest_temperature_c,
-        ),
-        failure: None,
-    }
+/// `case` at fidelity `f`, or why not.
+fn at(case: &dyn Case, f: Fidelity) -> Result<Box<dyn Case>, String> {
+    case.with_fidelity(f)
+        .ok_or_else(|| format!("the {} has no fidelity settings", case.system().title()))
 }
 
-/// Measure the grid `laminae × tolerances` on bearing `b` (with its optional thermal
-/// network) against [`REFERENCE`]. Fails only if the reference run fails; a failing cell
-/// is reported in its row.
+/// Measure the grid `resolutions × tolerances` of `case` against the system's reference.
+/// Fails only if the reference run fails (or the system has no fidelity study); a failing
+/// cell is reported in its row.
 pub fn measure(
     deck: &str,
-    b: &Bearing,
-    thermal: Option<&ThermalModel>,
-    laminae: &[usize],
+    case: &dyn Case,
+    resolutions: &[usize],
     tolerances: &[f64],
-) -> Result<FidelityTable, SolveError> {
-    let (reference_median_s, reference) = timed(&REFERENCE.apply(b), thermal);
-    let reference_outputs = key_outputs(&reference?);
-    let mut rows = Vec::with_capacity(laminae.len() * tolerances.len());
-    for &l in laminae {
-        for &t in tolerances {
+) -> Result<FidelityTable, String> {
+    let system = case.system();
+    let grid = system
+        .fidelity_grid()
+        .ok_or_else(|| format!("the {} has no fidelity study", system.title()))?;
+    let default = case
+        .fidelity()
+        .ok_or_else(|| format!("the {} has no fidelity settings", system.title()))?;
+    let (reference_median_s, reference) = timed(&*at(case, grid.reference)?);
+    let reference_outputs = reference?.key_outputs;
+    let mut rows = Vec::with_capacity(resolutions.len() * tolerances.len());
+    for &resolution in resolutions {
+        for &tolerance in tolerances {
             let f = Fidelity {
-                laminae: l,
-                tolerance: t,
+                resolution,
+                tolerance,
             };
-            let (median, result) = timed(&f.apply(b), thermal);
+            let (median_s, result) = timed(&*at(case, f)?);
             rows.push(match result {
-                Ok(a) => row(f, median, &key_outputs(&a), &reference_outputs),
+                Ok(v) => Row {
+                    fidelity: f,
+                    median_s,
+                    errors: key_errors(&v.key_outputs, &reference_outputs),
+                    failure: None,
+                },
                 Err(e) => Row {
-                    laminae: l,
-                    tolerance: t,
-                    median_s: median,
-                    err_max_roller_load: None,
-                    err_max_stress: None,
-                    err_l10: None,
-                    err_cage_speed: None,
-                    err_total_heat: None,
-                    err_hottest_temperature: None,
-                    failure: Some(e.to_string()),
+                    fidelity: f,
+                    median_s,
+                    errors: key_errors(&[], &reference_outputs)
+                        .into_iter()
+                        .map(|k| KeyError { error: None, ..k })
+                        .collect(),
+                    failure: Some(e),
                 },
             });
         }
@@ -335,14 +302,13 @@ pub fn measure(
     let recommended = recommend(&rows);
     let mut table = FidelityTable {
         deck: deck.to_string(),
-        reference: REFERENCE,
+        grid,
+        reference: grid.reference,
         reference_outputs,
         reference_median_s,
         rows,
-        default: Fidelity::of(b),
+        default,
         recommended,
-        target_error: TARGET_ERROR,
-        guard_error: GUARD_ERROR,
         default_meets_target: None,
     };
     table.default_meets_target = table.default_row().map(Row::meets_target);
@@ -356,43 +322,47 @@ pub fn measure(
 const COST_TIE_BAND: f64 = 0.15;
 
 /// The cheapest row meeting the target *for good*: the row and every row of the grid with
-/// more laminae at its tolerance meet it. The slicing error of an edge-loaded roller
+/// a finer resolution at its tolerance meet it. The slicing error of an edge-loaded roller
 /// fluctuates with Γ (its contact zone ends inside a lamina, and where depends on Γ): on
 /// the aerospace deck the max-stress error is 0.05–0.18 % between Γ = 51 and 61, so a single
 /// cell can meet 0.1 % by luck while finer ones do not. Among the qualifying rows within
-/// [`COST_TIE_BAND`] of the cheapest, the one with the fewest laminae, then the loosest
-/// tolerance (a noise-independent choice: fewer laminae is less work per evaluation, and
-/// at equal Γ a looser tolerance is never slower).
+/// [`COST_TIE_BAND`] of the cheapest, the one with the coarsest resolution, then the
+/// loosest tolerance (a noise-independent choice: fewer laminae is less work per
+/// evaluation, and at equal resolution a looser tolerance is never slower).
 pub fn recommend(rows: &[Row]) -> Option<Recommended> {
     let stays_met = |r: &Row| {
         r.meets_target()
             && rows
                 .iter()
-                .filter(|f| f.tolerance == r.tolerance && f.laminae > r.laminae)
+                .filter(|f| {
+                    f.fidelity.tolerance == r.fidelity.tolerance
+                        && f.fidelity.resolution > r.fidelity.resolution
+                })
                 .all(Row::meets_target)
     };
     let ok = || rows.iter().filter(|r| stays_met(r));
     let cheapest = ok().map(|r| r.median_s).min_by(|a, b| a.total_cmp(b))?;
     ok().filter(|r| r.median_s <= (1.0 + COST_TIE_BAND) * cheapest)
         .min_by(|a, b| {
-            a.laminae
-                .cmp(&b.laminae)
-                .then(b.tolerance.total_cmp(&a.tolerance))
+            a.fidelity
+                .resolution
+                .cmp(&b.fidelity.resolution)
+                .then(b.fidelity.tolerance.total_cmp(&a.fidelity.tolerance))
         })
         .map(|r| Recommended {
-            laminae: r.laminae,
-            tolerance: r.tolerance,
+            fidelity: r.fidelity,
             median_s: r.median_s,
         })
 }
 
-/// Measure the standard grid ([`GRID_LAMINAE`] × [`GRID_TOLERANCES`]).
-pub fn measure_grid(
-    deck: &str,
-    b: &Bearing,
-    thermal: Option<&ThermalModel>,
-) -> Result<FidelityTable, SolveError> {
-    measure(deck, b, thermal, &GRID_LAMINAE, &GRID_TOLERANCES)
+/// Measure the system's standard grid ([`FidelityGrid::resolutions`] ×
+/// [`FidelityGrid::tolerances`]).
+pub fn measure_grid(deck: &str, case: &dyn Case) -> Result<FidelityTable, String> {
+    let system = case.system();
+    let grid = system
+        .fidelity_grid()
+        .ok_or_else(|| format!("the {} has no fidelity study", system.title()))?;
+    measure(deck, case, grid.resolutions, grid.tolerances)
 }
 
 fn pct(e: Option<f64>) -> String {
@@ -402,31 +372,45 @@ fn pct(e: Option<f64>) -> String {
     }
 }
 
+/// The labels of the target key outputs, joined ("max-stress and L-10").
+fn target_names(t: &FidelityTable) -> String {
+    let names: Vec<&str> = t
+        .reference_outputs
+        .iter()
+        .filter(|k| k.role == KeyRole::Target)
+        .map(|k| match k.name {
+            "max_stress_pa" => "max-stress",
+            "l10_mrev" => "L-10",
+            other => other,
+        })
+        .collect();
+    names.join(" and ")
+}
+
 /// A readable table: one line per cell, errors in percent, the recommended row marked `<=`.
 pub fn to_text(t: &FidelityTable) -> String {
     use std::fmt::Write;
+    let sym = t.grid.resolution_symbol;
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "deck {}: reference Γ = {}, tolerance {:.0e} ({:.3} ms)",
+        "deck {}: reference {sym} = {}, tolerance {:.0e} ({:.3} ms)",
         t.deck,
-        t.reference.laminae,
+        t.reference.resolution,
         t.reference.tolerance,
         1e3 * t.reference_median_s
     );
-    let _ = writeln!(
-        s,
-        "{:>5} {:>7} {:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "Γ", "tol", "median ms", "Qmax %", "σmax %", "L10 %", "cage %", "heat %", "Thot %"
-    );
+    let _ = write!(s, "{:>5} {:>7} {:>10}", sym, "tol", "median ms");
+    for k in &t.reference_outputs {
+        let _ = write!(s, " {:>9}", format!("{} %", k.label));
+    }
+    let _ = writeln!(s);
     for r in &t.rows {
         let mark = match t.recommended {
-            Some(rec) if rec.laminae == r.laminae && rec.tolerance == r.tolerance => {
-                "  <= recommended"
-            }
+            Some(rec) if rec.fidelity == r.fidelity => "  <= recommended",
             _ => "",
         };
-        let def = if t.default.laminae == r.laminae && t.default.tolerance == r.tolerance {
+        let def = if t.default == r.fidelity {
             "  (deck default)"
         } else {
             ""
@@ -434,8 +418,8 @@ pub fn to_text(t: &FidelityTable) -> String {
         let _ = write!(
             s,
             "{:>5} {:>7.0e} {:>10.4}",
-            r.laminae,
-            r.tolerance,
+            r.fidelity.resolution,
+            r.fidelity.tolerance,
             1e3 * r.median_s
         );
         match &r.failure {
@@ -443,16 +427,8 @@ pub fn to_text(t: &FidelityTable) -> String {
                 let _ = writeln!(s, "  failed: {f}{mark}{def}");
             }
             None => {
-                let _ = writeln!(
-                    s,
-                    " {} {} {} {} {} {}{mark}{def}",
-                    pct(r.err_max_roller_load),
-                    pct(r.err_max_stress),
-                    pct(r.err_l10),
-                    pct(r.err_cage_speed),
-                    pct(r.err_total_heat),
-                    pct(r.err_hottest_temperature)
-                );
+                let cells: Vec<String> = r.errors.iter().map(|e| pct(e.error)).collect();
+                let _ = writeln!(s, " {}{mark}{def}", cells.join(" "));
             }
         }
     }
@@ -463,16 +439,17 @@ pub fn to_text(t: &FidelityTable) -> String {
     };
     let _ = writeln!(
         s,
-        "deck default: Γ = {}, tolerance {:.0e}{verdict}",
-        t.default.laminae, t.default.tolerance
+        "deck default: {sym} = {}, tolerance {:.0e}{verdict}",
+        t.default.resolution, t.default.tolerance
     );
+    let targets = target_names(t);
     match t.recommended {
         Some(r) => {
             let _ = writeln!(
                 s,
-                "recommended: Γ = {}, tolerance {:.0e} ({:.4} ms; max-stress and L-10 errors < {} %, the other key outputs < {} %, here and at every finer Γ of the grid)",
-                r.laminae,
-                r.tolerance,
+                "recommended: {sym} = {}, tolerance {:.0e} ({:.4} ms; {targets} errors < {} %, the other key outputs < {} %, here and at every finer {sym} of the grid)",
+                r.fidelity.resolution,
+                r.fidelity.tolerance,
                 1e3 * r.median_s,
                 100.0 * TARGET_ERROR,
                 100.0 * GUARD_ERROR
@@ -481,7 +458,7 @@ pub fn to_text(t: &FidelityTable) -> String {
         None => {
             let _ = writeln!(
                 s,
-                "recommended: no cell of the grid meets {} % on max stress and L-10 with the other key outputs within {} % at its Γ and every finer one",
+                "recommended: no cell of the grid meets {} % on {targets} with the other key outputs within {} % at its {sym} and every finer one",
                 100.0 * TARGET_ERROR,
                 100.0 * GUARD_ERROR
             );
@@ -490,28 +467,92 @@ pub fn to_text(t: &FidelityTable) -> String {
     s
 }
 
-/// JSON of one table (`reference`, `rows`, `default`, `recommended`, plus `deck`).
-pub fn to_json(t: &FidelityTable) -> serde_json::Value {
-    serde_json::to_value(t).unwrap_or(serde_json::Value::Null)
+/// JSON of a number that may be absent (null).
+fn opt(v: Option<f64>) -> serde_json::Value {
+    v.map_or(serde_json::Value::Null, serde_json::Value::from)
 }
 
+/// JSON of a fidelity, its resolution under the system's name (`{"laminae": 81,
+/// "tolerance": 1e-9}`).
+fn fidelity_json(grid: &FidelityGrid, f: Fidelity) -> serde_json::Map<String, serde_json::Value> {
+    let mut m = serde_json::Map::new();
+    m.insert(grid.resolution_key.into(), f.resolution.into());
+    m.insert("tolerance".into(), f.tolerance.into());
+    m
+}
+
+/// JSON of one table (`deck`, `reference`, `reference_outputs`, `reference_median_s`,
+/// `rows` (each with its fidelity, `median_s`, one `err_<key output>` per key output and
+/// `failure` when it failed), `default`, `recommended`, `target_error`, `guard_error`,
+/// `default_meets_target`).
+pub fn to_json(t: &FidelityTable) -> serde_json::Value {
+    use serde_json::{Map, Value};
+    let g = &t.grid;
+    let rows: Vec<Value> = t
+        .rows
+        .iter()
+        .map(|r| {
+            let mut m = fidelity_json(g, r.fidelity);
+            m.insert("median_s".into(), r.median_s.into());
+            for e in &r.errors {
+                m.insert(e.json_key(), opt(e.error));
+            }
+            if let Some(f) = &r.failure {
+                m.insert("failure".into(), f.clone().into());
+            }
+            Value::Object(m)
+        })
+        .collect();
+    let outputs: Map<String, Value> = t
+        .reference_outputs
+        .iter()
+        .map(|k| (k.name.to_string(), opt(k.value)))
+        .collect();
+    let recommended = t.recommended.map_or(Value::Null, |r| {
+        let mut m = fidelity_json(g, r.fidelity);
+        m.insert("median_s".into(), r.median_s.into());
+        Value::Object(m)
+    });
+    let mut m = Map::new();
+    m.insert("deck".into(), t.deck.clone().into());
+    m.insert(
+        "reference".into(),
+        Value::Object(fidelity_json(g, t.reference)),
+    );
+    m.insert("reference_outputs".into(), Value::Object(outputs));
+    m.insert("reference_median_s".into(), t.reference_median_s.into());
+    m.insert("rows".into(), Value::Array(rows));
+    m.insert("default".into(), Value::Object(fidelity_json(g, t.default)));
+    m.insert("recommended".into(), recommended);
+    m.insert("target_error".into(), TARGET_ERROR.into());
+    m.insert("guard_error".into(), GUARD_ERROR.into());
+    m.insert(
+        "default_meets_target".into(),
+        t.default_meets_target.map_or(Value::Null, Value::from),
+    );
+    Value::Object(m)
+}
+
+/// A deck's name (file stem) and its case.
+pub type NamedCase = (String, Box<dyn Case>);
+
 /// The decks `rollbench bench` measures: `path` if given, else every `*.toml` in
-/// `./decks` (sorted), else the embedded aerospace deck. `sets` are `--set` overrides.
+/// `./decks` (sorted), else the default system's embedded example deck. `sets` are `--set`
+/// overrides.
 pub fn bench_decks(
     path: Option<&std::path::Path>,
     sets: &[String],
-) -> Result<Vec<(String, crate::deck::Deck)>, String> {
+) -> Result<Vec<NamedCase>, String> {
+    use crate::bearings::{load_case, load_file};
     let stem = |p: &std::path::Path| {
         p.file_stem().map_or_else(
             || p.display().to_string(),
             |s| s.to_string_lossy().into_owned(),
         )
     };
+    let file = |p: &std::path::Path| load_file(p, sets).map_err(|e| e.to_string());
     if let Some(p) = path {
-        return Ok(vec![(
-            stem(p),
-            crate::deck::Deck::load_with_overrides(Some(p), sets)?,
-        )]);
+        return Ok(vec![(stem(p), file(p)?)]);
     }
     let mut paths: Vec<std::path::PathBuf> = std::fs::read_dir("decks")
         .map(|d| {
@@ -523,20 +564,17 @@ pub fn bench_decks(
         .unwrap_or_default();
     paths.sort();
     if paths.is_empty() {
-        return Ok(vec![(
-            "aerospace (embedded)".to_string(),
-            crate::deck::Deck::load_with_overrides(None, sets)?,
-        )]);
+        let system = crate::bearings::system(crate::bearings::DEFAULT_SYSTEM)
+            .ok_or_else(|| "no default bearing system registered".to_string())?;
+        let case = load_case(
+            system.example_deck(),
+            "decks/aerospace.toml (embedded)",
+            sets,
+        )
+        .map_err(|e| e.to_string())?;
+        return Ok(vec![("aerospace (embedded)".to_string(), case)]);
     }
-    paths
-        .iter()
-        .map(|p| {
-            Ok((
-                stem(p),
-                crate::deck::Deck::load_with_overrides(Some(p), sets)?,
-            ))
-        })
-        .collect()
+    paths.iter().map(|p| Ok((stem(p), file(p)?))).collect()
 }
 
 /// Marks a `bench` error that is a solver failure of a deck's reference run (the binary
@@ -544,7 +582,8 @@ pub fn bench_decks(
 pub const REFERENCE_RUN_FAILED: &str = "reference run failed";
 
 /// `rollbench bench`: the tables of every deck as text, or JSON (one object for one deck,
-/// an array for several).
+/// an array for several). A deck whose system has no fidelity study is named in the text
+/// and left out of the JSON.
 pub fn bench_command(
     path: Option<&std::path::Path>,
     sets: &[String],
@@ -552,14 +591,21 @@ pub fn bench_command(
 ) -> Result<String, String> {
     let decks = bench_decks(path, sets)?;
     let mut tables = Vec::with_capacity(decks.len());
-    for (name, deck) in &decks {
-        let thermal = deck.thermal_model().map_err(|e| e.to_string())?;
-        let t = measure_grid(name, &deck.bearing, thermal.as_ref())
+    let mut skipped = Vec::new();
+    for (name, case) in &decks {
+        if case.system().fidelity_grid().is_none() || case.fidelity().is_none() {
+            skipped.push(format!(
+                "deck {name}: the {} has no fidelity study yet\n",
+                case.system().title()
+            ));
+            continue;
+        }
+        let t = measure_grid(name, &**case)
             .map_err(|e| format!("{name}: {REFERENCE_RUN_FAILED}: {e}"))?;
         tables.push(t);
     }
     if json {
-        let v = if tables.len() == 1 {
+        let v = if tables.len() == 1 && decks.len() == 1 {
             tables
                 .first()
                 .map(to_json)
@@ -569,36 +615,71 @@ pub fn bench_command(
         };
         Ok(serde_json::to_string_pretty(&v).map_err(|e| e.to_string())? + "\n")
     } else {
-        Ok(tables.iter().map(to_text).collect::<Vec<_>>().join("\n"))
+        let mut parts: Vec<String> = tables.iter().map(to_text).collect();
+        parts.extend(skipped);
+        Ok(parts.join("\n"))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bearings::spherical_roller::system::FIDELITY_GRID;
 
-    /// The grid `laminae × tolerances` of `b` (aerospace, no thermal network), measured.
-    fn measured(b: &Bearing, laminae: &[usize], tolerances: &[f64]) -> FidelityTable {
-        match measure("aerospace", b, None, laminae, tolerances) {
+    /// The aerospace deck (no thermal network), as a case.
+    fn aerospace() -> Box<dyn Case> {
+        let text = crate::deck::write_bearing(
+            &crate::bearings::spherical_roller::Bearing::example_aerospace(),
+            crate::units::Units::Us,
+        );
+        crate::bearings::load_case(&text, "aerospace", &[]).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The grid `resolutions × tolerances` of `case`, measured.
+    fn measured(case: &dyn Case, resolutions: &[usize], tolerances: &[f64]) -> FidelityTable {
+        match measure("aerospace", case, resolutions, tolerances) {
             Ok(t) => t,
             Err(e) => panic!("{e}"),
         }
     }
 
+    /// The spherical roller's key outputs, in its view's order: (name, label, role).
+    const KEYS: [(&str, &str, KeyRole); 6] = [
+        ("max_roller_load_n", "Qmax", KeyRole::Guard),
+        ("max_stress_pa", "σmax", KeyRole::Target),
+        ("l10_mrev", "L10", KeyRole::Target),
+        ("cage_speed_rpm", "cage", KeyRole::Guard),
+        ("total_heat_w", "heat", KeyRole::Guard),
+        ("hottest_temperature_c", "Thot", KeyRole::Guard),
+    ];
+
     /// A measured grid row: every key output `err` off, median `ms` milliseconds.
-    fn row(laminae: usize, tolerance: f64, ms: f64, err: f64) -> Row {
+    fn row(resolution: usize, tolerance: f64, ms: f64, err: f64) -> Row {
         Row {
-            laminae,
-            tolerance,
+            fidelity: Fidelity {
+                resolution,
+                tolerance,
+            },
             median_s: ms * 1e-3,
-            err_max_roller_load: Some(err),
-            err_max_stress: Some(err),
-            err_l10: Some(err),
-            err_cage_speed: Some(err),
-            err_total_heat: Some(err),
-            err_hottest_temperature: Some(err),
+            errors: KEYS
+                .iter()
+                .map(|&(name, label, role)| KeyError {
+                    name,
+                    label,
+                    role,
+                    error: Some(err),
+                })
+                .collect(),
             failure: None,
         }
+    }
+
+    /// `r` with the error of `name` set to `err`.
+    fn with(mut r: Row, name: &str, err: Option<f64>) -> Row {
+        for e in r.errors.iter_mut().filter(|e| e.name == name) {
+            e.error = err;
+        }
+        r
     }
 
     #[test]
@@ -609,6 +690,24 @@ mod tests {
         assert_eq!(relative_error(2.0, 0.0), 2.0);
         assert_eq!(relative_error_opt(None, None), Some(0.0));
         assert_eq!(relative_error_opt(Some(1.0), None), None);
+    }
+
+    /// The JSON names of the errors are the contract of issue 7's `bench --format json`.
+    #[test]
+    fn error_json_keys_keep_their_names() {
+        let r = row(5, 1e-4, 1.0, 0.0);
+        let keys: Vec<String> = r.errors.iter().map(KeyError::json_key).collect();
+        assert_eq!(
+            keys,
+            [
+                "err_max_roller_load",
+                "err_max_stress",
+                "err_l10",
+                "err_cage_speed",
+                "err_total_heat",
+                "err_hottest_temperature"
+            ]
+        );
     }
 
     #[test]
@@ -632,11 +731,11 @@ mod tests {
         ];
         for rows in [&run_a[..], &run_b[..]] {
             let r = recommend(rows).expect("a row meets the target");
-            assert_eq!((r.laminae, r.tolerance), (61, 1e-6));
+            assert_eq!((r.fidelity.resolution, r.fidelity.tolerance), (61, 1e-6));
         }
         // Outside the band the cheaper row wins even with more laminae.
         let rows = [row(61, 1e-6, 1.0, 8e-4), row(81, 1e-4, 0.5, 7e-4)];
-        assert_eq!(recommend(&rows).map(|r| r.laminae), Some(81));
+        assert_eq!(recommend(&rows).map(|r| r.fidelity.resolution), Some(81));
     }
 
     #[test]
@@ -644,12 +743,12 @@ mod tests {
         // Γ = 31 meets the target but Γ = 41 at the same tolerance does not (the fluctuating
         // slicing error of an edge-loaded roller): Γ = 31 is not recommended, Γ = 61 (met
         // from there on) is. A finer row at another tolerance does not count.
-        let row = |laminae: usize, tolerance: f64, err: f64| Row {
-            err_max_stress: Some(err),
-            err_l10: Some(5e-4),
-            err_total_heat: Some(1e-3),
-            err_hottest_temperature: None,
-            ..row(laminae, tolerance, laminae as f64 * 1e-2, 1e-4)
+        let row = |laminae: usize, tolerance: f64, err: f64| {
+            let r = row(laminae, tolerance, laminae as f64 * 1e-2, 1e-4);
+            let r = with(r, "max_stress_pa", Some(err));
+            let r = with(r, "l10_mrev", Some(5e-4));
+            let r = with(r, "total_heat_w", Some(1e-3));
+            with(r, "hottest_temperature_c", None)
         };
         let rows = [
             row(31, 1e-6, 6e-4),
@@ -658,12 +757,12 @@ mod tests {
             row(81, 1e-6, 7e-4),
             row(81, 1e-4, 5e-3),
         ];
-        let rec = recommend(&rows).map(|r| (r.laminae, r.tolerance));
+        let rec = recommend(&rows).map(|r| (r.fidelity.resolution, r.fidelity.tolerance));
         assert_eq!(rec, Some((61, 1e-6)));
         // With Γ = 41 meeting it too, Γ = 31 is the cheapest for good.
         let mut rows = rows;
-        rows[1].err_max_stress = Some(9e-4);
-        let rec = recommend(&rows).map(|r| (r.laminae, r.tolerance));
+        rows[1] = with(rows[1].clone(), "max_stress_pa", Some(9e-4));
+        let rec = recommend(&rows).map(|r| (r.fidelity.resolution, r.fidelity.tolerance));
         assert_eq!(rec, Some((31, 1e-6)));
     }
 
@@ -674,41 +773,42 @@ mod tests {
         // recommended however cheap. Each guarded output alone disqualifies a row just
         // above the guard and not just below it; a missing output (no thermal network)
         // does not.
-        let ok = Row {
-            err_max_stress: Some(5e-4),
-            err_l10: Some(5e-4),
-            err_total_heat: Some(2e-3),
-            err_hottest_temperature: None,
-            ..row(31, 1e-6, 0.3, 1e-4)
+        let ok = {
+            let r = row(31, 1e-6, 0.3, 1e-4);
+            let r = with(r, "max_stress_pa", Some(5e-4));
+            let r = with(r, "l10_mrev", Some(5e-4));
+            let r = with(r, "total_heat_w", Some(2e-3));
+            with(r, "hottest_temperature_c", None)
         };
-        let industrial_15 = Row {
-            laminae: 15,
-            tolerance: 1e-4,
-            median_s: 0.18e-3,
-            err_max_roller_load: Some(3.1e-4),
-            err_max_stress: Some(9.7e-4),
-            err_l10: Some(4.3e-4),
-            err_cage_speed: Some(8.4e-3),
-            err_total_heat: Some(0.157),
-            ..ok.clone()
+        let industrial_15 = {
+            let mut r = ok.clone();
+            r.fidelity = Fidelity {
+                resolution: 15,
+                tolerance: 1e-4,
+            };
+            r.median_s = 0.18e-3;
+            let r = with(r, "max_roller_load_n", Some(3.1e-4));
+            let r = with(r, "max_stress_pa", Some(9.7e-4));
+            let r = with(r, "l10_mrev", Some(4.3e-4));
+            let r = with(r, "cage_speed_rpm", Some(8.4e-3));
+            with(r, "total_heat_w", Some(0.157))
         };
         assert!(!industrial_15.meets_target());
-        let rec = recommend(&[industrial_15, ok.clone()]).map(|r| r.laminae);
+        let rec = recommend(&[industrial_15, ok.clone()]).map(|r| r.fidelity.resolution);
         assert_eq!(rec, Some(31));
-        type Field = fn(&mut Row) -> &mut Option<f64>;
-        let guarded: [Field; 4] = [
-            |r| &mut r.err_max_roller_load,
-            |r| &mut r.err_cage_speed,
-            |r| &mut r.err_total_heat,
-            |r| &mut r.err_hottest_temperature,
-        ];
-        for f in guarded {
-            let mut r = ok.clone();
-            *f(&mut r) = Some(1.01 * GUARD_ERROR);
+        for name in [
+            "max_roller_load_n",
+            "cage_speed_rpm",
+            "total_heat_w",
+            "hottest_temperature_c",
+        ] {
+            let r = with(ok.clone(), name, Some(1.01 * GUARD_ERROR));
             assert!(!r.meets_target(), "{r:?}");
-            *f(&mut r) = Some(0.99 * GUARD_ERROR);
+            let r = with(ok.clone(), name, Some(0.99 * GUARD_ERROR));
             assert!(r.meets_target(), "{r:?}");
         }
+        // A target output must exist: an absent L-10 misses the target.
+        assert!(!with(ok.clone(), "l10_mrev", None).meets_target());
         assert!(ok.meets_target());
     }
 
@@ -716,17 +816,23 @@ mod tests {
     fn reference_has_zero_error_and_recommendation_meets_target() {
         // The reference fidelity measured against itself has zero error (same
         // deterministic computation: exact), so a grid of {reference} recommends it.
-        let b = Bearing::example_aerospace();
-        let t = measured(&b, &[REFERENCE.laminae], &[REFERENCE.tolerance]);
+        let case = aerospace();
+        let reference = FIDELITY_GRID.reference;
+        let t = measured(&*case, &[reference.resolution], &[reference.tolerance]);
         let r = &t.rows[0];
-        assert_eq!(r.err_max_stress, Some(0.0));
-        assert_eq!(r.err_l10, Some(0.0));
-        assert_eq!(r.err_hottest_temperature, None);
-        let rec = t.recommended.map(|x| (x.laminae, x.tolerance));
+        assert_eq!(r.error("max_stress_pa"), Some(0.0));
+        assert_eq!(r.error("l10_mrev"), Some(0.0));
+        assert_eq!(r.error("hottest_temperature_c"), None);
+        let rec = t
+            .recommended
+            .map(|x| (x.fidelity.resolution, x.fidelity.tolerance));
         assert_eq!(rec, Some((400, 1e-10)));
         let json = to_json(&t);
         for k in [
+            "deck",
             "reference",
+            "reference_outputs",
+            "reference_median_s",
             "rows",
             "default",
             "recommended",
@@ -736,25 +842,25 @@ mod tests {
         ] {
             assert!(json.get(k).is_some(), "{k}");
         }
+        assert_eq!(json["reference"]["laminae"], 400);
+        assert!(json["rows"][0].get("err_max_stress").is_some());
         assert!(to_text(&t).contains("<= recommended"));
         // The deck's own Γ = 81 is not a cell of this one-cell grid.
         assert_eq!(t.default_meets_target, None);
         assert!(to_text(&t).contains("(not a cell of the grid)"));
         // A deck at the reference fidelity is that cell, which meets the targets.
-        let at_ref = measured(
-            &REFERENCE.apply(&b),
-            &[REFERENCE.laminae],
-            &[REFERENCE.tolerance],
-        );
-        assert_eq!(at_ref.default_meets_target, Some(true));
-        assert!(to_text(&at_ref).contains("(meets the targets)"));
+        let at_ref = case
+            .with_fidelity(reference)
+            .expect("spherical has fidelity");
+        let t = measured(&*at_ref, &[reference.resolution], &[reference.tolerance]);
+        assert_eq!(t.default_meets_target, Some(true));
+        assert!(to_text(&t).contains("(meets the targets)"));
     }
 
     #[test]
     #[ignore = "measurement, run by hand: cargo test --release --lib even_and_odd -- --ignored --nocapture"]
     fn even_and_odd_laminae() {
-        let b = Bearing::example_aerospace();
-        let t = measured(&b, &[10, 11, 20, 21, 40, 41], &[1e-9]);
+        let t = measured(&*aerospace(), &[10, 11, 20, 21, 40, 41], &[1e-9]);
         print!("{}", to_text(&t));
         assert_eq!(t.rows.len(), 6);
     }

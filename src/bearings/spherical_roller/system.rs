@@ -4,7 +4,9 @@
 use super::pipeline::{self, Analysis, Request};
 use super::report;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
-use crate::bearings::{BearingSystem, Case, Detail, RunOptions, Session, Solution, SolveError};
+use crate::bearings::{
+    BearingSystem, Case, Detail, Fidelity, FidelityGrid, RunOptions, Session, Solution, SolveError,
+};
 use crate::deck::{Deck, DeckErrors, FieldMeta};
 use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
@@ -12,6 +14,20 @@ use crate::units::Units;
 
 /// The deck `type` of this system.
 pub const SYSTEM_ID: &str = "spherical-roller";
+
+/// The fidelity study (issue 7): laminae Γ × force tolerance against Γ = 400 at 10⁻¹⁰ (the
+/// round-off floor of the equilibria). Odd Γ: a lamina on the roller mid-plane samples the
+/// crown apex (see `crate::verify::fidelity`); 400, the reference, is the exception.
+pub const FIDELITY_GRID: FidelityGrid = FidelityGrid {
+    resolution_key: "laminae",
+    resolution_symbol: "Γ",
+    resolutions: &[5, 7, 11, 15, 21, 31, 41, 61, 81, 121, 201, 400],
+    tolerances: &[1e-4, 1e-6, 1e-9],
+    reference: Fidelity {
+        resolution: 400,
+        tolerance: 1e-10,
+    },
+};
 
 /// The spherical roller bearing system (registered in `crate::bearings::SYSTEMS`).
 pub struct SphericalRoller;
@@ -64,6 +80,10 @@ impl BearingSystem for SphericalRoller {
             },
         ];
         &PANES
+    }
+
+    fn fidelity_grid(&self) -> Option<FidelityGrid> {
+        Some(FIDELITY_GRID)
     }
 
     fn template(&self, units: Units) -> String {
@@ -161,6 +181,24 @@ impl Case for SphericalCase {
 
     fn has_transient(&self) -> bool {
         self.thermal.is_some()
+    }
+
+    fn fidelity(&self) -> Option<Fidelity> {
+        let s = &self.deck.bearing.solver;
+        Some(Fidelity {
+            resolution: s.laminae,
+            tolerance: s.force_tolerance,
+        })
+    }
+
+    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
+        let mut deck = self.deck.clone();
+        deck.bearing.solver.laminae = f.resolution;
+        deck.bearing.solver.force_tolerance = f.tolerance;
+        Some(Box::new(SphericalCase {
+            deck,
+            thermal: self.thermal.clone(),
+        }))
     }
 }
 

@@ -615,8 +615,9 @@ fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
             .map(|n| n.temperature_c)
             .reduce(f64::max)
     });
-    let k = |name, value, quantity, role| KeyOutput {
+    let k = |name, label, value, quantity, role| KeyOutput {
         name,
+        label,
         value,
         quantity,
         role,
@@ -624,38 +625,44 @@ fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
     vec![
         k(
             "max_roller_load_n",
+            "Qmax",
             Some(max_roller_load_n),
             Quantity::Force,
             KeyRole::Guard,
         ),
         k(
             "max_stress_pa",
+            "σmax",
             Some(max_stress_pa),
             Quantity::Pressure,
             KeyRole::Target,
         ),
         k(
             "l10_mrev",
+            "L10",
             a.life.as_ref().and_then(|l| l.result.l10_bearing_mrev),
             Quantity::Dimensionless,
             KeyRole::Target,
         ),
         k(
             "cage_speed_rpm",
+            "cage",
             Some(a.speeds.cage_rpm),
-            Quantity::Dimensionless,
+            Quantity::Speed,
             KeyRole::Guard,
         ),
         k(
             "total_heat_w",
+            "heat",
             Some(a.friction.as_ref().map_or(0.0, |f| f.heat.total_w)),
             Quantity::Power,
             KeyRole::Guard,
         ),
         k(
             "hottest_temperature_c",
+            "Thot",
             hottest_temperature_c,
-            Quantity::Dimensionless,
+            Quantity::Temperature,
             KeyRole::Guard,
         ),
     ]
