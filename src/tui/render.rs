@@ -329,20 +329,35 @@ fn stale_note(app: &App) -> &'static str {
 /// The element table (Rollers pane): the view's screen table, each column in its display
 /// unit and precision; `—` where a stage was not run.
 fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
-    let block = pane_block(app, Pane::Elements, stale_note(app));
+    let u = app.display_units;
+    // The table is laid out for the pane's inner width (2 border cells).
+    let cells = app
+        .view
+        .as_deref()
+        .map(|v| view_model::table_cells(v, u, area.width.saturating_sub(2) as usize));
+    let hidden = match &cells {
+        Some(c) if c.hidden > 0 => format!(" · {} more columns on a wider terminal", c.hidden),
+        _ => String::new(),
+    };
+    let block = pane_block(app, Pane::Elements, &format!("{}{hidden}", stale_note(app)));
     let inner = block.inner(area);
     block.render(area, buf);
-    let Some(view) = app.view.as_deref() else {
+    let (Some(view), Some(cells)) = (app.view.as_deref(), cells) else {
         Paragraph::new(no_solution_text(app)).render(inner, buf);
         return;
     };
     let [table_area, foot] =
         Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(inner);
-    let u = app.display_units;
-    let (cols, rows) = view_model::table_cells(view, u);
-    let header = Row::new(cols.iter().map(|c| Cell::from(c.header.clone())))
-        .style(Style::default().fg(ACCENT).add_modifier(Modifier::BOLD));
-    let rows = rows.into_iter().map(|r| {
+    // Numbers are right-aligned, and so are their headers.
+    let header = Row::new(
+        cells
+            .columns
+            .iter()
+            .map(|c| Cell::from(Line::from(c.header.clone()).right_aligned())),
+    )
+    .style(Style::default().fg(ACCENT).add_modifier(Modifier::BOLD));
+    let gap = cells.gap;
+    let rows = cells.rows.into_iter().map(|r| {
         Row::new(r.into_iter().map(|c| {
             let style = if c == DASH {
                 Style::default().fg(DIM)
@@ -352,9 +367,15 @@ fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
             Cell::from(Line::from(c).right_aligned()).style(style)
         }))
     });
-    let widths: Vec<Constraint> = cols.iter().map(|c| Constraint::Length(c.width)).collect();
+    let widths: Vec<Constraint> = cells
+        .columns
+        .iter()
+        .map(|c| Constraint::Length(c.width))
+        .collect();
     let table = Table::new(rows, widths)
         .header(header)
+        .column_spacing(gap)
+        .flex(ratatui::layout::Flex::Start)
         .row_highlight_style(Style::default().fg(Color::Black).bg(Color::Yellow));
     let mut state = TableState::default().with_selected(Some(app.roller_sel));
     StatefulWidget::render(table, table_area, buf, &mut state);

@@ -657,8 +657,9 @@ fn tui_event_loop_end_to_end_on_test_backend() {
     assert!(screen.contains("Rollers"), "{screen}");
 }
 
-/// Every shipped deck opens, solves (or shows why not) and draws its rollers table and
-/// load chart at 80×24, and the overview at 120×40.
+/// Every shipped deck opens, solves (or shows why not) and draws every pane its system
+/// offers at 60×20 and 80×24, and the overview at 200×50 (with the element table focused,
+/// and with the stepper).
 #[test]
 fn tui_snapshot_shipped_decks() {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))
@@ -674,33 +675,49 @@ fn tui_snapshot_shipped_decks() {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
         let deck = DeckDoc::load(&path).expect("shipped deck loads");
-        for (pane, w, h) in [
-            (Pane::Elements, 80, 24),
-            (Pane::Chart, 80, 24),
-            (Pane::Elements, 120, 40),
-        ] {
+        let panes = App::new(deck.clone(), None).panes();
+        let mut shots: Vec<(Pane, u16, u16)> = Vec::new();
+        for (w, h) in [(60, 20), (80, 24)] {
+            shots.extend(panes.iter().map(|&p| (p, w, h)));
+        }
+        shots.extend(
+            [Pane::Elements, Pane::Stepper]
+                .into_iter()
+                .filter(|p| panes.contains(p))
+                .map(|p| (p, 200, 50)),
+        );
+        for (pane, w, h) in shots {
             let mut app = App::new(
                 deck.clone(),
                 Some(PathBuf::from(format!("decks/{stem}.toml"))),
             );
             app.handle(AppEvent::Resize(w, h));
             let cmds = app.start();
-            for c in cmds {
-                if let Command::Solve(job) = c {
-                    let outcome = solve_view(&job).map(Arc::new).map_err(|e| e.to_string());
-                    app.handle(AppEvent::Solved {
-                        generation: job.generation,
-                        outcome,
-                    });
-                }
-            }
+            run_sync_tolerant(&mut app, cmds);
             app.focus = pane;
+            let cmds = app.handle(AppEvent::Resize(w, h)); // what the pane needs
+            run_sync_tolerant(&mut app, cmds);
             snap(
                 &format!("deck_{stem}_{}", app.pane_title(pane).to_lowercase()),
                 &app,
                 w,
                 h,
             );
+        }
+    }
+}
+
+/// Like [`run_sync`], but a deck that does not solve shows its failure (as the worker
+/// would report it) instead of failing the test.
+fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
+    for c in cmds {
+        if let Command::Solve(job) = c {
+            let outcome = solve_view(&job).map(Arc::new).map_err(|e| e.to_string());
+            let more = app.handle(AppEvent::Solved {
+                generation: job.generation,
+                outcome,
+            });
+            run_sync_tolerant(app, more);
         }
     }
 }

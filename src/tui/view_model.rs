@@ -67,6 +67,48 @@ pub fn residual(v: f64) -> String {
     }
 }
 
+/// A number in at most `width` characters that reads back as `v` to within the precision
+/// it shows, or `…` when nothing that honest fits. Tried in order: `prec` decimals, fewer
+/// decimals, a k/M/G/T multiplier (`171.3k`), scientific (`1.7e5`). Never a number with
+/// digits or its sign dropped: a cut `171333.6` reads as `71333.6`.
+pub fn fit_number(v: f64, prec: usize, width: usize) -> String {
+    let fits = |s: &str| s.chars().count() <= width;
+    if !v.is_finite() {
+        let s = format!("{v}");
+        return if fits(&s) { s } else { "…".into() };
+    }
+    for p in (0..=prec).rev() {
+        let s = fixed(v, p);
+        if fits(&s) {
+            return s;
+        }
+    }
+    for (scale, suffix) in [(1e3, "k"), (1e6, "M"), (1e9, "G"), (1e12, "T")] {
+        if v.abs() >= 0.9995 * scale {
+            for p in (0..=3).rev() {
+                let mantissa = fixed(v / scale, p);
+                // 999.96k rounds to "1000.0k": the next multiplier says it better
+                let int_digits = mantissa
+                    .trim_start_matches('-')
+                    .split('.')
+                    .next()
+                    .map_or(0, str::len);
+                let s = format!("{mantissa}{suffix}");
+                if int_digits <= 3 && fits(&s) {
+                    return s;
+                }
+            }
+        }
+    }
+    for p in (0..=3).rev() {
+        let s = format!("{v:.p$e}");
+        if fits(&s) {
+            return s;
+        }
+    }
+    "…".into()
+}
+
 /// One column of a pane table: header (with unit) and width in cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
@@ -76,12 +118,32 @@ pub struct Column {
     pub width: u16,
 }
 
-/// The screen table of a view in display units `u`: the columns meant for the pane and
-/// one row of formatted cells per element (`—` where a stage was not run). Formatting
-/// only: the values come from the bearing system's view.
-pub fn table_cells(view: &View, u: Units) -> (Vec<Column>, Vec<Vec<String>>) {
+/// A view's element table laid out for a pane `width` cells wide.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TableCells {
+    /// The columns shown, each as wide as its widest cell (or narrower when the pane is
+    /// narrow: then its numbers switch to fewer decimals, k/M or scientific form).
+    pub columns: Vec<Column>,
+    /// One row of formatted cells per element (`—` where a stage was not run).
+    pub rows: Vec<Vec<String>>,
+    /// Columns left out because even at their narrowest they do not fit.
+    pub hidden: usize,
+    /// Spaces between columns.
+    pub gap: u16,
+}
+
+/// Narrowest a number column gets: room for `-1.2k` or `1.2e5`.
+const MIN_NUMBER_WIDTH: usize = 5;
+
+/// The screen table of a view in display units `u`, for a pane `width` cells wide
+/// (columns separated by two spaces, or one when room is short). Columns take the width of their widest cell and
+/// header; when that does not fit, the widest give way first, down to their header or
+/// [`MIN_NUMBER_WIDTH`], and their numbers are refitted ([`fit_number`]); columns that
+/// still do not fit are left out (counted in [`TableCells::hidden`]), never cut.
+/// Formatting only: the values come from the bearing system's view.
+pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
     let Some(t) = view.screen_table() else {
-        return (Vec::new(), Vec::new());
+        return TableCells::default();
     };
     let shown: Vec<(usize, Screen)> = t
         .columns
@@ -89,27 +151,102 @@ pub fn table_cells(view: &View, u: Units) -> (Vec<Column>, Vec<Vec<String>>) {
         .enumerate()
         .filter_map(|(i, c)| c.screen.map(|s| (i, s)))
         .collect();
-    let cols = shown
-        .iter()
-        .map(|(_, s)| Column {
-            header: s.display.header(s.label, u),
-            width: s.width,
-        })
-        .collect();
-    let rows = t
+    let values: Vec<Vec<Option<f64>>> = t
         .rows
         .iter()
         .map(|row| {
             shown
                 .iter()
-                .map(|&(i, s)| match row.get(i).copied().flatten() {
-                    Some(v) => fixed(s.display.convert(v, u), s.precision),
+                .map(|&(i, s)| {
+                    row.get(i)
+                        .copied()
+                        .flatten()
+                        .map(|v| s.display.convert(v, u))
+                })
+                .collect()
+        })
+        .collect();
+    let headers: Vec<String> = shown
+        .iter()
+        .map(|(_, s)| s.display.header(s.label, u))
+        .collect();
+    let natural: Vec<usize> = shown
+        .iter()
+        .enumerate()
+        .map(|(c, (_, s))| {
+            let cells = values.iter().map(|r| match r.get(c).copied().flatten() {
+                Some(v) => fixed(v, s.precision).chars().count(),
+                None => DASH.chars().count(),
+            });
+            cells
+                .chain(std::iter::once(
+                    headers.get(c).map_or(0, |h| h.chars().count()),
+                ))
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let floor: Vec<usize> = headers
+        .iter()
+        .zip(&natural)
+        .map(|(h, &n)| h.chars().count().max(MIN_NUMBER_WIDTH).min(n))
+        .collect();
+    let mut widths = natural.clone();
+    // Two spaces between columns when the natural widths allow it, else one.
+    let gap = if natural.iter().sum::<usize>() + 2 * natural.len().saturating_sub(1) <= width {
+        2
+    } else {
+        1
+    };
+    let total = |w: &[usize]| w.iter().sum::<usize>() + gap * w.len().saturating_sub(1);
+    // The widest (above its floor) gives way first, one cell at a time.
+    while total(&widths) > width {
+        let slack = widths
+            .iter()
+            .zip(&floor)
+            .enumerate()
+            .filter(|(_, (w, f))| w > f)
+            .max_by_key(|(_, (w, f))| **w - **f)
+            .map(|(i, _)| i);
+        match slack.and_then(|i| widths.get_mut(i)) {
+            Some(w) => *w -= 1,
+            None => break,
+        }
+    }
+    let mut n = widths.len();
+    while n > 0 && total(&widths[..n]) > width {
+        n -= 1;
+    }
+    let columns = headers
+        .iter()
+        .zip(&widths)
+        .take(n)
+        .map(|(h, &w)| Column {
+            header: h.clone(),
+            width: w as u16,
+        })
+        .collect();
+    let rows = values
+        .iter()
+        .map(|row| {
+            shown
+                .iter()
+                .zip(&widths)
+                .take(n)
+                .enumerate()
+                .map(|(c, ((_, s), &w))| match row.get(c).copied().flatten() {
+                    Some(v) => fit_number(v, s.precision, w),
                     None => DASH.to_string(),
                 })
                 .collect()
         })
         .collect();
-    (cols, rows)
+    TableCells {
+        columns,
+        rows,
+        hidden: shown.len() - n,
+        gap: gap as u16,
+    }
 }
 
 /// A chart in display units, with its bounds.
@@ -327,4 +464,69 @@ pub fn trace_step(t: &Trace, step: usize, u: Units) -> Option<StepView> {
         })
         .collect();
     Some(StepView { lines, bars })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The value a cell says, and half its last digit's place (the precision it claims):
+    /// `171.3k` → (171300, 50); `1.7e5` → (170000, 5000); `-12` → (−12, 0.5).
+    fn read_back(cell: &str) -> Option<(f64, f64)> {
+        let (body, mult) = match cell.chars().last()? {
+            'k' => (&cell[..cell.len() - 1], 1e3),
+            'M' => (&cell[..cell.len() - 1], 1e6),
+            'G' => (&cell[..cell.len() - 1], 1e9),
+            'T' => (&cell[..cell.len() - 1], 1e12),
+            _ => (cell, 1.0),
+        };
+        let (mantissa, exp) = match body.split_once('e') {
+            Some((m, e)) => (m, e.parse::<i32>().ok()?),
+            None => (body, 0),
+        };
+        let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+        let value = body.parse::<f64>().ok()? * mult;
+        let half_ulp = 0.5 * 10f64.powi(exp - decimals) * mult;
+        Some((value, half_ulp))
+    }
+
+    proptest! {
+        /// Every cell fits its width and reads back as its value within the precision it
+        /// shows, or is marked `…`: never a number with digits or its sign dropped.
+        #[test]
+        fn cells_read_back_or_are_marked(
+            mantissa in -1.0f64..1.0,
+            exp in -8i32..16,
+            prec in 0usize..5,
+            width in 1usize..12,
+        ) {
+            let v = mantissa * 10f64.powi(exp);
+            let cell = fit_number(v, prec, width);
+            prop_assert!(cell.chars().count() <= width, "{cell:?} wider than {width}");
+            if cell != "…" {
+                let (x, half_ulp) = read_back(&cell)
+                    .ok_or_else(|| TestCaseError::fail(format!("{cell:?} unreadable")))?;
+                prop_assert!(
+                    (x - v).abs() <= half_ulp * (1.0 + 1e-9) + 1e-300,
+                    "{v} shown as {cell:?} (reads {x} ± {half_ulp})"
+                );
+            }
+        }
+    }
+
+    /// The issue's cases: the industrial roller 1's 171333.6 N in a 7-wide column, and
+    /// −55324 at 60 columns: the digits and the sign survive.
+    #[test]
+    fn cut_numbers_of_the_issue() {
+        assert_eq!(fit_number(171_333.6, 1, 8), "171333.6");
+        assert_eq!(fit_number(171_333.6, 1, 7), "171334");
+        assert_eq!(fit_number(171_333.6, 1, 5), "171k");
+        assert_eq!(fit_number(-55_324.0, 0, 5), "-55k");
+        assert_eq!(fit_number(-55_324.0, 0, 4), "-55k");
+        assert_eq!(fit_number(-55_324.0, 0, 3), "…");
+        assert_eq!(fit_number(999_960.0, 0, 5), "1.00M");
+        assert_eq!(fit_number(999_960.0, 0, 4), "1.0M");
+        assert_eq!(fit_number(1051.8, 1, 4), "1052");
+    }
 }
