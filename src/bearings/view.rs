@@ -344,8 +344,21 @@ pub struct NodeSeries {
     pub name: String,
     /// Temperatures, °C, at [`Transient::time_s`].
     pub temperature_c: Vec<f64>,
+    /// The node's temperature limit, °C, if it has one.
+    pub limit_c: Option<f64>,
     /// Time to reach the node's limit, s (`None`: not reached or no limit).
     pub time_to_limit_s: Option<f64>,
+}
+
+/// One node's steady temperature.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SteadyNode {
+    /// Node name.
+    pub name: String,
+    /// Temperature, °C.
+    pub temperature_c: f64,
+    /// True when the temperature is given (a boundary), not solved.
+    pub fixed: bool,
 }
 
 /// A thermal transient.
@@ -360,8 +373,8 @@ pub struct Transient {
 /// A thermal network's results.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThermalResults {
-    /// Steady-state temperature of each node: name and °C.
-    pub steady: Vec<(String, f64)>,
+    /// Steady-state temperature of each node, in network order.
+    pub steady: Vec<SteadyNode>,
     /// The transient, when it was run.
     pub transient: Option<Transient>,
 }

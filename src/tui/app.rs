@@ -456,8 +456,12 @@ impl App {
                 self.path = Some(path);
                 self.dirty_keys.clear();
                 self.input_sel = 0;
-                // another deck may be another bearing system: its fields and panes
+                // another deck may be another bearing system: its fields and panes; its
+                // elements and nodes start from the first (the hottest)
                 self.fields = self.deck.fields();
+                self.roller_sel = 0;
+                self.step = 0;
+                self.thermal_node = None;
                 if !self.panes().contains(&self.focus) {
                     self.focus = Pane::Inputs;
                 }
@@ -684,9 +688,14 @@ impl App {
                 self.resolve_if_needed()
             }
             Pane::Thermal => {
-                // node whose transient is plotted; None = the hottest (view_model decides)
-                let next = self.thermal_node.map_or(0, |n| n as isize + by);
-                self.thermal_node = if next < 0 { None } else { Some(next as usize) };
+                // The plotted node: from the one shown (the hottest until one is
+                // picked), within the list.
+                let th = self.view.as_deref().and_then(|v| v.thermal.as_ref());
+                if let Some(th) = th {
+                    let hottest = super::view_model::hottest_node(th).unwrap_or(0);
+                    let cur = self.thermal_node.unwrap_or(hottest);
+                    self.thermal_node = Some(step(cur, th.steady.len()));
+                }
                 Vec::new()
             }
         }

@@ -7,8 +7,8 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{
-    Axis, Block, Borders, Cell, Chart, Clear, Dataset, GraphType, Paragraph, Row, Sparkline,
-    StatefulWidget, Table, TableState, Widget, Wrap,
+    Axis, Block, Borders, Cell, Chart, Clear, Dataset, GraphType, Paragraph, Row, StatefulWidget,
+    Table, TableState, Widget, Wrap,
 };
 
 use super::app::{App, Mode, Pane, PromptKind, SolveState, KEYS, MIN_SIZE};
@@ -494,10 +494,10 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
         .and_then(|v| v.thermal.as_ref())
         .map(|th| view_model::thermal_view(th, app.display_units, app.thermal_node));
     let Some(t) = view else {
-        let msg = if app.deck.has_thermal() {
-            "thermal results not available in this build"
-        } else {
-            "no thermal model in this deck"
+        let msg = match (&app.view, app.deck.has_thermal()) {
+            (_, false) => "no thermal model in this deck (see `rollbench template`, [thermal])",
+            (None, true) => "solving…",
+            (Some(_), true) => "the thermal network was not solved",
         };
         Paragraph::new(msg)
             .style(Style::default().fg(DIM))
@@ -508,52 +508,152 @@ fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     render_thermal_view(&t, inner, buf);
 }
 
-/// The thermal pane's contents (inside the border) for a given view.
+/// The thermal pane's contents (inside the border): what the selected node does (one
+/// line), its transient against time with the limit and the moment it is reached, and the
+/// node list with the selection highlighted (scrolled to keep it in view).
 pub fn render_thermal_view(t: &view_model::ThermalView, inner: Rect, buf: &mut Buffer) {
-    let [title, spark, table] = Layout::vertical([
-        Constraint::Length(1),
-        Constraint::Length(4),
+    let summary = t.summary();
+    // The account of the node is read whole: a second line when it is longer than the
+    // pane is wide.
+    let title_h = if summary.chars().count() > inner.width as usize {
+        2
+    } else {
+        1
+    };
+    let chart_h = if t.series.is_empty() {
+        0
+    } else {
+        (inner.height.saturating_sub(title_h) / 2).max(5)
+    };
+    let [title, chart, table] = Layout::vertical([
+        Constraint::Length(title_h),
+        Constraint::Length(chart_h),
         Constraint::Min(0),
     ])
     .areas(inner);
-    let limit = match t.time_to_limit_s {
-        Some(s) => format!("limit in {} s", view_model::fixed(s, 1)),
-        None => "limit not reached".into(),
-    };
-    Paragraph::new(format!(
-        "{} over {} s · {}",
-        t.series_name,
-        view_model::fixed(t.series_span_s, 0),
-        limit
-    ))
-    .render(title, buf);
-    // Sparkline bars are integers: map the series onto 1..=1000 between its extremes.
-    let lo = t.series.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = t.series.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let span = if hi > lo { hi - lo } else { 1.0 };
-    let data: Vec<u64> = t
-        .series
-        .iter()
-        .map(|v| (1.0 + (v - lo).max(0.0) / span * 999.0).round() as u64)
-        .collect();
-    Sparkline::default()
-        .data(&data)
-        .style(Style::default().fg(Color::Red))
-        .render(spark, buf);
-    let rows = t.steady.iter().map(|(n, v)| {
+    Paragraph::new(summary)
+        .wrap(Wrap { trim: true })
+        .render(title, buf);
+    if chart_h > 0 {
+        render_thermal_chart(t, chart, buf);
+    }
+    let u = &t.temperature_unit;
+    let rows = t.nodes.iter().map(|n| {
+        let num = |v: Option<f64>, p: usize| {
+            Cell::from(
+                Line::from(v.map_or("—".to_string(), |x| view_model::fixed(x, p))).right_aligned(),
+            )
+        };
+        let name = if n.fixed {
+            format!("{} (given)", n.name)
+        } else {
+            n.name.clone()
+        };
         Row::new(vec![
-            Cell::from(n.clone()),
-            Cell::from(Line::from(view_model::fixed(*v, 1)).right_aligned()),
+            Cell::from(name),
+            num(Some(n.steady), 1),
+            num(n.limit, 1),
+            num(n.time_to_limit_s, 1),
         ])
     });
-    let steady = Table::new(rows, [Constraint::Min(10), Constraint::Length(10)]).header(
+    let nodes = Table::new(
+        rows,
+        [
+            Constraint::Min(10),
+            Constraint::Length(8),
+            Constraint::Length(8),
+            Constraint::Length(8),
+        ],
+    )
+    .header(
         Row::new(vec![
             Cell::from("node"),
-            Cell::from(format!("T {}", t.temperature_unit)),
+            Cell::from(Line::from(format!("T {u}")).right_aligned()),
+            Cell::from(Line::from(format!("lim {u}")).right_aligned()),
+            Cell::from(Line::from("at s").right_aligned()),
         ])
         .style(Style::default().fg(ACCENT)),
-    );
-    Widget::render(steady, table, buf);
+    )
+    .row_highlight_style(Style::default().fg(Color::Black).bg(Color::Yellow));
+    let mut state = TableState::default().with_selected(Some(t.selected));
+    StatefulWidget::render(nodes, table, buf, &mut state);
+}
+
+/// The selected node's temperature against time, its limit as a line and the time it is
+/// reached as a point.
+fn render_thermal_chart(t: &view_model::ThermalView, area: Rect, buf: &mut Buffer) {
+    let finite = t
+        .series
+        .iter()
+        .filter(|p| p.0.is_finite() && p.1.is_finite());
+    let (mut lo, mut hi) = finite
+        .clone()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p.1), h.max(p.1))
+        });
+    let t0 = finite.clone().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let t1 = finite.map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    if !(lo.is_finite() && hi.is_finite() && t0.is_finite() && t1.is_finite()) {
+        return;
+    }
+    let node = t.node();
+    let limit = node.and_then(|n| n.limit);
+    if let Some(l) = limit {
+        lo = lo.min(l);
+        hi = hi.max(l);
+    }
+    let pad = if hi > lo { 0.05 * (hi - lo) } else { 1.0 };
+    let (lo, hi) = (lo - pad, hi + pad);
+    let t1 = if t1 > t0 { t1 } else { t0 + 1.0 };
+    let limit_line: Vec<(f64, f64)> = limit.map_or(Vec::new(), |l| vec![(t0, l), (t1, l)]);
+    let reached: Vec<(f64, f64)> = match (limit, node.and_then(|n| n.time_to_limit_s)) {
+        (Some(l), Some(at)) => vec![(at, l)],
+        _ => Vec::new(),
+    };
+    let mut datasets = vec![Dataset::default()
+        .name(node.map_or(String::new(), |n| n.name.clone()))
+        .marker(Marker::Braille)
+        .graph_type(GraphType::Line)
+        .style(Style::default().fg(Color::Red))
+        .data(&t.series)];
+    if !limit_line.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name("limit")
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(Color::Yellow))
+                .data(&limit_line),
+        );
+    }
+    if !reached.is_empty() {
+        datasets.push(
+            Dataset::default()
+                .name("reached")
+                .marker(Marker::Block)
+                .graph_type(GraphType::Scatter)
+                .style(Style::default().fg(Color::White))
+                .data(&reached),
+        );
+    }
+    let u = &t.temperature_unit;
+    Chart::new(datasets)
+        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
+        .x_axis(
+            Axis::default()
+                .title("t s")
+                .style(Style::default().fg(DIM))
+                .bounds([t0, t1])
+                .labels(axis_labels([t0, t1], 0)),
+        )
+        .y_axis(
+            Axis::default()
+                .title(u.clone())
+                .style(Style::default().fg(DIM))
+                .bounds([lo, hi])
+                .labels(axis_labels([lo, hi], 0)),
+        )
+        .render(area, buf);
 }
 
 /// One cell per value, ▁..█ scaled to `max`.

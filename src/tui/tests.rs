@@ -536,10 +536,13 @@ fn tui_tiny_sizes_do_not_panic() {
 
 // ---------------------------------------------------------------- worker
 
+/// A job on the aerospace deck, parsed once: submitting a burst of jobs must not take
+/// longer than the worker needs to pick one up (the burst tests count the solves).
 fn job(generation: u64) -> app::SolveJob {
+    static CASE: std::sync::OnceLock<Arc<dyn crate::bearings::Case>> = std::sync::OnceLock::new();
     app::SolveJob {
         generation,
-        case: deck_app().deck.case(),
+        case: Arc::clone(CASE.get_or_init(|| deck_app().deck.case())),
         detail: Detail::default(),
     }
 }
@@ -775,19 +778,28 @@ fn tui_parsed_deck_text_round_trips_unchanged() {
 fn tui_thermal_view_renders() {
     use ratatui::buffer::Buffer;
     use ratatui::layout::Rect;
+    let row = |name: &str, steady: f64, limit: Option<f64>, at: Option<f64>| view_model::NodeRow {
+        name: name.into(),
+        steady,
+        fixed: false,
+        limit,
+        time_to_limit_s: at,
+    };
     let view = view_model::ThermalView {
-        steady: vec![
-            ("inner ring".into(), 121.5),
-            ("outer ring".into(), 98.25),
-            ("oil out".into(), 104.0),
+        nodes: vec![
+            row("inner ring", 121.5, Some(110.0), Some(312.25)),
+            row("outer ring", 98.25, None, None),
+            row("oil out", 104.0, None, None),
         ],
+        selected: 0,
+        selected_is_hottest: true,
         temperature_unit: "°C".into(),
-        series_name: "inner ring".into(),
         series: (0..40)
-            .map(|i| 40.0 + 80.0 * (1.0 - (-(i as f64) / 10.0).exp()))
+            .map(|i| {
+                let t = 15.0 * i as f64;
+                (t, 40.0 + 80.0 * (1.0 - (-(i as f64) / 10.0).exp()))
+            })
             .collect(),
-        series_span_s: 600.0,
-        time_to_limit_s: Some(312.25),
     };
     let area = Rect::new(0, 0, 40, 10);
     let mut buf = Buffer::empty(area);
@@ -801,7 +813,17 @@ fn tui_thermal_view_renders() {
         })
         .collect();
     assert_snapshot!("thermal_view_40x10", text);
-    for series in [vec![], vec![5.0], vec![f64::NAN, 1.0], vec![3.0; 10]] {
+    assert_eq!(
+        view.summary(),
+        "inner ring (hottest): 40.0 → 118.4 °C over 585 s · limit 110.0 °C at 312.2 s"
+    );
+    let series_cases: [Vec<(f64, f64)>; 4] = [
+        vec![],
+        vec![(0.0, 5.0)],
+        vec![(0.0, f64::NAN), (1.0, 1.0)],
+        vec![(0.0, 3.0); 10],
+    ];
+    for series in series_cases {
         let v = view_model::ThermalView {
             series,
             ..view.clone()
@@ -812,6 +834,62 @@ fn tui_thermal_view_renders() {
             render::render_thermal_view(&v, r, &mut b);
         }
     }
+}
+
+/// The thermal node walk of the issue (`4`, then `j j k k k k G G k Home End`): the
+/// selection stays on a node of the list, `G` is the last node, `j`/`k` always move it,
+/// and the node list scrolls to keep it in view (issue 15 #2).
+#[test]
+fn thermal_node_selection_stays_in_the_list() {
+    let mut app = solved_app(Pane::Thermal, 80, 24);
+    let n = app
+        .view
+        .as_ref()
+        .and_then(|v| v.thermal.as_ref())
+        .map(|t| t.steady.len())
+        .expect("the aerospace deck has a thermal network");
+    assert!(n > 10, "{n} nodes");
+    let hottest = app
+        .view
+        .as_ref()
+        .and_then(|v| v.thermal.as_ref())
+        .and_then(view_model::hottest_node)
+        .expect("a hottest node");
+    let mut seen = Vec::new();
+    for k in ["j", "j", "k", "k", "k", "k", "G", "G", "k", "Home", "End"] {
+        let code = match k {
+            "Home" => KeyCode::Home,
+            "End" => KeyCode::End,
+            c => KeyCode::Char(c.chars().next().unwrap_or('j')),
+        };
+        app.handle(key(code));
+        let sel = app.thermal_node.expect("a node is selected");
+        assert!(sel < n, "{k}: {sel} of {n}");
+        seen.push(sel);
+    }
+    let expect_first = (hottest + 2).min(n - 1) - 1;
+    assert_eq!(seen[2], expect_first, "k moves back from where j left it");
+    assert_eq!(seen[6], n - 1, "G is the last node");
+    assert_eq!(seen[8], n - 2, "k after G moves up");
+    assert_eq!(seen[9], 0);
+    assert_eq!(seen[10], n - 1);
+    // The last node is on screen, highlighted.
+    let t = draw(&app, 80, 24);
+    let last = app
+        .view
+        .as_ref()
+        .and_then(|v| v.thermal.as_ref())
+        .and_then(|t| t.steady.last())
+        .map(|s| s.name.clone())
+        .expect("a last node");
+    let screen: String = t
+        .backend()
+        .buffer()
+        .content()
+        .iter()
+        .map(|c| c.symbol())
+        .collect();
+    assert!(screen.contains(&last), "{last} not on screen");
 }
 
 /// The whole loop with a solver that panics: the frame shows a failed solve and the

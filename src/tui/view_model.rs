@@ -313,63 +313,128 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
     }
 }
 
-/// What the thermal pane shows. Built by [`thermal_view`]; `None` means the deck has
-/// no thermal model (or the thermal stage has not landed yet).
+/// One node of the thermal pane's list, display units.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct ThermalView {
-    /// Steady-state temperatures: node name and temperature in display units.
-    pub steady: Vec<(String, f64)>,
-    /// Temperature unit label (°C or °F).
-    pub temperature_unit: String,
-    /// Name of the node whose transient is plotted (the hottest by default).
-    pub series_name: String,
-    /// Transient temperature samples of that node, display units, evenly spaced in time.
-    pub series: Vec<f64>,
-    /// Time span of `series`, s.
-    pub series_span_s: f64,
-    /// Time for that node to reach its limit, s (`None`: not reached or no limit).
+pub struct NodeRow {
+    /// Node name.
+    pub name: String,
+    /// Steady temperature.
+    pub steady: f64,
+    /// True for a boundary (given) temperature.
+    pub fixed: bool,
+    /// The node's limit, if any.
+    pub limit: Option<f64>,
+    /// Time to reach it in the transient, s.
     pub time_to_limit_s: Option<f64>,
 }
 
-/// The thermal pane's data; `node` picks the node whose transient is plotted (`None`
-/// or out of range: the hottest).
+/// What the thermal pane shows, display units. Built by [`thermal_view`].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ThermalView {
+    /// Every node, network order.
+    pub nodes: Vec<NodeRow>,
+    /// The selected node (index into `nodes`): the plotted one.
+    pub selected: usize,
+    /// True when the selection is the default, the node hottest at the end of the
+    /// transient (or in the steady state without one).
+    pub selected_is_hottest: bool,
+    /// Temperature unit label (°C or °F).
+    pub temperature_unit: String,
+    /// The selected node's transient: (time s, temperature); empty without a transient.
+    pub series: Vec<(f64, f64)>,
+}
+
+impl ThermalView {
+    /// The selected node.
+    pub fn node(&self) -> Option<&NodeRow> {
+        self.nodes.get(self.selected)
+    }
+
+    /// The one-line account of the selected node's transient: start and end temperature,
+    /// the span, and its limit (reached when, or not).
+    pub fn summary(&self) -> String {
+        let Some(n) = self.node() else {
+            return "no nodes".into();
+        };
+        let u = &self.temperature_unit;
+        let which = if self.selected_is_hottest {
+            " (hottest)"
+        } else {
+            ""
+        };
+        let limit = match (n.limit, n.time_to_limit_s) {
+            (Some(l), Some(t)) => format!(" · limit {} {u} at {} s", fixed(l, 1), fixed(t, 1)),
+            (Some(l), None) => format!(" · limit {} {u} not reached", fixed(l, 1)),
+            (None, _) => " · no limit".into(),
+        };
+        match (self.series.first(), self.series.last()) {
+            (Some(&(t0, a)), Some(&(t1, b))) => format!(
+                "{}{which}: {} → {} {u} over {} s{limit}",
+                n.name,
+                fixed(a, 1),
+                fixed(b, 1),
+                fixed(t1 - t0, 0)
+            ),
+            _ => format!(
+                "{}{which}: steady {} {u}{limit} (no transient)",
+                n.name,
+                fixed(n.steady, 1)
+            ),
+        }
+    }
+}
+
+/// The index of the node hottest at the end of the transient, else in the steady state.
+pub fn hottest_node(th: &ThermalResults) -> Option<usize> {
+    let last = |i: usize| -> f64 {
+        th.transient
+            .as_ref()
+            .and_then(|tr| tr.nodes.get(i))
+            .and_then(|n| n.temperature_c.last().copied())
+            .or_else(|| th.steady.get(i).map(|n| n.temperature_c))
+            .unwrap_or(f64::MIN)
+    };
+    (0..th.steady.len()).max_by(|&a, &b| last(a).total_cmp(&last(b)))
+}
+
+/// The thermal pane's data; `node` picks the plotted node (`None`: the hottest; out of
+/// range: the last).
 pub fn thermal_view(th: &ThermalResults, u: Units, node: Option<usize>) -> ThermalView {
     let (conv, unit): (fn(f64) -> f64, &str) = match u {
         Units::Si => (|c| c, "°C"),
         Units::Us => (|c| c * FAHRENHEIT_PER_KELVIN + 32.0, "°F"),
     };
-    let steady: Vec<(String, f64)> = th
+    let transient = |i: usize| th.transient.as_ref().and_then(|tr| tr.nodes.get(i));
+    let nodes: Vec<NodeRow> = th
         .steady
         .iter()
-        .map(|(name, t)| (name.clone(), conv(*t)))
+        .enumerate()
+        .map(|(i, n)| NodeRow {
+            name: n.name.clone(),
+            steady: conv(n.temperature_c),
+            fixed: n.fixed,
+            limit: transient(i).and_then(|t| t.limit_c).map(conv),
+            time_to_limit_s: transient(i).and_then(|t| t.time_to_limit_s),
+        })
         .collect();
-    let mut view = ThermalView {
-        steady,
-        temperature_unit: unit.to_string(),
-        ..ThermalView::default()
-    };
-    if let Some(tr) = &th.transient {
-        // Default: the node hottest at the end of the transient.
-        let hottest = tr
-            .nodes
+    let hottest = hottest_node(th).unwrap_or(0);
+    let selected = node.map_or(hottest, |i| i.min(nodes.len().saturating_sub(1)));
+    let series = match (&th.transient, transient(selected)) {
+        (Some(tr), Some(n)) => tr
+            .time_s
             .iter()
-            .enumerate()
-            .max_by(|x, y| {
-                let lx = x.1.temperature_c.last().copied().unwrap_or(f64::MIN);
-                let ly = y.1.temperature_c.last().copied().unwrap_or(f64::MIN);
-                lx.total_cmp(&ly)
-            })
-            .map(|(i, _)| i);
-        let pick = node.filter(|&i| i < tr.nodes.len()).or(hottest);
-        if let Some(n) = pick.and_then(|i| tr.nodes.get(i)) {
-            view.series_name = n.name.clone();
-            view.series = n.temperature_c.iter().map(|c| conv(*c)).collect();
-            view.series_span_s = tr.time_s.last().copied().unwrap_or(0.0)
-                - tr.time_s.first().copied().unwrap_or(0.0);
-            view.time_to_limit_s = n.time_to_limit_s;
-        }
+            .zip(&n.temperature_c)
+            .map(|(&t, &c)| (t, conv(c)))
+            .collect(),
+        _ => Vec::new(),
+    };
+    ThermalView {
+        nodes,
+        selected,
+        selected_is_hottest: node.is_none(),
+        temperature_unit: unit.to_string(),
+        series,
     }
-    view
 }
 
 /// One row of bars of a stepper step, display units.

@@ -7,8 +7,8 @@ use super::pipeline::Analysis;
 use super::stages::{LaminaFriction, RacewayStress};
 use crate::bearings::view::{
     Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, NodeSeries, Screen, Series,
-    SolveStats, Summary, Table, ThermalResults, Trace, TraceBars, TraceColumn, TraceFormat,
-    TraceLine, TraceStep, Transient, View,
+    SolveStats, SteadyNode, Summary, Table, ThermalResults, Trace, TraceBars, TraceColumn,
+    TraceFormat, TraceLine, TraceStep, Transient, View,
 };
 use crate::physics::contact::line::LineContact;
 use crate::physics::lubrication::film;
@@ -536,7 +536,11 @@ fn thermal(a: &Analysis) -> Option<ThermalResults> {
             .steady
             .nodes
             .iter()
-            .map(|n| (n.name.clone(), n.temperature_c))
+            .map(|n| SteadyNode {
+                name: n.name.clone(),
+                temperature_c: n.temperature_c,
+                fixed: n.fixed,
+            })
             .collect(),
         transient: th.transient.as_ref().map(|tr| Transient {
             time_s: tr.time_s.clone(),
@@ -546,6 +550,7 @@ fn thermal(a: &Analysis) -> Option<ThermalResults> {
                 .map(|n| NodeSeries {
                     name: n.name.clone(),
                     temperature_c: n.temperature_c.clone(),
+                    limit_c: n.limit_c,
                     time_to_limit_s: n.time_to_limit_s,
                 })
                 .collect(),
