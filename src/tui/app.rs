@@ -166,6 +166,8 @@ pub enum Mode {
     },
     /// Help overlay.
     Help,
+    /// The last error, whole, in a popup (`e` reopens it).
+    Error,
 }
 
 /// The whole UI state. Rendering reads it through `&App`; nothing is locked.
@@ -218,6 +220,9 @@ pub struct App {
     pub thermal_node: Option<usize>,
     /// One-line message for the status bar (saved, errors).
     pub message: Option<String>,
+    /// The last error (a failed open, save or solve), whole, one message per line: the
+    /// status line shows its start, the error popup (`e`) all of it.
+    pub error: Option<String>,
     /// Set when the app should exit.
     pub quit: bool,
     /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
@@ -262,6 +267,7 @@ impl App {
             step: 0,
             thermal_node: None,
             message: None,
+            error: None,
             quit: false,
             quit_after_save: false,
             signal: None,
@@ -423,7 +429,10 @@ impl App {
                         self.dirty_keys.retain(|_, g| *g > generation);
                     }
                     // a failed solve leaves the edits unsolved (still marked)
-                    Err(reason) => self.solve = SolveState::Failed(reason),
+                    Err(reason) => {
+                        self.error = Some(reason.clone());
+                        self.solve = SolveState::Failed(reason);
+                    }
                 }
                 Vec::new()
             }
@@ -438,7 +447,9 @@ impl App {
                 Vec::new()
             }
             AppEvent::Saved(Err(e)) => {
-                self.message = Some(format!("save failed: {e}"));
+                self.message = Some("save failed (e: the whole message)".into());
+                self.error = Some(format!("save failed:\n{e}"));
+                self.mode = Mode::Error;
                 self.quit_after_save = false;
                 Vec::new()
             }
@@ -468,7 +479,9 @@ impl App {
                 vec![self.submit()]
             }
             AppEvent::Opened(Err(e)) => {
-                self.message = Some(format!("open failed: {e}"));
+                self.message = Some("open failed (e: the whole message)".into());
+                self.error = Some(format!("open failed:\n{e}"));
+                self.mode = Mode::Error;
                 Vec::new()
             }
             AppEvent::SaveTargetChecked { path, exists } => {
@@ -494,7 +507,7 @@ impl App {
     fn on_key(&mut self, key: KeyEvent) -> Vec<Command> {
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
         match self.mode.clone() {
-            Mode::Help => {
+            Mode::Help | Mode::Error => {
                 self.mode = Mode::Normal;
                 Vec::new()
             }
@@ -577,7 +590,17 @@ impl App {
         self.message = None;
         match key.code {
             KeyCode::Char('c') if ctrl => self.request_quit(),
-            KeyCode::Char('q') | KeyCode::Esc => self.request_quit(),
+            // Esc only ever cancels or goes back (a prompt, an edit, a popup); q quits.
+            KeyCode::Char('q') => self.request_quit(),
+            KeyCode::Esc => Vec::new(),
+            KeyCode::Char('e') => {
+                if self.error.is_some() {
+                    self.mode = Mode::Error;
+                } else {
+                    self.message = Some("no error to show".into());
+                }
+                Vec::new()
+            }
             KeyCode::Char('s') if ctrl => match &self.path {
                 Some(p) => vec![Command::Save {
                     path: p.clone(),
@@ -618,7 +641,8 @@ impl App {
                 Vec::new()
             }
             KeyCode::Char('r') => vec![self.submit()],
-            KeyCode::Char('c') => {
+            // The chart pane's mode: shown there, so only acted on where it is seen.
+            KeyCode::Char('c') if self.visible(Pane::Chart) => {
                 self.chart_laminae = !self.chart_laminae;
                 Vec::new()
             }
@@ -941,7 +965,7 @@ fn view_trace_len(view: &View) -> usize {
 /// Every key binding, for the help overlay and the README: (keys, context, action).
 pub const KEYS: &[(&str, &str, &str)] = &[
     ("Tab / Shift-Tab", "any", "next / previous pane"),
-    ("1..5", "any", "jump to a pane (numbers in the tab bar)"),
+    ("1..9", "any", "jump to a pane (numbers in the tab bar)"),
     ("j k / ↓ ↑", "any", "move selection (field or roller)"),
     (
         "PgDn PgUp",
@@ -956,7 +980,7 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     (
         "j k / ↓ ↑",
         "Thermal",
-        "plotted node (above the first: hottest)",
+        "plotted node (the hottest until one is picked)",
     ),
     ("Enter", "Inputs", "edit field; Enter commits, Esc cancels"),
     (
@@ -972,7 +996,7 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ("h l / ← →", "Rollers, Load", "previous / next roller"),
     (
         "c",
-        "any",
+        "Load (when shown)",
         "load chart: roller loads ↔ load per length along the roller",
     ),
     ("u", "any", "display units SI ↔ US"),
@@ -982,6 +1006,18 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ("S", "any", "save as…"),
     ("o", "any", "open a deck…"),
     ("R", "any", "revert to the saved file"),
+    ("e", "any", "the last error, whole (any key closes)"),
     ("?", "any", "this help (any key closes)"),
-    ("q / Esc / Ctrl-c", "any", "quit (asks if unsaved)"),
+    ("Esc", "any", "cancel: an edit, a prompt, a popup"),
+    ("q / Ctrl-c", "any", "quit (asks if unsaved)"),
 ];
+
+/// [`KEYS`] as the Markdown table of the README and `docs/workbench.md` (a test keeps
+/// both in step with the program).
+pub fn keys_markdown() -> String {
+    let mut s = String::from("| Key | Where | Action |\n|---|---|---|\n");
+    for (k, ctx, what) in KEYS {
+        s.push_str(&format!("| `{k}` | {ctx} | {what} |\n"));
+    }
+    s
+}

@@ -65,6 +65,7 @@ impl Widget for &App {
         render_hints(self, hints, buf);
         match &self.mode {
             Mode::Help => render_help(area, buf),
+            Mode::Error => render_error(self.error.as_deref().unwrap_or(""), area, buf),
             Mode::Prompt { kind, buffer } => render_prompt(*kind, buffer, area, buf),
             Mode::ConfirmQuit => render_confirm(
                 "Unsaved changes",
@@ -783,7 +784,13 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             ),
             Color::Green,
         ),
-        SolveState::Failed(r) => (format!("✗ failed: {r}"), Color::Red),
+        SolveState::Failed(r) => (
+            format!(
+                "✗ failed (e: whole message): {}",
+                r.lines().next().unwrap_or("")
+            ),
+            Color::Red,
+        ),
     };
     let mut spans = vec![Span::styled(
         text,
@@ -807,22 +814,61 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
     Line::from(spans).render(area, buf);
 }
 
-fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
-    let hints = match &app.mode {
-        Mode::Editing { .. } => "Enter commit · Esc cancel · ←→ move · ↑↓ cycle choices · Backspace/Del erase",
-        Mode::Prompt { .. } => "type a path · Enter confirm · Esc cancel",
+/// The footer's hints for the mode and pane, most useful first; the last ones (help,
+/// quit) are always shown, the others as far as the width allows.
+fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
+    let el = app.element_name();
+    let v = |items: &[&str]| items.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    match &app.mode {
+        Mode::Editing { .. } => (
+            v(&[
+                "Enter commit",
+                "←→ move",
+                "↑↓ cycle choices",
+                "Backspace/Del erase",
+            ]),
+            v(&["Esc cancel"]),
+        ),
+        Mode::Prompt { .. } => (v(&["type a path", "Enter confirm"]), v(&["Esc cancel"])),
         Mode::ConfirmQuit | Mode::ConfirmRevert | Mode::ConfirmOverwrite { .. } => {
-            "answer the prompt"
+            (v(&["answer the prompt"]), Vec::new())
         }
-        Mode::Help => "any key closes help",
-        Mode::Normal => match app.focus {
-            Pane::Inputs => "Tab pane · jk move · Enter edit · u units · ^z/^y undo/redo · ^s save · ? help · q quit",
-            Pane::Elements | Pane::Chart => "Tab pane · jk roller · Enter stepper · c chart · u units · ^s save · ? help · q quit",
-            Pane::Stepper => "Tab pane · hl step · PgUp/PgDn ±10 · jk roller · u units · ? help · q quit",
-            Pane::Thermal => "Tab pane · jk node · u units · ^s save · ? help · q quit",
-        },
+        Mode::Help => (v(&["any key closes help"]), Vec::new()),
+        Mode::Error => (
+            v(&["any key closes", "e reopens the last error"]),
+            Vec::new(),
+        ),
+        Mode::Normal => {
+            let mut first = match app.focus {
+                Pane::Inputs => v(&["jk move", "Enter edit", "^z/^y undo/redo", "^s save"]),
+                Pane::Elements => vec![format!("jk {el}"), "Enter stepper".into()],
+                Pane::Chart => vec![format!("jk {el}"), "c chart".into(), "Enter stepper".into()],
+                Pane::Stepper => vec!["hl step".into(), "PgUp/PgDn ±10".into(), format!("jk {el}")],
+                Pane::Thermal => v(&["jk node", "g/G first/last"]),
+            };
+            first.push("u units".into());
+            first.push("Tab pane".into());
+            if app.error.is_some() {
+                first.insert(0, "e error".into());
+            }
+            (first, v(&["? help", "q quit"]))
+        }
+    }
+}
+
+fn render_hints(app: &App, area: Rect, buf: &mut Buffer) {
+    let (mut first, last) = hint_items(app);
+    let join = |f: &[String]| {
+        f.iter()
+            .chain(&last)
+            .map(String::as_str)
+            .collect::<Vec<_>>()
+            .join(" · ")
     };
-    Paragraph::new(hints)
+    while first.len() > 1 && join(&first).chars().count() > area.width as usize {
+        first.pop();
+    }
+    Paragraph::new(join(&first))
         .style(Style::default().fg(Color::Black).bg(Color::Gray))
         .render(area, buf);
 }
@@ -836,6 +882,36 @@ fn centered(area: Rect, w: u16, h: u16) -> Rect {
         width: w,
         height: h,
     }
+}
+
+/// The last error, whole: one message per line, wrapped to the popup, which takes the
+/// room it needs up to the screen.
+fn render_error(text: &str, area: Rect, buf: &mut Buffer) {
+    let width = area.width.saturating_sub(4).max(10);
+    let inner_w = width.saturating_sub(2).max(1) as usize;
+    let longest = text.lines().map(|l| l.chars().count()).max().unwrap_or(0);
+    let w = ((longest + 2) as u16).clamp(30.min(width), width);
+    let inner_w = inner_w.min(w.saturating_sub(2) as usize).max(1);
+    // Rows each line takes when wrapped.
+    let rows: usize = text
+        .lines()
+        .map(|l| l.chars().count().div_ceil(inner_w).max(1))
+        .sum();
+    let h = ((rows + 2) as u16)
+        .min(area.height.saturating_sub(2))
+        .max(3);
+    let r = centered(area, w, h);
+    Clear.render(r, buf);
+    let lines: Vec<Line> = text.lines().map(|l| Line::raw(l.to_string())).collect();
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_style(Style::default().fg(Color::Red))
+                .title(" Error · any key closes, e reopens "),
+        )
+        .render(r, buf);
 }
 
 fn render_help(area: Rect, buf: &mut Buffer) {
