@@ -119,6 +119,29 @@ wait_for "0.013208 m"
 keys u
 wait_for "Inputs [US]"
 
+# 5b. Thermal pane: the node walk of issue 15 (j j k k k k G G k Home End) keeps a node
+#     selected and on screen; G shows the last node (oil_cavity) in the list.
+keys 4
+wait_for "(hottest)"
+keys j j k k k k G G k Home End
+wait_for "bedplate: 86.0"
+absent "(hottest)"
+
+# 5c. An error is read whole: opening a missing file pops up the whole message; any key
+#     closes it, e reopens it; Esc does not quit.
+keys o
+wait_for "Open deck"
+keys n o p e . t o m l Enter
+wait_for "No such file or directory (os error 2)"
+keys Escape
+absent "No such file or directory"
+keys e
+wait_for "No such file or directory (os error 2)"
+keys Escape Escape
+absent "No such file or directory"
+keys 1
+wait_for "Inputs [US]"
+
 # 6. q asks because of the unsaved edit; n stays.
 keys q
 wait_for "Unsaved changes"

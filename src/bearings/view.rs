@@ -307,8 +307,9 @@ pub struct TraceBars {
 /// One recorded iteration of an element's equilibrium solve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TraceStep {
-    /// Outer (ring) and inner (element) iteration numbers.
-    pub iteration: [usize; 2],
+    /// Iteration numbers, outermost first (spherical roller: dynamic-load, ring,
+    /// roller), as named by [`Trace::iterations`].
+    pub iteration: Vec<usize>,
     /// Residuals, SI, one per [`Trace::residuals`] column.
     pub residuals: Vec<f64>,
     /// Label/value lines.
@@ -331,6 +332,10 @@ pub struct TraceColumn {
 pub struct Trace {
     /// The traced element (0-based).
     pub element: usize,
+    /// Which solves the steps are from (`"5 dynamic-load iterations"`).
+    pub label: String,
+    /// The names of the iteration levels (`["dyn", "ring", "roller"]`).
+    pub iterations: Vec<&'static str>,
     /// Residual columns of the history list.
     pub residuals: Vec<TraceColumn>,
     /// The steps, in order.

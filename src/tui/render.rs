@@ -149,7 +149,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     for detail in details {
         let mut right = vec![Span::raw(file.clone())];
         if app.unsaved() {
-            right.push(Span::styled("[+]", Style::default().fg(Color::Yellow)));
+            right.push(Span::styled(" [+]", Style::default().fg(Color::Yellow)));
         }
         right.push(Span::raw(detail));
         right.push(Span::styled(
@@ -703,16 +703,16 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     };
     let lw = 18usize;
-    let mut lines: Vec<Line> = v
-        .lines
-        .iter()
-        .map(|(k, val)| {
-            Line::from(vec![
-                Span::styled(format!("{k:<lw$}"), Style::default().fg(DIM)),
-                Span::raw(val.clone()),
-            ])
-        })
-        .collect();
+    let mut lines: Vec<Line> = vec![Line::styled(
+        format!("{:<lw$}{}", "steps of", trace.label),
+        Style::default().fg(DIM),
+    )];
+    lines.extend(v.lines.iter().map(|(k, val)| {
+        Line::from(vec![
+            Span::styled(format!("{k:<lw$}"), Style::default().fg(DIM)),
+            Span::raw(val.clone()),
+        ])
+    }));
     // Each group of bar rows shares one full scale (loads with loads, approaches with
     // approaches), listed after the rows.
     let mut scales: Vec<(usize, f64, usize, &str)> = Vec::new();

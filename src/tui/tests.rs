@@ -1216,3 +1216,42 @@ fn errors_are_shown_whole_and_reopen_with_e() {
         assert!(screen.contains(word), "{word:?} not on screen:\n{screen}");
     }
 }
+
+/// The stepper agrees with the results (issue 15): it steps through every outer
+/// (dynamic-load) iteration of the real solve (after the same coarse pre-solve), and its
+/// last step is that solve's final state, so the
+/// ring deflections it shows are the solution's, and tracing changes neither the solution
+/// nor the solver counts on the status line. The last step's ring is the solution's ring
+/// to 1e-12 relative (the same numbers, passed through; round-off only); counts exactly.
+#[test]
+fn stepper_ends_at_the_solution_shown() {
+    let plain = solved_app(Pane::Elements, 80, 24);
+    let traced = solved_app(Pane::Stepper, 80, 24);
+    let (pv, tv) = (
+        plain.view.clone().expect("solved"),
+        traced.view.clone().expect("solved"),
+    );
+    assert!(pv.trace.is_none());
+    let trace = tv.trace.as_ref().expect("the stepper's trace");
+    assert!(
+        trace.label.contains("dynamic-load iterations"),
+        "{}",
+        trace.label
+    );
+    let last = trace.steps.last().expect("steps");
+    let first = trace.steps.first().expect("steps");
+    assert_eq!(first.iteration[0], 1, "from the first outer iteration");
+    assert!(last.iteration[0] > 1, "to the last: {:?}", last.iteration);
+    let ring = &last.lines[1].values; // ring ax, rad (m)
+    let summary = |v: &crate::bearings::view::View, i: usize| v.summary[i].value;
+    for (i, &x) in ring.iter().enumerate() {
+        let s = summary(&pv, i);
+        assert!(
+            (x - s).abs() <= 1e-12 * s.abs(),
+            "ring {i}: stepper {x} vs solution {s}"
+        );
+    }
+    assert_eq!(pv.stats.iterations, tv.stats.iterations);
+    assert_eq!(pv.stats.inner_iterations, tv.stats.inner_iterations);
+    assert_eq!(pv.tables, tv.tables, "tracing changes no result");
+}

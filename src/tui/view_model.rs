@@ -470,12 +470,8 @@ pub fn trace_rows(t: &Trace, u: Units) -> Vec<String> {
         .iter()
         .enumerate()
         .map(|(i, step)| {
-            let mut row = format!(
-                "{:>3}  {:>2}/{:<2} ",
-                i + 1,
-                step.iteration[0],
-                step.iteration[1]
-            );
+            let its: Vec<String> = step.iteration.iter().map(|n| format!("{n:>2}")).collect();
+            let mut row = format!("{:>3}  {} ", i + 1, its.join("/"));
             for (c, v) in t.residuals.iter().zip(&step.residuals) {
                 row.push_str(&format!(" {:>10}", residual(c.display.convert(*v, u))));
             }
@@ -486,7 +482,8 @@ pub fn trace_rows(t: &Trace, u: Units) -> Vec<String> {
 
 /// Header of [`trace_rows`].
 pub fn trace_header(t: &Trace, u: Units) -> String {
-    let mut h = format!("{:>3}  {:<5} ", "#", "it");
+    let width = 3 * t.iterations.len().max(1) - 1;
+    let mut h = format!("{:>3}  {:<width$} ", "#", "it");
     for c in &t.residuals {
         h.push_str(&format!(" {:>10}", c.display.header(c.label, u)));
     }

@@ -72,6 +72,10 @@ pub struct Analysis {
     /// The roller `trace` follows (0-based), when one was requested.
     #[serde(skip)]
     pub trace_roller: Option<usize>,
+    /// The outer (§7 speeds ↔ §3 loads) iteration whose roller solve `trace` records: the
+    /// final one, which ends in the solution shown.
+    #[serde(skip)]
+    pub trace_outer: usize,
 }
 
 /// §10 results.
@@ -156,6 +160,8 @@ struct LoadStage {
     trace: Vec<TraceStep>,
     /// The roller `trace` follows.
     trace_roller: Option<usize>,
+    /// The outer (dynamic-load) iteration the trace records: the last one.
+    trace_outer: usize,
 }
 
 /// The inputs each stage reads: an edit that changes none of a stage's inputs (nor an
@@ -419,6 +425,7 @@ impl Parts {
             friction: self.friction,
             trace: ls.trace,
             trace_roller: ls.trace_roller,
+            trace_outer: ls.trace_outer,
         })
     }
 }
@@ -459,15 +466,16 @@ const COARSE_TOLERANCE: f64 = 1e-6;
 /// those speeds. The fine solve and the fine dynamic iteration then decide convergence to
 /// the deck's tolerances, so the answer is the fine one (tested against a cold fine solve);
 /// only the path is shorter: 5–6 times fewer lamina evaluations on the aerospace deck.
-/// Skipped when the deck's slicing is already coarse, and when the stepper traces a roller
-/// (it shows the cold solve's iterations from the App. C start).
+/// Skipped when the deck's slicing is already coarse.
 fn load_stage(
     bearing: &Bearing,
     request: &Request,
     cancel: Option<&AtomicBool>,
 ) -> Result<LoadStage, SolveError> {
     let estimate = DynamicSpeeds::app_c_estimate(bearing);
-    let coarse = bearing.solver.laminae >= 2 * COARSE_LAMINAE && request.trace_roller.is_none();
+    // The same path with or without a traced roller, so the stepper's final step is the
+    // solution the other panes show, and the status line's counts are the same.
+    let coarse = bearing.solver.laminae >= 2 * COARSE_LAMINAE;
     let mut stats = SolveStats::default();
     let mut iterations = 0;
     let (start, warm) = if coarse {
@@ -503,6 +511,7 @@ fn load_stage(
         iterations: iterations + fine.iterations,
         trace,
         trace_roller: request.trace_roller,
+        trace_outer: fine.iterations,
     })
 }
 
@@ -582,10 +591,14 @@ fn dynamic_iteration(
             tol = (1e-3 * change).clamp(deck_tol, deck_tol.max(INEXACT_TOLERANCE_MAX));
             opts.force_tolerance = Some(tol);
             opts.warm_start = Some(load.warm.clone());
-            // The stepper shows the first (App. C) solve's iterations only.
-            opts.trace_roller = None;
-            let trace = std::mem::take(&mut load.trace);
+            // The stepper shows every outer iteration's roller solve, in order: its last
+            // step is the solution the panes show.
+            let mut trace = std::mem::take(&mut load.trace);
             load = load_distribution::solve(bearing, &next, &opts, cancel)?;
+            for t in &mut load.trace {
+                t.outer_iteration = iterations + 1;
+            }
+            trace.append(&mut load.trace);
             load.trace = trace;
             add_stats(&mut stats, &load.stats);
             cts = contacts::contacts(bearing, &load);

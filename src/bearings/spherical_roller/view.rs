@@ -432,14 +432,18 @@ fn trace(a: &Analysis) -> Option<Trace> {
         .trace
         .iter()
         .map(|t| TraceStep {
-            iteration: [t.ring_iteration, t.roller_iteration],
+            iteration: vec![t.outer_iteration, t.ring_iteration, t.roller_iteration],
             residuals: t.residual.to_vec(),
             lines: vec![
                 line(
-                    "ring/roller iter",
+                    "dyn/ring/roller",
                     Display::Plain,
                     TraceFormat::Counts,
-                    vec![t.ring_iteration as f64, t.roller_iteration as f64],
+                    vec![
+                        t.outer_iteration as f64,
+                        t.ring_iteration as f64,
+                        t.roller_iteration as f64,
+                    ],
                 ),
                 line(
                     "ring ax,rad",
@@ -508,8 +512,18 @@ fn trace(a: &Analysis) -> Option<Trace> {
             ],
         })
         .collect();
+    let label = if a.input.solver.dynamic_loads == super::DynamicLoads::Iterated {
+        format!(
+            "{} dynamic-load iterations, the last ends at the solution",
+            a.trace_outer
+        )
+    } else {
+        "the load distribution solve".to_string()
+    };
     Some(Trace {
         element,
+        label,
+        iterations: vec!["dyn", "ring", "roller"],
         residuals: vec![
             TraceColumn {
                 label: "ax",

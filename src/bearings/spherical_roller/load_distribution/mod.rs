@@ -234,6 +234,9 @@ pub struct SolveStats {
 /// One recorded roller Newton iteration (seed Fig. 4's inner loop, made visible).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TraceStep {
+    /// The outer (§7 speeds ↔ §3 loads) iteration of the pipeline this solve belongs to
+    /// (1-based; 1 when the loads are not iterated). Set by the pipeline.
+    pub outer_iteration: usize,
     /// Ring iteration this belongs to and the roller iteration within it.
     pub ring_iteration: usize,
     pub roller_iteration: usize,

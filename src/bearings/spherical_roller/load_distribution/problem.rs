@@ -379,6 +379,7 @@ impl Problem {
     ) -> TraceStep {
         let (ia, oa, il, ol) = self.lamina_state(cphi, u, q);
         TraceStep {
+            outer_iteration: 1,
             ring_iteration: ring_it,
             roller_iteration: it,
             ring: u,
