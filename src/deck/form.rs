@@ -466,6 +466,88 @@ pub fn show<T>(schema: &Schema<T>, value: &T, key: &str, units: Units) -> String
     })
 }
 
+/// What is inconsistent in a schema (empty when it is sound): duplicate keys, a key
+/// outside its group or its group not a table of the schema, an empty or inverted range,
+/// a choice whose range is not its list, a one-of key whose partner does not name it
+/// back, a material body without fields or presets, a default out of range, or a field
+/// whose `set` then `get` does not give back the value of [`Schema::defaults`] (1e-12
+/// relative). Call it in a system's tests.
+pub fn schema_problems<T>(schema: &Schema<T>) -> Vec<String> {
+    let mut p = Vec::new();
+    let groups = schema.all_groups();
+    for (i, f) in schema.fields.iter().enumerate() {
+        if schema.fields[..i].iter().any(|g| g.key == f.key) {
+            p.push(format!("{}: duplicate key", f.key));
+        }
+        if f.key != format!("{}.{}", f.group, f.name()) {
+            p.push(format!("{}: not `{}.<name>`", f.key, f.group));
+        }
+        if !groups.contains(&f.top_group()) || schema.is_opaque(f.top_group()) {
+            p.push(format!(
+                "{}: table `{}` is not in groups",
+                f.key,
+                f.top_group()
+            ));
+        }
+        if let Some(body) = f.group.strip_prefix("materials.") {
+            if !schema.material_bodies.contains(&body) {
+                p.push(format!("{}: `{body}` is not a material body", f.key));
+            }
+        }
+        if f.min.partial_cmp(&f.max) != Some(std::cmp::Ordering::Less) {
+            p.push(format!("{}: empty range", f.key));
+        }
+        if let FieldKind::Choice(list) = f.kind {
+            if f.min != 0.0 || f.max != (list.len() as f64 - 1.0) {
+                p.push(format!(
+                    "{}: choice range is not 0..={}",
+                    f.key,
+                    list.len() - 1
+                ));
+            }
+        }
+        match f.presence {
+            Presence::Default(v) if !f.in_range(v) => {
+                p.push(format!("{}: default {v} out of range", f.key));
+            }
+            Presence::OneOf(other) => match schema.field(other) {
+                Some(o) if o.presence == Presence::OneOf(f.key) && o.group == f.group => {}
+                _ => p.push(format!(
+                    "{}: one-of partner `{other}` does not name it back in the same table",
+                    f.key
+                )),
+            },
+            _ => {}
+        }
+        let d = (schema.defaults)();
+        let v = f.get_si(&d);
+        let mut c = (schema.defaults)();
+        f.set_si(&mut c, v);
+        let back = f.get_si(&c);
+        if (back - v).abs() > 1e-12 * v.abs() {
+            p.push(format!("{}: set then get gives {back}, not {v}", f.key));
+        }
+    }
+    for b in schema.material_bodies {
+        let group = format!("materials.{b}");
+        let n = schema.fields.iter().filter(|f| f.group == group).count();
+        if n == 0 && schema.material.is_none() {
+            p.push(format!(
+                "materials.{b}: neither fields nor presets (Schema::material)"
+            ));
+        }
+    }
+    if !schema.material_bodies.is_empty() && !groups.contains(&"materials") {
+        p.push("material bodies without a `materials` group".into());
+    }
+    for g in schema.required_groups {
+        if !groups.contains(g) {
+            p.push(format!("required table `{g}` is not in groups"));
+        }
+    }
+    p
+}
+
 // ---------------------------------------------------------------------------------
 // Validation
 // ---------------------------------------------------------------------------------
@@ -1362,6 +1444,61 @@ pub(crate) fn get<T>(
         FieldKind::Integer => format!("{}", si.round() as i64),
         FieldKind::Real => fmt_real(spec.from_si(si, units)),
     })
+}
+
+/// Line and column of the deepest node of `path` inside the top-level table `table`
+/// found in `doc`'s text: the field's value, else its entry, else the table's header.
+pub(crate) fn location_in_table(
+    doc: &DocumentMut,
+    source: &str,
+    table: &str,
+    path: &[super::thermal::PathSeg],
+) -> Location {
+    let text = doc.to_string();
+    let Ok(doc) = toml_edit::Document::parse(text.as_str()) else {
+        return Location::start(source);
+    };
+    // Walk items (tables, arrays of tables), their tables and values (inline tables,
+    // arrays).
+    #[derive(Clone, Copy)]
+    enum Node<'a> {
+        Item(&'a Item),
+        Table(&'a toml_edit::Table),
+        Value(&'a Value),
+    }
+    let Some(root) = doc.as_table().get(table) else {
+        return Location::start(source);
+    };
+    let mut best = item_span(root);
+    let mut node = Node::Item(root);
+    for seg in path {
+        use super::thermal::PathSeg::{Index, Key};
+        let value = match node {
+            Node::Item(Item::Value(v)) | Node::Value(v) => Some(v),
+            _ => None,
+        };
+        let next = match (node, value, seg) {
+            (Node::Item(Item::Table(t)), _, Key(k)) | (Node::Table(t), _, Key(k)) => {
+                t.get(k).map(Node::Item)
+            }
+            (Node::Item(Item::ArrayOfTables(a)), _, Index(i)) => a.get(*i).map(Node::Table),
+            (_, Some(Value::InlineTable(t)), Key(k)) => t.get(k).map(Node::Value),
+            (_, Some(Value::Array(a)), Index(i)) => a.get(*i).map(Node::Value),
+            _ => None,
+        };
+        let Some(n) = next else { break };
+        let span = match n {
+            Node::Item(i) => item_span(i),
+            Node::Table(t) => t.span(),
+            Node::Value(v) => v.span(),
+        };
+        if span.is_some() {
+            best = span;
+        }
+        node = n;
+    }
+    let offset = best.map_or(0, |s| s.start);
+    Location::at(source, &text, offset)
 }
 
 /// Saves `text` atomically (see [`crate::files::save_with_backup`]).

@@ -581,3 +581,12 @@ fn names_key_matches_whole_keys() {
     assert!(!names_key("needs xshape.length", "shape.length"));
     assert!(!names_key("needs shape.length.max", "shape.length"));
 }
+
+#[test]
+fn schemas_are_sound() {
+    assert_eq!(schema_problems(&TOY), Vec::<String>::new());
+    assert_eq!(
+        schema_problems(&crate::bearings::spherical_roller::deck_schema::SCHEMA),
+        Vec::<String>::new()
+    );
+}
