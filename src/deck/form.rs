@@ -851,16 +851,21 @@ pub(crate) fn validate<T>(
                                 (access.set)(&mut value, index, m);
                                 preset_bodies.push(key);
                             }
-                            _ => {
+                            (preset, access) => {
                                 let (location, v) = ctx.at(item);
+                                let rule = if preset.is_some() && access.is_none() {
+                                    "this deck takes an inline table of the material's properties here, not a preset".to_string()
+                                } else {
+                                    format!(
+                                        "unknown material preset (expected one of {} or an inline table)",
+                                        preset_list()
+                                    )
+                                };
                                 ctx.errors.push(DeckError::Invalid {
                                     location,
                                     key,
                                     value: v,
-                                    rule: format!(
-                                        "unknown material preset (expected one of {} or an inline table)",
-                                        preset_list()
-                                    ),
+                                    rule,
                                 });
                             }
                         }
@@ -1501,6 +1506,32 @@ pub(crate) fn location_in_table(
     Location::at(source, &text, offset)
 }
 
+/// The thermal network of a deck's `[thermal]` table (`None` when the deck has none);
+/// errors name node, link and field, at their line and column in `doc`.
+pub(crate) fn thermal_model_of(
+    doc: &DocumentMut,
+    source: &str,
+    table: Option<&toml::Table>,
+    units: Units,
+) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
+    let Some(t) = table else { return Ok(None) };
+    super::thermal::parse_thermal_located(t, units)
+        .map(Some)
+        .map_err(|e| {
+            let message = match &e.error {
+                crate::thermal::ThermalError::Deck { location, message } => {
+                    format!("{location}: {message}")
+                }
+                other => other.to_string(),
+            };
+            DeckError::Thermal {
+                location: location_in_table(doc, source, "thermal", &e.path),
+                message,
+            }
+            .into()
+        })
+}
+
 /// Saves `text` atomically (see [`crate::files::save_with_backup`]).
 pub(crate) fn save_text(path: &Path, text: &str) -> Result<crate::files::Written, DeckErrors> {
     crate::files::save_with_backup(path, text).map_err(|e| {
@@ -1937,6 +1968,18 @@ impl<T: Clone> Form<T> {
     /// previous file kept as `<file name>.bak`, then rename (see [`crate::files`]).
     pub fn save(&self, path: &Path) -> Result<crate::files::Written, DeckErrors> {
         save_text(path, &self.to_toml_string())
+    }
+
+    /// The thermal network of the deck's `[thermal]` table, for a schema that lists
+    /// `"thermal"` in [`Schema::opaque_tables`] (`None` when the deck has none); errors
+    /// name node, link and field, with their line and column.
+    pub fn thermal_model(&self) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
+        thermal_model_of(
+            &self.doc,
+            &self.source_name,
+            self.opaque.get("thermal"),
+            self.units,
+        )
     }
 
     /// The source name given to [`Form::parse`].

@@ -14,7 +14,7 @@ use toml_edit::DocumentMut;
 use super::deck_schema::{FIELDS, SCHEMA, TEMPLATE_NOTES};
 use super::Bearing;
 use crate::deck::form::{self, DeckText, FieldKind, Presence};
-use crate::deck::{thermal, DeckError, DeckErrors};
+use crate::deck::{DeckError, DeckErrors};
 use crate::units::{Quantity, Units};
 
 /// The aerospace example deck (US units), shipped as `decks/aerospace.toml`.
@@ -116,29 +116,12 @@ impl Deck {
     /// The thermal network of the deck's `[thermal]` section, if any (errors name node,
     /// link and field).
     pub fn thermal_model(&self) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
-        match &self.thermal {
-            None => Ok(None),
-            Some(t) => thermal::parse_thermal_located(t, self.units)
-                .map(Some)
-                .map_err(|e| {
-                    let message = match &e.error {
-                        crate::thermal::ThermalError::Deck { location, message } => {
-                            format!("{location}: {message}")
-                        }
-                        other => other.to_string(),
-                    };
-                    DeckError::Thermal {
-                        location: form::location_in_table(
-                            &self.doc,
-                            &self.source_name,
-                            "thermal",
-                            &e.path,
-                        ),
-                        message,
-                    }
-                    .into()
-                }),
-        }
+        form::thermal_model_of(
+            &self.doc,
+            &self.source_name,
+            self.thermal.as_ref(),
+            self.units,
+        )
     }
 
     /// The source name given to [`Deck::parse`] (file path for [`Deck::load`]).

@@ -590,3 +590,56 @@ fn schemas_are_sound() {
         Vec::<String>::new()
     );
 }
+
+/// A schema with an opaque `[thermal]` table gets the thermal network, its errors at
+/// their line and column.
+#[test]
+fn thermal_table_is_read_by_the_thermal_parser() {
+    static WARM: Schema<Toy> = Schema {
+        system: "toy-bearing",
+        groups: &["shape", "materials", "run"],
+        required_groups: &["shape", "materials", "run"],
+        fields: &FIELDS,
+        material_bodies: &["ball"],
+        material: None,
+        opaque_tables: &["thermal"],
+        defaults: toy_defaults,
+        cross_checks: toy_cross,
+        template_header: "warm toy",
+    };
+    let base = DECK.replace("[extra]\nanything = [1, 2]\n", "").replace(
+        "ball = \"steel\"",
+        "ball = { youngs_modulus = 2e11, poisson_ratio = 0.3, density = 7800.0, specific_heat = 460.0, conductivity = 40.0 }",
+    );
+    let f = Form::parse(&base, "w.toml", &WARM).unwrap_or_else(|e| panic!("{e}"));
+    assert!(matches!(f.thermal_model(), Ok(None)));
+    let net = "\n[thermal]\n[[thermal.nodes]]\nname = \"ring\"\ncapacity = 10.0\n\n[[thermal.nodes]]\nname = \"air\"\nrole = \"air\"\nfixed_temperature = 20.0\n\n[[thermal.links]]\nfrom = \"ring\"\nto = \"air\"\nkind = \"conductance\"\nconductance = 1.0\n";
+    let text = format!("{base}{net}");
+    let f = Form::parse(&text, "w.toml", &WARM).unwrap_or_else(|e| panic!("{e}"));
+    let m = f.thermal_model().map_err(|e| e.to_string());
+    assert!(matches!(&m, Ok(Some(_))), "{m:?}");
+    let bad = text.replace("conductance = 1.0", "conductance = -1.0");
+    let f = Form::parse(&bad, "w.toml", &WARM).unwrap_or_else(|e| panic!("{e}"));
+    let line = bad
+        .lines()
+        .position(|l| l == "conductance = -1.0")
+        .map_or(0, |i| i + 1);
+    let e = f
+        .thermal_model()
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        e.starts_with(&format!("w.toml:{line}:15: [thermal]:")),
+        "{e}"
+    );
+    // without a material accessor, a preset name is refused
+    let e = Form::parse(
+        &DECK.replace("[extra]\nanything = [1, 2]\n", ""),
+        "w.toml",
+        &WARM,
+    )
+    .err()
+    .map(|e| e.to_string());
+    assert!(e.is_some_and(|e| e.contains("materials.ball = \"steel\": this deck takes an inline table")));
+}
