@@ -100,6 +100,13 @@ fn template_round_trips_both_units() {
         for f in fields() {
             assert!(text.contains(f.name()), "{}", f.key);
         }
+        // the template names its bearing system (redesign issue 13: every template
+        // carries `type`; an absent `type` still reads as a spherical roller deck)
+        let type_line = text.lines().find(|l| l.starts_with("type"));
+        assert_eq!(
+            type_line,
+            Some("type = \"spherical-roller\"  # the bearing system this deck describes")
+        );
     }
 }
 

@@ -4,6 +4,8 @@
 
 pub mod contacts;
 pub mod converged;
+pub mod deck;
+pub mod deck_schema;
 pub mod geometry;
 pub mod input;
 pub mod load_distribution;

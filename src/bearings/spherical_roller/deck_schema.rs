@@ -1,6 +1,8 @@
-//! The field registry: one table of every editable scalar deck key, with its unit in
-//! each system, its allowed range (SI) and how it maps onto [`Bearing`]. Parsing,
-//! validation, the template, `Deck::get`/`set` and the TUI all read this table.
+//! The spherical roller's deck schema ([`SCHEMA`], read by the generic
+//! [`crate::deck::form`]): one table of every editable scalar deck key, with its unit in
+//! each system, its allowed range (SI) and how it maps onto [`Bearing`], and the rules
+//! involving several keys ([`cross_checks`]). Parsing, validation, the template,
+//! `Deck::get`/`set` and the TUI all read this table.
 //!
 //! Ranges (SI; shown to users in deck units):
 //!
@@ -42,163 +44,12 @@
 //! | solver.max_iterations, max_roller_iterations | 1 ≤ n ≤ 100 000 |
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
-use crate::bearings::spherical_roller::{
-    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, Slicing, SolverSettings,
+use super::{Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Slicing, SolverSettings};
+use crate::deck::form::{
+    material_fields, show, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
+    TemplateNotes,
 };
 use crate::units::{Quantity, Units, PSI_PA};
-
-/// What TOML value a field takes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FieldKind {
-    /// A real number (TOML float or integer).
-    Real,
-    /// A whole number (TOML integer); the SI value is the number itself.
-    Integer,
-    /// A string from a fixed list; the "SI value" is the index in the list.
-    Choice(&'static [&'static str]),
-}
-
-/// Whether a key must be given.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Presence {
-    /// Must be present.
-    Required,
-    /// May be omitted; then this SI value (or choice index) is used.
-    Default(f64),
-    /// Exactly one of this key and the named other key must be present.
-    OneOf(&'static str),
-}
-
-/// One editable scalar deck key.
-#[derive(Debug, Clone, Copy)]
-pub struct FieldSpec {
-    /// Full key path, e.g. `geometry.roller_count`.
-    pub key: &'static str,
-    /// Table the key lives in, e.g. `geometry` (or `materials.roller`).
-    pub group: &'static str,
-    /// Short human label, with the symbol used in the seed report.
-    pub label: &'static str,
-    /// Physical quantity (decides units and conversion).
-    pub quantity: Quantity,
-    /// TOML value kind.
-    pub kind: FieldKind,
-    /// Lower bound, SI.
-    pub min: f64,
-    /// True if `min` itself is not allowed.
-    pub min_exclusive: bool,
-    /// Upper bound, SI.
-    pub max: f64,
-    /// True if `max` itself is not allowed.
-    pub max_exclusive: bool,
-    /// Required, defaulted, or one of two alternatives.
-    pub presence: Presence,
-    /// One-line explanation for templates and help.
-    pub help: &'static str,
-    /// Unit display string in SI decks.
-    pub unit_si: &'static str,
-    /// Unit display string in US decks.
-    pub unit_us: &'static str,
-    get: fn(&Bearing) -> f64,
-    set: fn(&mut Bearing, f64),
-}
-
-impl FieldSpec {
-    /// Unit display string in `units`.
-    pub fn unit(&self, units: Units) -> &'static str {
-        match units {
-            Units::Si => self.unit_si,
-            Units::Us => self.unit_us,
-        }
-    }
-
-    /// Converts a value in deck `units` to SI.
-    pub fn to_si(&self, value: f64, units: Units) -> f64 {
-        self.quantity.to_si(value, units)
-    }
-
-    /// Converts an SI value to deck `units`.
-    pub fn from_si(&self, value_si: f64, units: Units) -> f64 {
-        self.quantity.from_si(value_si, units)
-    }
-
-    /// Reads this field's SI value from a bearing (choice index for choices).
-    pub fn get_si(&self, bearing: &Bearing) -> f64 {
-        (self.get)(bearing)
-    }
-
-    /// Writes an SI value (already range-checked) into a bearing.
-    pub fn set_si(&self, bearing: &mut Bearing, value_si: f64) {
-        (self.set)(bearing, value_si)
-    }
-
-    /// True if the SI value lies in the allowed range (and is finite).
-    pub fn in_range(&self, value_si: f64) -> bool {
-        if !value_si.is_finite() {
-            return false;
-        }
-        let lo = if self.min_exclusive {
-            value_si > self.min
-        } else {
-            value_si >= self.min
-        };
-        let hi = if self.max_exclusive {
-            value_si < self.max
-        } else {
-            value_si <= self.max
-        };
-        lo && hi
-    }
-
-    /// The allowed range in deck units, e.g. `0 < value ≤ 39.3701 in`.
-    pub fn allowed(&self, units: Units) -> String {
-        let lo = format_short(self.from_si(self.min, units));
-        let hi = format_short(self.from_si(self.max, units));
-        let lo_op = if self.min_exclusive { "<" } else { "≤" };
-        let hi_op = if self.max_exclusive { "<" } else { "≤" };
-        let unit = self.unit(units);
-        let unit = if unit.is_empty() {
-            String::new()
-        } else {
-            format!(" {unit}")
-        };
-        format!("{lo} {lo_op} value {hi_op} {hi}{unit}")
-    }
-
-    /// The last path segment (the key inside its table).
-    pub fn name(&self) -> &'static str {
-        self.key.rsplit('.').next().unwrap_or(self.key)
-    }
-}
-
-/// Formats a number to 6 significant digits without trailing zeros (for messages).
-pub fn format_short(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
-    let a = v.abs();
-    if (1e-4..1e7).contains(&a) {
-        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
-        let s = format!("{v:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        let s = format!("{v:.5e}");
-        match s.split_once('e') {
-            Some((m, e)) => {
-                let m = if m.contains('.') {
-                    m.trim_end_matches('0').trim_end_matches('.')
-                } else {
-                    m
-                };
-                format!("{m}e{e}")
-            }
-            None => s,
-        }
-    }
-}
 
 /// Film-model choices, in [`FilmModel`] order.
 pub const FILM_MODELS: &[&str] = &["grubin", "dowson-higginson", "pan-hamrock"];
@@ -210,11 +61,6 @@ pub const DYNAMIC_LOADS: &[&str] = &["iterated", "estimate"];
 pub const SLICINGS: &[&str] = &["uniform", "cosine"];
 /// Cage-guidance choices, in [`GuidingRing`] order.
 pub const GUIDING_RINGS: &[&str] = &["inner", "outer"];
-/// Material presets accepted as `materials.<body> = "<name>"`.
-pub const MATERIAL_PRESETS: &[(&str, Material)] = &[
-    ("steel", Material::STEEL),
-    ("silicon-nitride", Material::SILICON_NITRIDE),
-];
 /// The bodies under `[materials]`.
 pub const MATERIAL_BODIES: &[&str] = &["roller", "inner_ring", "outer_ring"];
 /// Top-level tables, in file order: the required ones, then the optional `[solver]` and
@@ -315,19 +161,17 @@ macro_rules! field {
      $min:expr, $minx:expr, $max:expr, $maxx:expr, $pres:expr, $help:expr,
      get: $get:expr, set: $set:expr) => {
         FieldSpec {
-            key: $key,
-            group: $group,
-            label: $label,
-            quantity: Quantity::$q,
-            kind: $kind,
-            min: $min,
-            min_exclusive: $minx,
-            max: $max,
-            max_exclusive: $maxx,
-            presence: $pres,
-            help: $help,
-            unit_si: Quantity::$q.unit(Units::Si),
-            unit_us: Quantity::$q.unit(Units::Us),
+            meta: FieldMeta::new(
+                $key,
+                $group,
+                $label,
+                Quantity::$q,
+                $kind,
+                ($min, $minx),
+                ($max, $maxx),
+                $pres,
+                $help,
+            ),
             get: $get,
             set: $set,
         }
@@ -338,45 +182,21 @@ const R: FieldKind = FieldKind::Real;
 const I: FieldKind = FieldKind::Integer;
 const REQ: Presence = Presence::Required;
 
-macro_rules! material_fields {
-    ($body:ident, $bodystr:literal, $label:literal) => {
-        [
-            field!(concat!("materials.", $bodystr, ".youngs_modulus"), concat!("materials.", $bodystr),
-                concat!($label, " Young's modulus E"), Pressure, R, 0.0, true, 1e13, false, REQ,
-                "Young's modulus",
-                get: |b| b.materials.$body.youngs_modulus_pa,
-                set: |b, v| b.materials.$body.youngs_modulus_pa = v),
-            field!(concat!("materials.", $bodystr, ".poisson_ratio"), concat!("materials.", $bodystr),
-                concat!($label, " Poisson's ratio ν"), Dimensionless, R, 0.0, false, 0.5, true, REQ,
-                "Poisson's ratio",
-                get: |b| b.materials.$body.poisson_ratio,
-                set: |b, v| b.materials.$body.poisson_ratio = v),
-            field!(concat!("materials.", $bodystr, ".density"), concat!("materials.", $bodystr),
-                concat!($label, " density ρ"), Density, R, 0.0, true, 1e5, false, REQ,
-                "mass density",
-                get: |b| b.materials.$body.density_kg_m3,
-                set: |b, v| b.materials.$body.density_kg_m3 = v),
-            field!(concat!("materials.", $bodystr, ".specific_heat"), concat!("materials.", $bodystr),
-                concat!($label, " specific heat c"), SpecificHeat, R, 0.0, true, 1e5, false, REQ,
-                "specific heat capacity",
-                get: |b| b.materials.$body.specific_heat_j_kg_k,
-                set: |b, v| b.materials.$body.specific_heat_j_kg_k = v),
-            field!(concat!("materials.", $bodystr, ".conductivity"), concat!("materials.", $bodystr),
-                concat!($label, " conductivity k"), Conductivity, R, 0.0, true, 1e4, false, REQ,
-                "thermal conductivity",
-                get: |b| b.materials.$body.conductivity_w_m_k,
-                set: |b, v| b.materials.$body.conductivity_w_m_k = v),
-        ]
-    };
-}
-
-const MAT_ROLLER: [FieldSpec; 5] = material_fields!(roller, "roller", "Roller");
-const MAT_INNER: [FieldSpec; 5] = material_fields!(inner_ring, "inner_ring", "Inner ring");
-const MAT_OUTER: [FieldSpec; 5] = material_fields!(outer_ring, "outer_ring", "Outer ring");
+const MAT_ROLLER: [FieldSpec<Bearing>; 5] =
+    material_fields!(Bearing, "roller", "Roller", |b| b.materials.roller);
+const MAT_INNER: [FieldSpec<Bearing>; 5] =
+    material_fields!(Bearing, "inner_ring", "Inner ring", |b| b
+        .materials
+        .inner_ring);
+const MAT_OUTER: [FieldSpec<Bearing>; 5] =
+    material_fields!(Bearing, "outer_ring", "Outer ring", |b| b
+        .materials
+        .outer_ring);
 
 const SOLVER_DEFAULTS: SolverSettings = SolverSettings::DEFAULT;
 
-static FIELDS: [FieldSpec; 61] = [
+/// Every editable scalar key of a spherical roller deck, in file order.
+pub static FIELDS: [FieldSpec<Bearing>; 61] = [
     // --- geometry ---
     field!("geometry.roller_count", "geometry", "Roller count Z", Count, I, 3.0, false, 500.0, false, REQ,
         "number of rollers", get: |b| b.geometry.roller_count as f64, set: |b, v| b.geometry.roller_count = to_count(v)),
@@ -523,31 +343,132 @@ static FIELDS: [FieldSpec; 61] = [
     // padding rows are not allowed: the array length is exact
 ];
 
-/// The registry of editable scalar deck fields, in file order.
-pub fn fields() -> &'static [FieldSpec] {
-    &FIELDS
+/// The material of body `i` of [`MATERIAL_BODIES`].
+fn material_of(b: &Bearing, i: usize) -> crate::physics::material::Material {
+    match i {
+        0 => b.materials.roller,
+        1 => b.materials.inner_ring,
+        _ => b.materials.outer_ring,
+    }
 }
 
-/// Looks a field up by its full key path.
-pub fn field(key: &str) -> Option<&'static FieldSpec> {
-    FIELDS.iter().find(|f| f.key == key)
+fn set_material(b: &mut Bearing, i: usize, m: crate::physics::material::Material) {
+    match i {
+        0 => b.materials.roller = m,
+        1 => b.materials.inner_ring = m,
+        _ => b.materials.outer_ring = m,
+    }
 }
 
-/// Preset material by name.
-pub fn material_preset(name: &str) -> Option<Material> {
-    MATERIAL_PRESETS
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(_, m)| *m)
+/// The value a deck starts from before its fields are applied: the aerospace example
+/// (every required key is then overwritten, every optional one set to its default).
+fn defaults() -> Bearing {
+    Bearing::example_aerospace()
 }
 
-/// Name of the preset equal to `m`, if any.
-pub fn preset_name(m: &Material) -> Option<&'static str> {
-    MATERIAL_PRESETS
-        .iter()
-        .find(|(_, p)| p == m)
-        .map(|(n, _)| *n)
+/// Rules that involve more than one key; each names the other keys it involves (so it
+/// is only reported when those are valid, see [`crate::deck::form`]). The error points
+/// at the first key.
+pub fn cross_checks(b: &Bearing, units: Units) -> Vec<(&'static str, String)> {
+    let g = &b.geometry;
+    let show = |key: &str| show(&SCHEMA, b, key, units);
+    let pi = std::f64::consts::PI;
+    let rules: Vec<(&'static str, bool, String)> = vec![
+        (
+            "geometry.pitch_diameter",
+            g.pitch_diameter_m > g.roller_diameter_m,
+            format!("must be greater than {}", show("geometry.roller_diameter")),
+        ),
+        (
+            "geometry.roller_crown_radius",
+            g.roller_crown_radius_m >= g.roller_diameter_m / 2.0,
+            format!(
+                "must be at least half of {}",
+                show("geometry.roller_diameter")
+            ),
+        ),
+        (
+            "geometry.inner_crown_radius",
+            g.inner_crown_radius_m >= g.roller_crown_radius_m,
+            format!("must be at least {}", show("geometry.roller_crown_radius")),
+        ),
+        (
+            "geometry.outer_crown_radius",
+            g.outer_crown_radius_m >= g.roller_crown_radius_m,
+            format!("must be at least {}", show("geometry.roller_crown_radius")),
+        ),
+        (
+            "geometry.effective_length",
+            g.effective_length_m <= g.roller_length_m,
+            format!("must not exceed {}", show("geometry.roller_length")),
+        ),
+        (
+            "geometry.effective_length",
+            g.effective_length_m <= 2.0 * g.roller_crown_radius_m,
+            format!(
+                "must not exceed twice {}",
+                show("geometry.roller_crown_radius")
+            ),
+        ),
+        (
+            "geometry.roller_count",
+            (g.roller_count as f64) * g.roller_diameter_m < pi * g.pitch_diameter_m,
+            format!(
+                "rollers do not fit around the pitch circle: need Z·D < π·P_t with {}, {}",
+                show("geometry.roller_diameter"),
+                show("geometry.pitch_diameter")
+            ),
+        ),
+        (
+            "geometry.diametral_clearance",
+            g.diametral_clearance_m.abs() < g.roller_diameter_m,
+            format!(
+                "|clearance| must be less than {}",
+                show("geometry.roller_diameter")
+            ),
+        ),
+        (
+            "life.method",
+            b.life.method != LifeMethod::Iso281 || b.life.iso_fatigue_load_limit_n > 0.0,
+            format!(
+                "method \"iso281\" needs {} > 0",
+                "life.iso_fatigue_load_limit"
+            ),
+        ),
+    ];
+    rules
+        .into_iter()
+        .filter(|(_, ok, _)| !ok)
+        .map(|(key, _, rule)| (key, rule))
+        .collect()
 }
+
+/// The spherical roller's deck.
+pub static SCHEMA: Schema<Bearing> = Schema {
+    system: super::SYSTEM_ID,
+    groups: GROUPS,
+    required_groups: REQUIRED_GROUPS,
+    fields: &FIELDS,
+    material_bodies: MATERIAL_BODIES,
+    material: Some(MaterialAccess {
+        get: material_of,
+        set: set_material,
+    }),
+    opaque_tables: &["thermal"],
+    defaults,
+    cross_checks,
+    template_header: "rollbench deck template: every key, its unit and allowed range.\nValues are the aerospace example bearing (decks/aerospace.toml).",
+};
+
+/// The template's name and its comment lines beyond the fields'.
+pub const TEMPLATE_NOTES: TemplateNotes = TemplateNotes {
+    name: "template (aerospace example bearing)",
+    group_notes: &[("solver", "Optional table: numerical settings.")],
+    opaque_notes: &[(
+        "thermal",
+        "[thermal]  # optional: lumped thermal network, interpreted by the thermal module",
+    )],
+};
 
 #[cfg(test)]
 mod tests {
@@ -571,12 +492,12 @@ mod tests {
 
     #[test]
     fn registry_is_consistent() {
-        let mut keys: Vec<_> = fields().iter().map(|f| f.key).collect();
+        let mut keys: Vec<_> = FIELDS.iter().map(|f| f.key).collect();
         let n = keys.len();
         keys.sort_unstable();
         keys.dedup();
         assert_eq!(keys.len(), n, "duplicate keys");
-        for f in fields() {
+        for f in &FIELDS {
             assert!(f.key.starts_with(f.group), "{}", f.key);
             assert_eq!(f.unit_si, f.quantity.unit(Units::Si));
             assert_eq!(f.unit_us, f.quantity.unit(Units::Us));
@@ -585,7 +506,7 @@ mod tests {
         // get/set are inverse on the example bearing (exact: plain stores and loads,
         // except the derived lubricant parameter which divides by η: 1e-15 relative).
         let b = Bearing::example_aerospace();
-        for f in fields() {
+        for f in &FIELDS {
             let mut c = b.clone();
             f.set_si(&mut c, f.get_si(&b));
             let (x, y) = (f.get_si(&c), f.get_si(&b));
@@ -595,13 +516,19 @@ mod tests {
 
     #[test]
     fn allowed_text() {
-        let f = field("geometry.roller_count").map(|f| f.allowed(Units::Us));
+        let f = SCHEMA
+            .field("geometry.roller_count")
+            .map(|f| f.allowed(Units::Us));
         assert_eq!(f.as_deref(), Some("3 ≤ value ≤ 500"));
-        let f = field("geometry.contact_angle").map(|f| f.allowed(Units::Si));
+        let f = SCHEMA
+            .field("geometry.contact_angle")
+            .map(|f| f.allowed(Units::Si));
         assert_eq!(f.as_deref(), Some("0 ≤ value < 45 deg"));
-        let f = field("geometry.roller_diameter").map(|f| f.allowed(Units::Us));
+        let f = SCHEMA
+            .field("geometry.roller_diameter")
+            .map(|f| f.allowed(Units::Us));
         assert_eq!(f.as_deref(), Some("0 < value ≤ 39.3701 in"));
-        assert_eq!(format_short(1.0e-6), "1e-6");
-        assert_eq!(format_short(6894.757), "6894.76");
+        assert_eq!(crate::deck::format_short(1.0e-6), "1e-6");
+        assert_eq!(crate::deck::format_short(6894.757), "6894.76");
     }
 }
