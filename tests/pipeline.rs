@@ -484,8 +484,8 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
 #[test]
 fn coarse_to_fine_path_gives_the_cold_answer() {
     // The default path pre-solves on an 11-lamina roller with loose intermediate tolerances
-    // and predicts each dynamic-load step from the inertial sensitivities; a traced solve
-    // takes the plain path (cold fine solves from App. C, every one at the deck's tolerance).
+    // and predicts each dynamic-load step from the inertial sensitivities; without the
+    // pre-solve (`presolve: false`) the fine solve starts cold from App. C.
     // Both stop at the same force tolerance (1e-9 of the reference load) and the same
     // dynamic-speed tolerance (1e-8), so every output agrees to 1e-7 relative (the bound used
     // for the SI/US comparison above, for the same reason) with a 1e-9 absolute floor for
@@ -498,11 +498,11 @@ fn coarse_to_fine_path_gives_the_cold_answer() {
     ] {
         let b = deck(name).bearing;
         let fast = pipeline::run(&b, &Request::default(), None).unwrap_or_else(|e| panic!("{e}"));
-        let traced = Request {
-            trace_roller: Some(0),
+        let plain = Request {
+            presolve: false,
             ..Request::default()
         };
-        let cold = pipeline::run(&b, &traced, None).unwrap_or_else(|e| panic!("{e}"));
+        let cold = pipeline::run(&b, &plain, None).unwrap_or_else(|e| panic!("{e}"));
         assert!(
             fast.load.stats.lamina_evaluations < cold.load.stats.lamina_evaluations,
             "{name}: the default path did not save work ({} vs {})",

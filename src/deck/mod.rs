@@ -24,7 +24,7 @@ pub mod form;
 pub mod thermal;
 
 pub use crate::bearings::spherical_roller::deck::{
-    close_keys, editable_keys, field, fields, keys_table, template, write_bearing, Deck, FieldSpec,
+    close_keys, editable_keys, field, fields, keys_table, template, write_bearing, Deck,
     DEFAULT_DECK,
 };
 pub use crate::bearings::spherical_roller::deck_schema::{
@@ -33,13 +33,9 @@ pub use crate::bearings::spherical_roller::deck_schema::{
 pub use crate::units::Units;
 pub use error::{DeckError, DeckErrors, Location};
 pub use form::{
-    format_short, material_preset, FieldKind, FieldMeta, Form, MaterialAccess, Presence, Schema,
-    TemplateNotes, MATERIAL_PRESETS,
+    format_short, material_preset, FieldKind, FieldMeta, FieldSpec, Form, MaterialAccess, Presence,
+    Schema, TemplateNotes, MATERIAL_PRESETS,
 };
-
-/// The metadata of an editable field (key, label, unit, range) without its access to a
-/// particular system's input type.
-pub type FieldMeta = FieldSpec;
 
 use std::path::Path;
 

@@ -5,17 +5,15 @@
 //! [`deck_schema::SCHEMA`](super::deck_schema::SCHEMA).
 
 use std::collections::BTreeMap;
-use std::ops::Deref;
 use std::path::Path;
-use std::sync::LazyLock;
 
 use toml_edit::DocumentMut;
 
 use super::deck_schema::{FIELDS, SCHEMA, TEMPLATE_NOTES};
 use super::Bearing;
-use crate::deck::form::{self, DeckText, FieldKind, Presence};
+use crate::deck::form::{self, DeckText};
 use crate::deck::{DeckError, DeckErrors};
-use crate::units::{Quantity, Units};
+use crate::units::Units;
 
 /// The aerospace example deck (US units), shipped as `decks/aerospace.toml`.
 pub const DEFAULT_DECK: &str = include_str!("../../../decks/aerospace.toml");
@@ -211,80 +209,13 @@ impl Deck {
     }
 }
 
-/// One editable key of the spherical roller deck as one flat record: the metadata of
-/// its [`FIELDS`] entry copied out (so `FieldSpec { kind, .. }` patterns keep working)
-/// and, through `Deref`, the generic [`form::FieldSpec<Bearing>`] (`get_si`, `set_si`,
-/// `allowed`, `unit`, …). New code can use [`FIELDS`] directly.
-#[derive(Debug, Clone, Copy)]
-pub struct FieldSpec {
-    /// Full key path, e.g. `geometry.roller_count`.
-    pub key: &'static str,
-    /// Table the key lives in, e.g. `geometry` (or `materials.roller`).
-    pub group: &'static str,
-    /// Short human label, with the symbol used in the seed report.
-    pub label: &'static str,
-    /// Physical quantity (decides units and conversion).
-    pub quantity: Quantity,
-    /// TOML value kind.
-    pub kind: FieldKind,
-    /// Lower bound, SI.
-    pub min: f64,
-    /// True if `min` itself is not allowed.
-    pub min_exclusive: bool,
-    /// Upper bound, SI.
-    pub max: f64,
-    /// True if `max` itself is not allowed.
-    pub max_exclusive: bool,
-    /// Required, defaulted, or one of two alternatives.
-    pub presence: Presence,
-    /// One-line explanation for templates and help.
-    pub help: &'static str,
-    /// Unit display string in SI decks.
-    pub unit_si: &'static str,
-    /// Unit display string in US decks.
-    pub unit_us: &'static str,
-    spec: &'static form::FieldSpec<Bearing>,
-}
-
-impl Deref for FieldSpec {
-    type Target = form::FieldSpec<Bearing>;
-    fn deref(&self) -> &form::FieldSpec<Bearing> {
-        self.spec
-    }
-}
-
-impl FieldSpec {
-    fn of(spec: &'static form::FieldSpec<Bearing>) -> FieldSpec {
-        let m = &spec.meta;
-        FieldSpec {
-            key: m.key,
-            group: m.group,
-            label: m.label,
-            quantity: m.quantity,
-            kind: m.kind,
-            min: m.min,
-            min_exclusive: m.min_exclusive,
-            max: m.max,
-            max_exclusive: m.max_exclusive,
-            presence: m.presence,
-            help: m.help,
-            unit_si: m.unit_si,
-            unit_us: m.unit_us,
-            spec,
-        }
-    }
-}
-
-static FLAT: LazyLock<Vec<FieldSpec>> =
-    LazyLock::new(|| FIELDS.iter().map(FieldSpec::of).collect());
-
 /// The registry of editable scalar deck fields, in file order.
-pub fn fields() -> &'static [FieldSpec] {
-    &FLAT
+pub fn fields() -> &'static [form::FieldSpec<Bearing>] {
+    &FIELDS
 }
 
 /// Looks a field up by its full key path.
-pub fn field(key: &str) -> Option<&'static FieldSpec> {
+pub fn field(key: &str) -> Option<&'static form::FieldSpec<Bearing>> {
     fields().iter().find(|f| f.key == key)
 }
 

@@ -28,6 +28,10 @@ pub struct Request {
     pub heat: bool,
     /// Run the thermal transient (expensive; only when shown or reported).
     pub thermal_transient: bool,
+    /// Pre-solve on a coarse roller and start the fine solve from it (the default: the
+    /// same answer for less work). Off, the fine solve starts cold from the App. C speeds:
+    /// the reference path of the test that proves the two agree.
+    pub presolve: bool,
     /// The deck's thermal network, if any (§10); used by [`run`] and the workbench.
     pub thermal: Option<ThermalModel>,
 }
@@ -39,6 +43,7 @@ impl Default for Request {
             contact: true,
             heat: true,
             thermal_transient: false,
+            presolve: true,
             thermal: None,
         }
     }
@@ -173,6 +178,7 @@ struct LoadKey {
     operating: crate::bearings::spherical_roller::Operating,
     solver: crate::bearings::spherical_roller::SolverSettings,
     trace_roller: Option<usize>,
+    presolve: bool,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -270,6 +276,7 @@ impl Pipeline {
             operating: bearing.operating,
             solver: bearing.solver,
             trace_roller: request.trace_roller,
+            presolve: request.presolve,
         };
         if self
             .load
@@ -466,7 +473,7 @@ const COARSE_TOLERANCE: f64 = 1e-6;
 /// those speeds. The fine solve and the fine dynamic iteration then decide convergence to
 /// the deck's tolerances, so the answer is the fine one (tested against a cold fine solve);
 /// only the path is shorter: 5–6 times fewer lamina evaluations on the aerospace deck.
-/// Skipped when the deck's slicing is already coarse.
+/// Skipped when the deck's slicing is already coarse, or the request says so.
 fn load_stage(
     bearing: &Bearing,
     request: &Request,
@@ -475,7 +482,7 @@ fn load_stage(
     let estimate = DynamicSpeeds::app_c_estimate(bearing);
     // The same path with or without a traced roller, so the stepper's final step is the
     // solution the other panes show, and the status line's counts are the same.
-    let coarse = bearing.solver.laminae >= 2 * COARSE_LAMINAE;
+    let coarse = request.presolve && bearing.solver.laminae >= 2 * COARSE_LAMINAE;
     let mut stats = SolveStats::default();
     let mut iterations = 0;
     let (start, warm) = if coarse {

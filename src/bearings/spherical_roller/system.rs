@@ -153,7 +153,7 @@ impl Case for SphericalCase {
     }
 
     fn fields(&self) -> Vec<&'static FieldMeta> {
-        crate::deck::fields().iter().collect()
+        crate::deck::fields().iter().map(|f| &f.meta).collect()
     }
 
     fn field_si(&self, key: &str) -> Option<f64> {
