@@ -18,7 +18,7 @@ pub mod view;
 
 pub use error::SolveError;
 
-use crate::deck::{DeckErrors, FieldMeta};
+use crate::deck::{DeckErrors, FieldMeta, Form};
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
 
@@ -106,19 +106,9 @@ pub trait BearingSystem: Sync {
     ) -> Result<Box<dyn Case>, DeckErrors>;
 }
 
-/// One validated deck of a system, ready to solve.
-pub trait Case: Send + Sync {
-    /// The system the deck belongs to.
-    fn system(&self) -> &'static dyn BearingSystem;
-    /// For the system's own [`Session`] to reach its concrete case.
-    fn as_any(&self) -> &dyn std::any::Any;
-    /// The unit system the deck is written in (text reports use it).
-    fn units(&self) -> Units;
-    /// Solve everything a full report shows.
-    fn solve(&self, options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String>;
-
-    // The deck behind the case, for the workbench's editor (values in deck units).
-
+/// The deck behind a [`Case`], for the workbench's editor (values in deck units). A case
+/// whose deck is a [`Form`] gets all of it from [`FormCase`].
+pub trait CaseDeck {
     /// The deck's `name`.
     fn name(&self) -> &str;
     /// Where the deck was read from (errors name it).
@@ -138,6 +128,73 @@ pub trait Case: Send + Sync {
     fn text(&self) -> String;
     /// Saves the deck (atomic, previous file kept as `.bak`; see [`crate::files`]).
     fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors>;
+}
+
+/// A case whose deck is a [`Form`] of its system's schema (every system but the first):
+/// the [`CaseDeck`] half of the case comes with it.
+pub trait FormCase: Sized {
+    /// The system's SI input.
+    type Input: Clone + 'static;
+    /// The case's deck.
+    fn form(&self) -> &Form<Self::Input>;
+    /// The case of an edited deck (whatever the case derives from its deck, derived
+    /// again), boxed.
+    fn with_form(&self, form: Form<Self::Input>) -> Result<Box<dyn Case>, DeckErrors>;
+}
+
+impl<C: FormCase> CaseDeck for C {
+    fn name(&self) -> &str {
+        &self.form().name
+    }
+
+    fn source_name(&self) -> &str {
+        self.form().source_name()
+    }
+
+    fn fields(&self) -> Vec<&'static FieldMeta> {
+        self.form()
+            .schema()
+            .fields
+            .iter()
+            .map(|f| &f.meta)
+            .collect()
+    }
+
+    fn field_si(&self, key: &str) -> Option<f64> {
+        let form = self.form();
+        form.schema().field(key).map(|f| f.get_si(&form.value))
+    }
+
+    fn get(&self, key: &str) -> Option<String> {
+        self.form().get(key)
+    }
+
+    fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors> {
+        let mut form = self.form().clone();
+        form.set(key, value)?;
+        self.with_form(form)
+    }
+
+    fn text(&self) -> String {
+        self.form().to_toml_string()
+    }
+
+    fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors> {
+        self.form().save(path)
+    }
+}
+
+/// One validated deck of a system, ready to solve.
+pub trait Case: CaseDeck + Send + Sync {
+    /// The system the deck belongs to.
+    fn system(&self) -> &'static dyn BearingSystem;
+    /// For the system's own [`Session`] to reach its concrete case.
+    fn as_any(&self) -> &dyn std::any::Any;
+    /// The unit system the deck is written in (text reports use it).
+    fn units(&self) -> Units;
+    /// Solve everything a full report shows.
+    fn solve(&self, options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String>;
+
     /// True if the deck has a time simulation that [`Detail::transient`] turns on.
     fn has_transient(&self) -> bool;
     /// The deck's own fidelity, when the system has a fidelity study.

@@ -5,7 +5,8 @@ use super::pipeline::{self, Analysis, Request};
 use super::report;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, Detail, Fidelity, FidelityGrid, RunOptions, Session, Solution, SolveError,
+    BearingSystem, Case, CaseDeck, Detail, Fidelity, FidelityGrid, RunOptions, Session, Solution,
+    SolveError,
 };
 use crate::deck::{Deck, DeckErrors, FieldMeta};
 use crate::numerics::cancel::Cancel;
@@ -144,6 +145,30 @@ impl Case for SphericalCase {
         .map_err(|e| e.to_string())
     }
 
+    fn has_transient(&self) -> bool {
+        self.thermal.is_some()
+    }
+
+    fn fidelity(&self) -> Option<Fidelity> {
+        let s = &self.deck.bearing.solver;
+        Some(Fidelity {
+            resolution: s.laminae,
+            tolerance: s.force_tolerance,
+        })
+    }
+
+    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
+        let mut deck = self.deck.clone();
+        deck.bearing.solver.laminae = f.resolution;
+        deck.bearing.solver.force_tolerance = f.tolerance;
+        Some(Box::new(SphericalCase {
+            deck,
+            thermal: self.thermal.clone(),
+        }))
+    }
+}
+
+impl CaseDeck for SphericalCase {
     fn name(&self) -> &str {
         &self.deck.bearing.name
     }
@@ -177,28 +202,6 @@ impl Case for SphericalCase {
 
     fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors> {
         self.deck.save(path)
-    }
-
-    fn has_transient(&self) -> bool {
-        self.thermal.is_some()
-    }
-
-    fn fidelity(&self) -> Option<Fidelity> {
-        let s = &self.deck.bearing.solver;
-        Some(Fidelity {
-            resolution: s.laminae,
-            tolerance: s.force_tolerance,
-        })
-    }
-
-    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
-        let mut deck = self.deck.clone();
-        deck.bearing.solver.laminae = f.resolution;
-        deck.bearing.solver.force_tolerance = f.tolerance;
-        Some(Box::new(SphericalCase {
-            deck,
-            thermal: self.thermal.clone(),
-        }))
     }
 }
 
