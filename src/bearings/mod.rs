@@ -86,8 +86,11 @@ pub trait BearingSystem: Sync {
     /// The workbench panes this system offers, in switcher order.
     fn panes(&self) -> &'static [view::PaneSpec];
     /// A solver for the workbench that keeps what it computed between solves, so an edit
-    /// re-runs only the stages whose inputs it changed.
-    fn session(&self) -> Box<dyn Session>;
+    /// re-runs only the stages whose inputs it changed. By default each solve is whole
+    /// ([`WholeSolve`]).
+    fn session(&self) -> Box<dyn Session> {
+        Box::new(WholeSolve)
+    }
     /// The fidelity study of `rollbench bench`; `None` when the system has none.
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None
@@ -196,7 +199,9 @@ pub trait Case: CaseDeck + Send + Sync {
     fn solve(&self, options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String>;
 
     /// True if the deck has a time simulation that [`Detail::transient`] turns on.
-    fn has_transient(&self) -> bool;
+    fn has_transient(&self) -> bool {
+        false
+    }
     /// The deck's own fidelity, when the system has a fidelity study.
     fn fidelity(&self) -> Option<Fidelity> {
         None
@@ -239,6 +244,29 @@ pub trait Session: Send {
         detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError>;
+}
+
+/// The session of a system that caches nothing: every solve is [`Case::solve`], with the
+/// transient when the panes ask for it (a system without a stepper trace ignores
+/// [`Detail::trace_element`]).
+pub struct WholeSolve;
+
+impl Session for WholeSolve {
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let options = RunOptions {
+            skip_transient: !detail.transient,
+        };
+        case.solve(options, Cancel::from_option(cancel.flag()))
+            .map_err(|message| SolveError::Stage {
+                stage: case.system().id(),
+                message,
+            })
+    }
 }
 
 /// A solved case: what reports and panes draw from.
