@@ -245,8 +245,9 @@ pub enum PaneKind {
     Inputs,
     /// The element table ([`View::screen_table`]).
     Elements,
-    /// The bearing chart and, per element, its detail chart.
-    Chart,
+    /// Bearing chart `n` of [`View::charts`]; chart 0 also has, per element, its detail
+    /// chart ([`View::element_charts`], `c` toggles).
+    Chart(usize),
     /// The thermal network.
     Thermal,
     /// The equilibrium stepper.

@@ -642,7 +642,7 @@ impl App {
             }
             KeyCode::Char('r') => vec![self.submit()],
             // The chart pane's mode: shown there, so only acted on where it is seen.
-            KeyCode::Char('c') if self.visible(Pane::Chart) => {
+            KeyCode::Char('c') if self.visible(Pane::Chart(0)) => {
                 self.chart_laminae = !self.chart_laminae;
                 Vec::new()
             }
@@ -703,7 +703,7 @@ impl App {
                 self.input_sel = step(self.input_sel, self.fields.len());
                 Vec::new()
             }
-            Pane::Elements | Pane::Chart | Pane::Stepper => {
+            Pane::Elements | Pane::Chart(_) | Pane::Stepper => {
                 let before = self.roller_sel;
                 self.roller_sel = step(self.roller_sel, self.roller_count());
                 if before != self.roller_sel {
@@ -737,7 +737,7 @@ impl App {
                 }
                 Vec::new()
             }
-            Pane::Chart | Pane::Elements => {
+            Pane::Chart(_) | Pane::Elements => {
                 let n = self.roller_count();
                 if n > 0 {
                     self.roller_sel =
@@ -763,7 +763,7 @@ impl App {
                 }
                 Vec::new()
             }
-            Pane::Elements | Pane::Chart if self.panes().contains(&Pane::Stepper) => {
+            Pane::Elements | Pane::Chart(_) if self.panes().contains(&Pane::Stepper) => {
                 self.step = 0;
                 self.focus_to(Pane::Stepper)
             }

@@ -48,7 +48,7 @@ impl Widget for &App {
             let offered = |p: Pane| panes.contains(&p);
             render_pane(self, Pane::Inputs, left, buf);
             render_pane(self, Pane::Elements, top, buf);
-            render_pane(self, Pane::Chart, chart, buf);
+            render_pane(self, Pane::Chart(0), chart, buf);
             // The side shows the stepper while it has the focus (or when the system
             // has no thermal pane), else the thermal network.
             if self.focus == Pane::Stepper || !offered(Pane::Thermal) {
@@ -190,7 +190,7 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
     match pane {
         Pane::Inputs => render_inputs(app, area, buf),
         Pane::Elements => render_rollers(app, area, buf),
-        Pane::Chart => render_load(app, area, buf),
+        Pane::Chart(n) => render_load(app, n, area, buf),
         Pane::Thermal => render_thermal(app, area, buf),
         Pane::Stepper => render_stepper(app, area, buf),
     }
@@ -409,29 +409,28 @@ fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
 const SERIES_COLOURS: [Color; 2] = [INNER, OUTER];
 
 /// The Load pane: the view's bearing chart, or with `c` the selected element's chart.
-fn render_load(app: &App, area: Rect, buf: &mut Buffer) {
+/// A chart pane: bearing chart `n` of the view, or for chart 0 with `c` the selected
+/// element's chart.
+fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
+    let pane = Pane::Chart(n);
     let Some(view) = app.view.as_deref() else {
-        let block = pane_block(app, Pane::Chart, "");
+        let block = pane_block(app, pane, "");
         let inner = block.inner(area);
         block.render(area, buf);
         Paragraph::new(no_solution_text(app)).render(inner, buf);
         return;
     };
-    let chart = if app.chart_laminae {
+    let chart = if app.chart_laminae && n == 0 {
         view.element_charts.get(app.roller_sel)
     } else {
-        view.charts.first()
+        view.charts.get(n)
     };
     let Some(c) = chart else {
-        pane_block(app, Pane::Chart, "").render(area, buf);
+        pane_block(app, pane, "").render(area, buf);
         return;
     };
     let s = view_model::chart_series(c, app.display_units);
-    let block = pane_block(
-        app,
-        Pane::Chart,
-        &format!(" · {}{}", s.title, stale_note(app)),
-    );
+    let block = pane_block(app, pane, &format!(" · {}{}", s.title, stale_note(app)));
     let mut datasets: Vec<Dataset> = s
         .series
         .iter()
@@ -842,7 +841,9 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             let mut first = match app.focus {
                 Pane::Inputs => v(&["jk move", "Enter edit", "^z/^y undo/redo", "^s save"]),
                 Pane::Elements => vec![format!("jk {el}"), "Enter stepper".into()],
-                Pane::Chart => vec![format!("jk {el}"), "c chart".into(), "Enter stepper".into()],
+                Pane::Chart(_) => {
+                    vec![format!("jk {el}"), "c chart".into(), "Enter stepper".into()]
+                }
                 Pane::Stepper => vec!["hl step".into(), "PgUp/PgDn ±10".into(), format!("jk {el}")],
                 Pane::Thermal => v(&["jk node", "g/G first/last"]),
             };

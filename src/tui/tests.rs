@@ -479,7 +479,7 @@ fn tui_snapshot_overlays_and_modes() {
         app.handle(key(KeyCode::Enter));
         snap("editing", &app, w, h);
 
-        let mut app = solved_app(Pane::Chart, w, h);
+        let mut app = solved_app(Pane::Chart(0), w, h);
         app.handle(ch('j'));
         app.handle(ch('c'));
         snap("lamina_chart", &app, w, h);

@@ -68,7 +68,7 @@ impl BearingSystem for SphericalRoller {
                 title: "Rollers",
             },
             PaneSpec {
-                kind: PaneKind::Chart,
+                kind: PaneKind::Chart(0),
                 title: "Load",
             },
             PaneSpec {
