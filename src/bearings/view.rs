@@ -2,7 +2,7 @@
 //! their columns' units, and the key outputs the fidelity bench compares. Reports and
 //! panes draw from a [`View`]; none of them re-joins a system's per-element arrays.
 
-use crate::units::{Quantity, Units, INCH_M, LBF_N, PSI_PA};
+use crate::units::{Quantity, Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA};
 
 /// How a value is shown on screen: the display unit an engineer reads it in, per unit
 /// system (contact stress in MPa or ksi, film in µm or µin, deflections in mm or mil).
@@ -24,6 +24,10 @@ pub enum Display {
     Stress,
     /// Small angles (tilts, misalignments): mrad in both systems.
     SmallAngle,
+    /// Heat rates: W or Btu/hr.
+    Power,
+    /// Moments: N·m or lbf·in.
+    Moment,
 }
 
 impl Display {
@@ -42,6 +46,10 @@ impl Display {
             (Display::Stress, Units::Si) => v / 1e6,
             (Display::Stress, Units::Us) => v / PSI_PA / 1e3,
             (Display::SmallAngle, _) => v * 1e3,
+            (Display::Power, Units::Si) => v,
+            (Display::Power, Units::Us) => v * BTU_PER_HOUR_PER_WATT,
+            (Display::Moment, Units::Si) => v,
+            (Display::Moment, Units::Us) => v / INCH_LBF_N_M,
         }
     }
 
@@ -60,6 +68,10 @@ impl Display {
             (Display::Stress, Units::Si) => "MPa",
             (Display::Stress, Units::Us) => "ksi",
             (Display::SmallAngle, _) => "mrad",
+            (Display::Power, Units::Si) => "W",
+            (Display::Power, Units::Us) => "Btu/hr",
+            (Display::Moment, Units::Si) => "N·m",
+            (Display::Moment, Units::Us) => "lbf·in",
         }
     }
 
@@ -418,6 +430,28 @@ pub struct View {
     pub thermal: Option<ThermalResults>,
     /// Solver work counters.
     pub stats: SolveStats,
+    /// Results beyond the validity of the model, each a sentence with its numbers and
+    /// bound (empty: none); the reports carry them too.
+    pub warnings: Vec<Warning>,
+}
+
+/// A result beyond the validity of the model, said in each unit system.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Warning {
+    /// In SI units.
+    pub si: String,
+    /// In US customary units.
+    pub us: String,
+}
+
+impl Warning {
+    /// The sentence in `units`.
+    pub fn text(&self, units: Units) -> &str {
+        match units {
+            Units::Si => &self.si,
+            Units::Us => &self.us,
+        }
+    }
 }
 
 impl View {
@@ -459,6 +493,10 @@ mod tests {
         assert!(close(Display::SmallLength.convert(2.5e-3, Units::Si), 2.5));
         assert!(close(Display::LineLoad.convert(2.5e3, Units::Si), 2.5));
         assert_eq!(Display::Plain.convert(7.0, Units::Us), 7.0);
+        assert!(close(us(Display::Moment, INCH_LBF_N_M), 1.0));
+        // BTU_PER_HOUR_PER_WATT is given to 10 digits (units.rs checks it to 1e-10).
+        let btu_per_hour = us(Display::Power, crate::units::BTU_J / crate::units::HOUR_S);
+        assert!((btu_per_hour - 1.0).abs() < 1e-9);
         assert_eq!(Display::Force.header("Qi", Units::Us), "Qi lbf");
         assert_eq!(Display::Force.header("", Units::Si), "N");
         assert_eq!(Display::Plain.header("ψ deg", Units::Us), "ψ deg");

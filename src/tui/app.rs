@@ -168,6 +168,8 @@ pub enum Mode {
     Help,
     /// The last error, whole, in a popup (`e` reopens it).
     Error,
+    /// The solution's warnings (results beyond the model), in a popup (`w`).
+    Warnings,
 }
 
 /// The whole UI state. Rendering reads it through `&App`; nothing is locked.
@@ -507,7 +509,7 @@ impl App {
     fn on_key(&mut self, key: KeyEvent) -> Vec<Command> {
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
         match self.mode.clone() {
-            Mode::Help | Mode::Error => {
+            Mode::Help | Mode::Error | Mode::Warnings => {
                 self.mode = Mode::Normal;
                 Vec::new()
             }
@@ -593,6 +595,14 @@ impl App {
             // Esc only ever cancels or goes back (a prompt, an edit, a popup); q quits.
             KeyCode::Char('q') => self.request_quit(),
             KeyCode::Esc => Vec::new(),
+            KeyCode::Char('w') => {
+                if self.view.as_ref().is_some_and(|v| !v.warnings.is_empty()) {
+                    self.mode = Mode::Warnings;
+                } else {
+                    self.message = Some("no warnings".into());
+                }
+                Vec::new()
+            }
             KeyCode::Char('e') => {
                 if self.error.is_some() {
                     self.mode = Mode::Error;
@@ -1007,6 +1017,11 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ("o", "any", "open a deck…"),
     ("R", "any", "revert to the saved file"),
     ("e", "any", "the last error, whole (any key closes)"),
+    (
+        "w",
+        "any",
+        "the solution's warnings: results beyond the model's validity",
+    ),
     ("?", "any", "this help (any key closes)"),
     ("Esc", "any", "cancel: an edit, a prompt, a popup"),
     ("q / Ctrl-c", "any", "quit (asks if unsaved)"),

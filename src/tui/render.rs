@@ -65,7 +65,21 @@ impl Widget for &App {
         render_hints(self, hints, buf);
         match &self.mode {
             Mode::Help => render_help(area, buf),
-            Mode::Error => render_error(self.error.as_deref().unwrap_or(""), area, buf),
+            Mode::Error => render_error(
+                " Error · any key closes, e reopens ",
+                self.error.as_deref().unwrap_or(""),
+                area,
+                buf,
+            ),
+            Mode::Warnings => {
+                let u = self.display_units;
+                let text: Vec<String> = self
+                    .view
+                    .iter()
+                    .flat_map(|v| v.warnings.iter().map(|w| format!("⚠ {}", w.text(u))))
+                    .collect();
+                render_error(" Warnings · any key closes ", &text.join("\n"), area, buf);
+            }
             Mode::Prompt { kind, buffer } => render_prompt(*kind, buffer, area, buf),
             Mode::ConfirmQuit => render_confirm(
                 "Unsaved changes",
@@ -701,7 +715,15 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
             .render(inner, buf);
         return;
     };
-    let lw = 18usize;
+    // Labels in one column as wide as the longest (units included) and a space.
+    let lw = v
+        .lines
+        .iter()
+        .map(|(k, _)| k.chars().count() + 1)
+        .chain(v.bars.iter().map(|b| b.label.chars().count() + 1))
+        .chain(std::iter::once(18))
+        .max()
+        .unwrap_or(18);
     let mut lines: Vec<Line> = vec![Line::styled(
         format!("{:<lw$}{}", "steps of", trace.label),
         Style::default().fg(DIM),
@@ -779,7 +801,8 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             wall_ms,
         } => (
             format!(
-                "✓ solved in {iterations} iterations ({roller_iterations} roller), {wall_ms:.1} ms"
+                "✓ solved in {iterations} ring + {roller_iterations} {} iterations, {wall_ms:.1} ms",
+                app.element_name()
             ),
             Color::Green,
         ),
@@ -795,6 +818,18 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
         text,
         Style::default().fg(color).add_modifier(Modifier::BOLD),
     )];
+    let warnings = app.view.as_ref().map_or(0, |v| v.warnings.len());
+    if warnings > 0 && matches!(app.solve, SolveState::Solved { .. }) {
+        spans.push(Span::styled(
+            format!(
+                " │ ⚠ {warnings} warning{} (w)",
+                if warnings == 1 { "" } else { "s" }
+            ),
+            Style::default()
+                .fg(Color::Yellow)
+                .add_modifier(Modifier::BOLD),
+        ));
+    }
     if app.unsaved() {
         spans.push(Span::styled(
             " │ [+] unsaved",
@@ -837,6 +872,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             v(&["any key closes", "e reopens the last error"]),
             Vec::new(),
         ),
+        Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
                 Pane::Inputs => v(&["jk move", "Enter edit", "^z/^y undo/redo", "^s save"]),
@@ -851,6 +887,9 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             first.push("Tab pane".into());
             if app.error.is_some() {
                 first.insert(0, "e error".into());
+            }
+            if app.view.as_ref().is_some_and(|v| !v.warnings.is_empty()) {
+                first.insert(0, "w warnings".into());
             }
             (first, v(&["? help", "q quit"]))
         }
@@ -887,7 +926,7 @@ fn centered(area: Rect, w: u16, h: u16) -> Rect {
 
 /// The last error, whole: one message per line, wrapped to the popup, which takes the
 /// room it needs up to the screen.
-fn render_error(text: &str, area: Rect, buf: &mut Buffer) {
+fn render_error(title: &str, text: &str, area: Rect, buf: &mut Buffer) {
     let width = area.width.saturating_sub(4).max(10);
     let inner_w = width.saturating_sub(2).max(1) as usize;
     let longest = text.lines().map(|l| l.chars().count()).max().unwrap_or(0);
@@ -910,7 +949,7 @@ fn render_error(text: &str, area: Rect, buf: &mut Buffer) {
             Block::default()
                 .borders(Borders::ALL)
                 .border_style(Style::default().fg(Color::Red))
-                .title(" Error · any key closes, e reopens "),
+                .title(title.to_string()),
         )
         .render(r, buf);
 }

@@ -15,6 +15,7 @@ pub mod roller;
 pub mod stages;
 pub mod system;
 pub mod view;
+pub mod warnings;
 
 pub use input::*;
 pub use system::{SYSTEM, SYSTEM_ID};

@@ -254,7 +254,7 @@ const PANE_COLUMNS: [Column; 11] = [
     pane(
         "max_stress_pa",
         Quantity::Pressure,
-        "σ",
+        "σmax",
         Display::Stress,
         0,
         6,
@@ -269,7 +269,7 @@ const PANE_COLUMNS: [Column; 11] = [
         0,
         8,
     ),
-    pane("heat_w", Quantity::Power, "heat W", Display::Plain, 1, 6),
+    pane("heat_w", Quantity::Power, "heat", Display::Power, 1, 6),
 ];
 
 /// The system-independent view of an analysis: the per-roller tables (CSV and pane),
@@ -389,6 +389,7 @@ pub fn view(a: &Analysis) -> View {
             inner_iterations: a.load.stats.roller_iterations,
             wall_time_s: a.load.stats.wall_time_s,
         },
+        warnings: super::warnings::warnings(a),
     }
 }
 
@@ -470,8 +471,8 @@ fn trace(a: &Analysis) -> Option<Trace> {
                     t.residual[..2].to_vec(),
                 ),
                 line(
-                    "resid moment N·m",
-                    Display::Plain,
+                    "resid moment",
+                    Display::Moment,
                     TraceFormat::Residual,
                     vec![t.residual[2]],
                 ),
@@ -534,8 +535,8 @@ fn trace(a: &Analysis) -> Option<Trace> {
                 display: Display::Force,
             },
             TraceColumn {
-                label: "mom N·m",
-                display: Display::Plain,
+                label: "mom",
+                display: Display::Moment,
             },
         ],
         steps,

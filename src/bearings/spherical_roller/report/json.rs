@@ -120,6 +120,16 @@ pub fn to_value(a: &Analysis) -> Value {
         serde_json::to_value(&a.input).unwrap_or(Value::Null),
     );
     doc.insert("converged".into(), Value::Bool(ld.converged));
+    // Results beyond the validity of the model (issue 15): sentences with their numbers.
+    doc.insert(
+        "warnings".into(),
+        Value::Array(
+            super::super::warnings::warnings(a)
+                .into_iter()
+                .map(|w| Value::String(w.si))
+                .collect(),
+        ),
+    );
     doc.insert(
         "loads".into(),
         json!({"radial_n": a.input.operating.radial_load_n, "axial_n": a.input.operating.axial_load_n}),

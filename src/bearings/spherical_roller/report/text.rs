@@ -14,6 +14,9 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     let b = &a.input;
     let mut s = String::new();
     let _ = writeln!(s, "ROLLBENCH — SASHBEAN lamina analysis: {}", b.name);
+    for w in super::super::warnings::warnings(a) {
+        let _ = writeln!(s, "WARNING: {}", w.text(units));
+    }
     let _ = writeln!(
         s,
         "Z = {}  D = {:.4} {}  P_t = {:.4} {}  beta = {:.2} deg  laminae = {}",
