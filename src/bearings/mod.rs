@@ -12,6 +12,7 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod angular_ball;
 pub mod error;
 pub mod spherical_roller;
 pub mod view;
