@@ -69,8 +69,13 @@ impl BallGeometry {
         if !(b.density_kg_m3.is_finite() && b.density_kg_m3 > 0.0) {
             return bad("materials: ball density must be positive");
         }
-        let e_star = reduced_modulus(b.modulus_pa, b.poisson, r.modulus_pa, r.poisson)
-            .map_err(|e| BallError::InvalidInput(format!("materials: {e}")))?;
+        let e_star = reduced_modulus(
+            b.youngs_modulus_pa,
+            b.poisson_ratio,
+            r.youngs_modulus_pa,
+            r.poisson_ratio,
+        )
+        .map_err(|e| BallError::InvalidInput(format!("materials: {e}")))?;
         let inner_offset = (g.inner_groove_curvature - 0.5) * d;
         let outer_offset = (g.outer_groove_curvature - 0.5) * d;
         let a = inner_offset + outer_offset;

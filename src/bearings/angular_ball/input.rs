@@ -4,6 +4,7 @@
 
 use crate::physics::contact::point::HertzMethod;
 use crate::physics::lubrication::traction_curve::TractionCurve;
+use crate::physics::material::Material;
 
 /// Internal geometry (seed 001 ch. 3, Fig. 3-1), SI.
 #[derive(Debug, Clone, PartialEq)]
@@ -25,24 +26,13 @@ pub struct Geometry {
     pub hertz_method: HertzMethod,
 }
 
-/// Elastic constants and density of one body.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Elastic {
-    /// Young's modulus, Pa.
-    pub modulus_pa: f64,
-    /// Poisson's ratio.
-    pub poisson: f64,
-    /// Density, kg/m³ (used for the ball's mass and inertia).
-    pub density_kg_m3: f64,
-}
-
-/// Ball and ring materials.
+/// Ball and ring materials (the project's [`Material`]: E, ν, density, c, k).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Materials {
     /// The balls.
-    pub ball: Elastic,
+    pub ball: Material,
     /// Both rings.
-    pub rings: Elastic,
+    pub rings: Material,
 }
 
 /// How the axial load of the deck is applied.
@@ -208,10 +198,13 @@ impl BallInput {
     /// β = 0.008 1/°C, ch. 4), 800 kg/m³, 2000 J/(kg·K), 0.14 W/(m·K), 0.1 l/min
     /// (ch. 6); traction curve 1.
     pub fn chen_a() -> Self {
-        let steel = Elastic {
-            modulus_pa: 2.08e11,
-            poisson: 0.3,
+        // Ch. 5 steel; specific heat and conductivity from ch. 6's thermal data.
+        let steel = Material {
+            youngs_modulus_pa: 2.08e11,
+            poisson_ratio: 0.3,
             density_kg_m3: 7800.0,
+            specific_heat_j_kg_k: 470.0,
+            conductivity_w_m_k: 43.0,
         };
         BallInput {
             geometry: Geometry {

@@ -464,12 +464,19 @@ pub fn solve(
         .abs()
         .max(match cond.axial {
             Axial::Force(f) => f.abs(),
-            Axial::Displacement(_) => 0.0,
+            // The load the held displacement puts on the balls (both contacts in series,
+            // on the line of centres).
+            Axial::Displacement(d) => {
+                let a = geom.centre_distance_m;
+                let overlap = (a * a0.sin() + d).hypot(a * a0.cos()) - a;
+                let k = (stiff0.0.powf(-2.0 / 3.0) + stiff0.1.powf(-2.0 / 3.0)).powf(-1.5);
+                z as f64 * k * overlap.max(0.0).powf(1.5)
+            }
         })
         .max(z as f64 * geom.ball_mass_kg * wm_est * wm_est * 0.5 * geom.pitch_diameter_m)
         .max(1.0);
     let ball_tolerance = 1e-11 * f_ref / z as f64;
-    let ring_tolerance = 1e-11 * f_ref;
+    let ring_tolerance = 1e-10 * f_ref;
     let mut x = Vector2::new(
         match cond.axial {
             Axial::Force(fa) => axial_guess(geom, fa, stiff0),
