@@ -181,7 +181,7 @@ pub fn skid_threshold(
     axial: Axial,
     cancel: Cancel,
 ) -> Result<SkidThreshold, BallError> {
-    let mu = input.traction.max_mu();
+    let mu = input.traction.curve().max_mu();
     let limit = input.dynamics.skid_search_limit_rad_s;
     let (_, wi, wo) = speed_basis(input);
     let mut evaluations = 0;
@@ -278,7 +278,7 @@ fn contact_result(
         .solve(load.load_n)
         .map_err(|source| BallError::Contact { race: name, source })?;
     let e2 = model.shape().second_kind;
-    let mu = input.traction.max_mu();
+    let mu = input.traction.curve().max_mu();
     let ms = spin_moment_nm(mu, load.load_n, hertz.semi_major_m, e2);
     let lub = &input.lubricant;
     let film = PointFilmInputs::from_contact(
@@ -318,6 +318,7 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
     }
     input
         .traction
+        .curve()
         .validate()
         .map_err(|e| BallError::InvalidInput(format!("traction: {e}")))?;
     let op = &input.operating;
@@ -330,7 +331,7 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
     let geom = BallGeometry::new(input)?;
     let (axial, rest) = axial_condition(input, &geom, cancel)?;
     let load = load_distribution::solve(&geom, &conditions(input, axial, 1.0), cancel)?;
-    let mu = input.traction.max_mu();
+    let mu = input.traction.curve().max_mu();
     let mut balls = Vec::with_capacity(load.balls.len());
     for b in &load.balls {
         let k = &b.kinematics;

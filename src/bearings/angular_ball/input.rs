@@ -89,6 +89,42 @@ pub enum GyroscopicFriction {
     SeedSign,
 }
 
+/// Which traction curve (seed ch. 6, Fig. 6-20).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TractionPreset {
+    /// Coulomb friction with [`Traction::mu`].
+    Constant,
+    /// Chen's curve 1 (µ_m = µ_∞ = 0.054 from 0.2 m/s).
+    #[default]
+    Curve1,
+    /// Chen's curve 2 (0.075 at 0.2 m/s, 0.035 beyond 3 m/s).
+    Curve2,
+    /// Chen's curve 3 (0.075 at 0.2 m/s, 0.035 beyond 2 m/s).
+    Curve3,
+}
+
+/// The traction law of the contacts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Traction {
+    /// The curve.
+    pub preset: TractionPreset,
+    /// µ of the constant law (unused by the seed's curves).
+    pub mu: f64,
+}
+
+impl Traction {
+    /// The curve as a function µ(u_s).
+    pub fn curve(&self) -> TractionCurve {
+        let points = match self.preset {
+            TractionPreset::Constant => return TractionCurve::Constant { mu: self.mu },
+            TractionPreset::Curve1 => vec![(0.0, 0.0), (0.2, 0.054)],
+            TractionPreset::Curve2 => vec![(0.0, 0.0), (0.2, 0.075), (3.0, 0.035)],
+            TractionPreset::Curve3 => vec![(0.0, 0.0), (0.2, 0.075), (2.0, 0.035)],
+        };
+        TractionCurve::Table { points }
+    }
+}
+
 /// Operating conditions, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Operating {
@@ -178,7 +214,7 @@ pub struct BallInput {
     /// Kinematics.
     pub kinematics: Kinematics,
     /// Traction curve.
-    pub traction: TractionCurve,
+    pub traction: Traction,
     /// Lubricant.
     pub lubricant: Lubricant,
     /// Analysis options.
@@ -231,8 +267,9 @@ impl BallInput {
                 race_control: RaceControl::Outer,
                 gyroscopic_friction: GyroscopicFriction::Resisting,
             },
-            traction: TractionCurve::Table {
-                points: vec![(0.0, 0.0), (0.2, 0.054)],
+            traction: Traction {
+                preset: TractionPreset::Curve1,
+                mu: 0.054,
             },
             lubricant: Lubricant {
                 viscosity_pa_s: 0.071,
@@ -257,5 +294,28 @@ impl BallInput {
         b.geometry.free_contact_angle_rad = 60f64.to_radians();
         b.operating.inner_speed_rad_s = rpm(9_500.0);
         b
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The presets are the seed's curves of `traction_curve` (same points).
+    #[test]
+    fn presets_are_the_seed_curves() {
+        for (p, n) in [
+            (TractionPreset::Curve1, 1),
+            (TractionPreset::Curve2, 2),
+            (TractionPreset::Curve3, 3),
+        ] {
+            let t = Traction { preset: p, mu: 0.0 };
+            assert_eq!(t.curve(), TractionCurve::seed_curve(n).unwrap());
+        }
+        let t = Traction {
+            preset: TractionPreset::Constant,
+            mu: 0.07,
+        };
+        assert_eq!(t.curve().max_mu(), 0.07);
     }
 }

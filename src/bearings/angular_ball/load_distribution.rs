@@ -373,19 +373,22 @@ impl NewtonSystem<2> for RingProblem<'_> {
                 }
             };
             self.warm[k] = Some(b.position);
-            let weight = if self.axisymmetric {
-                self.azimuths.len() as f64
+            // Identical balls all round: Σ1 = Z, Σcos ψ and Σcos² ψ over the set.
+            let (w, wc, wcc) = if self.axisymmetric {
+                let c = self.azimuths.iter().map(|p| p.cos());
+                let (sc, scc) = c.fold((0.0, 0.0), |(a, b), x| (a + x, b + x * x));
+                (self.azimuths.len() as f64, sc, scc)
             } else {
-                1.0
+                (1.0, cp, cp * cp)
             };
             let kk = b.ring_stiffness;
-            force += Vector2::new(b.ring_force[0], b.ring_force[1] * cp) * weight;
+            force += Vector2::new(b.ring_force[0] * w, b.ring_force[1] * wc);
             jac += Matrix2::new(
-                kk[(0, 0)],
-                kk[(0, 1)] * cp,
-                kk[(1, 0)] * cp,
-                kk[(1, 1)] * cp * cp,
-            ) * weight;
+                kk[(0, 0)] * w,
+                kk[(0, 1)] * wc,
+                kk[(1, 0)] * wc,
+                kk[(1, 1)] * wcc,
+            );
             balls.push(b);
         }
         let mut f = Vector2::zeros();

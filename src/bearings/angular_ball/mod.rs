@@ -8,11 +8,15 @@
 )]
 
 pub mod analysis;
+pub mod deck;
 pub mod error;
 pub mod geometry;
 pub mod input;
 pub mod load_distribution;
 pub mod race_control;
+pub mod report;
+pub mod system;
+pub mod view;
 
 pub use error::BallError;
 pub use input::BallInput;
