@@ -105,10 +105,7 @@ fn chen_a_json_fields_and_values() {
         (qi / 173.58 - 1.0).abs() < 2e-3 && (qo / 260.49 - 1.0).abs() < 2e-3,
         "{qi} {qo}"
     );
-    assert_eq!(
-        num(&v, &["balls", "0", "outer", "spin_rad_s"]).abs() < 1e-6,
-        true
-    );
+    assert!(num(&v, &["balls", "0", "outer", "spin_rad_s"]).abs() < 1e-6);
     assert_eq!(v["speeds"]["controlling_race"], "outer");
     num(&v, &["speeds", "cage_rpm"]);
     num(&v, &["speeds", "ball_spin_rad_s"]);
