@@ -453,3 +453,79 @@ mod tests {
         let _ = rpm(1.0);
     }
 }
+
+#[cfg(test)]
+mod properties {
+    use super::*;
+    use crate::bearings::angular_ball::input::{rpm, GyroscopicFriction, RaceControl};
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+        /// Random ball bearings, loads, speeds, traction and options: the analysis either
+        /// returns a typed error or an answer whose numbers are all finite, with the ring
+        /// in equilibrium (held force met to 1e-6 relative) and every ball's residual below
+        /// its tolerance; it never panics.
+        #[test]
+        fn converged_or_typed_error(
+            d_mm in 4.0f64..30.0,
+            ratio in 4.0f64..15.0,
+            fi in 0.505f64..0.58,
+            fo in 0.505f64..0.58,
+            alpha in 0.0f64..75.0,
+            z in 6usize..40,
+            fa in 50.0f64..5000.0,
+            fr_share in 0.0f64..1.5,
+            n in 0.0f64..20_000.0,
+            force in any::<bool>(),
+            seed_sign in any::<bool>(),
+            control in 0usize..3,
+            curve in 0usize..4,
+        ) {
+            let mut i = BallInput::chen_a();
+            let g = &mut i.geometry;
+            g.ball_diameter_m = d_mm * 1e-3;
+            g.pitch_diameter_m = d_mm * ratio * 1e-3;
+            g.inner_groove_curvature = fi;
+            g.outer_groove_curvature = fo;
+            g.free_contact_angle_rad = alpha.to_radians();
+            g.ball_count = z;
+            i.operating.axial_load_n = fa;
+            i.operating.radial_load_n = fa * fr_share;
+            i.operating.inner_speed_rad_s = rpm(n);
+            i.operating.preload_mode = if force { PreloadMode::Force } else { PreloadMode::Displacement };
+            i.kinematics.gyroscopic_friction = if seed_sign { GyroscopicFriction::SeedSign } else { GyroscopicFriction::Resisting };
+            i.kinematics.race_control = [RaceControl::Outer, RaceControl::Inner, RaceControl::Auto][control];
+            i.traction.preset = [
+                crate::bearings::angular_ball::input::TractionPreset::Constant,
+                crate::bearings::angular_ball::input::TractionPreset::Curve1,
+                crate::bearings::angular_ball::input::TractionPreset::Curve2,
+                crate::bearings::angular_ball::input::TractionPreset::Curve3,
+            ][curve];
+            i.dynamics.skid_search_limit_rad_s = rpm(20_000.0);
+            match analyse(&i, Cancel::NONE) {
+                Err(e) => {
+                    // A typed error with a message.
+                    eprintln!("ERR {e} :: d={d_mm:.1} r={ratio:.1} fi={fi:.3} fo={fo:.3} a={alpha:.1} z={z} fa={fa:.0} frs={fr_share:.2} n={n:.0} force={force} seed={seed_sign} ctl={control} curve={curve}");
+                    prop_assert!(!e.to_string().is_empty());
+                }
+                Ok(a) => {
+                    let v = super::super::report::json(&a);
+                    let text = v.to_string();
+                    prop_assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+                    if force {
+                        prop_assert!((a.load.axial_force_n / fa - 1.0).abs() < 1e-6);
+                    }
+                    if fr_share > 0.0 {
+                        prop_assert!((a.load.radial_force_n / (fa * fr_share) - 1.0).abs() < 1e-6);
+                    }
+                    for b in &a.balls {
+                        prop_assert!(b.inner.load_n.is_finite() && b.outer.load_n >= 0.0);
+                        prop_assert!(b.heat_w.is_finite() && b.heat_w >= 0.0);
+                    }
+                }
+            }
+        }
+    }
+}

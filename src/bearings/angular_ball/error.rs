@@ -19,10 +19,12 @@ pub enum BallError {
         source: PointContactError,
     },
     /// One ball's force equilibrium (2-5a, b) did not converge.
-    #[error("ball {ball} equilibrium did not converge after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
+    #[error("ball {ball} equilibrium did not converge ({reason}) after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
     BallNotConverged {
         /// 0-based ball index.
         ball: usize,
+        /// How Newton stopped.
+        reason: &'static str,
         /// Newton iterations.
         iterations: usize,
         /// Residual force, N.
@@ -31,8 +33,10 @@ pub enum BallError {
         tolerance_n: f64,
     },
     /// The inner ring equilibrium (2-8) did not converge.
-    #[error("ring equilibrium did not converge after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
+    #[error("ring equilibrium did not converge ({reason}) after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
     RingNotConverged {
+        /// How Newton stopped.
+        reason: &'static str,
         /// Newton iterations.
         iterations: usize,
         /// Residual force, N.

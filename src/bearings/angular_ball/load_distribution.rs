@@ -173,6 +173,18 @@ impl NewtonSystem<2> for BallProblem<'_> {
     }
 }
 
+/// Why a Newton solve stopped, in words (for error messages).
+fn reason(t: &Termination) -> &'static str {
+    match t {
+        Termination::Converged { .. } => "converged",
+        Termination::NotConverged { .. } => "iteration budget spent",
+        Termination::Stalled { .. } => "line search stalled",
+        Termination::SingularJacobian { .. } => "singular Jacobian",
+        Termination::NonFinite { .. } => "non-finite residual",
+        Termination::Cancelled { .. } => "cancelled",
+    }
+}
+
 /// Solve one ball's equilibrium (2-5a, b) for the groove-centre vector `centres`
 /// (I − O', m), from `warm` if given. `tolerance_n` on the largest force residual.
 pub fn solve_ball(
@@ -215,9 +227,51 @@ pub fn solve_ball(
         let e = problem.eval(&x);
         return Ok(finish(x, e, 0.0, 0));
     }
-    // Start on the line of centres, the overlap shared between the contacts.
-    let mut x =
-        warm.unwrap_or(along * (geom.outer_offset_m + 0.5 * gap.max(1e-9 * geom.ball_diameter_m)));
+    // A ball the inner race does not reach rests on the outer race alone, where the
+    // outer contact force balances the centrifugal force through (I + µR): Q_o u_o =
+    // F_c (I + µR)⁻¹ e_r, a fixed direction, so only the approach δ_o is unknown and
+    // K δ_o^{3/2} = m·c·(R_O' + (f_o − ½)D + δ_o)·d_r is solved by substitution (its
+    // right side hardly depends on δ_o). Exact, and the only robust way: Newton sees a
+    // ball held by a nearly tangential-free contact as nearly singular.
+    if p.centrifugal_coeff > 0.0 {
+        let fm = friction_matrix(p.friction);
+        if let Some(inv) = fm.try_inverse() {
+            let w = inv * Vector2::new(0.0, 1.0);
+            let (m, dir) = (w.norm(), w / w.norm());
+            let mut d_o = 0.0f64;
+            for _ in 0..60 {
+                let fc = p.centrifugal_coeff
+                    * (geom.outer_centre_radius_m + (geom.outer_offset_m + d_o) * dir[1]);
+                let next = (m * fc / p.outer_stiffness).max(0.0).powf(2.0 / 3.0);
+                let done = (next - d_o).abs() <= 1e-15 * next;
+                d_o = next;
+                if done {
+                    break;
+                }
+            }
+            let x = dir * (geom.outer_offset_m + d_o);
+            let e = problem.eval(&x);
+            if e.inner.deflection_m <= 0.0 && d_o > 0.0 {
+                let residual = e.f.amax();
+                return Ok(finish(x, e, residual, 0));
+            }
+        }
+    }
+    // Start on the line of centres with the overlap shared between the contacts; when the
+    // races do not reach each other (gap ≤ 0) the centrifugal force presses the ball on the
+    // outer race alone: start there, radially, with the Hertz approach F_c gives.
+    let mut x = warm.unwrap_or_else(|| {
+        if gap > 1e-9 * geom.ball_diameter_m {
+            along * (geom.outer_offset_m + 0.5 * gap)
+        } else {
+            let fc = p.centrifugal_coeff * (geom.outer_centre_radius_m + geom.outer_offset_m);
+            let approach = (fc / p.outer_stiffness).powf(2.0 / 3.0);
+            Vector2::new(
+                0.0,
+                geom.outer_offset_m + approach.max(1e-9 * geom.ball_diameter_m),
+            )
+        }
+    });
     let newton = Newton {
         max_iterations: 100,
         tolerance: tolerance_n,
@@ -231,8 +285,22 @@ pub fn solve_ball(
             iterations,
             residual,
         } => Ok(finish(x, r.eval, residual, iterations)),
+        // The line search found no decrease: accepted only when the residual is at the
+        // round-off level of the forces that make it (1e-12 of Q_i + Q_o + F_c).
+        Termination::Stalled {
+            iterations,
+            residual,
+        } if residual
+            <= 1e-12
+                * (r.eval.inner.load_n
+                    + r.eval.outer.load_n
+                    + p.centrifugal_coeff * (geom.outer_centre_radius_m + x[1])) =>
+        {
+            Ok(finish(x, r.eval, residual, iterations))
+        }
         t => Err(BallError::BallNotConverged {
             ball,
+            reason: reason(&t),
             iterations: t.iterations(),
             residual_n: r.eval.f.amax(),
             tolerance_n,
@@ -368,6 +436,8 @@ impl NewtonSystem<2> for RingProblem<'_> {
             ) {
                 Ok(b) => b,
                 Err(e) => {
+                    // A NaN residual: the line search rejects this trial; the error is
+                    // reported only if the ring solve fails in the end.
                     self.error = Some(e);
                     return nan();
                 }
@@ -437,12 +507,83 @@ fn axial_guess(geom: &BallGeometry, fa: f64, stiff: (f64, f64)) -> f64 {
     ((a + total).powi(2) - ac * ac).sqrt() - a * a0.sin()
 }
 
+/// The state a load solve starts from and leaves: ring displacement, ball positions,
+/// contact angles, loads and ball-centre radii (for warm starts along a continuation).
+#[derive(Debug, Clone, PartialEq)]
+struct Warm {
+    x: Vector2<f64>,
+    balls: Vec<Option<Vector2<f64>>>,
+    angles: Vec<(f64, f64)>,
+    loads: Vec<(f64, f64)>,
+    radii: Vec<f64>,
+}
+
 /// Solve the load distribution with race-control kinematics to a fixed point.
+///
+/// Newton from the unloaded geometry usually converges. When it does not (a preload held
+/// as a force under a large radial load at high speed: the inner contacts of some balls
+/// open), the solve is continued from rest: speed and radial load are raised from zero to
+/// their values in adaptive steps, each warm-started from the last; if a step cannot be
+/// made smaller than 1/1000 of the way, the first error is returned.
 pub fn solve(
     geom: &BallGeometry,
     cond: &Conditions,
     cancel: Cancel,
 ) -> Result<LoadDistribution, BallError> {
+    let first = match solve_warm(geom, cond, cancel, None) {
+        Ok((l, _)) => return Ok(l),
+        Err(
+            e @ (BallError::Cancelled
+            | BallError::InvalidInput(_)
+            | BallError::Contact { .. }
+            | BallError::SingularKinematics { .. }),
+        ) => return Err(e),
+        Err(e) => e,
+    };
+    let at = |s: f64| Conditions {
+        inner_speed_rad_s: cond.inner_speed_rad_s * s,
+        outer_speed_rad_s: cond.outer_speed_rad_s * s,
+        radial_load_n: cond.radial_load_n * s,
+        ..*cond
+    };
+    // Rest, axial load only (always axisymmetric); then the way up.
+    let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None) {
+        Ok(r) => r,
+        Err(_) => return Err(first),
+    };
+    let mut stats = done.stats;
+    let (mut s, mut h) = (0.0f64, 0.25f64);
+    while s < 1.0 {
+        let next = (s + h).min(1.0);
+        match solve_warm(geom, &at(next), cancel, Some(&state)) {
+            Ok((l, w)) => {
+                stats.fixed_point_iterations += l.stats.fixed_point_iterations;
+                stats.ring_iterations += l.stats.ring_iterations;
+                stats.ring_evaluations += l.stats.ring_evaluations;
+                done = l;
+                state = w;
+                s = next;
+                h = (2.0 * h).min(0.5);
+            }
+            Err(BallError::Cancelled) => return Err(BallError::Cancelled),
+            Err(_) => {
+                h *= 0.25;
+                if h < 1e-3 {
+                    return Err(first);
+                }
+            }
+        }
+    }
+    done.stats = stats;
+    Ok(done)
+}
+
+fn solve_warm(
+    geom: &BallGeometry,
+    cond: &Conditions,
+    cancel: Cancel,
+    start: Option<&Warm>,
+) -> Result<(LoadDistribution, Warm), BallError> {
     let z = geom.ball_count;
     let a0 = geom.free_contact_angle_rad;
     let axisymmetric = cond.radial_load_n == 0.0;
@@ -454,9 +595,9 @@ pub fn solve(
         GyroscopicFriction::SeedSign => -1.0,
     };
     // Initial state: free angles, no load, kinematics at the free angle on the pitch circle.
-    let mut angles = vec![(a0, a0); z];
-    let mut loads = vec![(0.0, 0.0); z];
-    let mut radii = vec![0.5 * geom.pitch_diameter_m; z];
+    let mut angles = start.map_or_else(|| vec![(a0, a0); z], |w| w.angles.clone());
+    let mut loads = start.map_or_else(|| vec![(0.0, 0.0); z], |w| w.loads.clone());
+    let mut radii = start.map_or_else(|| vec![0.5 * geom.pitch_diameter_m; z], |w| w.radii.clone());
     let stiff0 = (
         geom.contact(Race::Inner, a0)?.stiffness_n_per_m1_5(),
         geom.contact(Race::Outer, a0)?.stiffness_n_per_m1_5(),
@@ -480,14 +621,24 @@ pub fn solve(
         .max(1.0);
     let ball_tolerance = 1e-11 * f_ref / z as f64;
     let ring_tolerance = 1e-10 * f_ref;
-    let mut x = Vector2::new(
-        match cond.axial {
-            Axial::Force(fa) => axial_guess(geom, fa, stiff0),
-            Axial::Displacement(d) => d,
-        },
-        0.0,
-    );
-    let mut warm: Vec<Option<Vector2<f64>>> = vec![None; z];
+    let mut x = match start {
+        Some(w) => w.x,
+        None => Vector2::new(
+            match cond.axial {
+                Axial::Force(fa) => axial_guess(geom, fa, stiff0),
+                Axial::Displacement(d) => d,
+            },
+            0.0,
+        ),
+    };
+    if let Axial::Displacement(d) = cond.axial {
+        x[0] = d;
+    }
+    if axisymmetric {
+        x[1] = 0.0;
+    }
+    let mut warm: Vec<Option<Vector2<f64>>> =
+        start.map_or_else(|| vec![None; z], |w| w.balls.clone());
     let mut stats = LoadStats::default();
     const MAX_FIXED_POINT: usize = 200;
     let mut change = f64::INFINITY;
@@ -571,13 +722,14 @@ pub fn solve(
         let r = newton.solve(&mut ring, &mut x);
         stats.ring_iterations += r.stats.iterations;
         stats.ring_evaluations += r.stats.evaluations;
-        if let Some(e) = ring.error.take() {
-            return Err(e);
-        }
         let ring_residual = match r.termination {
             Termination::Converged { residual, .. } => residual,
             t => {
+                if let Some(e) = ring.error.take() {
+                    return Err(e);
+                }
                 return Err(BallError::RingNotConverged {
+                    reason: reason(&t),
                     iterations: t.iterations(),
                     residual_n: r.eval.f.amax(),
                     tolerance_n: ring_tolerance,
@@ -598,13 +750,23 @@ pub fn solve(
             load_change = load_change
                 .max((b.inner.load_n - loads[k].0).abs() / s)
                 .max((b.outer.load_n - loads[k].1).abs() / s);
-            angles[k] = (b.inner.angle_rad, b.outer.angle_rad);
-            loads[k] = (b.inner.load_n, b.outer.load_n);
-            radii[k] = b.centre_radius_m;
+            // Plain substitution first; under-relaxed (½) after 20 iterations, for the
+            // strongly coupled cases (high speed, soft contacts) where it oscillates.
+            let w = if it < 20 { 1.0 } else { 0.5 };
+            let mix = |old: f64, new: f64| old + w * (new - old);
+            angles[k] = (
+                mix(angles[k].0, b.inner.angle_rad),
+                mix(angles[k].1, b.outer.angle_rad),
+            );
+            loads[k] = (
+                mix(loads[k].0, b.inner.load_n),
+                mix(loads[k].1, b.outer.load_n),
+            );
+            radii[k] = mix(radii[k], b.centre_radius_m);
         }
         stats.fixed_point_iterations = it + 1;
         if it > 0 && change < 1e-13 && load_change < 1e-11 {
-            return finish(
+            let l = finish(
                 geom,
                 cond,
                 &azimuths,
@@ -614,7 +776,27 @@ pub fn solve(
                 r.eval.force,
                 ring_residual,
                 stats,
-            );
+            )?;
+            // Warm state for every ball (an axisymmetric solve fills all from ball 0).
+            let all = |v: &[(f64, f64)]| {
+                if axisymmetric {
+                    vec![v[0]; z]
+                } else {
+                    v.to_vec()
+                }
+            };
+            let w = Warm {
+                x,
+                balls: if axisymmetric { vec![warm[0]; z] } else { warm },
+                angles: all(&angles),
+                loads: all(&loads),
+                radii: if axisymmetric {
+                    vec![radii[0]; z]
+                } else {
+                    radii
+                },
+            };
+            return Ok((l, w));
         }
     }
     Err(BallError::FixedPointNotConverged {
