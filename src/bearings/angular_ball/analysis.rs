@@ -126,6 +126,7 @@ fn axial_condition(
                 radial_load_n: 0.0,
                 race_control: input.kinematics.race_control,
                 gyroscopic_friction: input.kinematics.gyroscopic_friction,
+                max_friction: input.traction.curve().max_mu(),
             };
             let d = load_distribution::solve(geom, &rest, cancel)?.axial_deflection_m;
             Ok((Axial::Displacement(d), Some(d)))
@@ -142,6 +143,7 @@ fn conditions(input: &BallInput, axial: Axial, scale: f64) -> Conditions {
         radial_load_n: op.radial_load_n,
         race_control: input.kinematics.race_control,
         gyroscopic_friction: input.kinematics.gyroscopic_friction,
+        max_friction: input.traction.curve().max_mu(),
     }
 }
 
@@ -436,6 +438,26 @@ mod tests {
         assert!((a.total_heat_w - 20.0 * b.heat_w).abs() < 1e-9);
     }
 
+    /// `auto` race control (Jones/Harris criterion) picks the outer race for Bearing A at
+    /// 10 000 rpm (Q_o·a_o·E_o·cos(α_i − α_o) = 0.25 N·m against Q_i·a_i·E_i = 0.15 N·m),
+    /// giving the same answer as `outer` (1e-12); `inner` control moves the spin to the
+    /// outer race.
+    #[test]
+    fn auto_race_control_picks_the_outer_race() {
+        let outer = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let mut i = BallInput::chen_a();
+        i.kinematics.race_control = crate::bearings::angular_ball::input::RaceControl::Auto;
+        let auto = analyse(&i, Cancel::NONE).unwrap();
+        assert_eq!(auto.balls[0].control, Race::Outer);
+        let (a, o) = (&auto.balls[0], &outer.balls[0]);
+        assert!((a.inner.load_n / o.inner.load_n - 1.0).abs() < 1e-12);
+        assert!((a.heat_w / o.heat_w - 1.0).abs() < 1e-12);
+        i.kinematics.race_control = crate::bearings::angular_ball::input::RaceControl::Inner;
+        let inner = analyse(&i, Cancel::NONE).unwrap();
+        assert!(inner.balls[0].inner.kinematics.spin_rad_s.abs() < 1e-9);
+        assert!(inner.balls[0].outer.spin_heat_w > 0.0);
+    }
+
     #[test]
     fn unimplemented_methods_are_typed_errors() {
         let mut i = BallInput::chen_a();
@@ -507,7 +529,6 @@ mod properties {
             match analyse(&i, Cancel::NONE) {
                 Err(e) => {
                     // A typed error with a message.
-                    eprintln!("ERR {e} :: d={d_mm:.1} r={ratio:.1} fi={fi:.3} fo={fo:.3} a={alpha:.1} z={z} fa={fa:.0} frs={fr_share:.2} n={n:.0} force={force} seed={seed_sign} ctl={control} curve={curve}");
                     prop_assert!(!e.to_string().is_empty());
                 }
                 Ok(a) => {

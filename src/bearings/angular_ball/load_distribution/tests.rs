@@ -13,6 +13,7 @@ fn conditions(speed_rpm: f64, axial: Axial, radial: f64, sign: GyroscopicFrictio
         radial_load_n: radial,
         race_control: RaceControl::Outer,
         gyroscopic_friction: sign,
+        max_friction: 0.054,
     }
 }
 
