@@ -550,3 +550,36 @@ mod properties {
         }
     }
 }
+
+#[cfg(test)]
+mod timing {
+    use super::*;
+
+    /// Wall time of the axisymmetric load distribution + race control (Bearing A, 10 000
+    /// rpm, displacement-held preload: the rest solve and the solve at speed) and of the
+    /// whole analysis with the skid search. Informational (run with `--release --ignored
+    /// --nocapture`); the target for the first is < 20 µs.
+    #[test]
+    #[ignore]
+    fn time_solves() {
+        let input = BallInput::chen_a();
+        let geom = BallGeometry::new(&input).unwrap();
+        let n = 2000;
+        let t = std::time::Instant::now();
+        for _ in 0..n {
+            let (axial, _) = axial_condition(&input, &geom, Cancel::NONE).unwrap();
+            let l = load_distribution::solve(&geom, &conditions(&input, axial, 1.0), Cancel::NONE);
+            assert!(l.is_ok());
+        }
+        let per = t.elapsed().as_secs_f64() / n as f64;
+        eprintln!("load distribution + race control: {:.1} µs", per * 1e6);
+        let t = std::time::Instant::now();
+        for _ in 0..50 {
+            assert!(analyse(&input, Cancel::NONE).is_ok());
+        }
+        eprintln!(
+            "whole analysis with skid search: {:.2} ms",
+            t.elapsed().as_secs_f64() / 50.0 * 1e3
+        );
+    }
+}
