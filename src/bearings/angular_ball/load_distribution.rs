@@ -18,7 +18,9 @@
 //! acts along the contact tangents: with R = [[0, 1], [−1, 0]] (a quarter turn in the
 //! (a, r) plane) the force on the ball is
 //!
-//!     F = (I + µR)(Q_i u_i − Q_o u_o) + (0, m ω_m² R_b),
+//! ```text
+//! F = (I + µR)(Q_i u_i − Q_o u_o) + (0, m ω_m² R_b),
+//! ```
 //!
 //! µ = 2M_g/(D(Q_i + Q_o)) (2-7), capped at the traction's µ_m ([`Conditions::max_friction`]:
 //! beyond it the contacts cannot hold the precession and the ball skids). Its couple about

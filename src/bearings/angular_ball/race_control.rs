@@ -11,7 +11,9 @@
 //! # Equations
 //! Sliding of the ball on race j (speed Ω_j about `a`) at the point p of the ball, with the
 //! ball centre orbiting at ω_m on the radius R_b:
-//!     s = ω_m R_b t − Ω_j (R_b + p_r) t + ω × p.
+//! ```text
+//! s = ω_m R_b t − Ω_j (R_b + p_r) t + ω × p.
+//! ```
 //! * No gross sliding at each contact centre (2-9b, c): s_t(p_j) = 0, i.e.
 //!   ω_m R_b + ω_a p_r − ω_r p_a = Ω_j (R_b + p_r).
 //! * No spin on the controlling race c (2-9a): (ω − Ω_c a)·n_c = 0, n the outward normal
