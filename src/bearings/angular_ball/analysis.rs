@@ -75,6 +75,10 @@ pub struct SkidThreshold {
     pub limit_rad_s: f64,
     /// Load solves spent.
     pub evaluations: usize,
+    /// Every speed the search solved, ascending: (relative ring speed rad/s, |M_g| N·m,
+    /// resisting moment N·m) of the ball nearest to skidding (the Skid pane's curves,
+    /// Figs. 6-4/6-5).
+    pub samples: Vec<(f64, f64, f64)>,
 }
 
 /// A solved case.
@@ -152,11 +156,23 @@ fn resisting(mu: f64, geom: &BallGeometry, b: &BallLoad) -> f64 {
 }
 
 /// Largest |M_g| − resisting moment over the balls, N·m.
+#[cfg(test)]
 fn skid_margin(mu: f64, geom: &BallGeometry, l: &LoadDistribution) -> f64 {
+    worst(mu, geom, l).0
+}
+
+/// (|M_g| − M_r, |M_g|, M_r) of the ball nearest to skidding.
+fn worst(mu: f64, geom: &BallGeometry, l: &LoadDistribution) -> (f64, f64, f64) {
     l.balls
         .iter()
-        .map(|b| b.gyroscopic_moment_nm.abs() - resisting(mu, geom, b))
-        .fold(f64::NEG_INFINITY, f64::max)
+        .map(|b| {
+            let (mg, mr) = (b.gyroscopic_moment_nm.abs(), resisting(mu, geom, b));
+            (mg - mr, mg, mr)
+        })
+        .fold(
+            (f64::NEG_INFINITY, 0.0, 0.0),
+            |a, x| if x.0 > a.0 { x } else { a },
+        )
 }
 
 /// The relative ring speed of the input, rad/s, and the ring speeds per unit of it.
@@ -186,14 +202,15 @@ pub fn skid_threshold(
     let mu = input.traction.curve().max_mu();
     let limit = input.dynamics.skid_search_limit_rad_s;
     let (_, wi, wo) = speed_basis(input);
-    let mut evaluations = 0;
+    let mut samples = Vec::new();
     let mut g = |n: f64| -> Result<f64, BallError> {
-        evaluations += 1;
         let mut c = conditions(input, axial, 1.0);
         c.inner_speed_rad_s = wi * n;
         c.outer_speed_rad_s = wo * n;
         let l = load_distribution::solve(geom, &c, cancel)?;
-        Ok(skid_margin(mu, geom, &l))
+        let (margin, mg, mr) = worst(mu, geom, &l);
+        samples.push((n, mg, mr));
+        Ok(margin)
     };
     const SAMPLES: usize = 30;
     let mut lo = 0.0;
@@ -204,6 +221,7 @@ pub fn skid_threshold(
             reason: None,
             limit_rad_s: limit,
             evaluations: 1,
+            samples: sorted(samples),
         });
     }
     for k in 1..=SAMPLES {
@@ -243,11 +261,13 @@ pub fn skid_threshold(
                     "root not isolated: bracket [{a:.6e}, {b:.6e}] rad/s after 100 steps"
                 )));
             }
+            let evaluations = samples.len();
             return Ok(SkidThreshold {
                 speed_rad_s: Some(root),
                 reason: None,
                 limit_rad_s: limit,
                 evaluations,
+                samples: sorted(samples),
             });
         }
         lo = hi;
@@ -260,8 +280,14 @@ pub fn skid_threshold(
             limit * 30.0 / std::f64::consts::PI
         )),
         limit_rad_s: limit,
-        evaluations,
+        evaluations: samples.len(),
+        samples: sorted(samples),
     })
+}
+
+fn sorted(mut v: Vec<(f64, f64, f64)>) -> Vec<(f64, f64, f64)> {
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v
 }
 
 fn contact_result(
@@ -581,5 +607,33 @@ mod timing {
             "whole analysis with skid search: {:.2} ms",
             t.elapsed().as_secs_f64() / 50.0 * 1e3
         );
+    }
+}
+
+#[cfg(test)]
+mod skid_curve {
+    use super::*;
+
+    /// The skid search's samples (the Skid pane, Figs. 6-4/6-5): ascending in speed,
+    /// M_g = 0 at rest, M_g growing with speed, and for Bearing B the crossing lies
+    /// between the last sample below and the first above the resisting torque.
+    #[test]
+    fn samples_bracket_the_crossing() {
+        let a = analyse(&BallInput::chen_b(), Cancel::NONE).unwrap();
+        let s = &a.skid.samples;
+        assert!(s.len() >= 10);
+        assert!(s.windows(2).all(|w| w[0].0 <= w[1].0));
+        assert_eq!(s[0].1, 0.0);
+        let n = a.skid.speed_rad_s.unwrap();
+        for p in s {
+            if p.0 < n * (1.0 - 1e-6) {
+                assert!(p.1 < p.2, "{p:?} below {n}");
+            } else if p.0 > n * (1.0 + 1e-6) {
+                assert!(p.1 > p.2, "{p:?} above {n}");
+            }
+        }
+        let chart = crate::bearings::angular_ball::view::skid_chart(&a);
+        assert_eq!(chart.series.len(), 2);
+        assert_eq!(chart.series[0].points.len(), s.len());
     }
 }

@@ -70,6 +70,11 @@ pub fn json(a: &BallAnalysis) -> Value {
         "search_limit_rpm": a.skid.limit_rad_s * RPM_PER_RAD_S,
         "traction_coefficient": a.input.traction.curve().max_mu(),
         "evaluations": a.skid.evaluations,
+        "curve": a.skid.samples.iter().map(|s| json!({
+            "speed_rpm": s.0 * RPM_PER_RAD_S,
+            "gyroscopic_moment_nm": s.1,
+            "resisting_moment_nm": s.2,
+        })).collect::<Vec<_>>(),
     });
     if let (Some(reason), Some(m)) = (&a.skid.reason, skid.as_object_mut()) {
         m.insert("reason".into(), json!(reason));

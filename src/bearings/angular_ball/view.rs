@@ -2,7 +2,9 @@
 //! key outputs of the fidelity bench, SI (angles in degrees as their keys say).
 
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
-use crate::bearings::view::{Column, CsvStyle, Display, KeyOutput, KeyRole, Summary, Table, View};
+use crate::bearings::view::{
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, Summary, Table, View,
+};
 use crate::units::Quantity;
 
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
@@ -185,7 +187,7 @@ pub fn view(a: &BallAnalysis) -> View {
             columns: COLUMNS.to_vec(),
             rows,
         }],
-        charts: Vec::new(),
+        charts: vec![skid_chart(a)],
         element_charts: Vec::new(),
         summary: vec![
             Summary {
@@ -239,5 +241,45 @@ pub fn view(a: &BallAnalysis) -> View {
                 KeyRole::Target,
             ),
         ],
+    }
+}
+
+/// The Skid chart (Figs. 6-4/6-5): |M_g| and the resisting torque 0.5·µ·D·(Q_i + Q_o)
+/// against the relative ring speed (rpm) at the speeds the threshold search solved; the
+/// crossing is the threshold.
+pub fn skid_chart(a: &BallAnalysis) -> Chart {
+    let pts = |f: fn(&(f64, f64, f64)) -> f64| {
+        a.skid
+            .samples
+            .iter()
+            .map(|s| (s.0 * RPM_PER_RAD_S, f(s)))
+            .collect::<Vec<_>>()
+    };
+    Chart {
+        title: match a.skid.speed_rad_s {
+            Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
+            None => "no skidding below the search limit".to_string(),
+        },
+        x: ChartAxis {
+            label: "speed rpm",
+            display: Display::Plain,
+            bounds: None,
+        },
+        y: ChartAxis {
+            label: "moment N·m",
+            display: Display::Plain,
+            bounds: None,
+        },
+        series: vec![
+            Series {
+                name: "gyroscopic moment",
+                points: pts(|s| s.1),
+            },
+            Series {
+                name: "resisting torque",
+                points: pts(|s| s.2),
+            },
+        ],
+        per_element: false,
     }
 }
