@@ -12,6 +12,7 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod angular_ball;
 pub mod error;
 pub mod spherical_roller;
 pub mod view;
@@ -27,7 +28,8 @@ pub const DEFAULT_SYSTEM: &str = "spherical-roller";
 
 /// Every bearing system rollbench knows, in the order `rollbench template --type` and
 /// error messages list them. Adding a system is one line here.
-pub static SYSTEMS: &[&dyn BearingSystem] = &[&spherical_roller::SYSTEM];
+pub static SYSTEMS: &[&dyn BearingSystem] =
+    &[&spherical_roller::SYSTEM, &angular_ball::system::SYSTEM];
 
 /// What a run is asked to compute beyond the bearing itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 pub mod film;
 pub mod film_point;
 pub mod traction;
+pub mod traction_curve;
 
 /// Which film-thickness formula the EHD stage uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]

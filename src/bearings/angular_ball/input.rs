@@ -1,0 +1,321 @@
+//! The SI input of the angular-contact ball bearing system (what a deck of
+//! `type = "angular-contact-ball"` becomes), and Chen's Bearings A and B (seed 001 ch. 5)
+//! as constructors for tests and decks.
+
+use crate::physics::contact::point::HertzMethod;
+use crate::physics::lubrication::traction_curve::TractionCurve;
+use crate::physics::material::Material;
+
+/// Internal geometry (seed 001 ch. 3, Fig. 3-1), SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Geometry {
+    /// Z, number of balls.
+    pub ball_count: usize,
+    /// D, ball diameter, m.
+    pub ball_diameter_m: f64,
+    /// d_m, pitch diameter, m.
+    pub pitch_diameter_m: f64,
+    /// f_i, inner groove radius over D (> ½).
+    pub inner_groove_curvature: f64,
+    /// f_o, outer groove radius over D (> ½).
+    pub outer_groove_curvature: f64,
+    /// α₀, free (unloaded) contact angle, rad.
+    pub free_contact_angle_rad: f64,
+    /// How κ, K, E of the contact ellipse are found (exact, or the Brewe–Hamrock fits
+    /// A-17 that Chen used).
+    pub hertz_method: HertzMethod,
+}
+
+/// Ball and ring materials (the project's [`Material`]: E, ν, density, c, k).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Materials {
+    /// The balls.
+    pub ball: Material,
+    /// Both rings.
+    pub rings: Material,
+}
+
+/// How the axial load of the deck is applied.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PreloadMode {
+    /// The seed's reading (default): the axial load fixes the axial displacement of the
+    /// inner ring **at rest**; at speed that displacement is held (a rigidly preloaded
+    /// spindle pair) and the axial force follows from equilibrium.
+    #[default]
+    Displacement,
+    /// The axial load is a force held at every speed (a spring preload).
+    Force,
+}
+
+/// Which raceway the race-control theory lets the ball roll on without spin (2-9).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RaceControl {
+    /// No spin on the outer race (Chen's choice in ch. 6).
+    #[default]
+    Outer,
+    /// No spin on the inner race.
+    Inner,
+    /// The race with the larger spin resistance controls (Jones/Harris criterion:
+    /// outer when Q_o·a_o·E(k_o)·cos(α_i − α_o) > Q_i·a_i·E(k_i)).
+    Auto,
+}
+
+impl RaceControl {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            RaceControl::Outer => "outer",
+            RaceControl::Inner => "inner",
+            RaceControl::Auto => "auto",
+        }
+    }
+}
+
+/// The direction of the contact friction that resists the gyroscopic moment, in the
+/// ball equilibrium (2-5a, b).
+///
+/// The seed prints (2-5a) as Q_i sin α_i − Q_o sin α_o − µQ_i cos α_i + µQ_o cos α_o = 0
+/// (Harris's form with a positive M_g). Working the statics out in vectors (see
+/// `load_distribution`), the couple that supplies the precession moment J·ω_m·ω_r along
+/// the rolling direction has the *opposite* signs; Chen's printed load distribution of
+/// ch. 6 is reproduced only with the printed signs. Default: the resisting direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GyroscopicFriction {
+    /// Friction forces whose couple about the ball centre equals the gyroscopic moment
+    /// J·ω_m·ω_r (physically consistent).
+    #[default]
+    Resisting,
+    /// The signs as printed in eq. 2-5 (reproduces the seed's ch. 6 numbers).
+    SeedSign,
+}
+
+/// Which traction curve (seed ch. 6, Fig. 6-20).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TractionPreset {
+    /// Coulomb friction with [`Traction::mu`].
+    Constant,
+    /// Chen's curve 1 (µ_m = µ_∞ = 0.054 from 0.2 m/s).
+    #[default]
+    Curve1,
+    /// Chen's curve 2 (0.075 at 0.2 m/s, 0.035 beyond 3 m/s).
+    Curve2,
+    /// Chen's curve 3 (0.075 at 0.2 m/s, 0.035 beyond 2 m/s).
+    Curve3,
+}
+
+/// The traction law of the contacts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Traction {
+    /// The curve.
+    pub preset: TractionPreset,
+    /// µ of the constant law (unused by the seed's curves).
+    pub mu: f64,
+}
+
+impl Traction {
+    /// The curve as a function µ(u_s).
+    pub fn curve(&self) -> TractionCurve {
+        let points = match self.preset {
+            TractionPreset::Constant => return TractionCurve::Constant { mu: self.mu },
+            TractionPreset::Curve1 => vec![(0.0, 0.0), (0.2, 0.054)],
+            TractionPreset::Curve2 => vec![(0.0, 0.0), (0.2, 0.075), (3.0, 0.035)],
+            TractionPreset::Curve3 => vec![(0.0, 0.0), (0.2, 0.075), (2.0, 0.035)],
+        };
+        TractionCurve::Table { points }
+    }
+}
+
+/// Operating conditions, SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Operating {
+    /// Inner ring speed, rad/s.
+    pub inner_speed_rad_s: f64,
+    /// Outer ring speed, rad/s.
+    pub outer_speed_rad_s: f64,
+    /// Axial load (the preload), N.
+    pub axial_load_n: f64,
+    /// How the axial load is held.
+    pub preload_mode: PreloadMode,
+    /// Radial load, N.
+    pub radial_load_n: f64,
+}
+
+/// Kinematic assumptions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Kinematics {
+    /// The controlling race.
+    pub race_control: RaceControl,
+    /// Sign convention of the gyroscopic friction in eq. 2-5.
+    pub gyroscopic_friction: GyroscopicFriction,
+}
+
+/// The lubricant (seed 001 ch. 4), SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lubricant {
+    /// η₀, viscosity at the supply temperature and ambient pressure, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// α, Barus pressure–viscosity coefficient, 1/Pa.
+    pub pressure_viscosity_pa_inv: f64,
+    /// β, temperature–viscosity coefficient, 1/K (eq. 4-18).
+    pub temperature_viscosity_per_k: f64,
+    /// Density, kg/m³.
+    pub density_kg_m3: f64,
+    /// Specific heat, J/(kg·K).
+    pub specific_heat_j_kg_k: f64,
+    /// Thermal conductivity, W/(m·K).
+    pub conductivity_w_m_k: f64,
+    /// Oil flow rate through the bearing, m³/s (eq. 4-1).
+    pub flow_rate_m3_s: f64,
+    /// Oil supply temperature, K.
+    pub supply_temperature_k: f64,
+}
+
+/// Which analysis runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Load distribution with race-control kinematics (ch. 2–3, 6).
+    #[default]
+    RaceControl,
+    /// Quasi-static ball dynamics (not implemented yet: solving returns an error).
+    QuasiStatic,
+    /// Time simulation of each ball (not implemented yet: solving returns an error).
+    TimeSimulation,
+}
+
+impl Method {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::RaceControl => "race-control",
+            Method::QuasiStatic => "quasi-static",
+            Method::TimeSimulation => "time-simulation",
+        }
+    }
+}
+
+/// Analysis options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dynamics {
+    /// The method.
+    pub method: Method,
+    /// The skidding threshold is searched for up to this relative ring speed, rad/s.
+    pub skid_search_limit_rad_s: f64,
+}
+
+/// A whole angular-contact ball bearing case, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BallInput {
+    /// Geometry.
+    pub geometry: Geometry,
+    /// Materials.
+    pub materials: Materials,
+    /// Operating conditions.
+    pub operating: Operating,
+    /// Kinematics.
+    pub kinematics: Kinematics,
+    /// Traction curve.
+    pub traction: Traction,
+    /// Lubricant.
+    pub lubricant: Lubricant,
+    /// Analysis options.
+    pub dynamics: Dynamics,
+}
+
+/// rpm → rad/s.
+pub fn rpm(n: f64) -> f64 {
+    n * std::f64::consts::PI / 30.0
+}
+
+impl BallInput {
+    /// Chen's Bearing A (seed 001 ch. 5): a 7018-size spindle bearing, ball 12 mm, pitch
+    /// diameter 115 mm, f_i = f_o = 0.52, 20 balls, free contact angle 15°, steel
+    /// E = 2.08·10¹¹ Pa, ν = 0.3, 7800 kg/m³; 1000 N preload held as displacement,
+    /// 10 000 rpm inner ring; SAE 30 oil (η₀ = 0.071 Pa·s at 40 °C, α = 1.5·10⁻⁸ 1/Pa,
+    /// β = 0.008 1/°C, ch. 4), 800 kg/m³, 2000 J/(kg·K), 0.14 W/(m·K), 0.1 l/min
+    /// (ch. 6); traction curve 1.
+    pub fn chen_a() -> Self {
+        // Ch. 5 steel; specific heat and conductivity from ch. 6's thermal data.
+        let steel = Material {
+            youngs_modulus_pa: 2.08e11,
+            poisson_ratio: 0.3,
+            density_kg_m3: 7800.0,
+            specific_heat_j_kg_k: 470.0,
+            conductivity_w_m_k: 43.0,
+        };
+        BallInput {
+            geometry: Geometry {
+                ball_count: 20,
+                ball_diameter_m: 12e-3,
+                pitch_diameter_m: 115e-3,
+                inner_groove_curvature: 0.52,
+                outer_groove_curvature: 0.52,
+                free_contact_angle_rad: 15f64.to_radians(),
+                hertz_method: HertzMethod::Exact,
+            },
+            materials: Materials {
+                ball: steel,
+                rings: steel,
+            },
+            operating: Operating {
+                inner_speed_rad_s: rpm(10_000.0),
+                outer_speed_rad_s: 0.0,
+                axial_load_n: 1000.0,
+                preload_mode: PreloadMode::Displacement,
+                radial_load_n: 0.0,
+            },
+            kinematics: Kinematics {
+                race_control: RaceControl::Outer,
+                gyroscopic_friction: GyroscopicFriction::Resisting,
+            },
+            traction: Traction {
+                preset: TractionPreset::Curve1,
+                mu: 0.054,
+            },
+            lubricant: Lubricant {
+                viscosity_pa_s: 0.071,
+                pressure_viscosity_pa_inv: 1.5e-8,
+                temperature_viscosity_per_k: 0.008,
+                density_kg_m3: 800.0,
+                specific_heat_j_kg_k: 2000.0,
+                conductivity_w_m_k: 0.14,
+                flow_rate_m3_s: 0.1e-3 / 60.0,
+                supply_temperature_k: 313.15,
+            },
+            dynamics: Dynamics {
+                method: Method::RaceControl,
+                skid_search_limit_rad_s: rpm(15_000.0),
+            },
+        }
+    }
+
+    /// Chen's Bearing B: Bearing A with a 60° free contact angle, at 9 500 rpm.
+    pub fn chen_b() -> Self {
+        let mut b = Self::chen_a();
+        b.geometry.free_contact_angle_rad = 60f64.to_radians();
+        b.operating.inner_speed_rad_s = rpm(9_500.0);
+        b
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The presets are the seed's curves of `traction_curve` (same points).
+    #[test]
+    fn presets_are_the_seed_curves() {
+        for (p, n) in [
+            (TractionPreset::Curve1, 1),
+            (TractionPreset::Curve2, 2),
+            (TractionPreset::Curve3, 3),
+        ] {
+            let t = Traction { preset: p, mu: 0.0 };
+            assert_eq!(t.curve(), TractionCurve::seed_curve(n).unwrap());
+        }
+        let t = Traction {
+            preset: TractionPreset::Constant,
+            mu: 0.07,
+        };
+        assert_eq!(t.curve().max_mu(), 0.07);
+    }
+}

@@ -1,0 +1,22 @@
+//! Angular-contact ball bearings (seed 001: S.-H. Chen, *Investigation on Ball Skidding
+//! and Traction within Elastohydrodynamic Films*, 1989): quasi-static load distribution
+//! with centrifugal force and gyroscopic moment, Jones's race-control kinematics, spin
+//! heat, the skidding threshold, and the EHD film of each contact.
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+
+pub mod analysis;
+pub mod deck;
+pub mod error;
+pub mod geometry;
+pub mod input;
+pub mod load_distribution;
+pub mod race_control;
+pub mod report;
+pub mod system;
+pub mod view;
+
+pub use error::BallError;
+pub use input::BallInput;

@@ -1,0 +1,236 @@
+//! JSON and text reports of a solved ball bearing (SI; every JSON key names its unit).
+//! Fields the race-control method does not compute (the time simulation's lateral and
+//! rolling heat, integrator statistics) are absent, never filled in.
+
+use serde_json::{json, Value};
+
+use super::analysis::{BallAnalysis, ContactResult};
+use super::view::cage_rpm;
+use crate::physics::contact::point::Race;
+use crate::units::Units;
+
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+fn race_name(r: Race) -> &'static str {
+    match r {
+        Race::Inner => "inner",
+        Race::Outer => "outer",
+    }
+}
+
+fn contact(c: &ContactResult) -> Value {
+    json!({
+        "normal_load_n": c.load_n,
+        "contact_angle_deg": c.angle_rad.to_degrees(),
+        "deflection_m": c.deflection_m,
+        "semi_major_m": c.hertz.semi_major_m,
+        "semi_minor_m": c.hertz.semi_minor_m,
+        "max_pressure_pa": c.hertz.max_pressure_pa,
+        "spin_rad_s": c.kinematics.spin_rad_s,
+        "roll_rad_s": c.kinematics.roll_rad_s,
+        "spin_to_roll": c.kinematics.spin_to_roll,
+        "rolling_speed_m_s": c.kinematics.rolling_speed_m_s,
+        "spin_moment_nm": c.spin_moment_nm,
+        "spin_heat_w": c.spin_heat_w,
+        "central_film_m": c.central_film_m,
+        "min_film_m": c.min_film_m,
+    })
+}
+
+/// The JSON report (issue 16's contract).
+pub fn json(a: &BallAnalysis) -> Value {
+    let balls: Vec<Value> = a
+        .balls
+        .iter()
+        .enumerate()
+        .map(|(j, b)| {
+            json!({
+                "index": j,
+                "azimuth_deg": b.azimuth_rad.to_degrees(),
+                "centrifugal_force_n": b.centrifugal_n,
+                "gyroscopic_moment_nm": b.gyroscopic_moment_nm,
+                "resisting_moment_nm": b.resisting_moment_nm,
+                "skidding": b.skidding,
+                "heat_w": b.heat_w,
+                "cage_rpm": b.cage_rad_s * RPM_PER_RAD_S,
+                "controlling_race": race_name(b.control),
+                "inner": contact(&b.inner),
+                "outer": contact(&b.outer),
+            })
+        })
+        .collect();
+    let n = a.balls.len().max(1) as f64;
+    let control = a
+        .balls
+        .first()
+        .map(|b| race_name(b.control))
+        .unwrap_or("outer");
+    let mut skid = json!({
+        "threshold_rpm": a.skid.speed_rad_s.map(|s| s * RPM_PER_RAD_S),
+        "search_limit_rpm": a.skid.limit_rad_s * RPM_PER_RAD_S,
+        "traction_coefficient": a.input.traction.curve().max_mu(),
+        "evaluations": a.skid.evaluations,
+        "curve": a.skid.samples.iter().map(|s| json!({
+            "speed_rpm": s.0 * RPM_PER_RAD_S,
+            "gyroscopic_moment_nm": s.1,
+            "resisting_moment_nm": s.2,
+        })).collect::<Vec<_>>(),
+    });
+    if let (Some(reason), Some(m)) = (&a.skid.reason, skid.as_object_mut()) {
+        m.insert("reason".into(), json!(reason));
+    }
+    json!({
+        "type": super::system::SYSTEM_ID,
+        "rings": {
+            "axial_deflection_m": a.load.axial_deflection_m,
+            "radial_deflection_m": a.load.radial_deflection_m,
+            "axial_force_n": a.load.axial_force_n,
+            "radial_force_n": a.load.radial_force_n,
+            "rest_axial_deflection_m": a.rest_axial_deflection_m,
+        },
+        "balls": balls,
+        "speeds": {
+            "cage_rpm": cage_rpm(a),
+            "ball_spin_rad_s": a.balls.iter().map(|b| b.ball_spin_rad_s).sum::<f64>() / n,
+            "controlling_race": control,
+        },
+        "skid": skid,
+        "heat": {
+            "total_w": a.total_heat_w,
+            "per_ball_w": a.total_heat_w / n,
+            "bulk_temperature_c": a.bulk_temperature_k - 273.15,
+        },
+        "dynamics": {
+            "method": a.input.dynamics.method.name(),
+        },
+        "residuals": {
+            "ring_force_n": a.load.ring_residual_n,
+            "ball_force_n": a.load.ball_residual_n,
+        },
+        "stats": {
+            "fixed_point_iterations": a.load.stats.fixed_point_iterations,
+            "ring_iterations": a.load.stats.ring_iterations,
+            "ring_evaluations": a.load.stats.ring_evaluations,
+            "skid_load_solves": a.skid.evaluations,
+        },
+    })
+}
+
+/// The text report, in the seed's terms (SI; US decks get the same SI tables with a note).
+pub fn text(a: &BallAnalysis, units: Units) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    let g = &a.geometry;
+    let op = &a.input.operating;
+    let _ = writeln!(
+        s,
+        "ANGULAR-CONTACT BALL BEARING — race-control analysis (seed 001, Chen 1989)"
+    );
+    if units == Units::Us {
+        let _ = writeln!(s, "(values in SI)");
+    }
+    let _ = writeln!(
+        s,
+        "Z = {}  D = {:.3} mm  d_m = {:.3} mm  f_i = {}  f_o = {}  α₀ = {:.2}°  P_d = {:.4} mm",
+        g.ball_count,
+        g.ball_diameter_m * 1e3,
+        g.pitch_diameter_m * 1e3,
+        g.inner_groove_curvature,
+        g.outer_groove_curvature,
+        g.free_contact_angle_rad.to_degrees(),
+        g.diametral_clearance_m * 1e3
+    );
+    let _ = writeln!(
+        s,
+        "inner ring {:.0} rpm, outer ring {:.0} rpm, axial load {:.1} N ({}), radial load {:.1} N",
+        op.inner_speed_rad_s * RPM_PER_RAD_S,
+        op.outer_speed_rad_s * RPM_PER_RAD_S,
+        op.axial_load_n,
+        match op.preload_mode {
+            super::input::PreloadMode::Displacement => "held as the displacement at rest",
+            super::input::PreloadMode::Force => "held as a force",
+        },
+        op.radial_load_n
+    );
+    let _ = writeln!(
+        s,
+        "\nRINGS  δa = {:.4} µm  δr = {:.4} µm  Fa = {:.1} N  Fr = {:.1} N",
+        a.load.axial_deflection_m * 1e6,
+        a.load.radial_deflection_m * 1e6,
+        a.load.axial_force_n,
+        a.load.radial_force_n
+    );
+    let _ = writeln!(
+        s,
+        "\nLOAD DISTRIBUTION\n  #   ψ°     Qi N    αi°     Qo N    αo°   ai mm   bi mm   ao mm   bo mm   Fc N   Mg N·m   Mr N·m  skid"
+    );
+    for (j, b) in a.balls.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "{:3} {:5.1} {:8.2} {:6.2} {:8.2} {:6.2} {:7.4} {:7.4} {:7.4} {:7.4} {:6.2} {:8.4} {:8.4}  {}",
+            j,
+            b.azimuth_rad.to_degrees(),
+            b.inner.load_n,
+            b.inner.angle_rad.to_degrees(),
+            b.outer.load_n,
+            b.outer.angle_rad.to_degrees(),
+            b.inner.hertz.semi_major_m * 1e3,
+            b.inner.hertz.semi_minor_m * 1e3,
+            b.outer.hertz.semi_major_m * 1e3,
+            b.outer.hertz.semi_minor_m * 1e3,
+            b.centrifugal_n,
+            b.gyroscopic_moment_nm,
+            b.resisting_moment_nm,
+            if b.skidding { "yes" } else { "no" }
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nRACE CONTROL ({} race controls)\n  #  cage rpm  ωsi rad/s  ωso rad/s  roll i  roll o  s/r i   s/r o   u i m/s  u o m/s  H W   hc,i µm hc,o µm",
+        a.balls.first().map(|b| race_name(b.control)).unwrap_or("outer")
+    );
+    for (j, b) in a.balls.iter().enumerate() {
+        let (i, o) = (&b.inner, &b.outer);
+        let _ = writeln!(
+            s,
+            "{:3} {:8.1} {:10.2} {:10.2} {:7.1} {:7.1} {:7.4} {:7.4} {:8.3} {:8.3} {:6.3} {:7.3} {:7.3}",
+            j,
+            b.cage_rad_s * RPM_PER_RAD_S,
+            i.kinematics.spin_rad_s,
+            o.kinematics.spin_rad_s,
+            i.kinematics.roll_rad_s,
+            o.kinematics.roll_rad_s,
+            i.kinematics.spin_to_roll,
+            o.kinematics.spin_to_roll,
+            i.kinematics.rolling_speed_m_s,
+            o.kinematics.rolling_speed_m_s,
+            b.heat_w,
+            i.central_film_m.unwrap_or(0.0) * 1e6,
+            o.central_film_m.unwrap_or(0.0) * 1e6,
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nHEAT  total {:.2} W, {:.3} W per ball; bulk temperature {:.1} °C (eq. 4-1)",
+        a.total_heat_w,
+        a.total_heat_w / a.balls.len().max(1) as f64,
+        a.bulk_temperature_k - 273.15
+    );
+    match a.skid.speed_rad_s {
+        Some(n) => {
+            let _ = writeln!(
+                s,
+                "SKIDDING THRESHOLD  {:.0} rpm (M_g = 0.5·µ·D·(Qi+Qo))",
+                n * RPM_PER_RAD_S
+            );
+        }
+        None => {
+            let _ = writeln!(
+                s,
+                "SKIDDING THRESHOLD  none: {}",
+                a.skid.reason.as_deref().unwrap_or("")
+            );
+        }
+    }
+    s
+}

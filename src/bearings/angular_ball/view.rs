@@ -1,0 +1,285 @@
+//! What a solved ball bearing shows: the `balls` table (CSV and the Balls pane) and the
+//! key outputs of the fidelity bench, SI (angles in degrees as their keys say).
+
+use super::analysis::{BallAnalysis, BallResult, ContactResult};
+use crate::bearings::view::{
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, Summary, Table, View,
+};
+use crate::units::Quantity;
+
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+/// Columns of the `balls` table.
+pub const COLUMNS: [Column; 21] = [
+    Column::new("index", Quantity::Count, CsvStyle::Integer).shown("#", Display::Plain, 0, 3),
+    Column::new("azimuth_deg", Quantity::Angle, CsvStyle::Plain).shown(
+        "ψ deg",
+        Display::Plain,
+        1,
+        6,
+    ),
+    Column::new("centrifugal_force_n", Quantity::Force, CsvStyle::Scientific).shown(
+        "Fc",
+        Display::Force,
+        1,
+        7,
+    ),
+    Column::new(
+        "gyroscopic_moment_nm",
+        Quantity::Moment,
+        CsvStyle::Scientific,
+    )
+    .shown("Mg N·m", Display::Plain, 4, 8),
+    Column::new(
+        "resisting_moment_nm",
+        Quantity::Moment,
+        CsvStyle::Scientific,
+    )
+    .shown("Mr N·m", Display::Plain, 4, 8),
+    Column::new("skidding", Quantity::Count, CsvStyle::Integer).shown("skid", Display::Plain, 0, 4),
+    Column::new("heat_w", Quantity::Power, CsvStyle::Scientific).shown("H W", Display::Plain, 3, 7),
+    Column::new("inner_normal_load_n", Quantity::Force, CsvStyle::Scientific).shown(
+        "Qi",
+        Display::Force,
+        1,
+        7,
+    ),
+    Column::new("inner_contact_angle_deg", Quantity::Angle, CsvStyle::Plain).shown(
+        "αi °",
+        Display::Plain,
+        2,
+        6,
+    ),
+    Column::new("inner_semi_major_m", Quantity::Length, CsvStyle::Scientific).shown(
+        "ai",
+        Display::SmallLength,
+        4,
+        7,
+    ),
+    Column::new(
+        "inner_max_pressure_pa",
+        Quantity::Pressure,
+        CsvStyle::Scientific,
+    )
+    .shown("pi", Display::Stress, 0, 6),
+    Column::new(
+        "inner_spin_rad_s",
+        Quantity::Dimensionless,
+        CsvStyle::Scientific,
+    )
+    .shown("ωsi rad/s", Display::Plain, 1, 9),
+    Column::new(
+        "inner_spin_to_roll",
+        Quantity::Dimensionless,
+        CsvStyle::Scientific,
+    )
+    .shown("s/r i", Display::Plain, 3, 6),
+    Column::new(
+        "inner_central_film_m",
+        Quantity::Length,
+        CsvStyle::Scientific,
+    )
+    .shown("hci", Display::Film, 2, 6),
+    Column::new("outer_normal_load_n", Quantity::Force, CsvStyle::Scientific).shown(
+        "Qo",
+        Display::Force,
+        1,
+        7,
+    ),
+    Column::new("outer_contact_angle_deg", Quantity::Angle, CsvStyle::Plain).shown(
+        "αo °",
+        Display::Plain,
+        2,
+        6,
+    ),
+    Column::new("outer_semi_major_m", Quantity::Length, CsvStyle::Scientific).shown(
+        "ao",
+        Display::SmallLength,
+        4,
+        7,
+    ),
+    Column::new(
+        "outer_max_pressure_pa",
+        Quantity::Pressure,
+        CsvStyle::Scientific,
+    )
+    .shown("po", Display::Stress, 0, 6),
+    Column::new(
+        "outer_spin_rad_s",
+        Quantity::Dimensionless,
+        CsvStyle::Scientific,
+    )
+    .shown("ωso rad/s", Display::Plain, 1, 9),
+    Column::new(
+        "outer_spin_to_roll",
+        Quantity::Dimensionless,
+        CsvStyle::Scientific,
+    )
+    .shown("s/r o", Display::Plain, 3, 6),
+    Column::new(
+        "outer_central_film_m",
+        Quantity::Length,
+        CsvStyle::Scientific,
+    )
+    .shown("hco", Display::Film, 2, 6),
+];
+
+fn contact_cells(c: &ContactResult) -> [Option<f64>; 7] {
+    [
+        Some(c.load_n),
+        Some(c.angle_rad.to_degrees()),
+        Some(c.hertz.semi_major_m),
+        Some(c.hertz.max_pressure_pa),
+        Some(c.kinematics.spin_rad_s),
+        Some(c.kinematics.spin_to_roll),
+        c.central_film_m,
+    ]
+}
+
+fn row(j: usize, b: &BallResult) -> Vec<Option<f64>> {
+    let mut r = vec![
+        Some(j as f64),
+        Some(b.azimuth_rad.to_degrees()),
+        Some(b.centrifugal_n),
+        Some(b.gyroscopic_moment_nm),
+        Some(b.resisting_moment_nm),
+        Some(if b.skidding { 1.0 } else { 0.0 }),
+        Some(b.heat_w),
+    ];
+    r.extend(contact_cells(&b.inner));
+    r.extend(contact_cells(&b.outer));
+    r
+}
+
+/// Mean cage speed over the balls, rpm.
+pub fn cage_rpm(a: &BallAnalysis) -> f64 {
+    a.balls.iter().map(|b| b.cage_rad_s).sum::<f64>() / a.balls.len().max(1) as f64 * RPM_PER_RAD_S
+}
+
+/// The view of a solved case.
+pub fn view(a: &BallAnalysis) -> View {
+    let rows = a.balls.iter().enumerate().map(|(j, b)| row(j, b)).collect();
+    let max_p = a
+        .balls
+        .iter()
+        .map(|b| {
+            b.inner
+                .hertz
+                .max_pressure_pa
+                .max(b.outer.hertz.max_pressure_pa)
+        })
+        .fold(0.0, f64::max);
+    let max_q = a
+        .balls
+        .iter()
+        .map(|b| b.inner.load_n.max(b.outer.load_n))
+        .fold(0.0, f64::max);
+    let k = |name, value, quantity, role| KeyOutput {
+        name,
+        value,
+        quantity,
+        role,
+    };
+    View {
+        system: super::system::SYSTEM_ID,
+        tables: vec![Table {
+            id: "balls",
+            columns: COLUMNS.to_vec(),
+            rows,
+        }],
+        charts: vec![skid_chart(a)],
+        element_charts: Vec::new(),
+        summary: vec![
+            Summary {
+                label: "cage rpm",
+                value: cage_rpm(a),
+                display: Display::Plain,
+                precision: 1,
+            },
+            Summary {
+                label: "heat W",
+                value: a.total_heat_w,
+                display: Display::Plain,
+                precision: 2,
+            },
+            Summary {
+                label: "axial force",
+                value: a.load.axial_force_n,
+                display: Display::Force,
+                precision: 1,
+            },
+        ],
+        key_outputs: vec![
+            k(
+                "max_ball_load_n",
+                Some(max_q),
+                Quantity::Force,
+                KeyRole::Guard,
+            ),
+            k(
+                "max_pressure_pa",
+                Some(max_p),
+                Quantity::Pressure,
+                KeyRole::Target,
+            ),
+            k(
+                "cage_speed_rpm",
+                Some(cage_rpm(a)),
+                Quantity::Dimensionless,
+                KeyRole::Guard,
+            ),
+            k(
+                "heat_w",
+                Some(a.total_heat_w),
+                Quantity::Power,
+                KeyRole::Guard,
+            ),
+            k(
+                "skid_threshold_rpm",
+                a.skid.speed_rad_s.map(|s| s * RPM_PER_RAD_S),
+                Quantity::Dimensionless,
+                KeyRole::Target,
+            ),
+        ],
+    }
+}
+
+/// The Skid chart (Figs. 6-4/6-5): |M_g| and the resisting torque 0.5·µ·D·(Q_i + Q_o)
+/// against the relative ring speed (rpm) at the speeds the threshold search solved; the
+/// crossing is the threshold.
+pub fn skid_chart(a: &BallAnalysis) -> Chart {
+    let pts = |f: fn(&(f64, f64, f64)) -> f64| {
+        a.skid
+            .samples
+            .iter()
+            .map(|s| (s.0 * RPM_PER_RAD_S, f(s)))
+            .collect::<Vec<_>>()
+    };
+    Chart {
+        title: match a.skid.speed_rad_s {
+            Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
+            None => "no skidding below the search limit".to_string(),
+        },
+        x: ChartAxis {
+            label: "speed rpm",
+            display: Display::Plain,
+            bounds: None,
+        },
+        y: ChartAxis {
+            label: "moment N·m",
+            display: Display::Plain,
+            bounds: None,
+        },
+        series: vec![
+            Series {
+                name: "gyroscopic moment",
+                points: pts(|s| s.1),
+            },
+            Series {
+                name: "resisting torque",
+                points: pts(|s| s.2),
+            },
+        ],
+        per_element: false,
+    }
+}

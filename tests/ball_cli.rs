@@ -1,0 +1,194 @@
+//! The angular-contact ball bearing through the real binary: `rollbench run
+//! decks/chen_a.toml --format json` fields and values, the text report, and bad decks.
+
+use assert_cmd::Command;
+
+fn bin() -> Command {
+    match Command::cargo_bin("rollbench") {
+        Ok(c) => c,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+fn deck(name: &str) -> String {
+    format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn run(args: &[&str]) -> (bool, String, String) {
+    let out = match bin().args(args).output() {
+        Ok(o) => o,
+        Err(e) => panic!("{e}"),
+    };
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(name: &str, extra: &[&str]) -> serde_json::Value {
+    let d = deck(name);
+    let mut args = vec!["run", d.as_str(), "--format", "json"];
+    args.extend_from_slice(extra);
+    let (ok, out, err) = run(&args);
+    assert!(ok, "{err}");
+    match serde_json::from_str(&out) {
+        Ok(v) => v,
+        Err(e) => panic!("{e}: {out}"),
+    }
+}
+
+fn num(v: &serde_json::Value, path: &[&str]) -> f64 {
+    let mut x = v;
+    for p in path {
+        x = match p.parse::<usize>() {
+            Ok(i) => &x[i],
+            Err(_) => &x[*p],
+        };
+    }
+    match x.as_f64() {
+        Some(f) => f,
+        None => panic!("{path:?} is not a number: {x}"),
+    }
+}
+
+/// The contract fields of issue 16 are present; the values of Bearing A at 10 000 rpm
+/// (resisting gyroscopic friction, exact Hertz): α_i 21.29°, α_o 13.59°, Q_i 173.6 N,
+/// Q_o 260.5 N (0.05°, 0.2 %: the library's load-distribution tests hold the same
+/// numbers), 20 equal balls, outer race control with no outer spin, no skidding below
+/// 15 000 rpm (null with a reason), total heat = 20 × per-ball heat.
+#[test]
+fn chen_a_json_fields_and_values() {
+    let v = json("chen_a.toml", &[]);
+    assert_eq!(v["type"], "angular-contact-ball");
+    for k in ["axial_deflection_m", "radial_deflection_m", "axial_force_n"] {
+        num(&v, &["rings", k]);
+    }
+    let balls = v["balls"].as_array().map(Vec::len).unwrap_or(0);
+    assert_eq!(balls, 20);
+    for k in [
+        "index",
+        "azimuth_deg",
+        "centrifugal_force_n",
+        "gyroscopic_moment_nm",
+        "resisting_moment_nm",
+        "heat_w",
+    ] {
+        num(&v, &["balls", "0", k]);
+    }
+    assert_eq!(v["balls"][0]["skidding"], false);
+    for race in ["inner", "outer"] {
+        for k in [
+            "normal_load_n",
+            "contact_angle_deg",
+            "semi_major_m",
+            "semi_minor_m",
+            "max_pressure_pa",
+            "spin_rad_s",
+            "roll_rad_s",
+            "spin_to_roll",
+            "central_film_m",
+            "min_film_m",
+        ] {
+            num(&v, &["balls", "0", race, k]);
+        }
+    }
+    let ai = num(&v, &["balls", "0", "inner", "contact_angle_deg"]);
+    let ao = num(&v, &["balls", "0", "outer", "contact_angle_deg"]);
+    let qi = num(&v, &["balls", "0", "inner", "normal_load_n"]);
+    let qo = num(&v, &["balls", "0", "outer", "normal_load_n"]);
+    assert!(
+        (ai - 21.288).abs() < 0.05 && (ao - 13.590).abs() < 0.05,
+        "{ai} {ao}"
+    );
+    assert!(
+        (qi / 173.58 - 1.0).abs() < 2e-3 && (qo / 260.49 - 1.0).abs() < 2e-3,
+        "{qi} {qo}"
+    );
+    assert!(num(&v, &["balls", "0", "outer", "spin_rad_s"]).abs() < 1e-6);
+    assert_eq!(v["speeds"]["controlling_race"], "outer");
+    num(&v, &["speeds", "cage_rpm"]);
+    num(&v, &["speeds", "ball_spin_rad_s"]);
+    assert!(v["skid"]["threshold_rpm"].is_null());
+    assert!(v["skid"]["reason"].is_string());
+    let total = num(&v, &["heat", "total_w"]);
+    let per = num(&v, &["heat", "per_ball_w"]);
+    assert!((total - 20.0 * per).abs() < 1e-9 * total);
+    num(&v, &["heat", "bulk_temperature_c"]);
+    assert_eq!(v["dynamics"]["method"], "race-control");
+    // Not computed by race control: absent, never faked.
+    assert!(v["heat"].get("lateral_w").is_none());
+    assert!(v["dynamics"].get("steps").is_none());
+}
+
+/// `--set kinematics.gyroscopic_friction=seed` reproduces the seed's ch. 6 load
+/// distribution of Bearing A (α_i 21.06°, α_o 13.96°, Q_i 163.7 N, Q_o 251.6 N; ±0.2°,
+/// ±1.5 %), and Bearing B with the seed sign skids near 9 000 rpm (9 090 ± 150).
+#[test]
+fn seed_sign_reproduces_chapter_6() {
+    let v = json(
+        "chen_a.toml",
+        &["--set", "kinematics.gyroscopic_friction=seed"],
+    );
+    let ai = num(&v, &["balls", "0", "inner", "contact_angle_deg"]);
+    let qi = num(&v, &["balls", "0", "inner", "normal_load_n"]);
+    let qo = num(&v, &["balls", "0", "outer", "normal_load_n"]);
+    assert!((ai - 21.06).abs() < 0.2, "{ai}");
+    assert!((qi / 163.7 - 1.0).abs() < 0.015 && (qo / 251.6 - 1.0).abs() < 0.015);
+    let v = json(
+        "chen_b.toml",
+        &["--set", "kinematics.gyroscopic_friction=seed"],
+    );
+    let n = num(&v, &["skid", "threshold_rpm"]);
+    assert!((n - 9_090.0).abs() < 150.0, "{n}");
+}
+
+#[test]
+fn text_report_has_the_seed_tables() {
+    let d = deck("chen_b.toml");
+    let (ok, out, err) = run(&["run", d.as_str()]);
+    assert!(ok, "{err}");
+    for s in [
+        "LOAD DISTRIBUTION",
+        "RACE CONTROL",
+        "HEAT",
+        "SKIDDING THRESHOLD",
+    ] {
+        assert!(out.contains(s), "{s} missing:\n{out}");
+    }
+}
+
+/// Bad decks: an unknown key and an out-of-range value are reported with file:line, the
+/// key and the allowed range.
+#[test]
+fn bad_decks_name_line_key_and_range() {
+    let text = match std::fs::read_to_string(deck("chen_a.toml")) {
+        Ok(t) => t,
+        Err(e) => panic!("{e}"),
+    };
+    let dir = std::env::temp_dir().join(format!("rollbench-ball-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let unknown = dir.join("unknown.toml");
+    let bad = text.replace("ball_count = 20", "ball_count = 20\nball_colour = 3");
+    let _ = std::fs::write(&unknown, bad);
+    let path = unknown.display().to_string();
+    let (ok, _, err) = run(&["run", path.as_str()]);
+    assert!(!ok);
+    assert!(err.contains("unknown.toml:17"), "{err}");
+    assert!(err.contains("ball_colour"), "{err}");
+    let range = dir.join("range.toml");
+    let bad = text.replace(
+        "inner_groove_curvature = 0.52",
+        "inner_groove_curvature = 0.45",
+    );
+    let _ = std::fs::write(&range, bad);
+    let path = range.display().to_string();
+    let (ok, _, err) = run(&["run", path.as_str()]);
+    assert!(!ok);
+    assert!(err.contains("range.toml:19"), "{err}");
+    assert!(
+        err.contains("inner_groove_curvature") && err.contains("0.5 < value"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
