@@ -100,7 +100,8 @@ fn template_type_selects_the_bearing_system() {
     assert_eq!(bad.status.code(), Some(1));
     let msg = String::from_utf8_lossy(&bad.stderr);
     assert!(
-        msg.contains("unknown bearing system (known: \"spherical-roller\")"),
+        msg.contains("unknown bearing system (known: \"spherical-roller\"")
+            && msg.contains("\"angular-contact-ball\""),
         "{msg}"
     );
 }

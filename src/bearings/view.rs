@@ -400,10 +400,12 @@ pub struct ThermalResults {
 /// Solver work counters of a solve (the status bar).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveStats {
-    /// Outer (ring) iterations.
+    /// Outer iterations (spherical roller: ring).
     pub iterations: usize,
-    /// Inner (element) iterations, all elements.
+    /// Inner iterations, all elements (spherical roller: roller).
     pub inner_iterations: usize,
+    /// What the outer and inner iterations are (`["ring", "roller"]`), for the status line.
+    pub names: [&'static str; 2],
     /// Wall time of the solve, s.
     pub wall_time_s: f64,
 }

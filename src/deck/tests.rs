@@ -524,8 +524,12 @@ fn deck_type_names_the_bearing_system() {
         .unwrap_or_default();
     assert!(e.contains("b.toml:2:"), "{e}");
     assert!(e.contains("type = \"ball\""), "{e}");
+    // Every registered system is listed, the default first.
     assert!(
-        e.contains("unknown bearing system (known: \"spherical-roller\")"),
+        e.contains(&format!(
+            "unknown bearing system (known: {})",
+            crate::bearings::known_types()
+        )) && e.contains("(known: \"spherical-roller\""),
         "{e}"
     );
     // The spherical reader refuses it too, instead of ignoring the key.

@@ -114,6 +114,8 @@ pub enum SolveState {
     Running,
     /// Last solve succeeded.
     Solved {
+        /// What the outer and inner iterations are.
+        names: [&'static str; 2],
         /// Ring iterations.
         iterations: usize,
         /// Roller Newton iterations (all rollers, all ring iterations).
@@ -418,6 +420,7 @@ impl App {
                     Ok(view) => {
                         let s = view.stats;
                         self.solve = SolveState::Solved {
+                            names: s.names,
                             iterations: s.iterations,
                             roller_iterations: s.inner_iterations,
                             wall_ms: s.wall_time_s * 1e3,
@@ -652,7 +655,13 @@ impl App {
             }
             KeyCode::Char('r') => vec![self.submit()],
             // The chart pane's mode: shown there, so only acted on where it is seen.
-            KeyCode::Char('c') if self.visible(Pane::Chart(0)) => {
+            KeyCode::Char('c')
+                if self.visible(Pane::Chart(0))
+                    && self
+                        .view
+                        .as_ref()
+                        .is_some_and(|v| !v.element_charts.is_empty()) =>
+            {
                 self.chart_laminae = !self.chart_laminae;
                 Vec::new()
             }

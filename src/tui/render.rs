@@ -411,6 +411,16 @@ fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
         .render(foot, buf);
 }
 
+/// Decimals that keep an axis's labels distinct: none from 100 up, more below.
+fn label_precision(max: f64) -> usize {
+    match max.abs() {
+        m if m >= 100.0 => 0,
+        m if m >= 10.0 => 1,
+        m if m >= 1.0 => 2,
+        _ => 3,
+    }
+}
+
 fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
     let mid = 0.5 * (b[0] + b[1]);
     [b[0], mid, b[1]]
@@ -477,7 +487,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         );
     }
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
-    let x_prec = if s.x_bounds[1] < 10.0 { 2 } else { 0 };
+    let x_prec = label_precision(s.x_bounds[1]);
     let chart = Chart::new(datasets)
         .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
         .block(block)
@@ -493,7 +503,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
                 .title(s.y_label.clone())
                 .style(Style::default().fg(DIM))
                 .bounds(s.y_bounds)
-                .labels(axis_labels(s.y_bounds, 0)),
+                .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds[1]))),
         );
     chart.render(area, buf);
 }
@@ -796,13 +806,14 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
         SolveState::Idle => ("idle".to_string(), DIM),
         SolveState::Running => ("● solving…".to_string(), Color::Yellow),
         SolveState::Solved {
+            names,
             iterations,
             roller_iterations,
             wall_ms,
         } => (
             format!(
-                "✓ solved in {iterations} ring + {roller_iterations} {} iterations, {wall_ms:.1} ms",
-                app.element_name()
+                "✓ solved in {iterations} {} + {roller_iterations} {} iterations, {wall_ms:.1} ms",
+                names[0], names[1]
             ),
             Color::Green,
         ),
@@ -876,13 +887,26 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Normal => {
             let mut first = match app.focus {
                 Pane::Inputs => v(&["jk move", "Enter edit", "^z/^y undo/redo", "^s save"]),
-                Pane::Elements => vec![format!("jk {el}"), "Enter stepper".into()],
+                Pane::Elements => vec![format!("jk {el}")],
                 Pane::Chart(_) => {
-                    vec![format!("jk {el}"), "c chart".into(), "Enter stepper".into()]
+                    let mut h = vec![format!("jk {el}")];
+                    if app
+                        .view
+                        .as_ref()
+                        .is_some_and(|v| !v.element_charts.is_empty())
+                    {
+                        h.push("c chart".into());
+                    }
+                    h
                 }
                 Pane::Stepper => vec!["hl step".into(), "PgUp/PgDn ±10".into(), format!("jk {el}")],
                 Pane::Thermal => v(&["jk node", "g/G first/last"]),
             };
+            if matches!(app.focus, Pane::Elements | Pane::Chart(_))
+                && app.panes().contains(&Pane::Stepper)
+            {
+                first.push("Enter stepper".into());
+            }
             first.push("u units".into());
             first.push("Tab pane".into());
             if app.error.is_some() {

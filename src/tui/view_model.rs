@@ -299,16 +299,21 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
         .iter()
         .flat_map(|s| s.1.iter().map(|p| p.1))
         .fold(0.0, f64::max);
-    let xmax = series
-        .first()
-        .map_or(0.0, |s| s.1.iter().map(|p| p.0.abs()).fold(0.0, f64::max));
+    let xs = || series.iter().flat_map(|s| s.1.iter().map(|p| p.0));
+    let xmax = xs().map(f64::abs).fold(0.0, f64::max);
     let xmax = if xmax > 0.0 { xmax } else { 1.0 };
+    // Data on one side of zero (speeds, times) from 0; else symmetric about 0.
+    let x_auto = if xs().all(|x| x >= 0.0) {
+        [0.0, nice_ceiling(xmax)]
+    } else {
+        [-xmax, xmax]
+    };
     ChartSeries {
         title: c.title.clone(),
         x_label: c.x.display.header(c.x.label, u),
         y_label: c.y.display.header(c.y.label, u),
         series,
-        x_bounds: c.x.bounds.unwrap_or([-xmax, xmax]),
+        x_bounds: c.x.bounds.unwrap_or(x_auto),
         y_bounds: c.y.bounds.unwrap_or([0.0, nice_ceiling(ymax)]),
     }
 }

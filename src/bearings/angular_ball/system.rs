@@ -5,7 +5,7 @@ use super::analysis::{analyse, BallAnalysis};
 use super::deck::SCHEMA;
 use super::input::BallInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
-use crate::bearings::{BearingSystem, Case, RunOptions, Solution};
+use crate::bearings::{BearingSystem, Case, FormCase, RunOptions, Solution};
 use crate::deck::form::Form;
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
@@ -36,8 +36,12 @@ impl BearingSystem for AngularBall {
         "quasi-static load distribution and race control (S.-H. Chen, Investigation on Ball Skidding and Traction within Elastohydrodynamic Films, 1989)"
     }
 
+    fn element_name(&self) -> &'static str {
+        "ball"
+    }
+
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 2] = [
+        const PANES: [PaneSpec; 3] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -45,6 +49,10 @@ impl BearingSystem for AngularBall {
             PaneSpec {
                 kind: PaneKind::Elements,
                 title: "Balls",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(0),
+                title: "Skid",
             },
         ];
         &PANES
@@ -76,9 +84,25 @@ pub struct BallCase {
     pub form: Form<BallInput>,
 }
 
+impl FormCase for BallCase {
+    type Input = BallInput;
+
+    fn form(&self) -> &Form<BallInput> {
+        &self.form
+    }
+
+    fn with_form(&self, form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
+        Ok(Box::new(BallCase { form }))
+    }
+}
+
 impl Case for BallCase {
     fn system(&self) -> &'static dyn BearingSystem {
         &SYSTEM
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
     }
 
     fn units(&self) -> Units {

@@ -3,7 +3,8 @@
 
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use crate::bearings::view::{
-    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, Summary, Table, View,
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, SolveStats, Summary,
+    Table, View,
 };
 use crate::units::Quantity;
 
@@ -176,6 +177,7 @@ pub fn view(a: &BallAnalysis) -> View {
         .fold(0.0, f64::max);
     let k = |name, value, quantity, role| KeyOutput {
         name,
+        label: short_label(name),
         value,
         quantity,
         role,
@@ -197,9 +199,9 @@ pub fn view(a: &BallAnalysis) -> View {
                 precision: 1,
             },
             Summary {
-                label: "heat W",
+                label: "heat",
                 value: a.total_heat_w,
-                display: Display::Plain,
+                display: Display::Power,
                 precision: 2,
             },
             Summary {
@@ -241,6 +243,27 @@ pub fn view(a: &BallAnalysis) -> View {
                 KeyRole::Target,
             ),
         ],
+        trace: None,
+        thermal: None,
+        stats: SolveStats {
+            iterations: a.load.stats.fixed_point_iterations,
+            inner_iterations: a.load.stats.ring_iterations,
+            names: ["fixed-point", "ring Newton"],
+            wall_time_s: 0.0,
+        },
+        warnings: Vec::new(),
+    }
+}
+
+/// The short column label of a key output in `bench`'s text table.
+fn short_label(name: &str) -> &'static str {
+    match name {
+        "max_ball_load_n" => "Qmax",
+        "max_pressure_pa" => "pmax",
+        "cage_speed_rpm" => "cage",
+        "heat_w" => "heat",
+        "skid_threshold_rpm" => "skid",
+        _ => "?",
     }
 }
 

@@ -387,6 +387,7 @@ pub fn view(a: &Analysis) -> View {
         stats: SolveStats {
             iterations: a.load.stats.iterations,
             inner_iterations: a.load.stats.roller_iterations,
+            names: ["ring", "roller"],
             wall_time_s: a.load.stats.wall_time_s,
         },
         warnings: super::warnings::warnings(a),
