@@ -38,6 +38,8 @@ pub struct FieldInfo {
     pub group: &'static str,
     /// Short label with the seed's symbol.
     pub label: &'static str,
+    /// One-line explanation (what it is, what 0 means where it means something).
+    pub help: &'static str,
 }
 
 /// Formats a number to 6 significant digits without trailing zeros (the deck's format).
@@ -156,6 +158,7 @@ impl DeckDoc {
                 key: s.key,
                 group: s.group,
                 label: s.label,
+                help: s.help,
             })
             .collect()
     }

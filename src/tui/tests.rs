@@ -1255,3 +1255,56 @@ fn stepper_ends_at_the_solution_shown() {
     assert_eq!(pv.stats.inner_iterations, tv.stats.inner_iterations);
     assert_eq!(pv.tables, tv.tables, "tracing changes no result");
 }
+
+/// `/` finds an input by name or key (issue 15: 27 presses of j to reach the radial load):
+/// typing narrows to the first match, Tab goes to the next, Enter keeps it, Esc goes back.
+#[test]
+fn slash_finds_a_field_by_name() {
+    let mut app = solved_app(Pane::Elements, 80, 24);
+    let start = app.input_sel;
+    app.handle(ch('/'));
+    assert_eq!(app.focus, Pane::Inputs);
+    for c in "radial load".chars() {
+        app.handle(ch(c));
+    }
+    let radial = field_index(&app, "operating.radial_load");
+    assert_eq!(app.input_sel, radial);
+    app.handle(key(KeyCode::Enter));
+    assert_eq!(app.mode, Mode::Normal);
+    assert_eq!(app.input_sel, radial);
+    // Esc goes back to where the search began; Tab walks the matches.
+    app.handle(ch('/'));
+    for c in "modulus".chars() {
+        app.handle(ch(c));
+    }
+    let first = app.input_sel;
+    assert!(
+        app.fields[first].label.contains("modulus"),
+        "{:?}",
+        app.fields[first]
+    );
+    app.handle(key(KeyCode::Tab));
+    assert!(app.input_sel != first && app.fields[app.input_sel].label.contains("modulus"));
+    app.handle(key(KeyCode::Esc));
+    assert_eq!(app.input_sel, radial);
+    assert_ne!(radial, start);
+}
+
+/// The help overlay scrolls when it does not fit (issue 15: cut at 60×20): every key is
+/// reachable with j, and the title says which rows are shown.
+#[test]
+fn help_scrolls_to_every_key() {
+    let mut app = solved_app(Pane::Inputs, 60, 20);
+    app.handle(ch('?'));
+    let mut seen = String::new();
+    for _ in 0..KEYS.len() {
+        seen.push_str(&draw(&app, 60, 20).backend().to_string());
+        app.handle(ch('j'));
+    }
+    assert_eq!(app.mode, Mode::Help, "j scrolls, it does not close");
+    for (k, _, _) in KEYS {
+        assert!(seen.contains(k), "{k} never shown");
+    }
+    app.handle(ch('x'));
+    assert_eq!(app.mode, Mode::Normal);
+}
