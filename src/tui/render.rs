@@ -120,67 +120,82 @@ fn too_small(area: Rect, buf: &mut Buffer) {
 
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let wide = area.width >= 100;
-    let mut spans = Vec::new();
-    if wide {
-        spans.push(Span::styled(
-            " rollbench ",
-            Style::default()
-                .fg(Color::Black)
-                .bg(ACCENT)
-                .add_modifier(Modifier::BOLD),
-        ));
-    }
-    for (i, p) in app.panes().iter().enumerate() {
-        let label = format!(" {}:{} ", i + 1, app.pane_title(*p));
-        let style = if *p == app.focus {
-            Style::default().fg(Color::Black).bg(Color::White)
-        } else if app.visible(*p) {
-            Style::default().fg(Color::White)
-        } else {
-            Style::default().fg(DIM)
-        };
-        spans.push(Span::styled(label, style));
-    }
-    Line::from(spans).render(area, buf);
     let file = app
         .path
         .as_ref()
         .and_then(|p| p.file_name())
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "(no file)".into());
-    let used = if wide { 11 + 50 } else { 50 };
-    // Most to least informative; the first that fits is drawn (the system and the deck
-    // name are dropped before the file name, the unsaved mark and the units).
-    let details: Vec<String> = if wide {
-        vec![
-            format!(" · {} · {}", app.deck.name(), app.deck.system_id()),
-            format!(" · {}", app.deck.name()),
-            String::new(),
-        ]
-    } else {
-        vec![String::new()]
-    };
-    for detail in details {
-        let mut right = vec![Span::raw(file.clone())];
+    // The right side, most to least informative: the first that fits with the full tab
+    // labels is drawn; else the tabs shrink to numbers (the focused one keeps its title)
+    // so the file, the unsaved mark and the units always show.
+    let right = |detail: String| {
+        let mut r = vec![Span::raw(file.clone())];
         if app.unsaved() {
-            right.push(Span::styled(" [+]", Style::default().fg(Color::Yellow)));
+            r.push(Span::styled(" [+]", Style::default().fg(Color::Yellow)));
         }
-        right.push(Span::raw(detail));
-        right.push(Span::styled(
+        r.push(Span::raw(detail));
+        r.push(Span::styled(
             format!(" {} ", deck_io::units_label(app.display_units)),
             Style::default().fg(Color::Black).bg(Color::Gray),
         ));
-        let line = Line::from(right);
-        let w = (line.width() as u16).min(area.width);
-        if area.width > used + w {
-            let r = Rect {
-                x: area.x + area.width - w,
-                width: w,
-                ..area
-            };
-            line.render(r, buf);
-            return;
+        Line::from(r)
+    };
+    let tabs = |compact: bool| {
+        let mut spans = Vec::new();
+        if wide && !compact {
+            spans.push(Span::styled(
+                " rollbench ",
+                Style::default()
+                    .fg(Color::Black)
+                    .bg(ACCENT)
+                    .add_modifier(Modifier::BOLD),
+            ));
         }
+        for (i, p) in app.panes().iter().enumerate() {
+            let label = if compact && *p != app.focus {
+                format!(" {} ", i + 1)
+            } else {
+                format!(" {}:{} ", i + 1, app.pane_title(*p))
+            };
+            let style = if *p == app.focus {
+                Style::default().fg(Color::Black).bg(Color::White)
+            } else if app.visible(*p) {
+                Style::default().fg(Color::White)
+            } else {
+                Style::default().fg(DIM)
+            };
+            spans.push(Span::styled(label, style));
+        }
+        Line::from(spans)
+    };
+    let mut details = Vec::new();
+    if wide {
+        details.push(format!(" · {} · {}", app.deck.name(), app.deck.system_id()));
+        details.push(format!(" · {}", app.deck.name()));
+    }
+    details.push(String::new());
+    let mut choice = None;
+    'outer: for compact in [false, true] {
+        let t = tabs(compact);
+        for d in &details {
+            let r = right(d.clone());
+            if t.width() + 1 + r.width() <= area.width as usize {
+                choice = Some((t, r));
+                break 'outer;
+            }
+        }
+    }
+    let (t, r) = choice.unwrap_or_else(|| (tabs(true), Line::default()));
+    t.render(area, buf);
+    let w = (r.width() as u16).min(area.width);
+    if w > 0 {
+        let rr = Rect {
+            x: area.x + area.width - w,
+            width: w,
+            ..area
+        };
+        r.render(rr, buf);
     }
 }
 
