@@ -1308,3 +1308,50 @@ fn help_scrolls_to_every_key() {
     app.handle(ch('x'));
     assert_eq!(app.mode, Mode::Normal);
 }
+
+/// The screens in README.md and docs/workbench.md are the snapshot tests' frames: each
+/// `<!-- screen: NAME -->` marker is followed by a code block holding snapshot NAME's
+/// lines exactly. ROLLBENCH_UPDATE_DOCS=1 rewrites the blocks from the snapshots.
+#[test]
+fn tui_docs_screens_are_the_snapshots() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    for doc in ["README.md", "docs/workbench.md"] {
+        let path = format!("{root}/{doc}");
+        let text = std::fs::read_to_string(&path).expect("doc");
+        let mut out = String::new();
+        let mut rest = text.as_str();
+        let mut found = 0;
+        while let Some(at) = rest.find("<!-- screen: ") {
+            let (before, from) = rest.split_at(at);
+            out.push_str(before);
+            let name_end = from.find(" -->").expect("marker end");
+            let name = &from["<!-- screen: ".len()..name_end];
+            let snap_path =
+                format!("{root}/src/tui/snapshots/rollbench__tui__tests__{name}.snap");
+            let snap = std::fs::read_to_string(&snap_path)
+                .unwrap_or_else(|e| panic!("{doc}: {name}: {e}"));
+            // The frame: the snapshot's quoted lines, unquoted, trailing blanks cut.
+            let frame: String = snap
+                .lines()
+                .filter(|l| l.starts_with('"') && l.ends_with('"') && l.len() >= 2)
+                .map(|l| format!("{}\n", l[1..l.len() - 1].trim_end()))
+                .collect();
+            let block_start = from.find("```\n").expect("a code block after the marker");
+            let body_start = block_start + 4;
+            let body_len = from[body_start..].find("```").expect("block end");
+            let current = &from[body_start..body_start + body_len];
+            if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_none() {
+                assert_eq!(current, frame, "{doc}: screen {name} differs from its snapshot");
+            }
+            out.push_str(&from[..body_start]);
+            out.push_str(&frame);
+            rest = &from[body_start + body_len..];
+            found += 1;
+        }
+        out.push_str(rest);
+        assert!(found > 0, "{doc} has no screen markers");
+        if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_some() {
+            std::fs::write(&path, out).expect("write doc");
+        }
+    }
+}
