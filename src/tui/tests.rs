@@ -1326,8 +1326,7 @@ fn tui_docs_screens_are_the_snapshots() {
             out.push_str(before);
             let name_end = from.find(" -->").expect("marker end");
             let name = &from["<!-- screen: ".len()..name_end];
-            let snap_path =
-                format!("{root}/src/tui/snapshots/rollbench__tui__tests__{name}.snap");
+            let snap_path = format!("{root}/src/tui/snapshots/rollbench__tui__tests__{name}.snap");
             let snap = std::fs::read_to_string(&snap_path)
                 .unwrap_or_else(|e| panic!("{doc}: {name}: {e}"));
             // The frame: the snapshot's quoted lines, unquoted, trailing blanks cut.
@@ -1341,7 +1340,10 @@ fn tui_docs_screens_are_the_snapshots() {
             let body_len = from[body_start..].find("```").expect("block end");
             let current = &from[body_start..body_start + body_len];
             if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_none() {
-                assert_eq!(current, frame, "{doc}: screen {name} differs from its snapshot");
+                assert_eq!(
+                    current, frame,
+                    "{doc}: screen {name} differs from its snapshot"
+                );
             }
             out.push_str(&from[..body_start]);
             out.push_str(&frame);
