@@ -15,6 +15,7 @@
 )]
 
 mod error;
+pub mod form;
 mod schema;
 mod template;
 pub mod thermal;
@@ -22,6 +23,7 @@ mod validate;
 
 pub use crate::units::Units;
 pub use error::{DeckError, DeckErrors, Location};
+pub use form::{FieldMeta, Form, MaterialAccess, Schema, TemplateNotes};
 pub use schema::{
     field, fields, format_short, material_preset, FieldKind, FieldSpec, Presence, FILM_MODELS,
     GROUPS, GUIDING_RINGS, LIFE_METHODS, MATERIAL_BODIES, MATERIAL_PRESETS,

@@ -43,31 +43,13 @@
 //! | solver.cage_stiffness_ratio | 0 ≤ x ≤ 1 |
 
 use crate::bearings::spherical_roller::{
-    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Material, Slicing, SolverSettings,
+    Bearing, DynamicLoads, FilmModel, GuidingRing, LifeMethod, Slicing, SolverSettings,
 };
 use crate::units::{Quantity, Units, PSI_PA};
 
-/// What TOML value a field takes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FieldKind {
-    /// A real number (TOML float or integer).
-    Real,
-    /// A whole number (TOML integer); the SI value is the number itself.
-    Integer,
-    /// A string from a fixed list; the "SI value" is the index in the list.
-    Choice(&'static [&'static str]),
-}
-
-/// Whether a key must be given.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Presence {
-    /// Must be present.
-    Required,
-    /// May be omitted; then this SI value (or choice index) is used.
-    Default(f64),
-    /// Exactly one of this key and the named other key must be present.
-    OneOf(&'static str),
-}
+pub use super::form::{
+    format_short, material_preset, preset_name, FieldKind, Presence, MATERIAL_PRESETS,
+};
 
 /// One editable scalar deck key.
 #[derive(Debug, Clone, Copy)]
@@ -170,36 +152,6 @@ impl FieldSpec {
     }
 }
 
-/// Formats a number to 6 significant digits without trailing zeros (for messages).
-pub fn format_short(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
-    let a = v.abs();
-    if (1e-4..1e7).contains(&a) {
-        let digits = (5 - a.log10().floor() as i32).max(0) as usize;
-        let s = format!("{v:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        let s = format!("{v:.5e}");
-        match s.split_once('e') {
-            Some((m, e)) => {
-                let m = if m.contains('.') {
-                    m.trim_end_matches('0').trim_end_matches('.')
-                } else {
-                    m
-                };
-                format!("{m}e{e}")
-            }
-            None => s,
-        }
-    }
-}
-
 /// Film-model choices, in [`FilmModel`] order.
 pub const FILM_MODELS: &[&str] = &["grubin", "dowson-higginson", "pan-hamrock"];
 /// Life-method choices, in [`LifeMethod`] order.
@@ -210,11 +162,6 @@ pub const DYNAMIC_LOADS: &[&str] = &["iterated", "estimate"];
 pub const SLICINGS: &[&str] = &["uniform", "cosine"];
 /// Cage-guidance choices, in [`GuidingRing`] order.
 pub const GUIDING_RINGS: &[&str] = &["inner", "outer"];
-/// Material presets accepted as `materials.<body> = "<name>"`.
-pub const MATERIAL_PRESETS: &[(&str, Material)] = &[
-    ("steel", Material::STEEL),
-    ("silicon-nitride", Material::SILICON_NITRIDE),
-];
 /// The bodies under `[materials]`.
 pub const MATERIAL_BODIES: &[&str] = &["roller", "inner_ring", "outer_ring"];
 /// Top-level tables, in file order: the required ones, then the optional `[solver]` and
@@ -531,22 +478,6 @@ pub fn fields() -> &'static [FieldSpec] {
 /// Looks a field up by its full key path.
 pub fn field(key: &str) -> Option<&'static FieldSpec> {
     FIELDS.iter().find(|f| f.key == key)
-}
-
-/// Preset material by name.
-pub fn material_preset(name: &str) -> Option<Material> {
-    MATERIAL_PRESETS
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(_, m)| *m)
-}
-
-/// Name of the preset equal to `m`, if any.
-pub fn preset_name(m: &Material) -> Option<&'static str> {
-    MATERIAL_PRESETS
-        .iter()
-        .find(|(_, p)| p == m)
-        .map(|(n, _)| *n)
 }
 
 #[cfg(test)]

@@ -189,6 +189,18 @@ pub struct LinkDeck {
     pub conductance: Option<f64>,
 }
 
+/// The `[thermal.transient]` keys `--set` suggests for a close typo (any `thermal.…` key
+/// is accepted and checked by this section's parser).
+pub const EDITABLE_KEYS: &[&str] = &[
+    "thermal.transient.duration",
+    "thermal.transient.step",
+    "thermal.transient.integrator",
+    "thermal.transient.scenario",
+    "thermal.transient.split_fraction",
+    "thermal.transient.oil_node",
+    "thermal.transient.stop_at_limits",
+];
+
 /// `[thermal.transient]`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
