@@ -14,6 +14,7 @@
 
 pub mod error;
 pub mod spherical_roller;
+pub mod tapered_roller;
 pub mod view;
 
 pub use error::SolveError;
