@@ -11,3 +11,4 @@
 pub mod contact;
 pub mod geometry;
 pub mod input;
+pub mod roller;
