@@ -8,6 +8,7 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod bearing;
 pub mod contact;
 pub mod geometry;
 pub mod input;
