@@ -28,7 +28,7 @@ pub const DEFAULT_SYSTEM: &str = "spherical-roller";
 
 /// Every bearing system rollbench knows, in the order `rollbench template --type` and
 /// error messages list them. Adding a system is one line here.
-pub static SYSTEMS: &[&dyn BearingSystem] = &[&spherical_roller::SYSTEM];
+pub static SYSTEMS: &[&dyn BearingSystem] = &[&spherical_roller::SYSTEM, &tapered_roller::SYSTEM];
 
 /// What a run is asked to compute beyond the bearing itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -172,7 +172,7 @@ impl Bearing {
             azimuth[q] = (c, s);
             azimuth[nz - q] = (c, -s);
         }
-        if nz % 2 == 0 {
+        if nz.is_multiple_of(2) {
             azimuth[nz / 2] = (-1.0, 0.0);
         }
         Ok(Bearing {
@@ -205,7 +205,7 @@ impl Bearing {
         let pos = [x[0] + d0[0], x[1] + d0[1], x[2] + d0[2], x[3], x[4]];
         let beta = g.cup_angle_rad;
         let cb = beta.cos();
-        let clearance = 0.5 * g.diametral_clearance_m * cb;
+        let clearance = 0.5 * g.diametral_clearance_m() * cb;
         let mut rollers: Vec<(RollerSolution, f64, f64)> = Vec::with_capacity(self.azimuth.len());
         let mut keys: Vec<(u64, u64, usize)> = Vec::new();
         let mut reaction = [0.0; 5];
@@ -324,7 +324,7 @@ impl Bearing {
                 break;
             }
         }
-        let clearance = 0.5 * self.input.geometry.diametral_clearance_m * beta.cos();
+        let clearance = 0.5 * self.input.geometry.diametral_clearance_m() * beta.cos();
         let d0 = op.initial_displacement_m;
         let mut x = Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2]);
         let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());

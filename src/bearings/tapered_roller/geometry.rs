@@ -32,6 +32,45 @@ pub enum GeometryError {
     Invalid(String),
 }
 
+/// R_c of a crown given by its drop at the gauge point (eq. 35): with s = √(R² − c²),
+/// u = √(R² − a²) (a = l_e/2 − G, c = l_F/2), s − u = V′ and s² − u² = a² − c², so
+/// s = ½[(a² − c²)/V′ + V′] and R² = s² + c². `None` when the gauge point is not on the
+/// crown or the drop is not positive.
+pub fn crown_radius_from_drop(g: &Geometry, drop_m: f64) -> Option<f64> {
+    let a = 0.5 * g.effective_length_m - g.crown_gauge_m;
+    let c = 0.5 * g.flat_length_m;
+    if !(drop_m > 0.0 && a > c) {
+        return None;
+    }
+    let s = 0.5 * ((a * a - c * c) / drop_m + drop_m);
+    Some((s * s + c * c).sqrt())
+}
+
+/// The crown radius of `g`, m (NaN when a drop cannot be converted).
+pub fn crown_radius(g: &Geometry) -> f64 {
+    match g.crown {
+        Crown::Radius(r) => r,
+        Crown::Drop(v) => crown_radius_from_drop(g, v).unwrap_or(f64::NAN),
+    }
+}
+
+/// The crown drop at the gauge point of `g` (eq. 34), m; 0 on the flat, NaN for a radius
+/// shorter than the gauge point's distance.
+pub fn crown_drop_at_gauge(g: &Geometry) -> f64 {
+    match g.crown {
+        Crown::Drop(v) => v,
+        Crown::Radius(rc) => {
+            let a = 0.5 * g.effective_length_m - g.crown_gauge_m;
+            let c = 0.5 * g.flat_length_m;
+            if a <= c {
+                return 0.0;
+            }
+            let h = ((rc - c) * (rc + c)).sqrt();
+            (a * a - c * c) / (h + ((rc - a) * (rc + a)).sqrt())
+        }
+    }
+}
+
 /// Derived roller geometry, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RollerGeometry {
@@ -120,18 +159,15 @@ impl RollerGeometry {
         }
         let rc = match g.crown {
             Crown::Radius(r) => r,
-            Crown::Drop { drop_m, gauge_m } => {
-                // Eq. 35: with s = √(R² − c²), u = √(R² − a²), s − u = V′ and
-                // s² − u² = a² − c², so s = ½[(a² − c²)/V′ + V′] and R² = s² + c².
-                let a = half_le - gauge_m;
-                if !(drop_m > 0.0 && a > half_flat) {
+            Crown::Drop(v) => match crown_radius_from_drop(g, v) {
+                Some(r) => r,
+                None => {
                     return bad(format!(
-                        "crown drop {drop_m:e} m must be positive and its gauge point ({gauge_m:e} m from the end) must lie on the crown, outside the flat"
-                    ));
+                        "crown drop {v:e} m must be positive and its gauge point ({:e} m from the end) must lie on the crown, outside the flat",
+                        g.crown_gauge_m
+                    ))
                 }
-                let s = 0.5 * ((a * a - half_flat * half_flat) / drop_m + drop_m);
-                (s * s + half_flat * half_flat).sqrt()
-            }
+            },
         };
         if !(rc > half_le) {
             return bad(format!(
@@ -386,10 +422,9 @@ mod tests {
             let gauge = 0.03 * INCH_M;
             let drop = rg.drop_at(&g, gauge);
             let mut g2 = g;
-            g2.crown = Crown::Drop {
-                drop_m: drop,
-                gauge_m: gauge,
-            };
+            g2.crown = Crown::Drop(drop);
+            g2.crown_gauge_m = gauge;
+            assert!(rel(crown_drop_at_gauge(&g), drop) < 1e-12);
             let rg2 = RollerGeometry::new(&g2, &s.materials.roller).unwrap();
             assert!(
                 rel(rg2.crown_radius_m, 100.0 * INCH_M) < 1e-9,

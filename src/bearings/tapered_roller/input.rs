@@ -10,14 +10,18 @@ use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
 pub enum Crown {
     /// The crown radius R_c, m.
     Radius(f64),
-    /// The crown drop V′ (m) measured at the gauge distance G (m) from each end of the
-    /// effective length; R_c follows from eq. 35.
-    Drop {
-        /// V′, m.
-        drop_m: f64,
-        /// G, m.
-        gauge_m: f64,
-    },
+    /// The crown drop V′ (m) measured at the gauge distance G ([`Geometry::crown_gauge_m`])
+    /// from each end of the effective length; R_c follows from eq. 35.
+    Drop(f64),
+}
+
+/// How the internal play is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Clearance {
+    /// P_D, diametral clearance, m (negative: interference).
+    Diametral(f64),
+    /// e, axial end play, m: P_D = 2e·tan β.
+    EndPlay(f64),
 }
 
 /// Which inertia the gyroscopic moment of eq. 37 uses.
@@ -47,6 +51,9 @@ pub struct Geometry {
     pub flat_length_m: f64,
     /// The crown.
     pub crown: Crown,
+    /// G, distance from each end of the effective length to the crown drop's gauge point,
+    /// m (eqs. 34–35).
+    pub crown_gauge_m: f64,
     /// B₁, corner break at the small end, m.
     pub small_end_break_m: f64,
     /// B₂, corner break at the big end, m.
@@ -57,9 +64,26 @@ pub struct Geometry {
     /// r/R₂: radius of the flange contact point from the roller axis as a fraction of the
     /// big-end radius (the seed's "0.75 in" is this ratio: R₂ is 0.150 in).
     pub flange_contact_ratio: f64,
-    /// P_D, diametral clearance (total diametral play before loading), m; negative is
-    /// interference. An end play e is P_D = 2e·tan β.
-    pub diametral_clearance_m: f64,
+    /// The internal play before loading (eq. 40's P_D).
+    pub clearance: Clearance,
+}
+
+impl Geometry {
+    /// P_D, diametral clearance, m (an end play e gives 2e·tan β).
+    pub fn diametral_clearance_m(&self) -> f64 {
+        match self.clearance {
+            Clearance::Diametral(p) => p,
+            Clearance::EndPlay(e) => 2.0 * e * self.cup_angle_rad.tan(),
+        }
+    }
+
+    /// e, axial end play, m (P_D/(2 tan β)).
+    pub fn end_play_m(&self) -> f64 {
+        match self.clearance {
+            Clearance::Diametral(p) => p / (2.0 * self.cup_angle_rad.tan()),
+            Clearance::EndPlay(e) => e,
+        }
+    }
 }
 
 /// Roller, cup and cone materials.
@@ -161,11 +185,12 @@ impl TaperedInput {
                 effective_length_m: 0.6001 * INCH_M,
                 flat_length_m: 0.0,
                 crown: Crown::Radius(100.0 * INCH_M),
+                crown_gauge_m: 0.03 * INCH_M,
                 small_end_break_m: 0.02 * INCH_M,
                 big_end_break_m: 0.03 * INCH_M,
                 big_end_radius_ratio: 0.8,
                 flange_contact_ratio: 0.75,
-                diametral_clearance_m: 0.0,
+                clearance: Clearance::Diametral(0.0),
             },
             materials: Materials {
                 roller: Material::STEEL,

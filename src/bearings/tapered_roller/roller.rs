@@ -256,6 +256,7 @@ impl NewtonSystem<2> for System<'_> {
 impl RollerModel {
     /// The model of the bearing's rollers: contacts with `slices` slices, inertia loads
     /// `dy`, force scale `force_scale` (N) for the tolerance `rel_tol`.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         g: &Geometry,
         rg: &RollerGeometry,

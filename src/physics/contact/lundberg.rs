@@ -21,6 +21,8 @@
 
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
+// `!(x < max)` is used on purpose: it rejects NaN along with the out-of-range values.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use thiserror::Error;
 
