@@ -53,13 +53,13 @@ pub enum BearingError {
         axial_load_n: f64,
     },
     /// Radial load too large for the thrust: no roller set can balance it.
-    #[error("radial load {radial_load_n:.4e} N needs a thrust above F_r·tan β = {needed_n:.4e} N (axial load {axial_load_n:.4e} N): with less, even one roller carrying everything cannot balance it and the bearing unseats")]
+    #[error("radial load {radial_load_n:.4e} N needs a thrust above F_r·tan β plus the flanges' centrifugal thrust, {needed_n:.4e} N (axial load {axial_load_n:.4e} N): with less, even one roller carrying all of it on the cone cannot balance it and the bearing unseats")]
     RadialExceedsThrust {
         /// F_r, N.
         radial_load_n: f64,
         /// F_z, N.
         axial_load_n: f64,
-        /// F_r·tan β, N.
+        /// F_r·tan β + n·P₁,cf·sin β, N.
         needed_n: f64,
     },
     /// At this speed the flanges alone carry more thrust than applied: every roller
@@ -278,14 +278,6 @@ impl Bearing {
                 axial_load_n: op.axial_load_n,
             });
         }
-        let needed = op.radial_load_n.abs() * beta.tan();
-        if needed >= op.axial_load_n {
-            return Err(BearingError::RadialExceedsThrust {
-                radial_load_n: op.radial_load_n,
-                axial_load_n: op.axial_load_n,
-                needed_n: needed,
-            });
-        }
         // The cup-and-flange roller's thrust (zero without speed).
         let free = self
             .model
@@ -300,6 +292,17 @@ impl Bearing {
             return Err(BearingError::FlangeThrustExceedsLoad {
                 axial_load_n: op.axial_load_n,
                 flange_thrust_n: flange_thrust,
+            });
+        }
+        // Every roller carries at least the cup-and-flange load P₁,cf (whose radial
+        // components cancel around the bearing); the radial load is carried by the excess
+        // ΔP ≥ 0 of the rollers on the cone, so F_r ≤ cot β·Σ ΔP·sin β = cot β·(F_a − n·P₁,cf·sin β).
+        let needed = op.radial_load_n.abs() * beta.tan();
+        if needed >= op.axial_load_n - flange_thrust {
+            return Err(BearingError::RadialExceedsThrust {
+                radial_load_n: op.radial_load_n,
+                axial_load_n: op.axial_load_n,
+                needed_n: needed + flange_thrust,
             });
         }
         let rot = op.misalignment_rad;

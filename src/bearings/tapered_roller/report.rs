@@ -24,16 +24,19 @@ pub fn json(a: &Analysis) -> Value {
         .map(|(q, (r, delta, theta))| {
             let (c, s) = b.azimuth[q];
             let [cup, cone] = &a.slices[q];
-            let slices: Vec<Value> = cup
+            // Each race's slices lie on its own contact extent.
+            let slices: Vec<Value> = [("outer", cup), ("inner", cone)]
                 .iter()
-                .zip(cone)
-                .map(|(o, i)| {
-                    json!({
-                        "x_m": o.x_m,
-                        "outer_load_n_m": o.load_n_m,
-                        "inner_load_n_m": i.load_n_m,
-                        "outer_stress_pa": o.stress_pa,
-                        "inner_stress_pa": i.stress_pa,
+                .flat_map(|(race, list)| {
+                    list.iter().map(move |sl| {
+                        json!({
+                            "race": race,
+                            "x_m": sl.x_m,
+                            "intrusion_m": sl.intrusion_m,
+                            "load_n_m": sl.load_n_m,
+                            "half_width_m": sl.half_width_m,
+                            "stress_pa": sl.stress_pa,
+                        })
                     })
                 })
                 .collect();

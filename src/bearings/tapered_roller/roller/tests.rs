@@ -121,16 +121,26 @@ fn branches_cup_and_flange_and_free() {
     let _ = LBF_N;
 }
 
-/// Across the switch the cup load is continuous: just inside and just outside the
-/// cone's reach the loads differ by less than 1e-6 of F_c.
+/// Across the switch the cup load is continuous: bisecting the ring approach to the
+/// switch (to 1e-15 m), the loads on the two sides differ by less than 1e-6 of F_c.
 #[test]
 fn cone_contact_switch_is_continuous() {
     let (_, _, dy, m) = model(20_000.0);
     let cf = m.solve(-1e-4, 0.0, None).unwrap();
-    // Δ where the cone is just reached: Δ₂ = 0 at the crown's top, Δ = Δ₁.
-    let edge = cf.delta1_m;
-    let inside = m.solve(edge + 1e-12, 0.0, None).unwrap();
-    let outside = m.solve(edge - 1e-12, 0.0, None).unwrap();
-    assert_eq!(outside.state, RollerState::CupAndFlange);
-    assert!((inside.cup.load_n - outside.cup.load_n).abs() < 1e-6 * dy.centrifugal_force_n);
+    let (mut lo, mut hi) = (cf.delta1_m - 1e-6, cf.delta1_m + 1e-6);
+    assert_eq!(m.solve(lo, 0.0, None).unwrap().state, RollerState::CupAndFlange);
+    assert_eq!(m.solve(hi, 0.0, None).unwrap().state, RollerState::BothRaces);
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if m.solve(mid, 0.0, None).unwrap().state == RollerState::BothRaces {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    assert!(hi - lo < 1e-15);
+    let (a, b) = (m.solve(lo, 0.0, None).unwrap(), m.solve(hi, 0.0, None).unwrap());
+    assert_eq!(a.state, RollerState::CupAndFlange);
+    assert!((a.cup.load_n - b.cup.load_n).abs() < 1e-6 * dy.centrifugal_force_n);
+    assert!(b.cone.load_n < 1e-6 * dy.centrifugal_force_n);
 }
