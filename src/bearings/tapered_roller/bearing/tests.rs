@@ -241,7 +241,12 @@ fn twenty_one_slices_within_1e3_of_161() {
         };
         let (a, b) = (at(21), at(161));
         for i in 0..4 {
-            assert!((a[i] / b[i] - 1.0).abs() < 1e-3, "{radial} lbf, item {i}: {} vs {}", a[i], b[i]);
+            assert!(
+                (a[i] / b[i] - 1.0).abs() < 1e-3,
+                "{radial} lbf, item {i}: {} vs {}",
+                a[i],
+                b[i]
+            );
         }
     }
 }
@@ -268,11 +273,14 @@ fn speed_sweep_is_smooth_and_ends_in_a_typed_error() {
                     kxx.push(k[(0, 0)]);
                 }
                 Err(e) => {
-                    assert!(matches!(
-                        e,
-                        BearingError::FlangeThrustExceedsLoad { .. }
-                            | BearingError::RadialExceedsThrust { .. }
-                    ), "{radial} lbf at {rpm} rpm: {e}");
+                    assert!(
+                        matches!(
+                            e,
+                            BearingError::FlangeThrustExceedsLoad { .. }
+                                | BearingError::RadialExceedsThrust { .. }
+                        ),
+                        "{radial} lbf at {rpm} rpm: {e}"
+                    );
                     failed_from.get_or_insert(rpm);
                 }
             }
@@ -314,7 +322,6 @@ mod property {
             beta_deg in 10.0f64..25.0,
             le_ratio in 1.5f64..2.5,
             crown_in in 20.0f64..200.0,
-            flat_frac in 0.0f64..0.4,
             fa_lbf in 500.0f64..5000.0,
             fr_frac in 0.0f64..0.6,
             rpm in 0.0f64..20_000.0,
@@ -328,7 +335,11 @@ mod property {
             g.cup_angle_rad = beta_deg.to_radians();
             g.effective_length_m = le_ratio * d_in * INCH_M;
             g.crown = crate::bearings::tapered_roller::input::Crown::Radius(crown_in * INCH_M);
-            g.flat_length_m = flat_frac * g.effective_length_m;
+            // Fully crowned: with a flat and misalignment, a contact whose end sits at the
+            // flat/crown junction has a kink in its extent (the line's root −Δ/tan θ takes
+            // over from the crown's, eq. 54) where differences are no derivative. Flats are
+            // covered by the contact's own derivative test away from the junction.
+            g.flat_length_m = 0.0;
             g.small_end_break_m = 0.05 * d_in * INCH_M;
             g.big_end_break_m = 0.1 * d_in * INCH_M;
             let op = &mut s.operating;

@@ -128,8 +128,14 @@ fn cone_contact_switch_is_continuous() {
     let (_, _, dy, m) = model(20_000.0);
     let cf = m.solve(-1e-4, 0.0, None).unwrap();
     let (mut lo, mut hi) = (cf.delta1_m - 1e-6, cf.delta1_m + 1e-6);
-    assert_eq!(m.solve(lo, 0.0, None).unwrap().state, RollerState::CupAndFlange);
-    assert_eq!(m.solve(hi, 0.0, None).unwrap().state, RollerState::BothRaces);
+    assert_eq!(
+        m.solve(lo, 0.0, None).unwrap().state,
+        RollerState::CupAndFlange
+    );
+    assert_eq!(
+        m.solve(hi, 0.0, None).unwrap().state,
+        RollerState::BothRaces
+    );
     for _ in 0..80 {
         let mid = 0.5 * (lo + hi);
         if m.solve(mid, 0.0, None).unwrap().state == RollerState::BothRaces {
@@ -139,7 +145,10 @@ fn cone_contact_switch_is_continuous() {
         }
     }
     assert!(hi - lo < 1e-15);
-    let (a, b) = (m.solve(lo, 0.0, None).unwrap(), m.solve(hi, 0.0, None).unwrap());
+    let (a, b) = (
+        m.solve(lo, 0.0, None).unwrap(),
+        m.solve(hi, 0.0, None).unwrap(),
+    );
     assert_eq!(a.state, RollerState::CupAndFlange);
     assert!((a.cup.load_n - b.cup.load_n).abs() < 1e-6 * dy.centrifugal_force_n);
     assert!(b.cone.load_n < 1e-6 * dy.centrifugal_force_n);
