@@ -83,7 +83,7 @@ pub fn json(a: &Analysis) -> Value {
         .collect();
     let mut stiffness = json!({
         "matrix": matrix(&a.stiffness),
-        "rows": AXES.iter().map(|r| format!("F_{r}").replace("F_theta", "M_theta")).collect::<Vec<_>>(),
+        "rows": ["F_x", "F_y", "F_z", "M_x", "M_y"],
         "columns": AXES,
         "units": units,
         "method": match b.input.solver.stiffness {
