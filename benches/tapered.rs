@@ -36,5 +36,31 @@ fn load_case(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, load_case);
+/// A 21-point speed sweep (0–20 000 rpm, Load Condition 2, 21 slices), each point
+/// warm-started from the previous one.
+fn speed_sweep(c: &mut Criterion) {
+    let inputs: Vec<TaperedInput> = (0..21)
+        .map(|i| {
+            let mut s = case(21, 700.0);
+            s.operating.inner_speed_rad_s = 1000.0 * i as f64 * std::f64::consts::PI / 30.0;
+            s
+        })
+        .collect();
+    c.bench_function("tapered_lc2_sweep_21_points_warm", |b| {
+        b.iter(|| {
+            let mut prev = None;
+            for s in &inputs {
+                let bearing = Bearing::new(s).unwrap_or_else(|e| panic!("{e}"));
+                prev = Some(
+                    bearing
+                        .solve_from(prev.as_ref())
+                        .unwrap_or_else(|e| panic!("{e}")),
+                );
+            }
+            prev
+        })
+    });
+}
+
+criterion_group!(benches, load_case, speed_sweep);
 criterion_main!(benches);

@@ -270,6 +270,16 @@ impl Bearing {
 
     /// The bearing equilibrium (eqs. 97–106).
     pub fn solve(&self) -> Result<BearingSolution, BearingError> {
+        self.solve_from(None)
+    }
+
+    /// The bearing equilibrium started from `start` (a neighbouring solution, e.g. the
+    /// previous point of a sweep: its ring displacement and every roller's (Δ₁, θ₁)), or
+    /// from the pure-thrust estimate without one.
+    pub fn solve_from(
+        &self,
+        start: Option<&BearingSolution>,
+    ) -> Result<BearingSolution, BearingError> {
         let op = &self.input.operating;
         let beta = self.input.geometry.cup_angle_rad;
         let z = self.input.geometry.roller_count as f64;
@@ -311,7 +321,8 @@ impl Bearing {
         let target = op.axial_load_n / (z * beta.sin());
         let mut delta = 1e-6;
         let mut warm = None;
-        for _ in 0..40 {
+        let estimate_steps = if start.is_some() { 0 } else { 40 };
+        for _ in 0..estimate_steps {
             // A failure here only ends the estimate: the equilibrium names the roller.
             let Ok(r) = self.model.solve(delta, 0.0, warm) else {
                 break;
@@ -330,13 +341,22 @@ impl Bearing {
         let clearance = 0.5 * self.input.geometry.diametral_clearance_m() * beta.cos();
         let d0 = op.initial_displacement_m;
         let mut x = Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2]);
+        if let Some(st) = start {
+            x = Vector3::new(
+                st.displacement_m[0],
+                st.displacement_m[1],
+                st.displacement_m[2],
+            );
+        }
         let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
         let tolerance = self.input.solver.force_tolerance * f_ref;
         let mut sys = RingSystem {
             bearing: self,
             rot,
             load: Vector3::new(op.radial_load_n, 0.0, op.axial_load_n),
-            warm: None,
+            warm: start
+                .filter(|st| st.rollers.len() == self.azimuth.len())
+                .map(|st| st.rollers.clone()),
             error: None,
             mirror: rot[0] == 0.0 && op.initial_displacement_m[1] == 0.0,
         };

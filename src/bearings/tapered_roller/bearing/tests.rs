@@ -381,3 +381,26 @@ mod property {
         }
     }
 }
+/// A warm start from a neighbouring solution (the previous point of a speed sweep) gives
+/// the same equilibrium as a cold start (1e-9 of the thrust in the reactions, 1e-6 of
+/// K_xx: both are converged to the tolerance) in fewer ring iterations.
+#[test]
+fn warm_started_sweep_matches_cold_solves() {
+    let mut prev: Option<BearingSolution> = None;
+    let (mut warm_its, mut cold_its) = (0, 0);
+    for i in 0..=10 {
+        let s = sample(2_000.0 * i as f64, 700.0);
+        let b = Bearing::new(&s).unwrap();
+        let cold = b.solve().unwrap();
+        let warm = b.solve_from(prev.as_ref()).unwrap();
+        let fa = s.operating.axial_load_n;
+        for j in 0..3 {
+            assert!((warm.reaction[j] - cold.reaction[j]).abs() < 1e-9 * fa);
+        }
+        assert!((warm.stiffness[(0, 0)] / cold.stiffness[(0, 0)] - 1.0).abs() < 1e-6);
+        warm_its += warm.iterations;
+        cold_its += cold.iterations;
+        prev = Some(warm);
+    }
+    assert!(warm_its <= cold_its, "{warm_its} vs {cold_its}");
+}
