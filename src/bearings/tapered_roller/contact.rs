@@ -288,6 +288,13 @@ impl RaceContact {
         })
     }
 
+    /// Whether the roller touches the race at all at approach `delta` and misalignment
+    /// `theta` (a contact extent exists: the slices inside it then have positive
+    /// intrusion); no slice is evaluated.
+    pub fn touches(&self, delta: f64, theta: f64) -> bool {
+        self.extent(delta, theta).is_some()
+    }
+
     /// Resultants and derivatives at race approach `delta` (m) and misalignment `theta`
     /// (rad); `slices`, if given, receives every slice's state.
     pub fn eval(

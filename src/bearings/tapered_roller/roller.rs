@@ -428,8 +428,7 @@ impl RollerModel {
                 // Does the roller, held where cup and flange put it, reach the cone?
                 let d2 = self.k * (delta - cf.delta1_m);
                 let t2 = big_theta - cf.theta1_rad;
-                let cone = self.cone.eval(d2, t2, None)?;
-                if cone.load_n <= 0.0 {
+                if !self.cone.touches(d2, t2) {
                     return Ok(RollerSolution {
                         delta2_m: d2,
                         theta2_rad: t2,
