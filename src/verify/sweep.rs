@@ -1,9 +1,9 @@
 //! `rollbench sweep`: a generic parameter sweep, usable by every bearing system (issues 16
 //! and 17). One deck key is set, in the deck's units, to each value of a range; every point
-//! is a whole new case built and validated by the deck itself ([`CaseDeck::with_value`],
-//! the same path as `run --set`), solved without the thermal transient, and reduced to the
-//! key outputs of its view ([`View::key_outputs`]: SI, the unit in each name, as `bench`
-//! shows them). A point that fails to solve is a row with its reason, not an abort.
+//! is a whole new case built and validated by the deck itself
+//! ([`CaseDeck::with_value`], the same path as `run --set`), solved without the thermal
+//! transient, and reduced to the key outputs of its view ([`View::key_outputs`]: SI, the
+//! unit in each name, as `bench` shows them). A point that fails to solve is a row with its reason, not an abort.
 //!
 //! Ranges (`KEY=RANGE`, values in deck units):
 //! - `A:B:STEP`: from A towards B in steps of STEP (> 0), both ends included when STEP
@@ -26,6 +26,8 @@
 //! has none), would tie each point to its neighbour (no parallelism), and would make a
 //! point depend on the sweep it is part of; the tests check that a point equals a plain
 //! run of the same value.
+//!
+//! [`CaseDeck::with_value`]: crate::bearings::CaseDeck::with_value
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
@@ -692,5 +694,76 @@ mod tests {
         assert_eq!(text_number(0.0123456), "0.0123456");
         assert_eq!(text_number(2.5e9), "2.50000e9");
         assert_eq!(text_number(0.0), "0");
+    }
+
+    fn synthetic() -> Sweep {
+        use crate::bearings::view::KeyRole;
+        use crate::units::Quantity;
+        let out = |v: Option<f64>| KeyOutput {
+            name: "heat_w",
+            label: "heat",
+            value: v,
+            quantity: Quantity::Power,
+            role: KeyRole::Guard,
+        };
+        Sweep {
+            key: "operating.inner_speed".into(),
+            unit: "rpm".into(),
+            system: "test",
+            deck: "deck".into(),
+            points: vec![
+                Point {
+                    value: 1000.0,
+                    text: "1000".into(),
+                    outputs: vec![out(Some(12.5))],
+                    failure: None,
+                },
+                Point {
+                    value: 2000.0,
+                    text: "2000".into(),
+                    outputs: vec![out(None)],
+                    failure: None,
+                },
+                Point {
+                    value: 3000.0,
+                    text: "3000".into(),
+                    outputs: Vec::new(),
+                    failure: Some("no equilibrium, 3 iterations".into()),
+                },
+            ],
+        }
+    }
+
+    #[test]
+    fn writers_keep_order_and_mark_absent_values() {
+        let s = synthetic();
+        let csv = to_csv(&s);
+        assert_eq!(
+            csv,
+            "operating.inner_speed [rpm],heat_w,failure\n1000,12.5,\n2000,,\n3000,,\"no equilibrium, 3 iterations\"\n"
+        );
+        let j = to_json(&s);
+        assert_eq!(j["key"], "operating.inner_speed");
+        assert_eq!(j["points"][0]["value"], 1000.0);
+        assert_eq!(j["points"][0]["heat_w"], 12.5);
+        assert!(j["points"][1]["heat_w"].is_null());
+        assert!(j["points"][1]["failure"].is_null());
+        assert!(j["points"][2]["heat_w"].is_null());
+        assert_eq!(j["points"][2]["failure"], "no equilibrium, 3 iterations");
+        let text = to_text(&s);
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 5, "{text}");
+        assert!(lines[0].contains("1 failed"), "{text}");
+        assert!(
+            lines[1] == "operating.inner_speed [rpm]   heat_w  failure",
+            "{text}"
+        );
+        // Right-aligned columns, two spaces apart; the failure, left-aligned, last.
+        assert_eq!(lines[2], format!("{:>27}  {:>7}", "1000", "12.5000"));
+        assert_eq!(lines[3], format!("{:>27}  {:>7}", "2000", "-"));
+        assert_eq!(
+            lines[4],
+            format!("{:>27}  {:>7}  no equilibrium, 3 iterations", "3000", "-")
+        );
     }
 }
