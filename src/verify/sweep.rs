@@ -334,6 +334,14 @@ pub fn build(case: &dyn Case, range_arg: &str) -> Result<(Range, Vec<PointCase>)
         .values()
         .map_err(|e| with_allowed(case, &range.key, e))?;
     let n = values.len();
+    // A key the deck does not know is wrong for every point: say so once, without a point.
+    if case.get(&range.key).is_none() {
+        if let Some(&v) = values.first() {
+            if let Err(e) = case.with_value(&range.key, &value_text(v)) {
+                return Err(format!("--set-range {range_arg}: {e}"));
+            }
+        }
+    }
     let built: Vec<Result<PointCase, String>> = values
         .par_iter()
         .enumerate()
