@@ -381,10 +381,13 @@ fn target_names(t: &FidelityTable) -> String {
         .map(|k| match k.name {
             "max_stress_pa" => "max-stress",
             "l10_mrev" => "L-10",
-            other => other,
+            _ => k.label,
         })
         .collect();
-    names.join(" and ")
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => names.join(""),
+    }
 }
 
 /// A readable table: one line per cell, errors in percent, the recommended row marked `<=`.

@@ -5,7 +5,9 @@ use super::analysis::{analyse, Analysis};
 use super::deck::{SCHEMA, SYSTEM_ID};
 use super::input::TaperedInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
-use crate::bearings::{BearingSystem, Case, FormCase, RunOptions, Solution};
+use crate::bearings::{
+    BearingSystem, Case, Fidelity, FidelityGrid, FormCase, RunOptions, Solution,
+};
 use crate::deck::form::{template, Form};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
@@ -13,6 +15,19 @@ use crate::units::Units;
 
 /// The shipped example deck: the seed's §3.1 sample.
 pub const EXAMPLE_DECK: &str = include_str!("../../../decks/trb_afapl.toml");
+
+/// The fidelity study (issue 17's `bench`): slices per contact × force tolerance against
+/// 321 slices at 10⁻¹⁰.
+pub const FIDELITY_GRID: FidelityGrid = FidelityGrid {
+    resolution_key: "slices",
+    resolution_symbol: "n",
+    resolutions: &[5, 7, 11, 15, 21, 31, 41, 61, 81, 121, 161],
+    tolerances: &[1e-6, 1e-9],
+    reference: Fidelity {
+        resolution: 321,
+        tolerance: 1e-10,
+    },
+};
 
 /// The tapered roller bearing system (registered in `crate::bearings::SYSTEMS`).
 pub struct TaperedRoller;
@@ -35,6 +50,10 @@ impl BearingSystem for TaperedRoller {
 
     fn element_name(&self) -> &'static str {
         "roller"
+    }
+
+    fn fidelity_grid(&self) -> Option<FidelityGrid> {
+        Some(FIDELITY_GRID)
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
@@ -100,6 +119,21 @@ impl Case for TaperedCase {
 
     fn as_any(&self) -> &dyn std::any::Any {
         self
+    }
+
+    fn fidelity(&self) -> Option<Fidelity> {
+        let s = &self.form.value.solver;
+        Some(Fidelity {
+            resolution: s.slices,
+            tolerance: s.force_tolerance,
+        })
+    }
+
+    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
+        let mut form = self.form.clone();
+        form.value.solver.slices = f.resolution;
+        form.value.solver.force_tolerance = f.tolerance;
+        Some(Box::new(TaperedCase { form }))
     }
 
     fn units(&self) -> Units {
