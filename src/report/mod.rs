@@ -6,7 +6,7 @@ pub mod csv;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;
-use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA};
+use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA, LBM_KG};
 
 /// Report formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -46,6 +46,7 @@ pub struct Disp {
     pub stress: (f64, &'static str),
     pub moment: (f64, &'static str),
     pub power: (f64, &'static str),
+    pub mass: (f64, &'static str),
 }
 
 impl Disp {
@@ -59,6 +60,7 @@ impl Disp {
                 stress: (1e-6, "MPa"),
                 moment: (1.0, "N·m"),
                 power: (1.0, "W"),
+                mass: (1.0, "kg"),
             },
             Units::Us => Disp {
                 len: (1.0 / INCH_M, "in"),
@@ -67,6 +69,7 @@ impl Disp {
                 stress: (1.0 / PSI_PA * 1e-3, "ksi"),
                 moment: (1.0 / INCH_LBF_N_M, "in·lbf"),
                 power: (BTU_PER_HOUR_PER_WATT, "Btu/hr"),
+                mass: (1.0 / LBM_KG, "lbm"),
             },
         }
     }

@@ -61,8 +61,9 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     );
     let _ = writeln!(
         s,
-        "Roller: mass {:.4} kg, centrifugal force {:.2} {}, gyroscopic moment {:.4} {}",
-        ld.roller_mass.mass_kg,
+        "Roller: mass {:.4} {}, centrifugal force {:.2} {}, gyroscopic moment {:.4} {}",
+        ld.roller_mass.mass_kg * d.mass.0,
+        d.mass.1,
         ld.rollers.first().map_or(0.0, |r| r.centrifugal_force_n) * d.force.0,
         d.force.1,
         ld.rollers.first().map_or(0.0, |r| r.gyroscopic_moment_nm) * d.moment.0,
@@ -210,8 +211,11 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         let _ = writeln!(s);
         let _ = writeln!(
             s,
-            "THERMAL NETWORK, STEADY STATE (§10.2): heat in {:.1} W, out {:.1} W, balance {:.2e} W",
-            th.steady.heat_in_w, th.steady.heat_out_w, th.steady.balance_w
+            "THERMAL NETWORK, STEADY STATE (§10.2): heat in {:.1} {p}, out {:.1} {p}, balance {:.2e} {p}",
+            th.steady.heat_in_w * d.power.0,
+            th.steady.heat_out_w * d.power.0,
+            th.steady.balance_w * d.power.0,
+            p = d.power.1
         );
         for n in &th.steady.nodes {
             let _ = writeln!(
@@ -225,8 +229,9 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         if let Some(tr) = &th.transient {
             let _ = writeln!(
                 s,
-                "LOSS-OF-OIL TRANSIENT (§10.3): {:.1} W lost-lubrication heat, {:.0} s simulated",
-                th.transient_heat_w.unwrap_or(0.0),
+                "LOSS-OF-OIL TRANSIENT (§10.3): {:.1} {} lost-lubrication heat, {:.0} s simulated",
+                th.transient_heat_w.unwrap_or(0.0) * d.power.0,
+                d.power.1,
                 tr.time_s.last().copied().unwrap_or(0.0)
             );
             for n in tr.nodes.iter().filter(|n| n.limit_c.is_some()) {
@@ -246,8 +251,13 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     let _ = writeln!(s);
     let _ = writeln!(
         s,
-        "Residuals: bearing radial {:.2e} N, axial {:.2e} N; roller force {:.2e} N, moment {:.2e} N·m",
-        ld.residuals.bearing_radial_n, ld.residuals.bearing_axial_n, ld.residuals.roller_force_n, ld.residuals.roller_moment_nm
+        "Residuals: bearing radial {:.2e} {f}, axial {:.2e} {f}; roller force {:.2e} {f}, moment {:.2e} {m}",
+        ld.residuals.bearing_radial_n * d.force.0,
+        ld.residuals.bearing_axial_n * d.force.0,
+        ld.residuals.roller_force_n * d.force.0,
+        ld.residuals.roller_moment_nm * d.moment.0,
+        f = d.force.1,
+        m = d.moment.1
     );
     let _ = writeln!(
         s,
