@@ -6,7 +6,7 @@ pub mod csv;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;
-use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA, LBM_KG};
+use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, LBM_KG, PSI_PA};
 
 /// Report formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

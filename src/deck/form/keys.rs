@@ -1,0 +1,140 @@
+//! The editable keys, close matches, the `rollbench keys` table.
+
+use super::*;
+// ---------------------------------------------------------------------------------
+// Keys: the editable list, close matches, the `rollbench keys` table
+// ---------------------------------------------------------------------------------
+
+/// The editable keys inside an opaque table that its parser knows (for suggestions).
+pub(super) fn opaque_keys(table: &str) -> &'static [&'static str] {
+    match table {
+        "thermal" => crate::deck::thermal::EDITABLE_KEYS,
+        _ => &[],
+    }
+}
+
+/// A `&'static str` for a key built at run time (the `materials.<body>` keys): each
+/// distinct string is leaked once, so the total is bounded by the schemas' bodies.
+pub(super) fn intern(s: String) -> &'static str {
+    use std::collections::BTreeSet;
+    use std::sync::{Mutex, OnceLock};
+    static KEYS: OnceLock<Mutex<BTreeSet<&'static str>>> = OnceLock::new();
+    let set = KEYS.get_or_init(|| Mutex::new(BTreeSet::new()));
+    let mut set = set
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(k) = set.get(s.as_str()) {
+        return k;
+    }
+    let k: &'static str = Box::leak(s.into_boxed_str());
+    set.insert(k);
+    k
+}
+
+/// Every key [`Form::set`] and `--set` accept: `name`, each field, the material bodies
+/// (a preset name or a table), and the known keys of the opaque tables (any key of an
+/// opaque table is accepted and checked by its own parser).
+pub fn editable_keys<T>(schema: &Schema<T>) -> Vec<&'static str> {
+    let mut keys = vec!["name"];
+    keys.extend(schema.fields.iter().map(|f| f.key));
+    keys.extend(
+        schema
+            .material_bodies
+            .iter()
+            .map(|b| intern(format!("materials.{b}"))),
+    );
+    for t in schema.opaque_tables {
+        keys.extend_from_slice(opaque_keys(t));
+    }
+    keys.dedup();
+    keys
+}
+
+/// The table `rollbench keys` prints: every editable key with its allowed range in SI
+/// and US units, then `name`, the material bodies and the opaque tables.
+pub fn keys_table<T>(schema: &'static Schema<T>) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    let _ = writeln!(s, "{:<40} {:<36} allowed (us)", "key", "allowed (si)");
+    for f in schema.fields {
+        let allowed = |u: Units| match f.kind {
+            FieldKind::Choice(list) => list.join(" | "),
+            _ => f.allowed(u),
+        };
+        let _ = writeln!(
+            s,
+            "{:<40} {:<36} {}",
+            f.key,
+            allowed(Units::Si),
+            allowed(Units::Us)
+        );
+    }
+    let _ = writeln!(s, "{:<40} any string", "name");
+    let presets: Vec<&str> = MATERIAL_PRESETS.iter().map(|(n, _)| *n).collect();
+    for b in schema.material_bodies {
+        let _ = writeln!(
+            s,
+            "{:<40} one of {}",
+            format!("materials.{b}"),
+            presets.join(", ")
+        );
+    }
+    for t in schema.opaque_tables {
+        let example = opaque_keys(t)
+            .first()
+            .map_or_else(String::new, |k| format!("; e.g. {k}"));
+        let _ = writeln!(
+            s,
+            "{:<40} the [{t}] section (see `rollbench template`){example}",
+            format!("{t}.<table>.<key>")
+        );
+    }
+    s
+}
+
+/// Levenshtein distance of two short keys (characters).
+pub(super) fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev.get(j).copied().unwrap_or(0) + usize::from(ca != *cb);
+            let del = prev.get(j + 1).copied().unwrap_or(0) + 1;
+            let ins = cur.get(j).copied().unwrap_or(0) + 1;
+            if let Some(c) = cur.get_mut(j + 1) {
+                *c = sub.min(del).min(ins);
+            }
+        }
+        prev = cur;
+    }
+    prev.last().copied().unwrap_or(0)
+}
+
+/// The editable keys closest to `key` (typos, a wrong table, a missing table): at most
+/// five, closest first.
+pub fn close_keys<T>(schema: &Schema<T>, key: &str) -> Vec<&'static str> {
+    let leaf = key.rsplit('.').next().unwrap_or(key);
+    let mut scored: Vec<(usize, &'static str)> = editable_keys(schema)
+        .into_iter()
+        .filter_map(|k| {
+            let k_leaf = k.rsplit('.').next().unwrap_or(k);
+            let d = edit_distance(key, k).min(edit_distance(leaf, k_leaf) + 1);
+            let limit = (key.len() / 3).clamp(2, 6);
+            (d <= limit || (leaf.len() >= 4 && k_leaf.contains(leaf))).then_some((d, k))
+        })
+        .collect();
+    scored.sort();
+    scored.into_iter().take(5).map(|(_, k)| k).collect()
+}
+
+/// The message for an unknown `--set` key: the close matches and where the full list is.
+pub(super) fn unknown_key_hint<T>(schema: &Schema<T>, key: &str) -> String {
+    let close = close_keys(schema, key);
+    let list = "`rollbench keys` lists every editable key with its allowed range";
+    if close.is_empty() {
+        format!("unknown key ({list})")
+    } else {
+        format!("unknown key; did you mean {}? ({list})", close.join(", "))
+    }
+}
