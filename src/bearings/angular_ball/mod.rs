@@ -9,6 +9,7 @@
 
 pub mod analysis;
 pub mod deck;
+pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod input;
