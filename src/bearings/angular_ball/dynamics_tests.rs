@@ -215,3 +215,31 @@ fn bad_options_and_cancel() {
     let i = case(9_500.0, Method::TimeSimulation);
     assert!(analyse(&i, Cancel::new(&flag)).is_err());
 }
+
+/// The workbench: the ball system offers a "Dynamics" pane on chart 1, chart 1 is the
+/// heat per ball against azimuth (race control and the simulation, one point per ball)
+/// and there is one element chart per ball with its history (ω_t and heat against the
+/// orbit position, 90 samples per orbit + 1).
+#[test]
+fn view_has_the_dynamics_charts() {
+    use crate::bearings::view::PaneKind;
+    use crate::bearings::BearingSystem;
+    let panes = crate::bearings::angular_ball::system::SYSTEM.panes();
+    assert!(panes
+        .iter()
+        .any(|p| p.kind == PaneKind::Chart(1) && p.title == "Dynamics"));
+    let a = analyse(&case(9_500.0, Method::TimeSimulation), Cancel::NONE).unwrap();
+    let v = crate::bearings::angular_ball::view::view(&a);
+    assert_eq!(v.charts.len(), 2);
+    let c = &v.charts[1];
+    assert_eq!(c.series.len(), 2);
+    assert!(c.series.iter().all(|s| s.points.len() == 20));
+    assert_eq!(v.element_charts.len(), 20);
+    assert_eq!(v.element_charts[3].series[1].points.len(), 5 * 90 + 1);
+    // Ball 3's history starts at its own azimuth (18° per ball).
+    assert!((v.element_charts[3].series[0].points[0].0 - 54.0).abs() < 1e-9);
+    let rc = analyse(&case(9_500.0, Method::RaceControl), Cancel::NONE).unwrap();
+    let v = crate::bearings::angular_ball::view::view(&rc);
+    assert!(v.element_charts.is_empty());
+    assert_eq!(v.charts[1].series.len(), 1);
+}

@@ -341,7 +341,7 @@ pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
                 if d.steady { "steady" } else { "oscillating" }
             )
         }
-        None => "heat per ball by race control (dynamics.method for the ball dynamics)".into(),
+        None => "race-control heat per ball (set dynamics.method)".into(),
     };
     Chart {
         title,
