@@ -307,9 +307,32 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
     }
 }
 
+/// The heat of a ball when, in its last simulated orbit, it passes its own start
+/// azimuth (the sample nearest to it; under radial load this is the heat at that
+/// position of the bearing, where the orbit mean would be the same for every ball), W.
+fn heat_at_own_azimuth(bd: &super::dynamics::BallDynamics) -> f64 {
+    let Some(last) = bd.history.last() else {
+        return bd.heat_w;
+    };
+    let start = bd.start_azimuth_rad.to_degrees();
+    bd.history
+        .iter()
+        .filter(|s| s.orbit_deg >= last.orbit_deg - 360.0 - 1e-9)
+        .map(|s| {
+            let d = (s.orbit_deg - start).rem_euclid(360.0);
+            (d.min(360.0 - d), s.heat_w)
+        })
+        .fold(
+            (f64::INFINITY, bd.heat_w),
+            |a, x| if x.0 < a.0 { x } else { a },
+        )
+        .1
+}
+
 /// The Dynamics chart (Figs. 6-8, 6-11): heat per ball against its azimuth, race
 /// control's spin heat and, when `dynamics.method` asks for it, the ball dynamics' heat
-/// (time simulation: the mean over the last orbit). Point i is ball i.
+/// (time simulation: at the ball's own azimuth during the last orbit). Point i is
+/// ball i.
 pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
     let deg = |b: &BallResult| b.azimuth_rad.to_degrees();
     let mut series = vec![Series {
@@ -331,7 +354,7 @@ pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
                     .balls
                     .iter()
                     .zip(&d.balls)
-                    .map(|(b, bd)| (deg(b), bd.heat_w))
+                    .map(|(b, bd)| (deg(b), heat_at_own_azimuth(bd)))
                     .collect(),
             });
             format!(
