@@ -291,7 +291,10 @@ pub fn simulate_ball(
     let period = std::f64::consts::TAU / wm;
     let t_end = orbits * period;
     let n = ((orbits * SAMPLES_PER_ORBIT as f64).ceil() as usize).max(2);
-    let times: Vec<f64> = (0..=n).map(|k| t_end * k as f64 / n as f64).collect();
+    // Clamped: t_end·k/n can round above t_end, which the ODE solver refuses.
+    let times: Vec<f64> = (0..=n)
+        .map(|k| (t_end * k as f64 / n as f64).min(t_end))
+        .collect();
     let scale = Vector3::from(omega0).norm().max(1.0);
     let opts = OdeOptions {
         rtol,
