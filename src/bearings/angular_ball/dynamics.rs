@@ -176,6 +176,15 @@ impl OdeSystem for BallModel<'_> {
         let d = self.omega_dot(t, &Vector3::new(y[0], y[1], y[2]));
         dydt.copy_from_slice(d.as_slice());
     }
+    fn jacobian(&self, t: f64, y: &[f64], jac: &mut nalgebra::DMatrix<f64>) -> bool {
+        let j = self.omega_jacobian(t, &Vector3::new(y[0], y[1], y[2]));
+        for r in 0..3 {
+            for c in 0..3 {
+                jac[(r, c)] = j[(r, c)];
+            }
+        }
+        true
+    }
 }
 
 /// One sample of a ball's history.
@@ -518,6 +527,9 @@ pub fn run(
         balls: out,
     })
 }
+
+#[path = "dynamics_jacobian.rs"]
+mod jacobian;
 
 #[cfg(test)]
 #[path = "dynamics_tests.rs"]

@@ -318,3 +318,37 @@ fn random_cases_are_finite_or_typed_errors() {
         }
     }
 }
+
+/// The analytic Jacobian ∂(dω/dt)/∂ω that Rodas4 uses equals central differences of the
+/// right-hand side (step 1e-6 of |ω|; 1e-5 of the Jacobian's norm: the difference
+/// error, with slices crossing no break point of curve 1 at this state), at race
+/// control's start state and at a perturbed one, for curve 1 and the steep curve.
+#[test]
+fn analytic_jacobian_matches_differences() {
+    let input = case(9_500.0, Method::TimeSimulation);
+    for curve in [
+        input.traction.curve(),
+        TractionCurve::Table {
+            points: vec![(0.0, 0.0), (0.005, 0.054)],
+        },
+    ] {
+        with_model(&input, &curve, |m, w0| {
+            for w in [Vector3::from(w0), Vector3::new(w0[0] * 1.01, w0[1], 37.0)] {
+                let j = m.omega_jacobian(1e-4, &w);
+                let h = 1e-6 * w.norm();
+                let mut fd = Matrix3::zeros();
+                for c in 0..3 {
+                    let mut wp = w;
+                    let mut wm = w;
+                    wp[c] += h;
+                    wm[c] -= h;
+                    fd.set_column(
+                        c,
+                        &((m.omega_dot(1e-4, &wp) - m.omega_dot(1e-4, &wm)) / (2.0 * h)),
+                    );
+                }
+                assert!((j - fd).norm() < 1e-5 * fd.norm(), "{j} vs {fd}");
+            }
+        });
+    }
+}
