@@ -37,7 +37,10 @@
 //! # Traction and heat (2-18)
 //! Each strip carries the traction −µ(|s|)·q·s/|s| (µ from the traction curve); the heat
 //! is µ·q·|s|, split into its rolling-direction part µ q s_t²/|s| and its lateral part
-//! µ q s_x²/|s| (Fig. 6-13's sources; the two add up to the total exactly).
+//! µ q s_x²/|s| (Fig. 6-13's sources; the two add up to the total exactly). Spin
+//! slides along the rolling direction (ω_s n × x τ is parallel to t), so spin heat lands
+//! in the rolling part; the lateral part is the gyroscopic skid (Chen's 2-15a). This
+//! is Chen's split by sliding direction, not a split into "spin" and "rolling" causes.
 
 use nalgebra::{Matrix3, Vector3};
 
