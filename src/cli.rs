@@ -66,6 +66,23 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Text)]
         format: TableFormat,
     },
+    /// Solve a deck at every value of one key (no transient): one row of key outputs per point.
+    Sweep {
+        /// Deck file (TOML).
+        deck: PathBuf,
+        /// The key and its range, in the deck's units: KEY=A:B:STEP (step, A > B sweeps
+        /// down) or KEY=A:B:xN (N points, ends included), e.g.
+        /// operating.inner_speed=6000:15000:500. At most 10000 points.
+        #[arg(long = "set-range", value_name = "KEY=A:B:STEP")]
+        set_range: String,
+        /// Table format.
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write the table to FILE instead of standard output (`-`: standard output), as
+        /// `run --output` does.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
 }
 
 /// Formats of the validate and bench tables.

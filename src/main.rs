@@ -63,7 +63,7 @@ fn main() -> ExitCode {
         };
         if let Some(cmd) = ignored {
             eprintln!(
-                "--set {}: `rollbench {cmd}` takes no overrides (use --set with run, check, bench or the workbench)",
+                "--set {}: `rollbench {cmd}` takes no overrides (use --set with run, check, bench, sweep or the workbench)",
                 cli.set.join(" --set ")
             );
             return ExitCode::from(exit::USAGE);
@@ -190,6 +190,12 @@ fn main() -> ExitCode {
             print!("{}", deck::keys_table());
             ExitCode::SUCCESS
         }
+        Some(Command::Sweep {
+            deck,
+            set_range,
+            format,
+            output,
+        }) => sweep(&deck, &cli.set, &set_range, format, output.as_deref()),
         Some(Command::Bench { deck, format }) => {
             match rollbench::verify::fidelity::bench_command(
                 deck.as_deref(),
@@ -214,5 +220,75 @@ fn main() -> ExitCode {
                 }
             }
         }
+    }
+}
+
+/// `rollbench sweep`: the deck with `--set` applied, then `--set-range` swept (see
+/// [`rollbench::verify::sweep`]). A bad range, key or value exits with
+/// [`exit::INVALID_INPUT`] before anything is solved; points that fail to solve are rows
+/// with their reason, and only a sweep in which every point failed exits with
+/// [`exit::SOLVE_FAILED`].
+fn sweep(
+    deck: &Path,
+    overrides: &[String],
+    range: &str,
+    format: Format,
+    output: Option<&Path>,
+) -> ExitCode {
+    use rollbench::verify::sweep;
+    use std::io::IsTerminal;
+    if let Some(out) = output {
+        if same_file(out, deck) {
+            eprintln!(
+                "--output {}: is the deck being read ({}); refusing to overwrite it",
+                out.display(),
+                deck.display()
+            );
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    }
+    let case = match load_case(deck, overrides) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let result = match sweep::run(case.as_ref(), range, std::io::stderr().is_terminal()) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let text = match format {
+        Format::Text => sweep::to_text(&result),
+        Format::Json => {
+            serde_json::to_string_pretty(&sweep::to_json(&result))
+                .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+                + "\n"
+        }
+        Format::Csv => sweep::to_csv(&result),
+    };
+    match output {
+        Some(path) => {
+            if let Err(e) = write_atomic(path, &text).map(drop) {
+                eprintln!("cannot write {}: {e}", path.display());
+                return ExitCode::from(exit::INVALID_INPUT);
+            }
+        }
+        None => print!("{text}"),
+    }
+    let failed = result.failures();
+    if failed > 0 {
+        eprintln!(
+            "sweep: {failed} of {} points failed to solve (their rows give the reason)",
+            result.points.len()
+        );
+    }
+    if failed == result.points.len() {
+        ExitCode::from(exit::SOLVE_FAILED)
+    } else {
+        ExitCode::SUCCESS
     }
 }

@@ -14,11 +14,12 @@ fn validate_passes_and_prints_the_table() {
         .unwrap_or_else(|e| panic!("{e}"));
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{text}");
+    // Two lines a case: "pass  <quantity>", then "<computed> vs <reference> (<source>):
+    // rel. err …, tolerance …"; every line within 100 columns.
     for needle in [
-        "quantity",
-        "reference",
-        "source",
-        "computed",
+        "pass  Stribeck number",
+        " vs ",
+        "rel. err",
         "tolerance",
         "NASA/TM-2012-217115",
         " 0 failed",
@@ -26,6 +27,8 @@ fn validate_passes_and_prints_the_table() {
         assert!(text.contains(needle), "missing {needle:?} in\n{text}");
     }
     assert!(!text.contains("FAIL"), "{text}");
+    let widest = text.lines().map(|l| l.chars().count()).max().unwrap_or(0);
+    assert!(widest <= 100, "{widest} columns wide");
 }
 
 #[test]

@@ -15,6 +15,7 @@
 pub mod angular_ball;
 pub mod error;
 pub mod spherical_roller;
+pub mod tapered_roller;
 pub mod view;
 
 pub use error::SolveError;
@@ -28,8 +29,11 @@ pub const DEFAULT_SYSTEM: &str = "spherical-roller";
 
 /// Every bearing system rollbench knows, in the order `rollbench template --type` and
 /// error messages list them. Adding a system is one line here.
-pub static SYSTEMS: &[&dyn BearingSystem] =
-    &[&spherical_roller::SYSTEM, &angular_ball::system::SYSTEM];
+pub static SYSTEMS: &[&dyn BearingSystem] = &[
+    &spherical_roller::SYSTEM,
+    &angular_ball::system::SYSTEM,
+    &tapered_roller::SYSTEM,
+];
 
 /// What a run is asked to compute beyond the bearing itself.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -1367,7 +1367,16 @@ pub(crate) fn edit<T>(
     };
     match t.get_mut(last) {
         Some(Item::Value(old)) => {
-            *new_value.decor_mut() = old.decor().clone();
+            let mut decor = old.decor().clone();
+            // A comment that shows the old value in other units ("# reyn (= 0.0045 Pa·s)")
+            // would now be wrong: it is cut at its "(=" (the unit before it is kept).
+            if let Some(comment) = decor.suffix().and_then(|r| r.as_str()) {
+                if let Some(at) = comment.find("(=") {
+                    let kept = comment[..at].trim_end().trim_end_matches([';', ',']);
+                    decor.set_suffix(kept.to_string());
+                }
+            }
+            *new_value.decor_mut() = decor;
             *old = new_value;
         }
         Some(other) => *other = Item::Value(new_value),

@@ -728,3 +728,23 @@ fn thermal_errors_have_line_and_column() {
         "{msg}"
     );
 }
+
+/// Saving keeps the comments but not a stale value (issue 15): after an edit,
+/// `viscosity = …   # reyn (= 0.0045 Pa·s)` keeps its unit and drops the old conversion;
+/// comments without a conversion are kept whole.
+#[test]
+fn edited_values_lose_their_stale_conversions() {
+    let mut d = Deck::parse(DEFAULT_DECK, "a.toml").unwrap_or_else(|e| panic!("{e}"));
+    d.set("lubricant.viscosity", "1.3e-6")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let text = d.to_toml_string();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("viscosity"))
+        .unwrap_or_default();
+    assert!(line.starts_with("viscosity = 1.3e-6"), "{line}");
+    assert!(line.ends_with("# reyn"), "{line}");
+    assert!(!text.contains("0.0045 Pa·s"), "stale conversion kept");
+    // An untouched line keeps its conversion.
+    assert!(text.contains("(= 950 kg/m³)"));
+}

@@ -29,7 +29,7 @@ pub fn to_string(view: &View) -> String {
                     (None, _) => String::new(),
                     (Some(v), CsvStyle::Integer) => format!("{}", v.round() as i64),
                     (Some(v), CsvStyle::Plain) => format!("{v}"),
-                    (Some(v), CsvStyle::Scientific) => format!("{v:e}"),
+                    (Some(v), CsvStyle::Scientific) => csv_number(v),
                 },
             )
             .collect();
@@ -37,4 +37,40 @@ pub fn to_string(view: &View) -> String {
         s.push('\n');
     }
     s
+}
+
+/// A physical value for CSV: the shortest decimal that reads back exactly (`308.2205…`,
+/// `0.000127`), in scientific form only outside 10⁻⁴…10¹⁵ (`2.1e-19`), where plain
+/// decimals would be long runs of zeros. Never Rust's `3.082205321440801e2` for 308.2.
+pub fn csv_number(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 || (1e-4..1e15).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+#[cfg(test)]
+mod csv_number_tests {
+    use super::csv_number;
+
+    /// Every form reads back to the same f64 (exact round trip), and the case
+    /// prints plainly.
+    #[test]
+    fn csv_numbers_are_plain_and_exact() {
+        assert_eq!(csv_number(308.2205321440801), "308.2205321440801");
+        assert_eq!(csv_number(0.0), "0");
+        assert_eq!(csv_number(2.1e-19), "2.1e-19");
+        for v in [
+            308.2205321440801,
+            -1.27e-4,
+            2.5e9,
+            6.02e23,
+            -3.3e-12,
+            1.0 / 3.0,
+        ] {
+            assert_eq!(csv_number(v).parse::<f64>(), Ok(v));
+        }
+    }
 }

@@ -168,6 +168,13 @@ pub enum Mode {
     },
     /// Help overlay.
     Help,
+    /// Searching the inputs for a field by label or key (`/`).
+    Search {
+        /// Text typed so far.
+        buffer: String,
+        /// The selection before the search (Esc goes back to it).
+        from: usize,
+    },
     /// The last error, whole, in a popup (`e` reopens it).
     Error,
     /// The solution's warnings (results beyond the model), in a popup (`w`).
@@ -231,6 +238,8 @@ pub struct App {
     pub quit: bool,
     /// Quit once the pending save-as succeeds (quit prompt → save, deck had no file).
     pub quit_after_save: bool,
+    /// First row of the help overlay shown (j/k scroll it when it does not fit).
+    pub help_scroll: usize,
     /// The termination signal that ended the app, if any ([`AppEvent::Signal`]).
     pub signal: Option<i32>,
 }
@@ -274,6 +283,7 @@ impl App {
             error: None,
             quit: false,
             quit_after_save: false,
+            help_scroll: 0,
             signal: None,
         }
     }
@@ -512,7 +522,22 @@ impl App {
     fn on_key(&mut self, key: KeyEvent) -> Vec<Command> {
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
         match self.mode.clone() {
-            Mode::Help | Mode::Error | Mode::Warnings => {
+            Mode::Help => {
+                match key.code {
+                    KeyCode::Char('j') | KeyCode::Down => self.help_scroll += 1,
+                    KeyCode::Char('k') | KeyCode::Up => {
+                        self.help_scroll = self.help_scroll.saturating_sub(1)
+                    }
+                    KeyCode::PageDown => self.help_scroll += PAGE,
+                    KeyCode::PageUp => self.help_scroll = self.help_scroll.saturating_sub(PAGE),
+                    _ => {
+                        self.mode = Mode::Normal;
+                        self.help_scroll = 0;
+                    }
+                }
+                Vec::new()
+            }
+            Mode::Error | Mode::Warnings => {
                 self.mode = Mode::Normal;
                 Vec::new()
             }
@@ -573,6 +598,7 @@ impl App {
                 }
             }
             Mode::Prompt { kind, buffer } => self.on_prompt_key(key, kind, buffer),
+            Mode::Search { buffer, from } => self.on_search_key(key, buffer, from),
             Mode::Editing {
                 buffer,
                 cursor,
@@ -647,6 +673,14 @@ impl App {
             },
             KeyCode::Char('?') => {
                 self.mode = Mode::Help;
+                Vec::new()
+            }
+            KeyCode::Char('/') => {
+                self.focus = Pane::Inputs;
+                self.mode = Mode::Search {
+                    buffer: String::new(),
+                    from: self.input_sel,
+                };
                 Vec::new()
             }
             KeyCode::Char('u') => {
@@ -929,6 +963,51 @@ impl App {
         }
     }
 
+    /// The first field from `start` on (cyclically) whose label or key contains `text`
+    /// (case-insensitive).
+    pub fn find_field(&self, text: &str, start: usize) -> Option<usize> {
+        let t = text.to_lowercase();
+        let n = self.fields.len();
+        (0..n).map(|k| (start + k) % n.max(1)).find(|&i| {
+            self.fields.get(i).is_some_and(|f| {
+                f.label.to_lowercase().contains(&t) || f.key.to_lowercase().contains(&t)
+            })
+        })
+    }
+
+    fn on_search_key(&mut self, key: KeyEvent, mut buffer: String, from: usize) -> Vec<Command> {
+        match key.code {
+            KeyCode::Esc => {
+                self.input_sel = from;
+                self.mode = Mode::Normal;
+                return Vec::new();
+            }
+            KeyCode::Enter => {
+                self.mode = Mode::Normal;
+                return Vec::new();
+            }
+            // Tab: the next match after the one shown.
+            KeyCode::Tab | KeyCode::Down => {
+                if let Some(i) = self.find_field(&buffer, self.input_sel + 1) {
+                    self.input_sel = i;
+                }
+            }
+            KeyCode::Char(ch) if !key.modifiers.contains(KeyModifiers::CONTROL) => {
+                buffer.push(ch);
+                if let Some(i) = self.find_field(&buffer, from) {
+                    self.input_sel = i;
+                }
+            }
+            KeyCode::Backspace => {
+                buffer.pop();
+                self.input_sel = self.find_field(&buffer, from).unwrap_or(from);
+            }
+            _ => {}
+        }
+        self.mode = Mode::Search { buffer, from };
+        Vec::new()
+    }
+
     fn on_prompt_key(
         &mut self,
         key: KeyEvent,
@@ -1003,6 +1082,11 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ),
     ("Enter", "Inputs", "edit field; Enter commits, Esc cancels"),
     (
+        "/",
+        "any",
+        "find an input by name or key (Tab next match, Enter go, Esc back)",
+    ),
+    (
         "Enter",
         "Rollers, Load",
         "open the stepper on the selected roller",
@@ -1031,7 +1115,7 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "any",
         "the solution's warnings: results beyond the model's validity",
     ),
-    ("?", "any", "this help (any key closes)"),
+    ("?", "any", "this help (j/k scroll, any other key closes)"),
     ("Esc", "any", "cancel: an edit, a prompt, a popup"),
     ("q / Ctrl-c", "any", "quit (asks if unsaved)"),
 ];

@@ -38,11 +38,24 @@ pub struct FieldInfo {
     pub group: &'static str,
     /// Short label with the seed's symbol.
     pub label: &'static str,
+    /// One-line explanation (what it is, what 0 means where it means something).
+    pub help: &'static str,
 }
 
 /// Formats a number to 6 significant digits without trailing zeros (the deck's format).
 pub fn fmt_num(v: f64) -> String {
     crate::deck::format_short(v)
+}
+
+/// Significant digits of a number as written (`24.8449406113489` → 15, `1.3e-6` → 2).
+fn significant_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    digits
+        .trim_start_matches('0')
+        .trim_end_matches('0')
+        .len()
+        .max(1)
 }
 
 /// One compact line per error, for the status bar and the inline edit error.
@@ -156,6 +169,7 @@ impl DeckDoc {
                 key: s.key,
                 group: s.group,
                 label: s.label,
+                help: s.help,
             })
             .collect()
     }
@@ -207,9 +221,15 @@ impl DeckDoc {
             FieldKind::Real if display != self.units() => self.converted(spec, display),
             _ => None,
         };
-        converted
-            .or_else(|| self.case.get(key))
-            .unwrap_or_else(|| "—".into())
+        // A value written with conversion noise (a preset's 24.8449406113489, a
+        // converted deck's 6.52669819785941e-7) is offered as the list shows it.
+        let written = self.case.get(key).map(|w| match spec.kind {
+            FieldKind::Real if significant_digits(&w) > 9 => {
+                self.converted(spec, display).unwrap_or(w)
+            }
+            _ => w,
+        });
+        converted.or(written).unwrap_or_else(|| "—".into())
     }
 
     /// The value of `key` for the inputs pane: like [`DeckDoc::value`] but reals are

@@ -64,7 +64,7 @@ impl Widget for &App {
         render_status(self, status, buf);
         render_hints(self, hints, buf);
         match &self.mode {
-            Mode::Help => render_help(area, buf),
+            Mode::Help => render_help(self.help_scroll, area, buf),
             Mode::Error => render_error(
                 " Error · any key closes, e reopens ",
                 self.error.as_deref().unwrap_or(""),
@@ -120,67 +120,82 @@ fn too_small(area: Rect, buf: &mut Buffer) {
 
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let wide = area.width >= 100;
-    let mut spans = Vec::new();
-    if wide {
-        spans.push(Span::styled(
-            " rollbench ",
-            Style::default()
-                .fg(Color::Black)
-                .bg(ACCENT)
-                .add_modifier(Modifier::BOLD),
-        ));
-    }
-    for (i, p) in app.panes().iter().enumerate() {
-        let label = format!(" {}:{} ", i + 1, app.pane_title(*p));
-        let style = if *p == app.focus {
-            Style::default().fg(Color::Black).bg(Color::White)
-        } else if app.visible(*p) {
-            Style::default().fg(Color::White)
-        } else {
-            Style::default().fg(DIM)
-        };
-        spans.push(Span::styled(label, style));
-    }
-    Line::from(spans).render(area, buf);
     let file = app
         .path
         .as_ref()
         .and_then(|p| p.file_name())
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "(no file)".into());
-    let used = if wide { 11 + 50 } else { 50 };
-    // Most to least informative; the first that fits is drawn (the system and the deck
-    // name are dropped before the file name, the unsaved mark and the units).
-    let details: Vec<String> = if wide {
-        vec![
-            format!(" · {} · {}", app.deck.name(), app.deck.system_id()),
-            format!(" · {}", app.deck.name()),
-            String::new(),
-        ]
-    } else {
-        vec![String::new()]
-    };
-    for detail in details {
-        let mut right = vec![Span::raw(file.clone())];
+    // The right side, most to least informative: the first that fits with the full tab
+    // labels is drawn; else the tabs shrink to numbers (the focused one keeps its title)
+    // so the file, the unsaved mark and the units always show.
+    let right = |detail: String| {
+        let mut r = vec![Span::raw(file.clone())];
         if app.unsaved() {
-            right.push(Span::styled(" [+]", Style::default().fg(Color::Yellow)));
+            r.push(Span::styled(" [+]", Style::default().fg(Color::Yellow)));
         }
-        right.push(Span::raw(detail));
-        right.push(Span::styled(
+        r.push(Span::raw(detail));
+        r.push(Span::styled(
             format!(" {} ", deck_io::units_label(app.display_units)),
             Style::default().fg(Color::Black).bg(Color::Gray),
         ));
-        let line = Line::from(right);
-        let w = (line.width() as u16).min(area.width);
-        if area.width > used + w {
-            let r = Rect {
-                x: area.x + area.width - w,
-                width: w,
-                ..area
-            };
-            line.render(r, buf);
-            return;
+        Line::from(r)
+    };
+    let tabs = |compact: bool| {
+        let mut spans = Vec::new();
+        if wide && !compact {
+            spans.push(Span::styled(
+                " rollbench ",
+                Style::default()
+                    .fg(Color::Black)
+                    .bg(ACCENT)
+                    .add_modifier(Modifier::BOLD),
+            ));
         }
+        for (i, p) in app.panes().iter().enumerate() {
+            let label = if compact && *p != app.focus {
+                format!(" {} ", i + 1)
+            } else {
+                format!(" {}:{} ", i + 1, app.pane_title(*p))
+            };
+            let style = if *p == app.focus {
+                Style::default().fg(Color::Black).bg(Color::White)
+            } else if app.visible(*p) {
+                Style::default().fg(Color::White)
+            } else {
+                Style::default().fg(DIM)
+            };
+            spans.push(Span::styled(label, style));
+        }
+        Line::from(spans)
+    };
+    let mut details = Vec::new();
+    if wide {
+        details.push(format!(" · {} · {}", app.deck.name(), app.deck.system_id()));
+        details.push(format!(" · {}", app.deck.name()));
+    }
+    details.push(String::new());
+    let mut choice = None;
+    'outer: for compact in [false, true] {
+        let t = tabs(compact);
+        for d in &details {
+            let r = right(d.clone());
+            if t.width() + 1 + r.width() <= area.width as usize {
+                choice = Some((t, r));
+                break 'outer;
+            }
+        }
+    }
+    let (t, r) = choice.unwrap_or_else(|| (tabs(true), Line::default()));
+    t.render(area, buf);
+    let w = (r.width() as u16).min(area.width);
+    if w > 0 {
+        let rr = Rect {
+            x: area.x + area.width - w,
+            width: w,
+            ..area
+        };
+        r.render(rr, buf);
     }
 }
 
@@ -228,9 +243,24 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
     );
     let inner = block.inner(area);
     block.render(area, buf);
+    // The bottom lines say what the selected field is (its help) or what is searched.
+    let [inner, about] = Layout::vertical([Constraint::Min(0), Constraint::Length(2)]).areas(inner);
     let w = inner.width as usize;
-    let label_w = (w * 9 / 20).clamp(8, 26).max(w.saturating_sub(20).min(22));
     let value_w = 10usize;
+    // Labels as wide as the longest, as far as the values and units leave room.
+    let unit_w = app
+        .fields
+        .iter()
+        .map(|f| app.deck.unit(f.key, app.display_units).chars().count())
+        .max()
+        .unwrap_or(0);
+    let longest = app
+        .fields
+        .iter()
+        .map(|f| f.label.chars().count())
+        .max()
+        .unwrap_or(8);
+    let label_w = longest.min(w.saturating_sub(value_w + unit_w + 3)).max(8);
     let mut lines: Vec<Line> = Vec::new();
     let mut sel_line = 0usize;
     let mut group = "";
@@ -324,6 +354,31 @@ fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
     Paragraph::new(lines)
         .scroll((offset.min(u16::MAX as usize) as u16, 0))
         .render(inner, buf);
+    let text = match &app.mode {
+        Mode::Search { buffer, .. } => {
+            let found = app.find_field(buffer, 0).is_some();
+            format!(
+                "/{buffer}▏ {}",
+                if found || buffer.is_empty() {
+                    "Tab next match · Enter go · Esc back"
+                } else {
+                    "no field matches"
+                }
+            )
+        }
+        _ => app
+            .fields
+            .get(app.input_sel)
+            .map(|f| {
+                let allowed = app.deck.allowed(f.key, app.display_units);
+                format!("{}: {}. Allowed {allowed}.", f.key, f.help)
+            })
+            .unwrap_or_default(),
+    };
+    Paragraph::new(text)
+        .style(Style::default().fg(DIM))
+        .wrap(Wrap { trim: true })
+        .render(about, buf);
 }
 
 fn no_solution_text(app: &App) -> String {
@@ -879,6 +934,10 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             (v(&["answer the prompt"]), Vec::new())
         }
         Mode::Help => (v(&["any key closes help"]), Vec::new()),
+        Mode::Search { .. } => (
+            v(&["type part of a name or key", "Tab next match", "Enter go"]),
+            v(&["Esc back"]),
+        ),
         Mode::Error => (
             v(&["any key closes", "e reopens the last error"]),
             Vec::new(),
@@ -886,7 +945,13 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
-                Pane::Inputs => v(&["jk move", "Enter edit", "^z/^y undo/redo", "^s save"]),
+                Pane::Inputs => v(&[
+                    "jk move",
+                    "Enter edit",
+                    "/ find",
+                    "^z/^y undo/redo",
+                    "^s save",
+                ]),
                 Pane::Elements => vec![format!("jk {el}")],
                 Pane::Chart(_) => {
                     let mut h = vec![format!("jk {el}")];
@@ -978,25 +1043,86 @@ fn render_error(title: &str, text: &str, area: Rect, buf: &mut Buffer) {
         .render(r, buf);
 }
 
-fn render_help(area: Rect, buf: &mut Buffer) {
-    let r = centered(area, 78, KEYS.len() as u16 + 3);
+/// Words of `text` in lines of at most `width` characters (a longer word is cut).
+fn wrap_words(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        let len = line.chars().count();
+        if len > 0 && len + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() || lines.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// The key table: key, where, action (wrapped), scrolled by `scroll` rows when it does
+/// not fit; the title says how to scroll then.
+fn render_help(scroll: usize, area: Rect, buf: &mut Buffer) {
+    let w = area.width.min(80);
+    let (key_w, ctx_w) = (17u16, 13u16);
+    let action_w = w.saturating_sub(key_w + ctx_w + 4).max(10) as usize;
+    let rows: Vec<(Row, u16)> = KEYS
+        .iter()
+        .map(|(k, ctx, what)| {
+            let lines = wrap_words(what, action_w);
+            let h = lines.len() as u16;
+            let row = Row::new(vec![
+                Cell::from(*k).style(Style::default().fg(Color::Yellow)),
+                Cell::from(wrap_words(ctx, ctx_w as usize).join("\n"))
+                    .style(Style::default().fg(DIM)),
+                Cell::from(lines.join("\n")),
+            ])
+            .height(h.max(ctx.chars().count().div_ceil(ctx_w as usize) as u16));
+            (row, h)
+        })
+        .collect();
+    let total: u16 = rows.iter().map(|r| r.1).sum();
+    let h = (total + 3).min(area.height);
+    let fits = total + 3 <= area.height;
+    let scroll = if fits {
+        0
+    } else {
+        scroll.min(rows.len().saturating_sub(1))
+    };
+    let room = h.saturating_sub(3);
+    let mut used = 0u16;
+    let shown = rows
+        .iter()
+        .skip(scroll)
+        .take_while(|r| {
+            used += r.1;
+            used <= room
+        })
+        .count();
+    let title = if fits {
+        " Keys (any key closes) ".to_string()
+    } else {
+        format!(
+            " Keys {}–{} of {} · j/k scroll, any other key closes ",
+            scroll + 1,
+            scroll + shown,
+            rows.len()
+        )
+    };
+    let r = centered(area, w, h);
     Clear.render(r, buf);
     let block = Block::default()
         .borders(Borders::ALL)
         .border_style(Style::default().fg(ACCENT))
-        .title(" Keys (any key closes) ");
-    let rows = KEYS.iter().map(|(k, ctx, what)| {
-        Row::new(vec![
-            Cell::from(*k).style(Style::default().fg(Color::Yellow)),
-            Cell::from(*ctx).style(Style::default().fg(DIM)),
-            Cell::from(*what),
-        ])
-    });
+        .title(title);
     let help = Table::new(
-        rows,
+        rows.into_iter().skip(scroll).map(|r| r.0),
         [
-            Constraint::Length(17),
-            Constraint::Length(13),
+            Constraint::Length(key_w),
+            Constraint::Length(ctx_w),
             Constraint::Min(10),
         ],
     )

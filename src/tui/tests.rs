@@ -1255,3 +1255,105 @@ fn stepper_ends_at_the_solution_shown() {
     assert_eq!(pv.stats.inner_iterations, tv.stats.inner_iterations);
     assert_eq!(pv.tables, tv.tables, "tracing changes no result");
 }
+
+/// `/` finds an input by name or key (issue 15: 27 presses of j to reach the radial load):
+/// typing narrows to the first match, Tab goes to the next, Enter keeps it, Esc goes back.
+#[test]
+fn slash_finds_a_field_by_name() {
+    let mut app = solved_app(Pane::Elements, 80, 24);
+    let start = app.input_sel;
+    app.handle(ch('/'));
+    assert_eq!(app.focus, Pane::Inputs);
+    for c in "radial load".chars() {
+        app.handle(ch(c));
+    }
+    let radial = field_index(&app, "operating.radial_load");
+    assert_eq!(app.input_sel, radial);
+    app.handle(key(KeyCode::Enter));
+    assert_eq!(app.mode, Mode::Normal);
+    assert_eq!(app.input_sel, radial);
+    // Esc goes back to where the search began; Tab walks the matches.
+    app.handle(ch('/'));
+    for c in "modulus".chars() {
+        app.handle(ch(c));
+    }
+    let first = app.input_sel;
+    assert!(
+        app.fields[first].label.contains("modulus"),
+        "{:?}",
+        app.fields[first]
+    );
+    app.handle(key(KeyCode::Tab));
+    assert!(app.input_sel != first && app.fields[app.input_sel].label.contains("modulus"));
+    app.handle(key(KeyCode::Esc));
+    assert_eq!(app.input_sel, radial);
+    assert_ne!(radial, start);
+}
+
+/// The help overlay scrolls when it does not fit (issue 15: cut at 60×20): every key is
+/// reachable with j, and the title says which rows are shown.
+#[test]
+fn help_scrolls_to_every_key() {
+    let mut app = solved_app(Pane::Inputs, 60, 20);
+    app.handle(ch('?'));
+    let mut seen = String::new();
+    for _ in 0..KEYS.len() {
+        seen.push_str(&draw(&app, 60, 20).backend().to_string());
+        app.handle(ch('j'));
+    }
+    assert_eq!(app.mode, Mode::Help, "j scrolls, it does not close");
+    for (k, _, _) in KEYS {
+        assert!(seen.contains(k), "{k} never shown");
+    }
+    app.handle(ch('x'));
+    assert_eq!(app.mode, Mode::Normal);
+}
+
+/// The screens in README.md and docs/workbench.md are the snapshot tests' frames: each
+/// `<!-- screen: NAME -->` marker is followed by a code block holding snapshot NAME's
+/// lines exactly. ROLLBENCH_UPDATE_DOCS=1 rewrites the blocks from the snapshots.
+#[test]
+fn tui_docs_screens_are_the_snapshots() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    for doc in ["README.md", "docs/workbench.md"] {
+        let path = format!("{root}/{doc}");
+        let text = std::fs::read_to_string(&path).expect("doc");
+        let mut out = String::new();
+        let mut rest = text.as_str();
+        let mut found = 0;
+        while let Some(at) = rest.find("<!-- screen: ") {
+            let (before, from) = rest.split_at(at);
+            out.push_str(before);
+            let name_end = from.find(" -->").expect("marker end");
+            let name = &from["<!-- screen: ".len()..name_end];
+            let snap_path = format!("{root}/src/tui/snapshots/rollbench__tui__tests__{name}.snap");
+            let snap = std::fs::read_to_string(&snap_path)
+                .unwrap_or_else(|e| panic!("{doc}: {name}: {e}"));
+            // The frame: the snapshot's quoted lines, unquoted, trailing blanks cut.
+            let frame: String = snap
+                .lines()
+                .filter(|l| l.starts_with('"') && l.ends_with('"') && l.len() >= 2)
+                .map(|l| format!("{}\n", l[1..l.len() - 1].trim_end()))
+                .collect();
+            let block_start = from.find("```\n").expect("a code block after the marker");
+            let body_start = block_start + 4;
+            let body_len = from[body_start..].find("```").expect("block end");
+            let current = &from[body_start..body_start + body_len];
+            if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_none() {
+                assert_eq!(
+                    current, frame,
+                    "{doc}: screen {name} differs from its snapshot"
+                );
+            }
+            out.push_str(&from[..body_start]);
+            out.push_str(&frame);
+            rest = &from[body_start + body_len..];
+            found += 1;
+        }
+        out.push_str(rest);
+        assert!(found > 0, "{doc} has no screen markers");
+        if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_some() {
+            std::fs::write(&path, out).expect("write doc");
+        }
+    }
+}

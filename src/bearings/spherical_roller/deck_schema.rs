@@ -461,18 +461,87 @@ pub static SCHEMA: Schema<Bearing> = Schema {
 };
 
 /// The template's name and its comment lines beyond the fields'.
+/// The template's `[thermal]` section: a small working network, commented out (remove
+/// the leading `# ` of its lines to use it; `decks/aerospace.toml` has an 18-node one).
+/// Every heat source of the bearing (`inner_contacts`, `outer_contacts`, `rollers`,
+/// `cage_rails`, `viscous_drag`) must go to a node. A test uncomments it and builds it.
+pub const THERMAL_NOTE: &str =
+    "[thermal]  # optional: a lumped thermal network (seed 000 §10), steady state and
+# loss-of-oil transient. A small working example follows; uncomment it to use it.
+# [thermal]
+# units = \"si\"    # °C, J/K, W/K, m, m², kg/s, whatever the deck's units
+#
+# [[thermal.nodes]]
+# name = \"rings_and_rollers\"
+# capacity = 900.0            # J/K
+# limit = 230.0               # °C: the transient reports when it is reached
+# heat = [\"inner_contacts\", \"outer_contacts\", \"rollers\", \"cage_rails\"]
+#
+# [[thermal.nodes]]
+# name = \"oil_in\"
+# role = \"oil\"
+# fixed_temperature = 80.0    # °C
+#
+# [[thermal.nodes]]
+# name = \"oil_cavity\"
+# role = \"oil\"
+# capacity = 100.0
+# air_capacity = 5.0          # J/K once the oil is lost
+# heat = [\"viscous_drag\"]
+#
+# [[thermal.links]]
+# from = \"oil_in\"
+# to = \"oil_cavity\"
+# kind = \"mass_transport\"
+# mass_flow = 0.05            # kg/s
+# specific_heat = 2000.0      # J/(kg·K)
+#
+# [[thermal.links]]
+# from = \"oil_cavity\"
+# to = \"rings_and_rollers\"
+# kind = \"convection\"
+# h = 2500.0                  # W/(m²·K)
+# area = 0.02                 # m²
+# h_loss_of_oil = 60.0
+#
+# [thermal.transient]
+# duration = 600.0            # s
+# step = 1.0
+# integrator = \"implicit\"
+# scenario = \"loss_of_oil\"
+# oil_node = \"oil_cavity\"";
+
 pub const TEMPLATE_NOTES: TemplateNotes = TemplateNotes {
     name: "template (aerospace example bearing)",
     group_notes: &[("solver", "Optional table: numerical settings.")],
-    opaque_notes: &[(
-        "thermal",
-        "[thermal]  # optional: lumped thermal network, interpreted by the thermal module",
-    )],
+    opaque_notes: &[("thermal", THERMAL_NOTE)],
 };
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The template's commented `[thermal]` example works: uncommented, the deck reads and
+    /// its network builds (issue 15: the template's thermal section was a stub).
+    #[test]
+    fn template_thermal_example_is_a_working_network() {
+        let t = crate::deck::template(crate::units::Units::Si);
+        let start = t.find("# [thermal]\n").expect("the example");
+        let (head, tail) = t.split_at(start);
+        let example: String = tail
+            .lines()
+            .map(|l| {
+                l.strip_prefix("# ")
+                    .or_else(|| l.strip_prefix('#'))
+                    .unwrap_or(l)
+            })
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let deck = crate::deck::Deck::parse(&format!("{head}{example}"), "t.toml")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let model = deck.thermal_model().unwrap_or_else(|e| panic!("{e}"));
+        assert!(model.is_some());
+    }
 
     #[test]
     fn required_groups_are_all_but_solver_and_thermal() {

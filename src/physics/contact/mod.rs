@@ -6,6 +6,7 @@
 pub mod elliptic;
 pub mod lamina_law;
 pub mod line;
+pub mod lundberg;
 pub mod point;
 pub mod subsurface;
 mod subsurface_table;

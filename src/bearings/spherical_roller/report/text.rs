@@ -38,7 +38,10 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         a.speeds.controlling_rollers,
         a.speeds.cage_rpm_estimate,
         100.0 * a.speeds.cage_difference,
-        b.solver.dynamic_loads,
+        match b.solver.dynamic_loads {
+            super::super::DynamicLoads::Iterated => "iterated (§7)",
+            super::super::DynamicLoads::Estimate => "App. C estimated",
+        },
         a.speeds.iterations
     );
     let _ = rpm;
@@ -152,8 +155,11 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         let _ = writeln!(s);
         let _ = writeln!(
             s,
-            "FATIGUE LIFE (§6, {:?} lubrication factor)",
-            b.life.method
+            "FATIGUE LIFE (§6, {} lubrication factor)",
+            match b.life.method {
+                super::super::LifeMethod::Asme => "ASME",
+                super::super::LifeMethod::Iso281 => "ISO 281",
+            }
         );
         let _ = writeln!(s, "  capacity inner {:.1} {f}, outer {:.1} {f}; mean load inner {:.1} {f}, outer {:.1} {f}", r.capacity_inner_n * d.force.0, r.capacity_outer_n * d.force.0, r.mean_load_inner_n * d.force.0, r.mean_load_outer_n * d.force.0, f = d.force.1);
         let _ = writeln!(

@@ -1,0 +1,66 @@
+//! Criterion benchmarks of the tapered roller system (issue 17): one load case
+//! (equilibrium + analytic 5×5 stiffness) of the seed's sample at 21 and 41 slices, under
+//! Load Condition 1 (pure thrust: one distinct roller) and 2 (700 lbf radial: 19 distinct
+//! rollers), 20 000 rpm; and the finite-difference check of one case.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::bearings::tapered_roller::bearing::Bearing;
+use rollbench::bearings::tapered_roller::input::TaperedInput;
+use rollbench::units::LBF_N;
+
+fn case(slices: usize, radial_lbf: f64) -> TaperedInput {
+    let mut s = TaperedInput::afapl_sample();
+    s.solver.slices = slices;
+    s.operating.radial_load_n = radial_lbf * LBF_N;
+    s
+}
+
+fn load_case(c: &mut Criterion) {
+    for (name, radial) in [("lc1", 0.0), ("lc2", 700.0)] {
+        for slices in [21, 41] {
+            let input = case(slices, radial);
+            c.bench_function(&format!("tapered_{name}_{slices}_slices"), |b| {
+                b.iter(|| {
+                    let bearing = Bearing::new(std::hint::black_box(&input))
+                        .unwrap_or_else(|e| panic!("{e}"));
+                    bearing.solve().unwrap_or_else(|e| panic!("{e}"))
+                })
+            });
+        }
+    }
+    let input = case(21, 700.0);
+    let bearing = Bearing::new(&input).unwrap_or_else(|e| panic!("{e}"));
+    let sol = bearing.solve().unwrap_or_else(|e| panic!("{e}"));
+    c.bench_function("tapered_lc2_21_slices_finite_difference", |b| {
+        b.iter(|| bearing.stiffness_fd(std::hint::black_box(&sol)))
+    });
+}
+
+/// A 21-point speed sweep (0–20 000 rpm, Load Condition 2, 21 slices), each point
+/// warm-started from the previous one.
+fn speed_sweep(c: &mut Criterion) {
+    let inputs: Vec<TaperedInput> = (0..21)
+        .map(|i| {
+            let mut s = case(21, 700.0);
+            s.operating.inner_speed_rad_s = 1000.0 * i as f64 * std::f64::consts::PI / 30.0;
+            s
+        })
+        .collect();
+    c.bench_function("tapered_lc2_sweep_21_points_warm", |b| {
+        b.iter(|| {
+            let mut prev = None;
+            for s in &inputs {
+                let bearing = Bearing::new(s).unwrap_or_else(|e| panic!("{e}"));
+                prev = Some(
+                    bearing
+                        .solve_from(prev.as_ref())
+                        .unwrap_or_else(|e| panic!("{e}")),
+                );
+            }
+            prev
+        })
+    });
+}
+
+criterion_group!(benches, load_case, speed_sweep);
+criterion_main!(benches);

@@ -1,0 +1,103 @@
+//! One solved tapered roller case: the equilibrium, the stiffness as the deck asks for
+//! it, and each roller's slices at the solution.
+
+use super::bearing::{asymmetry, fd_difference, Bearing, BearingError, BearingSolution, Matrix5};
+use super::contact::SliceResult;
+use super::input::{StiffnessMethod, TaperedInput};
+
+/// Stiffness rows and columns (x, y, z, θx, θy).
+pub const AXES: [&str; 5] = ["x", "y", "z", "theta_x", "theta_y"];
+
+/// A solved case, SI.
+#[derive(Debug, Clone)]
+pub struct Analysis {
+    /// The deck's name.
+    pub name: String,
+    /// The prepared bearing (input, geometry, speeds).
+    pub bearing: Bearing,
+    /// The equilibrium.
+    pub solution: BearingSolution,
+    /// The reported stiffness (analytic, or by differences when the deck asks only for
+    /// those).
+    pub stiffness: Matrix5,
+    /// The stiffness by differences of re-solved equilibria, when computed.
+    pub stiffness_fd: Option<Matrix5>,
+    /// Per roller, the cup and cone slices at the solution.
+    pub slices: Vec<[Vec<SliceResult>; 2]>,
+    /// Wall time of the solve, s.
+    pub wall_time_s: f64,
+}
+
+impl Analysis {
+    /// Largest asymmetry |K_ij − K_ji| of the reported matrix, scaled (see
+    /// [`super::bearing::asymmetry`]).
+    pub fn asymmetry_max(&self) -> f64 {
+        asymmetry(&self.stiffness, self.bearing.geometry.moment_radius_m)
+    }
+
+    /// The load centre's axial offset from the reference point, m: the a that removes
+    /// the lineal–angular coupling, a = (K_xθy + K_yθx)/(K_xx + K_yy), in the seed's sign
+    /// convention for θ (eq. 40: θy adds R_m·θy·cos φ to the roller approach where δx adds
+    /// cos β·δx·cos φ). Were the cup loads alone to act, a would be R_m/cos β, where the
+    /// cup's contact normals cross the bearing axis; the contact moments move it a little.
+    /// `None` without lateral stiffness.
+    pub fn load_centre_offset_m(&self) -> Option<f64> {
+        let k = &self.stiffness;
+        let den = k[(0, 0)] + k[(1, 1)];
+        (den > 0.0).then(|| (k[(0, 4)] + k[(1, 3)]) / den)
+    }
+
+    /// The stiffness referred to the load centre: K′ = TᵀKT with δx_O = δx_C − a·θy and
+    /// δy_O = δy_C − a·θx (T = I but T₀₄ = T₁₃ = −a), the change of reference point of a
+    /// rigid ring's small motion; K′_xθy = K_xθy − a·K_xx vanishes by the choice of a.
+    pub fn stiffness_at_load_centre(&self) -> Option<Matrix5> {
+        let a = self.load_centre_offset_m()?;
+        let mut t = Matrix5::identity();
+        t[(0, 4)] = -a;
+        t[(1, 3)] = -a;
+        Some(t.transpose() * self.stiffness * t)
+    }
+
+    /// Largest analytic–difference gap over each row's scale, when both exist.
+    pub fn finite_difference_max_rel(&self) -> Option<f64> {
+        self.stiffness_fd.map(|fd| {
+            fd_difference(
+                &self.solution.stiffness,
+                &fd,
+                self.bearing.geometry.moment_radius_m,
+            )
+        })
+    }
+}
+
+/// Solve `input` (named `name`).
+pub fn analyse(input: &TaperedInput, name: &str) -> Result<Analysis, BearingError> {
+    let t0 = std::time::Instant::now();
+    let bearing = Bearing::new(input)?;
+    let solution = bearing.solve()?;
+    let stiffness_fd = match input.solver.stiffness {
+        StiffnessMethod::Analytic => None,
+        _ => Some(bearing.stiffness_fd(&solution)?),
+    };
+    let stiffness = match (input.solver.stiffness, stiffness_fd) {
+        (StiffnessMethod::FiniteDifference, Some(fd)) => fd,
+        _ => solution.stiffness,
+    };
+    let m = &bearing.model;
+    let mut slices = Vec::with_capacity(solution.rollers.len());
+    for (r, _, _) in &solution.rollers {
+        let (mut cup, mut cone) = (Vec::new(), Vec::new());
+        m.cup.eval(r.delta1_m, r.theta1_rad, Some(&mut cup))?;
+        m.cone.eval(r.delta2_m, r.theta2_rad, Some(&mut cone))?;
+        slices.push([cup, cone]);
+    }
+    Ok(Analysis {
+        name: name.to_string(),
+        bearing,
+        solution,
+        stiffness,
+        stiffness_fd,
+        slices,
+        wall_time_s: t0.elapsed().as_secs_f64(),
+    })
+}

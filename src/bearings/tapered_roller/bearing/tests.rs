@@ -1,0 +1,406 @@
+//! Tests of the bearing equilibrium and stiffness against the closed forms,
+//! symmetry and re-solved finite differences.
+
+use super::*;
+use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
+
+fn sample(rpm: f64, radial_lbf: f64) -> TaperedInput {
+    let mut s = TaperedInput::afapl_sample();
+    s.operating.inner_speed_rad_s = rpm * RPM_RAD_S;
+    s.operating.radial_load_n = radial_lbf * LBF_N;
+    s
+}
+
+fn solve(s: &TaperedInput) -> (Bearing, BearingSolution) {
+    let b = Bearing::new(s).unwrap();
+    let sol = b.solve().unwrap();
+    (b, sol)
+}
+
+/// Pure thrust (Load Condition 1): P₁ = F_a/(n sin β) = 320.23 lbf and the force-balance
+/// closed forms for P₂ and P₃ to 1e-6 (the equilibrium is solved to 1e-9 of the load);
+/// P₃ = 8.94 lbf at rest and 26.49 lbf at 20 000 rpm (issue's values, given to 3–4
+/// digits: 6e-4); the speed part of P₃ grows as the cage speed squared (1e-6).
+#[test]
+fn pure_thrust_closed_forms() {
+    let mut p3 = Vec::new();
+    let mut cage = Vec::new();
+    for rpm in [0.0, 10_000.0, 20_000.0] {
+        let (b, sol) = solve(&sample(rpm, 0.0));
+        let g = &b.input.geometry;
+        let (beta, t, a, psi) = (
+            g.cup_angle_rad,
+            b.geometry.half_cone_rad,
+            b.geometry.flange_angle_rad,
+            b.geometry.axis_angle_rad,
+        );
+        let fc = b.dynamics.centrifugal_force_n;
+        let p1 = b.input.operating.axial_load_n / (g.roller_count as f64 * beta.sin());
+        assert!((p1 / LBF_N / 320.23 - 1.0).abs() < 2e-5, "{}", p1 / LBF_N);
+        let p2 = (p1 * (a + t).cos() - fc * (psi - a).cos()) / (a - t).cos();
+        let p3q = (p1 * (2.0 * t).sin() + fc * (beta - 2.0 * t).sin()) / (a - t).cos();
+        for (r, _, _) in &sol.rollers {
+            assert_eq!(r.state, RollerState::BothRaces);
+            assert!(
+                (r.cup.load_n / p1 - 1.0).abs() < 1e-6,
+                "{} {p1}",
+                r.cup.load_n
+            );
+            assert!((r.cone.load_n / p2 - 1.0).abs() < 1e-6);
+            assert!((r.flange_n / p3q - 1.0).abs() < 1e-6);
+        }
+        p3.push(sol.rollers[0].0.flange_n / LBF_N);
+        cage.push(b.dynamics.cage_rad_s);
+        // No radial displacement, no reaction moment (1e-9 of the scale).
+        assert!(sol.displacement_m[0].abs() < 1e-9 * sol.displacement_m[2]);
+        assert!(sol.reaction[3].abs() < 1e-9 * p1 * b.geometry.moment_radius_m);
+    }
+    assert!((p3[0] / 8.94 - 1.0).abs() < 6e-4, "{}", p3[0]);
+    assert!((p3[2] / 26.49 - 1.0).abs() < 6e-4, "{}", p3[2]);
+    let ratio = (p3[2] - p3[0]) / (p3[1] - p3[0]);
+    assert!(
+        (ratio / (cage[2] / cage[1]).powi(2) - 1.0).abs() < 1e-6,
+        "{ratio}"
+    );
+}
+
+/// Symmetry under pure thrust: all rollers equal (1e-9), K_xx = K_yy and K_θxθx = K_θyθy
+/// (1e-9), no x–y, x–z, y–z coupling (1e-9 of K_zz), and K_xx/K_zz = cot²β/2 = 7.299
+/// exactly in the analytic matrix (1e-9; 7.299 to its 4 digits).
+#[test]
+fn pure_thrust_stiffness_symmetry() {
+    for rpm in [0.0, 20_000.0] {
+        let (b, sol) = solve(&sample(rpm, 0.0));
+        let p0 = sol.rollers[0].0.cup.load_n;
+        for (r, _, _) in &sol.rollers {
+            assert!((r.cup.load_n - p0).abs() < 1e-9 * p0);
+        }
+        let k = &sol.stiffness;
+        let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+        assert!(rel(k[(0, 0)], k[(1, 1)]) < 1e-9);
+        assert!(rel(k[(3, 3)], k[(4, 4)]) < 1e-9);
+        for (i, j) in [(0, 1), (1, 0), (0, 2), (2, 0), (1, 2), (2, 1)] {
+            assert!(
+                k[(i, j)].abs() < 1e-9 * k[(2, 2)],
+                "K[{i}{j}] = {}",
+                k[(i, j)]
+            );
+        }
+        let beta = b.input.geometry.cup_angle_rad;
+        let cot2 = 1.0 / beta.tan().powi(2) / 2.0;
+        assert!(rel(k[(0, 0)] / k[(2, 2)], cot2) < 1e-9);
+        assert!((cot2 - 7.299).abs() < 5e-4);
+        assert!(k[(2, 2)] > 0.0 && k[(3, 3)] > 0.0);
+    }
+}
+
+/// Analytic stiffness against central differences of re-solved roller equilibria: 1e-5 of
+/// each scaled row's largest entry, at rest and at speed, pure thrust and Load
+/// Condition 2 (700 lbf radial), with and without misalignment.
+#[test]
+fn analytic_stiffness_matches_finite_differences() {
+    for (rpm, radial, mis) in [
+        (0.0, 0.0, 0.0),
+        (20_000.0, 0.0, 0.0),
+        (0.0, 700.0, 0.0),
+        (20_000.0, 700.0, 0.0),
+        (20_000.0, 700.0, 2e-4),
+    ] {
+        let mut s = sample(rpm, radial);
+        s.operating.misalignment_rad = [0.3 * mis, mis];
+        let (b, sol) = solve(&s);
+        let fd = b.stiffness_fd(&sol).unwrap();
+        let diff = fd_difference(&sol.stiffness, &fd, b.geometry.moment_radius_m);
+        assert!(
+            diff < 1e-5,
+            "{rpm} rpm {radial} lbf {mis}: {diff}\n{}\n{fd}",
+            sol.stiffness
+        );
+    }
+}
+
+/// Load Condition 2 (700 lbf radial): the pure-thrust equalities break as they should
+/// (far beyond the 1e-9 they hold to under pure thrust),
+/// the equilibrium balances the loads (1e-9), and the asymmetry |K_ij − K_ji| stays a
+/// small fraction (the seed's kinematics are not exactly variational).
+#[test]
+fn radial_load_breaks_the_symmetry() {
+    let (b, sol) = solve(&sample(20_000.0, 700.0));
+    let k = &sol.stiffness;
+    // Measured: K_xx/K_yy − 1 = −6.0e-4 and K_xz/K_zz = 0.091 (zero under pure thrust).
+    assert!((k[(0, 0)] / k[(1, 1)] - 1.0).abs() > 1e-4);
+    assert!(k[(0, 2)].abs() > 1e-2 * k[(2, 2)]);
+    let op = &b.input.operating;
+    assert!((sol.reaction[0] - op.radial_load_n).abs() < 1e-9 * op.axial_load_n);
+    assert!((sol.reaction[2] - op.axial_load_n).abs() < 1e-9 * op.axial_load_n);
+    assert!(sol.reaction[1].abs() < 1e-9 * op.axial_load_n);
+    let asym = asymmetry(k, b.geometry.moment_radius_m);
+    assert!(asym < 0.05, "{asym}");
+    // The loaded side carries more.
+    assert!(sol.rollers[0].0.cup.load_n > sol.rollers[18].0.cup.load_n);
+}
+
+/// Typed errors: a non-positive thrust unseats; a radial load beyond F_a·cot β cannot be
+/// carried; at 50 000 rpm the flanges carry more than the 3 000 lbf; a 0.002 in
+/// effective length leaves Lundberg's validity (L/(2b) ≤ 0.25) and the error names the
+/// roller.
+#[test]
+fn typed_errors() {
+    let mut s = sample(0.0, 0.0);
+    s.operating.axial_load_n = -100.0;
+    assert!(matches!(
+        Bearing::new(&s).unwrap().solve(),
+        Err(BearingError::Unseated { .. })
+    ));
+    let s = sample(
+        0.0,
+        3000.0 / (14.0 + 40.0 / 60.0f64).to_radians().tan() * 1.01,
+    );
+    assert!(matches!(
+        Bearing::new(&s).unwrap().solve(),
+        Err(BearingError::RadialExceedsThrust { .. })
+    ));
+    let s = sample(50_000.0, 0.0);
+    let e = Bearing::new(&s).unwrap().solve();
+    assert!(
+        matches!(e, Err(BearingError::FlangeThrustExceedsLoad { .. })),
+        "{e:?}"
+    );
+    let mut s = sample(0.0, 0.0);
+    s.geometry.effective_length_m = 0.002 * INCH_M;
+    let e = Bearing::new(&s).unwrap().solve();
+    match e {
+        Err(BearingError::Roller {
+            index,
+            source: RollerError::Contact(c),
+            ..
+        }) => {
+            assert!(index >= 1);
+            assert!(matches!(
+                c.source,
+                crate::physics::contact::lundberg::LundbergError::BeyondValidity { .. }
+            ));
+            let msg = BearingError::Roller {
+                index,
+                azimuth_deg: 0.0,
+                source: RollerError::Contact(c),
+            }
+            .to_string();
+            assert!(msg.contains("roller") && msg.contains("0.25"), "{msg}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// Symmetry is used: pure thrust solves one roller, a radial load along x the mirror
+/// pairs (n = 37: 19 distinct).
+#[test]
+fn symmetric_rollers_are_solved_once() {
+    let (_, sol) = solve(&sample(20_000.0, 0.0));
+    assert_eq!(sol.unique_rollers, 1);
+    let (_, sol) = solve(&sample(20_000.0, 700.0));
+    assert_eq!(sol.unique_rollers, 19);
+}
+
+/// The load centre: referred to it, the pure-thrust lineal–angular coupling x–θy and
+/// y–θx vanishes (1e-9 of the scale) and K_xx is unchanged; the offset lies within 1 % of
+/// R_m/cos β, where the cup's contact normals cross the axis (the contact moments' share
+/// of the angular stiffness moves it by 0.7 % for the sample).
+#[test]
+fn load_centre_removes_the_coupling() {
+    let s = sample(20_000.0, 0.0);
+    let a = crate::bearings::tapered_roller::analysis::analyse(&s, "t").unwrap();
+    let off = a.load_centre_offset_m().unwrap();
+    let kc = a.stiffness_at_load_centre().unwrap();
+    let k = &a.stiffness;
+    let rm = a.bearing.geometry.moment_radius_m;
+    assert!(kc[(0, 4)].abs() < 1e-9 * k[(0, 4)].abs());
+    assert!(kc[(1, 3)].abs() < 1e-9 * k[(1, 3)].abs());
+    assert_eq!(kc[(0, 0)], k[(0, 0)]);
+    let cb = s.geometry.cup_angle_rad.cos();
+    assert!(
+        (off / (rm / cb) - 1.0).abs() < 0.01,
+        "{} vs {}",
+        off / INCH_M,
+        rm / cb / INCH_M
+    );
+}
+
+/// Slice convergence: at 21 slices δz, K_xx, K_zz and K_θxθx lie within 1e-3 of their
+/// 161-slice values (measured 6.0e-4, the moving grid converging as h²), under Load
+/// Conditions 1 and 2 at 20 000 rpm.
+#[test]
+fn twenty_one_slices_within_1e3_of_161() {
+    for radial in [0.0, 700.0] {
+        let at = |n: usize| {
+            let mut s = sample(20_000.0, radial);
+            s.solver.slices = n;
+            let (_, sol) = solve(&s);
+            let k = sol.stiffness;
+            [sol.displacement_m[2], k[(0, 0)], k[(2, 2)], k[(3, 3)]]
+        };
+        let (a, b) = (at(21), at(161));
+        for i in 0..4 {
+            assert!(
+                (a[i] / b[i] - 1.0).abs() < 1e-3,
+                "{radial} lbf, item {i}: {} vs {}",
+                a[i],
+                b[i]
+            );
+        }
+    }
+}
+
+/// A 0–50 000 rpm sweep under Load Conditions 1 and 2: the stiffness falls smoothly
+/// and monotonically with speed (every step down, K_xx concave in speed), no NaN, and
+/// where no
+/// equilibrium exists (the flanges' centrifugal thrust leaves too little for the loads:
+/// above ≈ 39 000 rpm with 700 lbf radial, ≈ 41 200 rpm with pure thrust) a typed error,
+/// never a panic. Pure thrust just below 41 200 rpm keeps every roller on the cone with
+/// P₂ → 0 (the switch point).
+#[test]
+fn speed_sweep_is_smooth_and_ends_in_a_typed_error() {
+    for radial in [0.0, 700.0] {
+        let mut kxx = Vec::new();
+        let mut failed_from = None;
+        for i in 0..=50 {
+            let rpm = 1000.0 * i as f64;
+            match Bearing::new(&sample(rpm, radial)).unwrap().solve() {
+                Ok(sol) => {
+                    assert!(failed_from.is_none(), "{radial}: solved again at {rpm} rpm");
+                    let k = sol.stiffness;
+                    assert!(k.iter().all(|v| v.is_finite()));
+                    kxx.push(k[(0, 0)]);
+                }
+                Err(e) => {
+                    assert!(
+                        matches!(
+                            e,
+                            BearingError::FlangeThrustExceedsLoad { .. }
+                                | BearingError::RadialExceedsThrust { .. }
+                        ),
+                        "{radial} lbf at {rpm} rpm: {e}"
+                    );
+                    failed_from.get_or_insert(rpm);
+                }
+            }
+        }
+        let last = failed_from.unwrap_or(f64::INFINITY);
+        if radial == 0.0 {
+            assert_eq!(last, 42_000.0);
+        } else {
+            assert!((38_000.0..=41_000.0).contains(&last), "{last}");
+        }
+        for w in kxx.windows(2) {
+            assert!(w[1] < w[0]);
+        }
+        // Smooth: K_xx is concave in speed all the way (each 1 000 rpm step falls
+        // further than the one before; slice noise would break this at once, as the
+        // fixed grid did).
+        for w in kxx.windows(3) {
+            assert!(w[2] - 2.0 * w[1] + w[0] < 0.0, "{radial}: {w:?}");
+        }
+    }
+    // Just below the switch: every roller on the cone, P₂ small.
+    let (b, sol) = solve(&sample(41_100.0, 0.0));
+    let r = &sol.rollers[0].0;
+    assert_eq!(r.state, RollerState::BothRaces);
+    assert!(r.cone.load_n < 0.01 * r.cup.load_n, "{}", r.cone.load_n);
+    assert!(b.dynamics.centrifugal_force_n > 0.0);
+}
+
+mod property {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::Config;
+
+    prop_compose! {
+        fn case()(
+            n in 12usize..40,
+            d_in in 0.2f64..0.5,
+            e_ratio in 10.0f64..25.0,
+            beta_deg in 10.0f64..25.0,
+            le_ratio in 1.5f64..2.5,
+            crown_in in 20.0f64..200.0,
+            fa_lbf in 500.0f64..5000.0,
+            fr_frac in 0.0f64..0.6,
+            rpm in 0.0f64..20_000.0,
+            mis in -3e-4f64..3e-4,
+        ) -> TaperedInput {
+            let mut s = TaperedInput::afapl_sample();
+            let g = &mut s.geometry;
+            g.roller_count = n;
+            g.roller_diameter_m = d_in * INCH_M;
+            g.pitch_diameter_m = e_ratio * d_in * INCH_M;
+            g.cup_angle_rad = beta_deg.to_radians();
+            g.effective_length_m = le_ratio * d_in * INCH_M;
+            g.crown = crate::bearings::tapered_roller::input::Crown::Radius(crown_in * INCH_M);
+            // Fully crowned: with a flat and misalignment, a contact whose end sits at the
+            // flat/crown junction has a kink in its extent (the line's root −Δ/tan θ takes
+            // over from the crown's, eq. 54) where differences are no derivative. Flats are
+            // covered by the contact's own derivative test away from the junction.
+            g.flat_length_m = 0.0;
+            g.small_end_break_m = 0.05 * d_in * INCH_M;
+            g.big_end_break_m = 0.1 * d_in * INCH_M;
+            let op = &mut s.operating;
+            op.axial_load_n = fa_lbf * LBF_N;
+            op.radial_load_n = fr_frac * fa_lbf * LBF_N / beta_deg.to_radians().tan();
+            op.inner_speed_rad_s = rpm * RPM_RAD_S;
+            op.misalignment_rad = [0.0, mis];
+            s
+        }
+    }
+
+    proptest! {
+        #![proptest_config(Config { cases: 24, ..Config::default() })]
+
+        /// Over random geometry, load, speed and misalignment: a converged equilibrium
+        /// (forces balanced to 1e-8 of the thrust, everything finite) whose analytic
+        /// stiffness matches re-solved central differences to 1e-5 of each row's scale,
+        /// or a typed error; never NaN, never a panic. (Measured over 200 cases: 178
+        /// solved, largest gap 1.3e-7; 22 typed errors, all the flanges' centrifugal thrust
+        /// exceeding a light thrust at speed.)
+        #[test]
+        fn analytic_matches_differences_or_typed_error(s in case()) {
+            let b = Bearing::new(&s).unwrap();
+            match b.solve() {
+                Ok(sol) => {
+                    prop_assert!(sol.stiffness.iter().all(|v| v.is_finite()));
+                    let op = &s.operating;
+                    prop_assert!((sol.reaction[2] - op.axial_load_n).abs() < 1e-8 * op.axial_load_n);
+                    prop_assert!((sol.reaction[0] - op.radial_load_n).abs() < 1e-8 * op.axial_load_n);
+                    let fd = b.stiffness_fd(&sol).unwrap();
+                    let diff = fd_difference(&sol.stiffness, &fd, b.geometry.moment_radius_m);
+                    prop_assert!(diff < 1e-5, "gap {diff}");
+                }
+                Err(e) => {
+                    let msg = e.to_string();
+                    prop_assert!(!msg.contains("NaN"), "{msg}");
+                }
+            }
+        }
+    }
+}
+/// A warm start from a neighbouring solution (the previous point of a speed sweep) gives
+/// the same equilibrium as a cold start (1e-9 of the thrust in the reactions, 1e-6 of
+/// K_xx: both are converged to the tolerance) in fewer ring iterations.
+#[test]
+fn warm_started_sweep_matches_cold_solves() {
+    let mut prev: Option<BearingSolution> = None;
+    let (mut warm_its, mut cold_its) = (0, 0);
+    for i in 0..=10 {
+        let s = sample(2_000.0 * i as f64, 700.0);
+        let b = Bearing::new(&s).unwrap();
+        let cold = b.solve().unwrap();
+        let warm = b.solve_from(prev.as_ref()).unwrap();
+        let fa = s.operating.axial_load_n;
+        for j in 0..3 {
+            assert!((warm.reaction[j] - cold.reaction[j]).abs() < 1e-9 * fa);
+        }
+        assert!((warm.stiffness[(0, 0)] / cold.stiffness[(0, 0)] - 1.0).abs() < 1e-6);
+        warm_its += warm.iterations;
+        cold_its += cold.iterations;
+        prev = Some(warm);
+    }
+    assert!(warm_its <= cold_its, "{warm_its} vs {cold_its}");
+}

@@ -1,0 +1,343 @@
+//! The tapered roller deck (`type = "tapered-roller"`): its keys as a
+//! [`crate::deck::form::Schema`] over [`TaperedInput`]. Key names are a contract (issue 17).
+
+use super::geometry::{crown_drop_at_gauge, crown_radius};
+use super::input::{Clearance, Crown, GyroInertia, StiffnessMethod, TaperedInput};
+use crate::deck::form::{
+    material_fields, show, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
+};
+use crate::units::{Quantity, Units, INCH_M};
+
+/// The deck `type` of this system.
+pub const SYSTEM_ID: &str = "tapered-roller";
+
+const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
+const GYRO: &[&str] = &["polar", "transverse"];
+
+const DEG: f64 = std::f64::consts::PI / 180.0;
+const RPM: f64 = std::f64::consts::PI / 30.0;
+
+#[allow(clippy::too_many_arguments)]
+const fn meta(
+    key: &'static str,
+    group: &'static str,
+    label: &'static str,
+    q: Quantity,
+    kind: FieldKind,
+    min: (f64, bool),
+    max: (f64, bool),
+    presence: Presence,
+    help: &'static str,
+) -> FieldMeta {
+    FieldMeta::new(key, group, label, q, kind, min, max, presence, help)
+}
+
+const REAL: FieldKind = FieldKind::Real;
+const INT: FieldKind = FieldKind::Integer;
+const REQ: Presence = Presence::Required;
+
+const ROLLER: [FieldSpec<TaperedInput>; 5] =
+    material_fields!(TaperedInput, "roller", "Roller", |t| t.materials.roller);
+const CUP: [FieldSpec<TaperedInput>; 5] =
+    material_fields!(TaperedInput, "cup", "Cup", |t| t.materials.cup);
+const CONE: [FieldSpec<TaperedInput>; 5] =
+    material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
+
+static FIELDS: [FieldSpec<TaperedInput>; 45] = [
+    FieldSpec {
+        meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
+        get: |t| t.geometry.roller_count as f64,
+        set: |t, v| t.geometry.roller_count = v as usize,
+    },
+    FieldSpec {
+        meta: meta("geometry.roller_diameter", "geometry", "Roller diameter d", Quantity::Length, REAL, (0.0, true), (1.0, false), REQ, "roller diameter at the midpoint of the effective length"),
+        get: |t| t.geometry.roller_diameter_m,
+        set: |t, v| t.geometry.roller_diameter_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.pitch_diameter", "geometry", "Pitch diameter E", Quantity::Length, REAL, (0.0, true), (10.0, false), REQ, "pitch diameter at the midpoint of the effective length"),
+        get: |t| t.geometry.pitch_diameter_m,
+        set: |t, v| t.geometry.pitch_diameter_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.cup_angle", "geometry", "Cup angle β", Quantity::Angle, REAL, (0.0, true), (60.0 * DEG, false), REQ, "cup (outer race) contact angle"),
+        get: |t| t.geometry.cup_angle_rad,
+        set: |t, v| t.geometry.cup_angle_rad = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.effective_length", "geometry", "Effective length l_e", Quantity::Length, REAL, (0.0, true), (1.0, false), REQ, "effective (load-carrying) length of the roller"),
+        get: |t| t.geometry.effective_length_m,
+        set: |t, v| t.geometry.effective_length_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.flat_length", "geometry", "Flat length l_F", Quantity::Length, REAL, (0.0, false), (1.0, false), Presence::Default(0.0), "length of the flat (uncrowned) middle of the roller profile; 0: fully crowned"),
+        get: |t| t.geometry.flat_length_m,
+        set: |t, v| t.geometry.flat_length_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.crown_radius", "geometry", "Crown radius R_c", Quantity::Length, REAL, (0.0, true), (1000.0, false), Presence::OneOf("geometry.crown_drop"), "roller crown radius (give this OR crown_drop)"),
+        get: |t| crown_radius(&t.geometry),
+        set: |t, v| t.geometry.crown = Crown::Radius(v),
+    },
+    FieldSpec {
+        meta: meta("geometry.crown_drop", "geometry", "Crown drop V′", Quantity::Length, REAL, (0.0, true), (0.01, false), Presence::OneOf("geometry.crown_radius"), "crown drop at the gauge point (give this OR crown_radius)"),
+        get: |t| crown_drop_at_gauge(&t.geometry),
+        set: |t, v| t.geometry.crown = Crown::Drop(v),
+    },
+    FieldSpec {
+        meta: meta("geometry.crown_gauge", "geometry", "Crown drop gauge point G", Quantity::Length, REAL, (0.0, false), (1.0, false), Presence::Default(0.03 * INCH_M), "distance from each end of the effective length to where the crown drop is measured"),
+        get: |t| t.geometry.crown_gauge_m,
+        set: |t, v| t.geometry.crown_gauge_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.small_end_break", "geometry", "Small-end corner break B₁", Quantity::Length, REAL, (0.0, false), (0.1, false), Presence::Default(0.0), "corner break at the roller's small end"),
+        get: |t| t.geometry.small_end_break_m,
+        set: |t, v| t.geometry.small_end_break_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.big_end_break", "geometry", "Big-end corner break B₂", Quantity::Length, REAL, (0.0, false), (0.1, false), Presence::Default(0.0), "corner break at the roller's big end"),
+        get: |t| t.geometry.big_end_break_m,
+        set: |t, v| t.geometry.big_end_break_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.big_end_radius_ratio", "geometry", "Big-end radius R_E/l_s", Quantity::Dimensionless, REAL, (0.0, true), (10.0, false), REQ, "big-end spherical radius as a fraction of the roller cone's slant height (the seed's '0.8 in' is this ratio)"),
+        get: |t| t.geometry.big_end_radius_ratio,
+        set: |t, v| t.geometry.big_end_radius_ratio = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.flange_contact_ratio", "geometry", "Flange contact r/R₂", Quantity::Dimensionless, REAL, (0.0, true), (1.0, false), REQ, "radius of the flange contact point from the roller axis as a fraction of the big-end radius (the seed's '0.75 in')"),
+        get: |t| t.geometry.flange_contact_ratio,
+        set: |t, v| t.geometry.flange_contact_ratio = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.diametral_clearance", "geometry", "Diametral clearance P_D", Quantity::Length, REAL, (-0.01, false), (0.01, false), Presence::OneOf("geometry.end_play"), "diametral play before loading, negative for interference (give this OR end_play)"),
+        get: |t| t.geometry.diametral_clearance_m(),
+        set: |t, v| t.geometry.clearance = Clearance::Diametral(v),
+    },
+    FieldSpec {
+        meta: meta("geometry.end_play", "geometry", "End play e", Quantity::Length, REAL, (-0.01, false), (0.01, false), Presence::OneOf("geometry.diametral_clearance"), "axial end play before loading, P_D = 2e·tan β (give this OR diametral_clearance)"),
+        get: |t| t.geometry.end_play_m(),
+        set: |t, v| t.geometry.clearance = Clearance::EndPlay(v),
+    },
+    ROLLER[0], ROLLER[1], ROLLER[2], ROLLER[3], ROLLER[4],
+    CUP[0], CUP[1], CUP[2], CUP[3], CUP[4],
+    CONE[0], CONE[1], CONE[2], CONE[3], CONE[4],
+    FieldSpec {
+        meta: meta("operating.inner_speed", "operating", "Cone speed Ω₂", Quantity::Speed, REAL, (-200_000.0 * RPM, false), (200_000.0 * RPM, false), Presence::Default(0.0), "inner ring (cone) speed"),
+        get: |t| t.operating.inner_speed_rad_s,
+        set: |t, v| t.operating.inner_speed_rad_s = v,
+    },
+    FieldSpec {
+        meta: meta("operating.outer_speed", "operating", "Cup speed Ω₁", Quantity::Speed, REAL, (-200_000.0 * RPM, false), (200_000.0 * RPM, false), Presence::Default(0.0), "outer ring (cup) speed"),
+        get: |t| t.operating.outer_speed_rad_s,
+        set: |t, v| t.operating.outer_speed_rad_s = v,
+    },
+    FieldSpec {
+        meta: meta("operating.axial_load", "operating", "Axial load F_z", Quantity::Force, REAL, (-1e8, false), (1e8, false), REQ, "thrust on the cone; positive seats the bearing (a single tapered bearing carries no other)"),
+        get: |t| t.operating.axial_load_n,
+        set: |t, v| t.operating.axial_load_n = v,
+    },
+    FieldSpec {
+        meta: meta("operating.radial_load", "operating", "Radial load F_x", Quantity::Force, REAL, (0.0, false), (1e8, false), Presence::Default(0.0), "radial load on the cone along x (roller 1's azimuth)"),
+        get: |t| t.operating.radial_load_n,
+        set: |t, v| t.operating.radial_load_n = v,
+    },
+    FieldSpec {
+        meta: meta("operating.initial_displacement_x", "operating", "Initial δx″", Quantity::Length, REAL, (-0.01, false), (0.01, false), Presence::Default(0.0), "initial displacement of the cone along x"),
+        get: |t| t.operating.initial_displacement_m[0],
+        set: |t, v| t.operating.initial_displacement_m[0] = v,
+    },
+    FieldSpec {
+        meta: meta("operating.initial_displacement_y", "operating", "Initial δy″", Quantity::Length, REAL, (-0.01, false), (0.01, false), Presence::Default(0.0), "initial displacement of the cone along y"),
+        get: |t| t.operating.initial_displacement_m[1],
+        set: |t, v| t.operating.initial_displacement_m[1] = v,
+    },
+    FieldSpec {
+        meta: meta("operating.initial_displacement_z", "operating", "Initial δz″", Quantity::Length, REAL, (-0.01, false), (0.01, false), Presence::Default(0.0), "initial axial displacement of the cone"),
+        get: |t| t.operating.initial_displacement_m[2],
+        set: |t, v| t.operating.initial_displacement_m[2] = v,
+    },
+    FieldSpec {
+        meta: meta("operating.misalignment_x", "operating", "Misalignment θx", Quantity::Angle, REAL, (-5.0 * DEG, false), (5.0 * DEG, false), Presence::Default(0.0), "rotation of the cone about x, held by the shaft (its moment is reported)"),
+        get: |t| t.operating.misalignment_rad[0],
+        set: |t, v| t.operating.misalignment_rad[0] = v,
+    },
+    FieldSpec {
+        meta: meta("operating.misalignment_y", "operating", "Misalignment θy", Quantity::Angle, REAL, (-5.0 * DEG, false), (5.0 * DEG, false), Presence::Default(0.0), "rotation of the cone about y, held by the shaft (its moment is reported)"),
+        get: |t| t.operating.misalignment_rad[1],
+        set: |t, v| t.operating.misalignment_rad[1] = v,
+    },
+    FieldSpec {
+        meta: meta("solver.slices", "solver", "Slices", Quantity::Count, INT, (3.0, false), (1001.0, false), Presence::Default(21.0), "slices per contact along the effective length"),
+        get: |t| t.solver.slices as f64,
+        set: |t, v| t.solver.slices = v as usize,
+    },
+    FieldSpec {
+        meta: meta("solver.force_tolerance", "solver", "Force tolerance", Quantity::Dimensionless, REAL, (0.0, true), (1e-4, false), Presence::Default(1e-9), "equilibrium force residual relative to the applied load"),
+        get: |t| t.solver.force_tolerance,
+        set: |t, v| t.solver.force_tolerance = v,
+    },
+    FieldSpec {
+        meta: meta("solver.max_iterations", "solver", "Bearing iterations", Quantity::Count, INT, (1.0, false), (1000.0, false), Presence::Default(60.0), "largest number of bearing Newton iterations"),
+        get: |t| t.solver.max_iterations as f64,
+        set: |t, v| t.solver.max_iterations = v as usize,
+    },
+    FieldSpec {
+        meta: meta("solver.max_roller_iterations", "solver", "Roller iterations", Quantity::Count, INT, (1.0, false), (1000.0, false), Presence::Default(60.0), "largest number of Newton iterations of one roller"),
+        get: |t| t.solver.max_roller_iterations as f64,
+        set: |t, v| t.solver.max_roller_iterations = v as usize,
+    },
+    FieldSpec {
+        meta: meta("solver.stiffness", "solver", "Stiffness", Quantity::Dimensionless, FieldKind::Choice(STIFFNESS), (0.0, false), (2.0, false), Presence::Default(0.0), "analytic, finite-difference (re-solved equilibria) or both (the difference reported)"),
+        get: |t| match t.solver.stiffness {
+            StiffnessMethod::Analytic => 0.0,
+            StiffnessMethod::FiniteDifference => 1.0,
+            StiffnessMethod::Both => 2.0,
+        },
+        set: |t, v| {
+            t.solver.stiffness = match v as usize {
+                1 => StiffnessMethod::FiniteDifference,
+                2 => StiffnessMethod::Both,
+                _ => StiffnessMethod::Analytic,
+            }
+        },
+    },
+    FieldSpec {
+        meta: meta("solver.gyroscopic_inertia", "solver", "Gyroscopic inertia", Quantity::Dimensionless, FieldKind::Choice(GYRO), (0.0, false), (1.0, false), Presence::Default(0.0), "inertia of the gyroscopic moment (eq. 37): polar (spin axis, default) or transverse (as printed)"),
+        get: |t| match t.solver.gyroscopic_inertia {
+            GyroInertia::Polar => 0.0,
+            GyroInertia::Transverse => 1.0,
+        },
+        set: |t, v| {
+            t.solver.gyroscopic_inertia = if v as usize == 1 {
+                GyroInertia::Transverse
+            } else {
+                GyroInertia::Polar
+            }
+        },
+    },
+];
+
+/// Rules across keys: the roller must fit inside the pitch circle and the flat inside the
+/// effective length.
+fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
+    let g = &t.geometry;
+    let mut v = Vec::new();
+    if g.roller_diameter_m >= g.pitch_diameter_m {
+        v.push((
+            "geometry.roller_diameter",
+            format!(
+                "must be smaller than the pitch diameter ({})",
+                show(&SCHEMA, t, "geometry.pitch_diameter", units)
+            ),
+        ));
+    }
+    if g.flat_length_m > g.effective_length_m {
+        v.push((
+            "geometry.flat_length",
+            format!(
+                "must not exceed the effective length ({})",
+                show(&SCHEMA, t, "geometry.effective_length", units)
+            ),
+        ));
+    }
+    if g.crown_gauge_m * 2.0 >= g.effective_length_m {
+        v.push((
+            "geometry.crown_gauge",
+            format!(
+                "must lie within half the effective length ({})",
+                show(&SCHEMA, t, "geometry.effective_length", units)
+            ),
+        ));
+    }
+    v
+}
+
+/// The tapered roller deck's schema.
+pub static SCHEMA: Schema<TaperedInput> = Schema {
+    system: SYSTEM_ID,
+    groups: &["geometry", "materials", "operating", "solver"],
+    required_groups: &["geometry", "materials", "operating"],
+    fields: &FIELDS,
+    material_bodies: &["roller", "cup", "cone"],
+    material: Some(MaterialAccess {
+        get: |t, i| match i {
+            0 => t.materials.roller,
+            1 => t.materials.cup,
+            _ => t.materials.cone,
+        },
+        set: |t, i, m| match i {
+            0 => t.materials.roller = m,
+            1 => t.materials.cup = m,
+            _ => t.materials.cone = m,
+        },
+    }),
+    opaque_tables: &[],
+    defaults: TaperedInput::afapl_sample,
+    cross_checks: cross,
+    template_header: "rollbench tapered roller bearing deck (seed 004: AFAPL-TR-78-6 Part III, tapered roller bearing stiffness with centrifugal effects)",
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::deck::form::{template, Form};
+
+    const DECK: &str = include_str!("../../../decks/trb_afapl.toml");
+
+    /// The shipped deck is the seed's §3.1 sample: read back to the SI input exactly as
+    /// built in code (1e-12: unit conversion round-off).
+    #[test]
+    fn shipped_deck_is_the_sample() {
+        let f = Form::parse(DECK, "trb_afapl.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        let s = TaperedInput::afapl_sample();
+        let (a, b) = (&f.value.geometry, &s.geometry);
+        assert_eq!(a.roller_count, 37);
+        for (x, y) in [
+            (a.roller_diameter_m, b.roller_diameter_m),
+            (a.pitch_diameter_m, b.pitch_diameter_m),
+            (a.cup_angle_rad, b.cup_angle_rad),
+            (a.effective_length_m, b.effective_length_m),
+            (crown_radius(a), crown_radius(b)),
+            (f.value.operating.axial_load_n, s.operating.axial_load_n),
+            (
+                f.value.operating.inner_speed_rad_s,
+                s.operating.inner_speed_rad_s,
+            ),
+        ] {
+            assert!((x / y - 1.0).abs() < 1e-12, "{x} {y}");
+        }
+        assert_eq!(f.units, Units::Us);
+    }
+
+    /// Both unit systems' templates parse back; unknown keys and out-of-range values are
+    /// reported with file:line and the allowed range in the deck's units.
+    #[test]
+    fn templates_parse_and_bad_decks_are_located() {
+        for u in [Units::Us, Units::Si] {
+            let t = template(&SCHEMA, u);
+            Form::parse(&t, "template.toml", &SCHEMA).unwrap_or_else(|e| panic!("{u:?}: {e}\n{t}"));
+        }
+        let bad = DECK.replace("roller_count = 37", "roller_count = 37\nroller_cnt = 3");
+        let e = Form::parse(&bad, "bad.toml", &SCHEMA)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        assert!(e.contains("bad.toml:") && e.contains("roller_cnt"), "{e}");
+        let bad = DECK.replace("roller_count = 37", "roller_count = 2");
+        let e = Form::parse(&bad, "bad.toml", &SCHEMA)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        assert!(
+            e.contains("bad.toml:") && e.contains("3 ≤ value ≤ 500"),
+            "{e}"
+        );
+        let line = DECK
+            .lines()
+            .position(|l| l.starts_with("roller_count"))
+            .map(|i| i + 1)
+            .unwrap_or(0);
+        assert!(e.contains(&format!("bad.toml:{line}:")), "{e}");
+    }
+}

@@ -1,0 +1,211 @@
+//! The resolved tapered roller bearing description in SI units: what the model reads.
+//! The deck (`crate::deck::form`, US or SI units) fills a [`TaperedInput`]; nothing
+//! below the deck sees deck units. Field names carry their unit.
+
+use crate::physics::material::Material;
+use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
+
+/// How the roller crown is given (seed 004 eqs. 17, 34–35).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Crown {
+    /// The crown radius R_c, m.
+    Radius(f64),
+    /// The crown drop V′ (m) measured at the gauge distance G ([`Geometry::crown_gauge_m`])
+    /// from each end of the effective length; R_c follows from eq. 35.
+    Drop(f64),
+}
+
+/// How the internal play is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Clearance {
+    /// P_D, diametral clearance, m (negative: interference).
+    Diametral(f64),
+    /// e, axial end play, m: P_D = 2e·tan β.
+    EndPlay(f64),
+}
+
+/// Which inertia the gyroscopic moment of eq. 37 uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GyroInertia {
+    /// The polar (spin-axis) inertia I_p: the gyroscopic couple of a body spinning at ω_R
+    /// whose axis precesses at Ω_E is I_p·ω_R·Ω_E·sin ψ (default).
+    Polar,
+    /// The inertia about the centre of gravity of eq. 29 (transverse), as printed in eq. 37.
+    Transverse,
+}
+
+/// Internal geometry (seed 004 §2.4.2 and §3.1), SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Geometry {
+    /// n, number of rollers.
+    pub roller_count: usize,
+    /// d, roller diameter at the midpoint of the effective length, m.
+    pub roller_diameter_m: f64,
+    /// E, pitch diameter at the midpoint of the effective length, m.
+    pub pitch_diameter_m: f64,
+    /// β, cup (outer race) contact angle, rad.
+    pub cup_angle_rad: f64,
+    /// l_e, effective length of the roller, m.
+    pub effective_length_m: f64,
+    /// l_F, length of the flat portion of the roller profile, m (0: fully crowned).
+    pub flat_length_m: f64,
+    /// The crown.
+    pub crown: Crown,
+    /// G, distance from each end of the effective length to the crown drop's gauge point,
+    /// m (eqs. 34–35).
+    pub crown_gauge_m: f64,
+    /// B₁, corner break at the small end, m.
+    pub small_end_break_m: f64,
+    /// B₂, corner break at the big end, m.
+    pub big_end_break_m: f64,
+    /// R_E/l_s: big-end spherical radius as a fraction of the roller cone's slant height
+    /// (the seed's "0.8 in" is this ratio: in inches R_E would be shorter than the roller).
+    pub big_end_radius_ratio: f64,
+    /// r/R₂: radius of the flange contact point from the roller axis as a fraction of the
+    /// big-end radius (the seed's "0.75 in" is this ratio: R₂ is 0.150 in).
+    pub flange_contact_ratio: f64,
+    /// The internal play before loading (eq. 40's P_D).
+    pub clearance: Clearance,
+}
+
+impl Geometry {
+    /// P_D, diametral clearance, m (an end play e gives 2e·tan β).
+    pub fn diametral_clearance_m(&self) -> f64 {
+        match self.clearance {
+            Clearance::Diametral(p) => p,
+            Clearance::EndPlay(e) => 2.0 * e * self.cup_angle_rad.tan(),
+        }
+    }
+
+    /// e, axial end play, m (P_D/(2 tan β)).
+    pub fn end_play_m(&self) -> f64 {
+        match self.clearance {
+            Clearance::Diametral(p) => p / (2.0 * self.cup_angle_rad.tan()),
+            Clearance::EndPlay(e) => e,
+        }
+    }
+}
+
+/// Roller, cup and cone materials.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Materials {
+    /// Roller.
+    pub roller: Material,
+    /// Cup (outer ring).
+    pub cup: Material,
+    /// Cone (inner ring).
+    pub cone: Material,
+}
+
+/// Loads, speeds, initial displacements and misalignment, SI. The inner ring (cone) is
+/// loaded and displaced; the cup is fixed. Axis z along the bearing axis (positive
+/// seats the bearing), x toward the radial load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Operating {
+    /// Ω₂, inner ring (cone) angular velocity, rad/s.
+    pub inner_speed_rad_s: f64,
+    /// Ω₁, outer ring (cup) angular velocity, rad/s.
+    pub outer_speed_rad_s: f64,
+    /// F_z, axial (thrust) load on the cone, N; positive seats the bearing.
+    pub axial_load_n: f64,
+    /// F_x, radial load on the cone, N, along x.
+    pub radial_load_n: f64,
+    /// δ″, initial displacements (x, y, z) of the cone, m (eq. 40).
+    pub initial_displacement_m: [f64; 3],
+    /// θ, prescribed rotations (θx, θy) of the cone, rad: misalignment held by the shaft
+    /// (eqs. 40, 42); the moments that hold them are reported.
+    pub misalignment_rad: [f64; 2],
+}
+
+/// How stiffness is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StiffnessMethod {
+    /// Analytic (eqs. 88–91, 107–120).
+    Analytic,
+    /// Central differences of re-solved roller equilibria.
+    FiniteDifference,
+    /// Both, the analytic reported and the difference stated.
+    Both,
+}
+
+/// Solver settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Solver {
+    /// Slices per contact along the effective length.
+    pub slices: usize,
+    /// Force tolerance of the bearing equilibrium, relative to the applied load.
+    pub force_tolerance: f64,
+    /// Largest number of bearing Newton iterations.
+    pub max_iterations: usize,
+    /// Largest number of Newton iterations of one roller.
+    pub max_roller_iterations: usize,
+    /// Stiffness method.
+    pub stiffness: StiffnessMethod,
+    /// The inertia of the gyroscopic moment.
+    pub gyroscopic_inertia: GyroInertia,
+}
+
+/// A whole tapered roller bearing case, SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TaperedInput {
+    /// Geometry.
+    pub geometry: Geometry,
+    /// Materials.
+    pub materials: Materials,
+    /// Operating conditions.
+    pub operating: Operating,
+    /// Solver settings.
+    pub solver: Solver,
+}
+
+impl Default for Solver {
+    fn default() -> Self {
+        Solver {
+            slices: 21,
+            force_tolerance: 1e-9,
+            max_iterations: 60,
+            max_roller_iterations: 60,
+            stiffness: StiffnessMethod::Analytic,
+            gyroscopic_inertia: GyroInertia::Polar,
+        }
+    }
+}
+
+impl TaperedInput {
+    /// The seed's §3.1 sample bearing (AFAPL-TR-78-6 Part III) with Load Condition 1
+    /// (3 000 lbf thrust) at 20 000 rpm of the cone; steel everywhere (the sample names no
+    /// material), zero clearance (the derivation starts with the end play taken up).
+    pub fn afapl_sample() -> TaperedInput {
+        TaperedInput {
+            geometry: Geometry {
+                roller_count: 37,
+                roller_diameter_m: 0.2913 * INCH_M,
+                pitch_diameter_m: 5.0 * INCH_M,
+                cup_angle_rad: (14.0 + 40.0 / 60.0_f64).to_radians(),
+                effective_length_m: 0.6001 * INCH_M,
+                flat_length_m: 0.0,
+                crown: Crown::Radius(100.0 * INCH_M),
+                crown_gauge_m: 0.03 * INCH_M,
+                small_end_break_m: 0.02 * INCH_M,
+                big_end_break_m: 0.03 * INCH_M,
+                big_end_radius_ratio: 0.8,
+                flange_contact_ratio: 0.75,
+                clearance: Clearance::Diametral(0.0),
+            },
+            materials: Materials {
+                roller: Material::STEEL,
+                cup: Material::STEEL,
+                cone: Material::STEEL,
+            },
+            operating: Operating {
+                inner_speed_rad_s: 20_000.0 * RPM_RAD_S,
+                outer_speed_rad_s: 0.0,
+                axial_load_n: 3_000.0 * LBF_N,
+                radial_load_n: 0.0,
+                initial_displacement_m: [0.0; 3],
+                misalignment_rad: [0.0; 2],
+            },
+            solver: Solver::default(),
+        }
+    }
+}

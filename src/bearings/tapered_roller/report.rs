@@ -1,0 +1,323 @@
+//! The JSON report (SI, units in key names; issue 17's field names are a contract) and
+//! the text report in the deck's units.
+
+use std::fmt::Write;
+
+use serde_json::{json, Value};
+
+use super::analysis::{Analysis, AXES};
+use crate::units::{Quantity, Units};
+
+/// The seed's statement on damping (§2.3.2), reported instead of invented numbers.
+pub const DAMPING_NOTE: &str = "not computed: the seed (AFAPL-TR-78-6 Part III §2.3.2) found no experimental damping data for tapered roller bearings and includes none";
+
+/// The JSON report.
+pub fn json(a: &Analysis) -> Value {
+    let b = &a.bearing;
+    let rg = &b.geometry;
+    let dy = &b.dynamics;
+    let sol = &a.solution;
+    let rollers: Vec<Value> = sol
+        .rollers
+        .iter()
+        .enumerate()
+        .map(|(q, (r, delta, theta))| {
+            let (c, s) = b.azimuth[q];
+            let [cup, cone] = &a.slices[q];
+            // Each race's slices lie on its own contact extent.
+            let slices: Vec<Value> = [("outer", cup), ("inner", cone)]
+                .iter()
+                .flat_map(|(race, list)| {
+                    list.iter().map(move |sl| {
+                        json!({
+                            "race": race,
+                            "x_m": sl.x_m,
+                            "intrusion_m": sl.intrusion_m,
+                            "load_n_m": sl.load_n_m,
+                            "half_width_m": sl.half_width_m,
+                            "stress_pa": sl.stress_pa,
+                        })
+                    })
+                })
+                .collect();
+            json!({
+                "index": q + 1,
+                "azimuth_deg": s.atan2(c).to_degrees().rem_euclid(360.0),
+                "state": r.state.as_str(),
+                "outer_load_n": r.cup.load_n,
+                "inner_load_n": r.cone.load_n,
+                "flange_load_n": r.flange_n,
+                "outer_moment_nm": r.cup.moment_nm,
+                "inner_moment_nm": r.cone.moment_nm,
+                "outer_edge_loaded": r.cup.edge_loaded,
+                "inner_edge_loaded": r.cone.edge_loaded,
+                "max_stress_outer_pa": r.cup.max_stress_pa,
+                "max_stress_inner_pa": r.cone.max_stress_pa,
+                "ring_approach_m": delta,
+                "ring_misalignment_rad": theta,
+                "outer_approach_m": r.delta1_m,
+                "outer_misalignment_rad": r.theta1_rad,
+                "inner_approach_m": r.delta2_m,
+                "inner_misalignment_rad": r.theta2_rad,
+                "outer_contact_extent_m": r.cup.extent_m,
+                "inner_contact_extent_m": r.cone.extent_m,
+                "iterations": r.iterations,
+                "residual_n": r.residual_n,
+                "slices": slices,
+            })
+        })
+        .collect();
+    let matrix = |k: &super::bearing::Matrix5| -> Vec<Vec<f64>> {
+        (0..5)
+            .map(|i| (0..5).map(|j| k[(i, j)]).collect())
+            .collect()
+    };
+    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
+        (true, true) => "N/m",
+        (true, false) => "N/rad",
+        (false, true) => "N·m/m",
+        (false, false) => "N·m/rad",
+    };
+    let units: Vec<Vec<&str>> = (0..5)
+        .map(|i| (0..5).map(|j| unit(i, j)).collect())
+        .collect();
+    let mut stiffness = json!({
+        "matrix": matrix(&a.stiffness),
+        "rows": ["F_x", "F_y", "F_z", "M_x", "M_y"],
+        "columns": AXES,
+        "units": units,
+        "method": match b.input.solver.stiffness {
+            super::input::StiffnessMethod::Analytic => "analytic",
+            super::input::StiffnessMethod::FiniteDifference => "finite-difference",
+            super::input::StiffnessMethod::Both => "both",
+        },
+        "reference_point": "cone centre at the rollers' central plane (the seed's ring reference point)",
+        "asymmetry_max": a.asymmetry_max(),
+    });
+    if let (Some(off), Some(kc), Some(obj)) = (
+        a.load_centre_offset_m(),
+        a.stiffness_at_load_centre(),
+        stiffness.as_object_mut(),
+    ) {
+        obj.insert("load_centre_offset_m".into(), json!(off));
+        obj.insert("matrix_at_load_centre".into(), json!(matrix(&kc)));
+    }
+    if let (Some(fd), Some(obj)) = (a.stiffness_fd, stiffness.as_object_mut()) {
+        obj.insert("finite_difference_matrix".into(), json!(matrix(&fd)));
+        if let Some(d) = a.finite_difference_max_rel() {
+            obj.insert("finite_difference_max_rel".into(), json!(d));
+        }
+    }
+    let roller_res = sol
+        .rollers
+        .iter()
+        .map(|r| r.0.residual_n)
+        .fold(0.0, f64::max);
+    let roller_it = sol
+        .rollers
+        .iter()
+        .map(|r| r.0.iterations)
+        .max()
+        .unwrap_or(0);
+    json!({
+        "type": super::deck::SYSTEM_ID,
+        "name": a.name,
+        "method": "AFAPL-TR-78-6 Part III (seed 004): flange-guided tapered rollers, Lundberg line-contact slices, centrifugal and gyroscopic loads, 5×5 stiffness",
+        "geometry": {
+            "cone_half_angle_deg": rg.half_cone_rad.to_degrees(),
+            "roller_axis_angle_deg": rg.axis_angle_rad.to_degrees(),
+            "apex_to_midpoint_m": rg.h0_m,
+            "small_end_radius_m": rg.r1_m,
+            "big_end_radius_m": rg.r2_m,
+            "crown_radius_m": rg.crown_radius_m,
+            "crown_drop_m": rg.crown_drop_m,
+            "roller_mass_kg": rg.mass_kg,
+            "cg_offset_m": rg.cg_offset_m,
+            "polar_inertia_kg_m2": rg.polar_inertia_kg_m2,
+            "transverse_inertia_kg_m2": rg.transverse_inertia_kg_m2,
+            "big_end_sphere_radius_m": rg.big_end_radius_m,
+            "flange_contact_radius_m": rg.flange_contact_radius_m,
+            "flange_angle_deg": rg.flange_angle_rad.to_degrees(),
+            "flange_lever_arm_m": rg.flange_lever_arm_m,
+        },
+        "speeds": {
+            "cage_rad_s": dy.cage_rad_s,
+            "roller_spin_rad_s": dy.roller_spin_rad_s,
+        },
+        "centrifugal_force_n": dy.centrifugal_force_n,
+        "gyroscopic_moment_nm": dy.gyroscopic_moment_nm,
+        "rings": {
+            "displacement_m": sol.displacement_m,
+            "rotation_rad": sol.rotation_rad,
+            "reaction_force_n": [sol.reaction[0], sol.reaction[1], sol.reaction[2]],
+            "reaction_moment_nm": [sol.reaction[3], sol.reaction[4]],
+        },
+        "rollers": rollers,
+        "stiffness": stiffness,
+        "damping": DAMPING_NOTE,
+        "residuals": {
+            "equilibrium_n": sol.residual_n,
+            "roller_max_n": roller_res,
+        },
+        "stats": {
+            "bearing_iterations": sol.iterations,
+            "roller_iterations_max": roller_it,
+            "unique_rollers": sol.unique_rollers,
+            "slices": b.input.solver.slices,
+            "wall_time_s": a.wall_time_s,
+        },
+    })
+}
+
+/// The text report in `units` (US: in, lbf, lbf·in, lbf/in, lbf·in/rad).
+pub fn text(a: &Analysis, units: Units) -> String {
+    let b = &a.bearing;
+    let g = &b.input.geometry;
+    let rg = &b.geometry;
+    let dy = &b.dynamics;
+    let sol = &a.solution;
+    let len = |v: f64| Quantity::Length.from_si(v, units);
+    let force = |v: f64| Quantity::Force.from_si(v, units);
+    let moment = |v: f64| Quantity::Moment.from_si(v, units);
+    let (lu, fu, mu) = (
+        Quantity::Length.unit(units),
+        Quantity::Force.unit(units),
+        Quantity::Moment.unit(units),
+    );
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "ROLLBENCH — tapered roller bearing (seed 004, AFAPL-TR-78-6 Part III): {}",
+        a.name
+    );
+    let _ = writeln!(
+        s,
+        "n = {}  d = {:.4} {lu}  E = {:.4} {lu}  beta = {:.4} deg  l_e = {:.4} {lu}  slices = {}",
+        g.roller_count,
+        len(g.roller_diameter_m),
+        len(g.pitch_diameter_m),
+        g.cup_angle_rad.to_degrees(),
+        len(g.effective_length_m),
+        b.input.solver.slices
+    );
+    let _ = writeln!(s, "\nRoller geometry");
+    let _ = writeln!(
+        s,
+        "  tau/2 = {:.4} deg  R1 = {:.4} {lu}  R2 = {:.4} {lu}  crown R_c = {:.4} {lu}, drop V = {:.3e} {lu}",
+        rg.half_cone_rad.to_degrees(),
+        len(rg.r1_m),
+        len(rg.r2_m),
+        len(rg.crown_radius_m),
+        len(rg.crown_drop_m)
+    );
+    let _ = writeln!(
+        s,
+        "  flange angle alpha = {:.4} deg  lever arm = {:.4} {lu}  mass = {:.4e} kg  cg offset = {:.4e} {lu}",
+        rg.flange_angle_rad.to_degrees(),
+        len(rg.flange_lever_arm_m),
+        rg.mass_kg,
+        len(rg.cg_offset_m)
+    );
+    let _ = writeln!(s, "\nSpeeds and inertia loads");
+    let _ = writeln!(
+        s,
+        "  cage {:.2} rad/s  roller spin {:.1} rad/s  F_c = {:.3} {fu}  M_G = {:.4} {mu}",
+        dy.cage_rad_s,
+        dy.roller_spin_rad_s,
+        force(dy.centrifugal_force_n),
+        moment(dy.gyroscopic_moment_nm)
+    );
+    let _ = writeln!(
+        s,
+        "\nCone displacement (working)  x = {:.4e}  y = {:.4e}  z = {:.4e} {lu}",
+        len(sol.displacement_m[0]),
+        len(sol.displacement_m[1]),
+        len(sol.displacement_m[2])
+    );
+    let _ = writeln!(
+        s,
+        "Reactions  Fx = {:.2}  Fy = {:.2}  Fz = {:.2} {fu}   Mx = {:.3}  My = {:.3} {mu} (moments holding the prescribed rotations)",
+        force(sol.reaction[0]),
+        force(sol.reaction[1]),
+        force(sol.reaction[2]),
+        moment(sol.reaction[3]),
+        moment(sol.reaction[4])
+    );
+    let _ = writeln!(s, "\nRollers ({fu}, {mu}, ksi/MPa)");
+    let _ = writeln!(
+        s,
+        "  {:>3} {:>7} {:>15} {:>10} {:>10} {:>9} {:>9} {:>9} {:>5} {:>5}",
+        "#", "phi deg", "state", "P1 cup", "P2 cone", "P3 flg", "M1", "M2", "edg1", "edg2"
+    );
+    for (q, (r, _, _)) in sol.rollers.iter().enumerate() {
+        let (c, sn) = b.azimuth[q];
+        let _ = writeln!(
+            s,
+            "  {:>3} {:>7.2} {:>15} {:>10.3} {:>10.3} {:>9.3} {:>9.4} {:>9.4} {:>5} {:>5}",
+            q + 1,
+            sn.atan2(c).to_degrees().rem_euclid(360.0),
+            r.state.as_str(),
+            force(r.cup.load_n),
+            force(r.cone.load_n),
+            force(r.flange_n),
+            moment(r.cup.moment_nm),
+            moment(r.cone.moment_nm),
+            if r.cup.edge_loaded { "yes" } else { "no" },
+            if r.cone.edge_loaded { "yes" } else { "no" },
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nStiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
+    );
+    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
+        (true, true) => (
+            Quantity::Force.factor(units) / Quantity::Length.factor(units),
+            format!("{fu}/{lu}"),
+        ),
+        (true, false) => (Quantity::Force.factor(units), format!("{fu}/rad")),
+        (false, true) => (
+            Quantity::Moment.factor(units) / Quantity::Length.factor(units),
+            format!("{mu}/{lu}"),
+        ),
+        (false, false) => (Quantity::Moment.factor(units), format!("{mu}/rad")),
+    };
+    let k = &a.stiffness;
+    for i in 0..5 {
+        let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
+        for j in 0..5 {
+            let (f, _) = unit(i, j);
+            let _ = write!(line, " {:>12.4e}", k[(i, j)] / f);
+        }
+        let _ = writeln!(s, "{line}");
+    }
+    let _ = writeln!(
+        s,
+        "  units: lineal {}, lineal-angular {} and {}, angular {}",
+        unit(0, 0).1,
+        unit(0, 3).1,
+        unit(3, 0).1,
+        unit(3, 3).1
+    );
+    let _ = writeln!(
+        s,
+        "  largest asymmetry |K_ij - K_ji| (scaled): {:.3e}",
+        a.asymmetry_max()
+    );
+    if let Some(d) = a.finite_difference_max_rel() {
+        let _ = writeln!(
+            s,
+            "  analytic vs finite differences: largest gap {d:.3e} of the row scale"
+        );
+    }
+    let _ = writeln!(s, "\nDamping: {DAMPING_NOTE}.");
+    let _ = writeln!(
+        s,
+        "\nEquilibrium residual {:.3e} {fu} after {} iterations; {} distinct roller solves; {:.3} ms",
+        force(sol.residual_n),
+        sol.iterations,
+        sol.unique_rollers,
+        a.wall_time_s * 1e3
+    );
+    s
+}

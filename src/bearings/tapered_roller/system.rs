@@ -1,0 +1,134 @@
+//! The tapered roller bearing's registration: how its decks are read, solved and shown
+//! through the system-independent [`BearingSystem`] interface.
+
+use super::analysis::{analyse, Analysis};
+use super::deck::{SCHEMA, SYSTEM_ID};
+use super::input::TaperedInput;
+use crate::bearings::view::{PaneKind, PaneSpec, View};
+use crate::bearings::{BearingSystem, Case, FormCase, RunOptions, Solution};
+use crate::deck::form::{template, Form};
+use crate::deck::DeckErrors;
+use crate::numerics::cancel::Cancel;
+use crate::units::Units;
+
+/// The shipped example deck: the seed's §3.1 sample.
+pub const EXAMPLE_DECK: &str = include_str!("../../../decks/trb_afapl.toml");
+
+/// The tapered roller bearing system (registered in `crate::bearings::SYSTEMS`).
+pub struct TaperedRoller;
+
+/// The registry entry.
+pub static SYSTEM: TaperedRoller = TaperedRoller;
+
+impl BearingSystem for TaperedRoller {
+    fn id(&self) -> &'static str {
+        SYSTEM_ID
+    }
+
+    fn title(&self) -> &'static str {
+        "tapered roller bearing (stiffness with centrifugal effects)"
+    }
+
+    fn method(&self) -> &'static str {
+        "flange-guided rollers on Lundberg line-contact slices, 5×5 stiffness (AFAPL-TR-78-6 Part III, 1978)"
+    }
+
+    fn element_name(&self) -> &'static str {
+        "roller"
+    }
+
+    fn panes(&self) -> &'static [PaneSpec] {
+        const PANES: [PaneSpec; 3] = [
+            PaneSpec {
+                kind: PaneKind::Inputs,
+                title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Elements,
+                title: "Rollers",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(0),
+                title: "Load",
+            },
+        ];
+        &PANES
+    }
+
+    fn template(&self, units: Units) -> String {
+        template(&SCHEMA, units)
+    }
+
+    fn example_deck(&self) -> &'static str {
+        EXAMPLE_DECK
+    }
+
+    fn load(
+        &self,
+        text: &str,
+        source_name: &str,
+        overrides: &[String],
+    ) -> Result<Box<dyn Case>, DeckErrors> {
+        let mut form = Form::parse(text, source_name, &SCHEMA)?;
+        form.apply_assignments(overrides)?;
+        Ok(Box::new(TaperedCase { form }))
+    }
+}
+
+/// A validated tapered roller deck.
+pub struct TaperedCase {
+    /// The deck (SI input inside).
+    pub form: Form<TaperedInput>,
+}
+
+impl FormCase for TaperedCase {
+    type Input = TaperedInput;
+
+    fn form(&self) -> &Form<TaperedInput> {
+        &self.form
+    }
+
+    fn with_form(&self, form: Form<TaperedInput>) -> Result<Box<dyn Case>, DeckErrors> {
+        Ok(Box::new(TaperedCase { form }))
+    }
+}
+
+impl Case for TaperedCase {
+    fn system(&self) -> &'static dyn BearingSystem {
+        &SYSTEM
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+
+    fn units(&self) -> Units {
+        self.form.units
+    }
+
+    fn solve(&self, _options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String> {
+        if cancel.is_cancelled() {
+            return Err("cancelled".to_string());
+        }
+        analyse(&self.form.value, &self.form.name)
+            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| e.to_string())
+    }
+}
+
+/// A solved tapered roller bearing.
+pub struct TaperedSolution(pub Analysis);
+
+impl Solution for TaperedSolution {
+    fn view(&self) -> View {
+        super::view::view(&self.0)
+    }
+
+    fn json(&self) -> serde_json::Value {
+        super::report::json(&self.0)
+    }
+
+    fn text(&self, units: Units) -> String {
+        super::report::text(&self.0, units)
+    }
+}

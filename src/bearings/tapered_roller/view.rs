@@ -1,0 +1,362 @@
+//! What a solved tapered roller bearing shows: the `rollers` table (CSV and the Rollers
+//! pane), the load chart against azimuth, each roller's line load, summary lines and the
+//! key outputs of the fidelity bench.
+
+use super::analysis::Analysis;
+use crate::bearings::view::{
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Screen, Series, SolveStats,
+    Summary, Table, View,
+};
+use crate::units::Quantity;
+
+/// A column in the CSV and the pane.
+const fn col(
+    key: &'static str,
+    q: Quantity,
+    csv: CsvStyle,
+    label: &'static str,
+    d: Display,
+    p: usize,
+    w: u16,
+) -> Column {
+    Column {
+        key,
+        quantity: q,
+        csv: Some(csv),
+        screen: Some(Screen {
+            label,
+            display: d,
+            precision: p,
+            width: w,
+        }),
+    }
+}
+
+/// Columns of the `rollers` table (issue 17's per-roller fields; the state as a code:
+/// 0 both races, 1 cup and flange, 2 free; edge flags 0/1).
+pub const ROLLER_COLUMNS: [Column; 12] = [
+    col(
+        "index",
+        Quantity::Count,
+        CsvStyle::Integer,
+        "#",
+        Display::Plain,
+        0,
+        3,
+    ),
+    col(
+        "azimuth_deg",
+        Quantity::Angle,
+        CsvStyle::Plain,
+        "φ deg",
+        Display::Plain,
+        1,
+        6,
+    ),
+    col(
+        "state",
+        Quantity::Count,
+        CsvStyle::Integer,
+        "state",
+        Display::Plain,
+        0,
+        5,
+    ),
+    col(
+        "outer_load_n",
+        Quantity::Force,
+        CsvStyle::Scientific,
+        "P1 cup",
+        Display::Force,
+        1,
+        9,
+    ),
+    col(
+        "inner_load_n",
+        Quantity::Force,
+        CsvStyle::Scientific,
+        "P2 cone",
+        Display::Force,
+        1,
+        9,
+    ),
+    col(
+        "flange_load_n",
+        Quantity::Force,
+        CsvStyle::Scientific,
+        "P3 flange",
+        Display::Force,
+        2,
+        10,
+    ),
+    col(
+        "outer_moment_nm",
+        Quantity::Moment,
+        CsvStyle::Scientific,
+        "M1",
+        Display::Plain,
+        4,
+        9,
+    ),
+    col(
+        "inner_moment_nm",
+        Quantity::Moment,
+        CsvStyle::Scientific,
+        "M2",
+        Display::Plain,
+        4,
+        9,
+    ),
+    col(
+        "outer_edge_loaded",
+        Quantity::Count,
+        CsvStyle::Integer,
+        "edge1",
+        Display::Plain,
+        0,
+        5,
+    ),
+    col(
+        "inner_edge_loaded",
+        Quantity::Count,
+        CsvStyle::Integer,
+        "edge2",
+        Display::Plain,
+        0,
+        5,
+    ),
+    col(
+        "max_stress_outer_pa",
+        Quantity::Pressure,
+        CsvStyle::Scientific,
+        "σ1",
+        Display::Stress,
+        1,
+        8,
+    ),
+    col(
+        "max_stress_inner_pa",
+        Quantity::Pressure,
+        CsvStyle::Scientific,
+        "σ2",
+        Display::Stress,
+        1,
+        8,
+    ),
+];
+
+/// The state code of the table.
+fn state_code(s: super::roller::RollerState) -> f64 {
+    match s {
+        super::roller::RollerState::BothRaces => 0.0,
+        super::roller::RollerState::CupAndFlange => 1.0,
+        super::roller::RollerState::Free => 2.0,
+    }
+}
+
+/// The view of a solved case.
+pub fn view(a: &Analysis) -> View {
+    let sol = &a.solution;
+    let rows: Vec<Vec<Option<f64>>> = sol
+        .rollers
+        .iter()
+        .enumerate()
+        .map(|(q, (r, _, _))| {
+            let (c, s) = a.bearing.azimuth[q];
+            let flag = |b: bool| if b { 1.0 } else { 0.0 };
+            [
+                (q + 1) as f64,
+                s.atan2(c).to_degrees().rem_euclid(360.0),
+                state_code(r.state),
+                r.cup.load_n,
+                r.cone.load_n,
+                r.flange_n,
+                r.cup.moment_nm,
+                r.cone.moment_nm,
+                flag(r.cup.edge_loaded),
+                flag(r.cone.edge_loaded),
+                r.cup.max_stress_pa,
+                r.cone.max_stress_pa,
+            ]
+            .into_iter()
+            .map(Some)
+            .collect()
+        })
+        .collect();
+    let azimuth = |q: usize| {
+        let (c, s) = a.bearing.azimuth[q];
+        s.atan2(c).to_degrees().rem_euclid(360.0)
+    };
+    let series = |name: &'static str, f: &dyn Fn(&super::roller::RollerSolution) -> f64| Series {
+        name,
+        points: sol
+            .rollers
+            .iter()
+            .enumerate()
+            .map(|(q, (r, _, _))| (azimuth(q), f(r)))
+            .collect(),
+    };
+    let load_chart = Chart {
+        title: "Roller loads against azimuth".to_string(),
+        x: ChartAxis {
+            label: "φ deg",
+            display: Display::Plain,
+            bounds: Some([0.0, 360.0]),
+        },
+        y: ChartAxis {
+            label: "load",
+            display: Display::Force,
+            bounds: None,
+        },
+        series: vec![
+            series("cup P1", &|r| r.cup.load_n),
+            series("cone P2", &|r| r.cone.load_n),
+            series("flange P3", &|r| r.flange_n),
+        ],
+        per_element: true,
+    };
+    let element_charts = a
+        .slices
+        .iter()
+        .enumerate()
+        .map(|(q, [cup, cone])| Chart {
+            title: format!("Roller {} line load along the effective length", q + 1),
+            x: ChartAxis {
+                label: "X",
+                display: Display::SmallLength,
+                bounds: None,
+            },
+            y: ChartAxis {
+                label: "p",
+                display: Display::LineLoad,
+                bounds: None,
+            },
+            series: vec![
+                Series {
+                    name: "cup",
+                    points: cup.iter().map(|s| (s.x_m, s.load_n_m)).collect(),
+                },
+                Series {
+                    name: "cone",
+                    points: cone.iter().map(|s| (s.x_m, s.load_n_m)).collect(),
+                },
+            ],
+            per_element: false,
+        })
+        .collect();
+    let k = &a.stiffness;
+    let max_of = |f: &dyn Fn(&super::roller::RollerSolution) -> f64| {
+        sol.rollers.iter().map(|(r, _, _)| f(r)).fold(0.0, f64::max)
+    };
+    let max_stress = max_of(&|r| r.cup.max_stress_pa.max(r.cone.max_stress_pa));
+    let max_flange = max_of(&|r| r.flange_n);
+    let summary = vec![
+        Summary {
+            label: "δz",
+            value: sol.displacement_m[2],
+            display: Display::SmallLength,
+            precision: 4,
+        },
+        Summary {
+            label: "δx",
+            value: sol.displacement_m[0],
+            display: Display::SmallLength,
+            precision: 4,
+        },
+        Summary {
+            label: "F_c",
+            value: a.bearing.dynamics.centrifugal_force_n,
+            display: Display::Force,
+            precision: 2,
+        },
+        Summary {
+            label: "max P3",
+            value: max_flange,
+            display: Display::Force,
+            precision: 2,
+        },
+        Summary {
+            label: "σmax",
+            value: max_stress,
+            display: Display::Stress,
+            precision: 1,
+        },
+    ];
+    // Stiffness key outputs carry N/m, N·m/rad in their names; the unit table has no
+    // stiffness quantity yet, so they are marked dimensionless (values SI).
+    let key = |name, value: f64, quantity, role| KeyOutput {
+        name,
+        label: match name {
+            "axial_displacement_m" => "δz",
+            "stiffness_xx_n_m" => "Kxx",
+            "stiffness_zz_n_m" => "Kzz",
+            "stiffness_thetax_nm_rad" => "Kθθ",
+            "max_flange_load_n" => "Pfl",
+            "max_stress_pa" => "σmax",
+            _ => "?",
+        },
+        value: Some(value),
+        quantity,
+        role,
+    };
+    let key_outputs = vec![
+        key(
+            "axial_displacement_m",
+            sol.displacement_m[2],
+            Quantity::Length,
+            KeyRole::Target,
+        ),
+        key(
+            "stiffness_xx_n_m",
+            k[(0, 0)],
+            Quantity::Dimensionless,
+            KeyRole::Target,
+        ),
+        key(
+            "stiffness_zz_n_m",
+            k[(2, 2)],
+            Quantity::Dimensionless,
+            KeyRole::Target,
+        ),
+        key(
+            "stiffness_thetax_nm_rad",
+            k[(3, 3)],
+            Quantity::Dimensionless,
+            KeyRole::Target,
+        ),
+        key(
+            "max_flange_load_n",
+            max_flange,
+            Quantity::Force,
+            KeyRole::Target,
+        ),
+        key(
+            "max_stress_pa",
+            max_stress,
+            Quantity::Pressure,
+            KeyRole::Guard,
+        ),
+    ];
+    View {
+        system: super::deck::SYSTEM_ID,
+        tables: vec![Table {
+            id: "rollers",
+            columns: ROLLER_COLUMNS.to_vec(),
+            rows,
+        }],
+        charts: vec![load_chart],
+        element_charts,
+        summary,
+        key_outputs,
+        trace: None,
+        thermal: None,
+        stats: SolveStats {
+            iterations: sol.iterations,
+            // The final roller solves (each a Newton on its contact approaches).
+            inner_iterations: sol.rollers.iter().map(|r| r.0.iterations).sum(),
+            names: ["bearing Newton", "roller Newton"],
+            wall_time_s: a.wall_time_s,
+        },
+        warnings: Vec::new(),
+    }
+}
