@@ -143,6 +143,40 @@ fn seed_sign_reproduces_chapter_6() {
     assert!((n - 9_090.0).abs() < 150.0, "{n}");
 }
 
+/// `--set dynamics.method=time-simulation` on Bearing B at 9 500 rpm (curve 1): the
+/// contract fields `dynamics.{method, integrator, steps, rhs_evaluations, steady,
+/// oscillation_amplitude}` and `heat.{lateral_w, rolling_w}` appear; lateral + rolling
+/// = total (1e-9 relative: the same slices split two ways); the heat per ball is the
+/// seed's ≈ 57 W (Fig. 6-6, read ±20 %) and about five times race control's; the
+/// axisymmetric run is steady; the text report has the dynamics table.
+#[test]
+fn time_simulation_through_the_cli() {
+    let v = json("chen_b.toml", &["--set", "dynamics.method=time-simulation"]);
+    let d = &v["dynamics"];
+    assert_eq!(d["method"], "time-simulation");
+    assert!(d["integrator"]
+        .as_str()
+        .is_some_and(|s| s.starts_with("dopri5")));
+    assert!(num(&v, &["dynamics", "steps"]) > 10.0);
+    assert!(num(&v, &["dynamics", "rhs_evaluations"]) > num(&v, &["dynamics", "steps"]));
+    assert_eq!(d["steady"], true);
+    num(&v, &["dynamics", "oscillation_amplitude"]);
+    let (lat, roll) = (
+        num(&v, &["heat", "lateral_w"]),
+        num(&v, &["heat", "rolling_w"]),
+    );
+    let total = num(&v, &["heat", "total_w"]);
+    assert!(((lat + roll) / total - 1.0).abs() < 1e-9);
+    let per_ball = num(&v, &["heat", "per_ball_w"]);
+    assert!((per_ball / 57.0 - 1.0).abs() < 0.2, "{per_ball}");
+    let rc = num(&v, &["heat", "race_control_w"]);
+    assert!(total > 4.0 * rc, "{total} vs {rc}");
+    let d = deck("chen_b.toml");
+    let (ok, out, err) = run(&["run", d.as_str(), "--set", "dynamics.method=quasi-static"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("BALL DYNAMICS (quasi-static"), "{out}");
+}
+
 #[test]
 fn text_report_has_the_seed_tables() {
     let d = deck("chen_b.toml");

@@ -2,6 +2,7 @@
 //! Hertz contacts, spin heat (2-13), EHD film (4-10, 4-11), the skidding condition (2-4)
 //! per ball and the speed at which it is first violated, and the bulk temperature (4-1).
 
+use super::dynamics::DynamicsResult;
 use super::error::BallError;
 use super::geometry::BallGeometry;
 use super::input::{BallInput, Method, PreloadMode};
@@ -55,6 +56,11 @@ pub struct BallResult {
     pub cage_rad_s: f64,
     /// Ball rotation speed relative to the cage, rad/s.
     pub ball_spin_rad_s: f64,
+    /// ω_a, axial component of the ball's absolute angular velocity by race control,
+    /// rad/s.
+    pub ball_axial_rad_s: f64,
+    /// ω_r, its radial component, rad/s.
+    pub ball_radial_rad_s: f64,
     /// Controlling race.
     pub control: Race,
     /// Inner contact.
@@ -96,8 +102,13 @@ pub struct BallAnalysis {
     pub balls: Vec<BallResult>,
     /// The skidding threshold.
     pub skid: SkidThreshold,
-    /// Total heat, W.
+    /// Total heat, W: race control's spin heat, or the ball dynamics' slice heat when
+    /// `dynamics.method` asks for it.
     pub total_heat_w: f64,
+    /// Race control's spin heat (2-13b) summed over the balls, W.
+    pub race_control_heat_w: f64,
+    /// The ball dynamics (quasi-static or time simulation), when asked for.
+    pub dynamics: Option<DynamicsResult>,
     /// Bulk temperature T_oil + H/(ρ c Q̇), K (4-1).
     pub bulk_temperature_k: f64,
 }
@@ -341,9 +352,6 @@ fn contact_result(
 
 /// Solve a case by the race-control method.
 pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallError> {
-    if input.dynamics.method != Method::RaceControl {
-        return Err(BallError::NotImplemented(input.dynamics.method.name()));
-    }
     input
         .traction
         .curve()
@@ -375,11 +383,24 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
             heat_w: inner.spin_heat_w + outer.spin_heat_w,
             cage_rad_s: k.cage_rad_s,
             ball_spin_rad_s: k.ball_spin_rad_s,
+            ball_axial_rad_s: k.ball_axial_rad_s,
+            ball_radial_rad_s: k.ball_radial_rad_s,
             control: k.control,
             inner,
             outer,
         });
     }
+    let race_control_heat: f64 = balls.iter().map(|b| b.heat_w).sum();
+    let dynamics = match input.dynamics.method {
+        Method::RaceControl => None,
+        Method::QuasiStatic | Method::TimeSimulation => {
+            let d = super::dynamics::run(input, &geom, &balls, cancel)?;
+            for (b, bd) in balls.iter_mut().zip(&d.balls) {
+                b.heat_w = bd.heat_w;
+            }
+            Some(d)
+        }
+    };
     let skid = skid_threshold(input, &geom, axial, cancel)?;
     let total: f64 = balls.iter().map(|b| b.heat_w).sum();
     let lub = &input.lubricant;
@@ -391,6 +412,8 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
         balls,
         skid,
         total_heat_w: total,
+        race_control_heat_w: race_control_heat,
+        dynamics,
         bulk_temperature_k: bulk_temperature_k(
             total,
             lub.density_kg_m3,
@@ -485,13 +508,7 @@ mod tests {
     }
 
     #[test]
-    fn unimplemented_methods_are_typed_errors() {
-        let mut i = BallInput::chen_a();
-        i.dynamics.method = Method::TimeSimulation;
-        assert_eq!(
-            analyse(&i, Cancel::NONE),
-            Err(BallError::NotImplemented("time-simulation"))
-        );
+    fn bad_input_is_a_typed_error() {
         let mut i = BallInput::chen_a();
         i.operating.axial_load_n = 0.0;
         assert!(matches!(

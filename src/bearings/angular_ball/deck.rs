@@ -20,7 +20,7 @@ const BALL: [FieldSpec<BallInput>; 5] =
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 36] = [
+static FIELDS: [FieldSpec<BallInput>; 39] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -401,7 +401,7 @@ static FIELDS: [FieldSpec<BallInput>; 36] = [
             (0.0, false),
             (2.0, false),
             Presence::Default(0.0),
-            "race-control (implemented); quasi-static and time-simulation are not implemented yet",
+            "race-control, quasi-static (ball moment balance per position) or time-simulation (ball motion over its orbits)",
         ),
         get: |b| match b.dynamics.method { Method::RaceControl => 0.0, Method::QuasiStatic => 1.0, Method::TimeSimulation => 2.0 },
         set: |b, v| b.dynamics.method = match v as usize { 1 => Method::QuasiStatic, 2 => Method::TimeSimulation, _ => Method::RaceControl },
@@ -420,6 +420,51 @@ static FIELDS: [FieldSpec<BallInput>; 36] = [
         ),
         get: |b| b.dynamics.skid_search_limit_rad_s,
         set: |b, v| b.dynamics.skid_search_limit_rad_s = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.slices",
+            "dynamics",
+            "Slices per contact",
+            Quantity::Count,
+            FieldKind::Integer,
+            (1.0, false),
+            (2001.0, false),
+            Presence::Default(41.0),
+            "slices across each contact ellipse for the ball dynamics",
+        ),
+        get: |b| b.dynamics.slices as f64,
+        set: |b, v| b.dynamics.slices = v as usize,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.orbits",
+            "dynamics",
+            "Orbits simulated",
+            Quantity::Dimensionless,
+            FieldKind::Real,
+            (0.0, true),
+            (1000.0, false),
+            Presence::Default(5.0),
+            "orbits of each ball in the time simulation",
+        ),
+        get: |b| b.dynamics.orbits,
+        set: |b, v| b.dynamics.orbits = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.tolerance",
+            "dynamics",
+            "Integrator tolerance",
+            Quantity::Dimensionless,
+            FieldKind::Real,
+            (1e-13, false),
+            (1e-2, false),
+            Presence::Default(1e-8),
+            "relative tolerance of the ball-dynamics integrator",
+        ),
+        get: |b| b.dynamics.tolerance,
+        set: |b, v| b.dynamics.tolerance = v,
     },
 ];
 

@@ -68,6 +68,9 @@ pub enum BallError {
     /// The requested method is not implemented in this build.
     #[error("dynamics.method = \"{0}\" is not implemented yet (use \"race-control\")")]
     NotImplemented(&'static str),
+    /// The ball dynamics (time simulation or quasi-static moment balance) failed.
+    #[error("ball dynamics: {0}")]
+    Dynamics(String),
     /// Cancelled by the caller.
     #[error("cancelled")]
     Cancelled,

@@ -176,9 +176,11 @@ pub enum Method {
     /// Load distribution with race-control kinematics (ch. 2–3, 6).
     #[default]
     RaceControl,
-    /// Quasi-static ball dynamics (not implemented yet: solving returns an error).
+    /// Quasi-static ball dynamics: per ball, the angular velocity at which the slice
+    /// traction moments balance the gyroscopic term at its loads (`dynamics`).
     QuasiStatic,
-    /// Time simulation of each ball (not implemented yet: solving returns an error).
+    /// Time simulation of each ball's angular velocity over its orbit (2-3, 2-14…2-18;
+    /// `dynamics`).
     TimeSimulation,
 }
 
@@ -200,6 +202,13 @@ pub struct Dynamics {
     pub method: Method,
     /// The skidding threshold is searched for up to this relative ring speed, rad/s.
     pub skid_search_limit_rad_s: f64,
+    /// Slices across each contact ellipse (along its major axis) for the ball dynamics.
+    pub slices: usize,
+    /// Orbits of each ball simulated by the time simulation.
+    pub orbits: f64,
+    /// Relative tolerance of the ball-dynamics integrator (absolute: this times the
+    /// initial |ω|).
+    pub tolerance: f64,
 }
 
 /// A whole angular-contact ball bearing case, SI.
@@ -284,6 +293,9 @@ impl BallInput {
             dynamics: Dynamics {
                 method: Method::RaceControl,
                 skid_search_limit_rad_s: rpm(15_000.0),
+                slices: 41,
+                orbits: 5.0,
+                tolerance: 1e-8,
             },
         }
     }

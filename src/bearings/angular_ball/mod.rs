@@ -9,10 +9,12 @@
 
 pub mod analysis;
 pub mod deck;
+pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod input;
 pub mod load_distribution;
+pub mod load_track;
 pub mod race_control;
 pub mod report;
 pub mod system;

@@ -1,5 +1,5 @@
 //! JSON and text reports of a solved ball bearing (SI; every JSON key names its unit).
-//! Fields the race-control method does not compute (the time simulation's lateral and
+//! Fields the race-control method does not compute (the ball dynamics' lateral and
 //! rolling heat, integrator statistics) are absent, never filled in.
 
 use serde_json::{json, Value};
@@ -79,6 +79,53 @@ pub fn json(a: &BallAnalysis) -> Value {
     if let (Some(reason), Some(m)) = (&a.skid.reason, skid.as_object_mut()) {
         m.insert("reason".into(), json!(reason));
     }
+    let mut heat = json!({
+        "total_w": a.total_heat_w,
+        "per_ball_w": a.total_heat_w / n,
+        "race_control_w": a.race_control_heat_w,
+        "bulk_temperature_c": a.bulk_temperature_k - 273.15,
+    });
+    let mut dynamics = json!({ "method": a.input.dynamics.method.name() });
+    let mut balls = balls;
+    if let Some(d) = &a.dynamics {
+        if let Some(h) = heat.as_object_mut() {
+            h.insert("lateral_w".into(), json!(d.lateral_w()));
+            h.insert("rolling_w".into(), json!(d.rolling_w()));
+        }
+        if let Some(m) = dynamics.as_object_mut() {
+            m.insert("integrator".into(), json!(d.integrator));
+            m.insert("steps".into(), json!(d.steps));
+            m.insert("rhs_evaluations".into(), json!(d.rhs_evaluations));
+            m.insert("steady".into(), json!(d.steady));
+            // rad/s: half the peak-to-peak of the most varying ω component over the
+            // last orbit, largest over the balls.
+            m.insert(
+                "oscillation_amplitude".into(),
+                json!(d.oscillation_amplitude_rad_s),
+            );
+            m.insert(
+                "oscillation_amplitude_rad_s".into(),
+                json!(d.oscillation_amplitude_rad_s),
+            );
+            m.insert("slices".into(), json!(a.input.dynamics.slices));
+            m.insert("orbits".into(), json!(a.input.dynamics.orbits));
+        }
+        for (b, bd) in balls.iter_mut().zip(&d.balls) {
+            let last = bd.history.last().map(|s| s.omega_rad_s);
+            if let Some(m) = b.as_object_mut() {
+                m.insert(
+                    "dynamics".into(),
+                    json!({
+                        "heat_w": bd.heat_w,
+                        "lateral_w": bd.lateral_w,
+                        "rolling_w": bd.rolling_w,
+                        "omega_rad_s": last,
+                        "oscillation_amplitude_rad_s": bd.oscillation_rad_s,
+                    }),
+                );
+            }
+        }
+    }
     json!({
         "type": super::system::SYSTEM_ID,
         "rings": {
@@ -95,14 +142,8 @@ pub fn json(a: &BallAnalysis) -> Value {
             "controlling_race": control,
         },
         "skid": skid,
-        "heat": {
-            "total_w": a.total_heat_w,
-            "per_ball_w": a.total_heat_w / n,
-            "bulk_temperature_c": a.bulk_temperature_k - 273.15,
-        },
-        "dynamics": {
-            "method": a.input.dynamics.method.name(),
-        },
+        "heat": heat,
+        "dynamics": dynamics,
         "residuals": {
             "ring_force_n": a.load.ring_residual_n,
             "ball_force_n": a.load.ball_residual_n,
@@ -216,6 +257,53 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         a.total_heat_w / a.balls.len().max(1) as f64,
         a.bulk_temperature_k - 273.15
     );
+    if let Some(d) = &a.dynamics {
+        let _ = writeln!(
+            s,
+            "\nBALL DYNAMICS ({}, {} slices per contact, {}): {} steps, {} rhs evaluations, {}",
+            d.method.name(),
+            a.input.dynamics.slices,
+            d.integrator,
+            d.steps,
+            d.rhs_evaluations,
+            if d.steady {
+                "steady".to_string()
+            } else {
+                format!(
+                    "oscillating (amplitude {:.3} rad/s)",
+                    d.oscillation_amplitude_rad_s
+                )
+            }
+        );
+        let _ = writeln!(
+            s,
+            "  #   ψ°    ωa rad/s   ωr rad/s   ωt rad/s   H W   lateral W rolling W  race-control W"
+        );
+        for (j, (b, bd)) in a.balls.iter().zip(&d.balls).enumerate() {
+            let w = bd.history.last().map(|s| s.omega_rad_s).unwrap_or([0.0; 3]);
+            let _ = writeln!(
+                s,
+                "{:3} {:5.1} {:10.2} {:10.2} {:10.2} {:7.3} {:9.3} {:9.3} {:9.3}",
+                j,
+                b.azimuth_rad.to_degrees(),
+                w[0],
+                w[1],
+                w[2],
+                bd.heat_w,
+                bd.lateral_w,
+                bd.rolling_w,
+                b.inner.spin_heat_w + b.outer.spin_heat_w
+            );
+        }
+        let _ = writeln!(
+            s,
+            "  heat {:.2} W = {:.2} W lateral + {:.2} W rolling (race control: {:.2} W)",
+            d.total_w(),
+            d.lateral_w(),
+            d.rolling_w(),
+            a.race_control_heat_w
+        );
+    }
     match a.skid.speed_rad_s {
         Some(n) => {
             let _ = writeln!(

@@ -41,7 +41,7 @@ impl BearingSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 3] = [
+        const PANES: [PaneSpec; 4] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -53,6 +53,10 @@ impl BearingSystem for AngularBall {
             PaneSpec {
                 kind: PaneKind::Chart(0),
                 title: "Skid",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(1),
+                title: "Dynamics",
             },
         ];
         &PANES

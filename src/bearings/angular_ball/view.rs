@@ -189,8 +189,8 @@ pub fn view(a: &BallAnalysis) -> View {
             columns: COLUMNS.to_vec(),
             rows,
         }],
-        charts: vec![skid_chart(a)],
-        element_charts: Vec::new(),
+        charts: vec![skid_chart(a), dynamics_chart(a)],
+        element_charts: ball_charts(a),
         summary: vec![
             Summary {
                 label: "cage rpm",
@@ -305,4 +305,124 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
         ],
         per_element: false,
     }
+}
+
+/// The heat of a ball when, in its last simulated orbit, it passes its own start
+/// azimuth (the sample nearest to it; under radial load this is the heat at that
+/// position of the bearing, where the orbit mean would be the same for every ball), W.
+fn heat_at_own_azimuth(bd: &super::dynamics::BallDynamics) -> f64 {
+    let Some(last) = bd.history.last() else {
+        return bd.heat_w;
+    };
+    let start = bd.start_azimuth_rad.to_degrees();
+    bd.history
+        .iter()
+        .filter(|s| s.orbit_deg >= last.orbit_deg - 360.0 - 1e-9)
+        .map(|s| {
+            let d = (s.orbit_deg - start).rem_euclid(360.0);
+            (d.min(360.0 - d), s.heat_w)
+        })
+        .fold(
+            (f64::INFINITY, bd.heat_w),
+            |a, x| if x.0 < a.0 { x } else { a },
+        )
+        .1
+}
+
+/// The Dynamics chart (Figs. 6-8, 6-11): heat per ball against its azimuth, race
+/// control's spin heat and, when `dynamics.method` asks for it, the ball dynamics' heat
+/// (time simulation: at the ball's own azimuth during the last orbit). Point i is
+/// ball i.
+pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
+    let deg = |b: &BallResult| b.azimuth_rad.to_degrees();
+    let mut series = vec![Series {
+        name: "race control",
+        points: a
+            .balls
+            .iter()
+            .map(|b| (deg(b), b.inner.spin_heat_w + b.outer.spin_heat_w))
+            .collect(),
+    }];
+    let title = match &a.dynamics {
+        Some(d) => {
+            series.push(Series {
+                name: match d.method {
+                    super::input::Method::TimeSimulation => "time simulation",
+                    _ => "quasi-static",
+                },
+                points: a
+                    .balls
+                    .iter()
+                    .zip(&d.balls)
+                    .map(|(b, bd)| (deg(b), heat_at_own_azimuth(bd)))
+                    .collect(),
+            });
+            format!(
+                "heat per ball: {:.2} W mean ({}, {})",
+                d.total_w() / a.balls.len().max(1) as f64,
+                d.method.name(),
+                if d.steady { "steady" } else { "oscillating" }
+            )
+        }
+        None => "race-control heat per ball (set dynamics.method)".into(),
+    };
+    Chart {
+        title,
+        x: ChartAxis {
+            label: "ψ deg",
+            display: Display::Plain,
+            bounds: Some([0.0, 360.0]),
+        },
+        y: ChartAxis {
+            label: "heat W",
+            display: Display::Plain,
+            bounds: None,
+        },
+        series,
+        per_element: true,
+    }
+}
+
+/// One chart per ball (Figs. 6-6, 6-7): its pivoting speed ω_t (zero under race
+/// control: its departure is the skid) and its heat against the orbit position
+/// travelled (degrees, unwrapped: position stands for time). Empty without dynamics.
+pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
+    let Some(d) = &a.dynamics else {
+        return Vec::new();
+    };
+    d.balls
+        .iter()
+        .enumerate()
+        .map(|(j, bd)| Chart {
+            title: format!(
+                "ball {j}: {:.2} W ({:.2} lateral, {:.2} rolling)",
+                bd.heat_w, bd.lateral_w, bd.rolling_w
+            ),
+            x: ChartAxis {
+                label: "orbit deg",
+                display: Display::Plain,
+                bounds: None,
+            },
+            y: ChartAxis {
+                label: "ω_t rad/s, heat W",
+                display: Display::Plain,
+                bounds: None,
+            },
+            series: vec![
+                Series {
+                    name: "ω_t rad/s",
+                    points: bd
+                        .history
+                        .iter()
+                        .map(|s| (s.orbit_deg, s.omega_rad_s[2]))
+                        .collect(),
+                },
+                Series {
+                    name: "heat W",
+                    points: bd.history.iter().map(|s| (s.orbit_deg, s.heat_w)).collect(),
+                },
+            ],
+            per_element: false,
+        })
+        .collect()
 }
