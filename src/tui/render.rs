@@ -534,7 +534,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     if !marked.is_empty() {
         datasets.push(
             Dataset::default()
-                .name(format!("roller {}", app.roller_sel + 1))
+                .name(format!("{} {}", app.element_name(), app.roller_sel + 1))
                 .marker(Marker::Block)
                 .graph_type(GraphType::Scatter)
                 .style(Style::default().fg(Color::White))
