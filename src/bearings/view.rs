@@ -260,6 +260,8 @@ pub enum PaneKind {
     /// Bearing chart `n` of [`View::charts`]; chart 0 also has, per element, its detail
     /// chart ([`View::element_charts`], `c` toggles).
     Chart(usize),
+    /// Text block `n` of [`View::texts`] (a matrix, a short account), in display units.
+    Text(usize),
     /// The thermal network.
     Thermal,
     /// The equilibrium stepper.
@@ -435,6 +437,30 @@ pub struct View {
     /// Results beyond the validity of the model, each a sentence with its numbers and
     /// bound (empty: none); the reports carry them too.
     pub warnings: Vec<Warning>,
+    /// Preformatted blocks (e.g. a stiffness matrix with its units), in each unit system.
+    pub texts: Vec<TextBlock>,
+}
+
+/// Lines a system formats itself, once per unit system (a matrix whose cells have
+/// different units does not fit the table's one-unit-per-column).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TextBlock {
+    /// What it is.
+    pub title: &'static str,
+    /// The lines in SI units.
+    pub si: Vec<String>,
+    /// The lines in US customary units.
+    pub us: Vec<String>,
+}
+
+impl TextBlock {
+    /// The lines in `units`.
+    pub fn lines(&self, units: Units) -> &[String] {
+        match units {
+            Units::Si => &self.si,
+            Units::Us => &self.us,
+        }
+    }
 }
 
 /// A result beyond the validity of the model, said in each unit system.

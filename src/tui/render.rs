@@ -222,7 +222,33 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
         Pane::Chart(n) => render_load(app, n, area, buf),
         Pane::Thermal => render_thermal(app, area, buf),
         Pane::Stepper => render_stepper(app, area, buf),
+        Pane::Text(n) => render_text(app, n, area, buf),
     }
+}
+
+/// A text pane: block `n` of the view's texts in the display units, wrapped (a line
+/// wider than the pane moves to the next line; nothing is cut).
+fn render_text(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
+    let block = pane_block(app, Pane::Text(n), stale_note(app));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let Some(view) = app.view.as_deref() else {
+        Paragraph::new(no_solution_text(app)).render(inner, buf);
+        return;
+    };
+    let lines: Vec<Line> = view
+        .texts
+        .get(n)
+        .map(|t| {
+            t.lines(app.display_units)
+                .iter()
+                .map(|l| Line::raw(l.clone()))
+                .collect()
+        })
+        .unwrap_or_default();
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .render(inner, buf);
 }
 
 fn truncate(s: &str, w: usize) -> String {
@@ -945,6 +971,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
+                Pane::Text(_) => Vec::new(),
                 Pane::Inputs => v(&[
                     "jk move",
                     "Enter edit",

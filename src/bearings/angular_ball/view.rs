@@ -252,6 +252,7 @@ pub fn view(a: &BallAnalysis) -> View {
             wall_time_s: 0.0,
         },
         warnings: Vec::new(),
+        texts: Vec::new(),
     }
 }
 

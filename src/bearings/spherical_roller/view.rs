@@ -391,6 +391,7 @@ pub fn view(a: &Analysis) -> View {
             wall_time_s: a.load.stats.wall_time_s,
         },
         warnings: super::warnings::warnings(a),
+        texts: Vec::new(),
     }
 }
 

@@ -169,6 +169,63 @@ pub fn json(a: &Analysis) -> Value {
     })
 }
 
+/// The stiffness matrix in `units` (rows F_x … M_y, columns x … θ_y, each block in its
+/// unit), its asymmetry and the finite-difference check: the text report's section and
+/// the workbench's Stiffness pane.
+pub fn stiffness_lines(a: &Analysis, units: Units) -> Vec<String> {
+    let (lu, fu, mu) = (
+        Quantity::Length.unit(units),
+        Quantity::Force.unit(units),
+        Quantity::Moment.unit(units),
+    );
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
+    );
+    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
+        (true, true) => (
+            Quantity::Force.factor(units) / Quantity::Length.factor(units),
+            format!("{fu}/{lu}"),
+        ),
+        (true, false) => (Quantity::Force.factor(units), format!("{fu}/rad")),
+        (false, true) => (
+            Quantity::Moment.factor(units) / Quantity::Length.factor(units),
+            format!("{mu}/{lu}"),
+        ),
+        (false, false) => (Quantity::Moment.factor(units), format!("{mu}/rad")),
+    };
+    let k = &a.stiffness;
+    for i in 0..5 {
+        let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
+        for j in 0..5 {
+            let (f, _) = unit(i, j);
+            let _ = write!(line, " {:>12.4e}", k[(i, j)] / f);
+        }
+        let _ = writeln!(s, "{line}");
+    }
+    let _ = writeln!(
+        s,
+        "  units: lineal {}, lineal-angular {} and {}, angular {}",
+        unit(0, 0).1,
+        unit(0, 3).1,
+        unit(3, 0).1,
+        unit(3, 3).1
+    );
+    let _ = writeln!(
+        s,
+        "  largest asymmetry |K_ij - K_ji| (scaled): {:.3e}",
+        a.asymmetry_max()
+    );
+    if let Some(d) = a.finite_difference_max_rel() {
+        let _ = writeln!(
+            s,
+            "  analytic vs finite differences: largest gap {d:.3e} of the row scale"
+        );
+    }
+    s.lines().map(str::to_string).collect()
+}
+
 /// The text report in `units` (US: in, lbf, lbf·in, lbf/in, lbf·in/rad).
 pub fn text(a: &Analysis, units: Units) -> String {
     let b = &a.bearing;
@@ -266,49 +323,9 @@ pub fn text(a: &Analysis, units: Units) -> String {
             if r.cone.edge_loaded { "yes" } else { "no" },
         );
     }
-    let _ = writeln!(
-        s,
-        "\nStiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
-    );
-    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
-        (true, true) => (
-            Quantity::Force.factor(units) / Quantity::Length.factor(units),
-            format!("{fu}/{lu}"),
-        ),
-        (true, false) => (Quantity::Force.factor(units), format!("{fu}/rad")),
-        (false, true) => (
-            Quantity::Moment.factor(units) / Quantity::Length.factor(units),
-            format!("{mu}/{lu}"),
-        ),
-        (false, false) => (Quantity::Moment.factor(units), format!("{mu}/rad")),
-    };
-    let k = &a.stiffness;
-    for i in 0..5 {
-        let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
-        for j in 0..5 {
-            let (f, _) = unit(i, j);
-            let _ = write!(line, " {:>12.4e}", k[(i, j)] / f);
-        }
+    let _ = writeln!(s);
+    for line in stiffness_lines(a, units) {
         let _ = writeln!(s, "{line}");
-    }
-    let _ = writeln!(
-        s,
-        "  units: lineal {}, lineal-angular {} and {}, angular {}",
-        unit(0, 0).1,
-        unit(0, 3).1,
-        unit(3, 0).1,
-        unit(3, 3).1
-    );
-    let _ = writeln!(
-        s,
-        "  largest asymmetry |K_ij - K_ji| (scaled): {:.3e}",
-        a.asymmetry_max()
-    );
-    if let Some(d) = a.finite_difference_max_rel() {
-        let _ = writeln!(
-            s,
-            "  analytic vs finite differences: largest gap {d:.3e} of the row scale"
-        );
     }
     let _ = writeln!(s, "\nDamping: {DAMPING_NOTE}.");
     let _ = writeln!(

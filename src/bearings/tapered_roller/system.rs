@@ -57,7 +57,7 @@ impl BearingSystem for TaperedRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 3] = [
+        const PANES: [PaneSpec; 4] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -69,6 +69,10 @@ impl BearingSystem for TaperedRoller {
             PaneSpec {
                 kind: PaneKind::Chart(0),
                 title: "Load",
+            },
+            PaneSpec {
+                kind: PaneKind::Text(0),
+                title: "Stiffness",
             },
         ];
         &PANES

@@ -358,5 +358,10 @@ pub fn view(a: &Analysis) -> View {
             wall_time_s: a.wall_time_s,
         },
         warnings: Vec::new(),
+        texts: vec![crate::bearings::view::TextBlock {
+            title: "stiffness",
+            si: super::report::stiffness_lines(a, crate::units::Units::Si),
+            us: super::report::stiffness_lines(a, crate::units::Units::Us),
+        }],
     }
 }
