@@ -66,6 +66,21 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Text)]
         format: TableFormat,
     },
+    /// The bearing's stiffness matrix (tapered-roller decks: the 5×5 for a rotor model).
+    Stiffness {
+        /// Deck file (TOML).
+        deck: PathBuf,
+        /// Also compute it by finite differences of re-solved equilibria and report the
+        /// largest gap (solver.stiffness = "both").
+        #[arg(long)]
+        check_fd: bool,
+        /// Format: text (deck units), json or csv (SI).
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write to FILE instead of standard output, as `run --output` does.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
     /// Solve a deck at every value of one key (no transient): one row of key outputs per point.
     Sweep {
         /// Deck file (TOML).

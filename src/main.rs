@@ -144,6 +144,68 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Some(Command::Stiffness {
+            deck,
+            check_fd,
+            format,
+            output,
+        }) => {
+            if let Some(out) = &output {
+                if same_file(out, &deck) {
+                    eprintln!(
+                        "--output {}: is the deck being read ({}); refusing to overwrite it",
+                        out.display(),
+                        deck.display()
+                    );
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            }
+            let mut sets = cli.set.clone();
+            if check_fd {
+                sets.push("solver.stiffness=both".into());
+            }
+            let case = match load_case(&deck, &sets) {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            };
+            let options = RunOptions {
+                skip_transient: true,
+            };
+            let solution = match case.solve(options, Cancel::NONE) {
+                Ok(s) => s,
+                Err(e) => {
+                    eprintln!("solve failed: {e}");
+                    return ExitCode::from(exit::SOLVE_FAILED);
+                }
+            };
+            let format = match format {
+                Format::Text => report::Format::Text,
+                Format::Json => report::Format::Json,
+                Format::Csv => report::Format::Csv,
+            };
+            let Some(text) = report::stiffness::render(solution.as_ref(), format, case.units())
+            else {
+                eprintln!(
+                    "{}: the {} has no stiffness matrix (tapered-roller decks have one)",
+                    deck.display(),
+                    case.system().title()
+                );
+                return ExitCode::from(exit::INVALID_INPUT);
+            };
+            match output {
+                Some(path) => {
+                    if let Err(e) = write_atomic(&path, &text).map(drop) {
+                        eprintln!("cannot write {}: {e}", path.display());
+                        return ExitCode::from(exit::INVALID_INPUT);
+                    }
+                }
+                None => print!("{text}"),
+            }
+            ExitCode::SUCCESS
+        }
         Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
             Ok(_) => {
                 println!("{}: ok", deck.display());

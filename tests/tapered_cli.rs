@@ -226,3 +226,48 @@ fn template_checks_clean() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// `rollbench stiffness` (issue 17): the matrix alone, in the deck's units as text, the
+/// JSON `stiffness` object, or a 5×5 CSV in SI; `--check-fd` adds the finite-difference
+/// gap (below 1e-5 of the row scale, the issue's bound); a deck without a stiffness
+/// matrix is refused with exit 1.
+#[test]
+fn stiffness_subcommand() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_rollbench"))
+            .args(args)
+            .output()
+            .expect("runs")
+    };
+    let out = run(&["stiffness", "decks/trb_afapl.toml"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("Stiffness matrix") && text.contains("lbf/in"),
+        "{text}"
+    );
+    let out = run(&[
+        "stiffness",
+        "decks/trb_afapl.toml",
+        "--check-fd",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert_eq!(v["type"], "tapered-roller");
+    let m = v["stiffness"]["matrix"].as_array().expect("matrix");
+    assert_eq!(m.len(), 5);
+    assert!(m.iter().all(|r| r.as_array().is_some_and(|r| r.len() == 5)));
+    let fd = v["stiffness"]["finite_difference_max_rel"]
+        .as_f64()
+        .expect("the finite-difference gap");
+    assert!(fd < 1e-5, "{fd}");
+    let out = run(&["stiffness", "decks/trb_afapl.toml", "--format", "csv"]);
+    let csv = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(csv.lines().count(), 6, "{csv}");
+    assert!(csv.starts_with("row,x,y,z,theta_x,theta_y\nF_x,"), "{csv}");
+    let out = run(&["stiffness", "decks/aerospace.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("has no stiffness matrix"));
+}

@@ -3,6 +3,7 @@
 //! system-independent [`View`] table. [`Disp`] holds the display units of a text report.
 
 pub mod csv;
+pub mod stiffness;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;
