@@ -57,7 +57,11 @@ pub enum Command {
         format: TableFormat,
     },
     /// List every key `--set` accepts, with its units and allowed range.
-    Keys,
+    Keys {
+        /// Bearing system (the deck's `type`).
+        #[arg(long = "type", value_name = "TYPE", default_value = crate::bearings::DEFAULT_SYSTEM)]
+        r#type: String,
+    },
     /// Run time against error over laminae × force tolerance (default: every deck in decks/).
     Bench {
         /// Deck file (TOML); default: every deck in ./decks, or the embedded aerospace deck.

@@ -8,7 +8,7 @@ use std::path::Path;
 use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
 use rollbench::cli::{exit, Cli, Command, Format, TableFormat, UnitsArg};
-use rollbench::deck::{self, Units};
+use rollbench::deck::Units;
 use rollbench::files::{same_file, write_atomic};
 use rollbench::numerics::cancel::Cancel;
 use rollbench::report;
@@ -58,7 +58,7 @@ fn main() -> ExitCode {
         let ignored = match &cli.command {
             Some(Command::Template { .. }) => Some("template"),
             Some(Command::Validate { .. }) => Some("validate"),
-            Some(Command::Keys) => Some("keys"),
+            Some(Command::Keys { .. }) => Some("keys"),
             _ => None,
         };
         if let Some(cmd) = ignored {
@@ -248,10 +248,20 @@ fn main() -> ExitCode {
                 exit::VALIDATION_FAILED
             })
         }
-        Some(Command::Keys) => {
-            print!("{}", deck::keys_table());
-            ExitCode::SUCCESS
-        }
+        Some(Command::Keys { r#type }) => match bearings::system(&r#type) {
+            Some(system) => {
+                print!("{}", system.keys_table());
+                ExitCode::SUCCESS
+            }
+            None => {
+                eprintln!(
+                    "--type {}: unknown bearing system (known: {})",
+                    r#type,
+                    bearings::known_types()
+                );
+                ExitCode::from(exit::INVALID_INPUT)
+            }
+        },
         Some(Command::Sweep {
             deck,
             set_range,

@@ -101,6 +101,9 @@ pub trait BearingSystem: Sync {
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None
     }
+    /// The table `rollbench keys --type` prints: every key `--set` accepts, with units and
+    /// allowed range.
+    fn keys_table(&self) -> String;
     /// A fully commented deck in `units` that parses back.
     fn template(&self, units: Units) -> String;
     /// The shipped example deck (text), embedded in the binary.

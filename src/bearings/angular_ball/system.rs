@@ -62,6 +62,10 @@ impl BearingSystem for AngularBall {
         &PANES
     }
 
+    fn keys_table(&self) -> String {
+        crate::deck::form::keys_table(&SCHEMA)
+    }
+
     fn template(&self, units: Units) -> String {
         crate::deck::form::template(&SCHEMA, units)
     }

@@ -87,6 +87,10 @@ impl BearingSystem for SphericalRoller {
         Some(FIDELITY_GRID)
     }
 
+    fn keys_table(&self) -> String {
+        crate::deck::keys_table()
+    }
+
     fn template(&self, units: Units) -> String {
         crate::deck::template(units)
     }

@@ -78,6 +78,10 @@ impl BearingSystem for TaperedRoller {
         &PANES
     }
 
+    fn keys_table(&self) -> String {
+        crate::deck::form::keys_table(&SCHEMA)
+    }
+
     fn template(&self, units: Units) -> String {
         template(&SCHEMA, units)
     }

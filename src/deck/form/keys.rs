@@ -131,7 +131,13 @@ pub fn close_keys<T>(schema: &Schema<T>, key: &str) -> Vec<&'static str> {
 /// The message for an unknown `--set` key: the close matches and where the full list is.
 pub(super) fn unknown_key_hint<T>(schema: &Schema<T>, key: &str) -> String {
     let close = close_keys(schema, key);
-    let list = "`rollbench keys` lists every editable key with its allowed range";
+    // The default system's list is `rollbench keys`; another system's needs its type.
+    let command = if schema.system == crate::bearings::DEFAULT_SYSTEM {
+        "rollbench keys".to_string()
+    } else {
+        format!("rollbench keys --type {}", schema.system)
+    };
+    let list = format!("`{command}` lists every editable key with its allowed range");
     if close.is_empty() {
         format!("unknown key ({list})")
     } else {
