@@ -59,13 +59,11 @@ pub fn session_solver() -> Solver {
         // The status line's time is the solve as the user waited for it, measured here
         // for every system alike (a system's own counters may not time themselves).
         let start = std::time::Instant::now();
-        session
-            .solve(case, detail, &Cancel::new(cancel))
-            .map(|s| {
-                let mut view = s.view();
-                view.stats.wall_time_s = start.elapsed().as_secs_f64();
-                view
-            })
+        session.solve(case, detail, &Cancel::new(cancel)).map(|s| {
+            let mut view = s.view();
+            view.stats.wall_time_s = start.elapsed().as_secs_f64();
+            view
+        })
     })
 }
 
