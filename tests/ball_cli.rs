@@ -226,3 +226,19 @@ fn bad_decks_name_line_key_and_range() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--set operating.radial_load=500` on Bearing B: the unloaded balls near ψ = 180° must
+/// not make the skid threshold 0 rpm (the bug). The threshold is the speed at which the
+/// least-loaded ball still gripped by both races skids: 5 116 rpm against 9 780 rpm
+/// axial-only (the library test `skid_threshold_under_radial_load_ignores_unloaded_balls`
+/// explains the drop); bands ±2 % around those values, wide enough for solver
+/// tolerances, far tighter than the bug.
+#[test]
+fn chen_b_radial_load_skid_threshold_is_not_zero() {
+    let axial = json("chen_b.toml", &[]);
+    let radial = json("chen_b.toml", &["--set", "operating.radial_load=500"]);
+    let n0 = axial["skid"]["threshold_rpm"].as_f64().unwrap_or(f64::NAN);
+    let n = radial["skid"]["threshold_rpm"].as_f64().unwrap_or(f64::NAN);
+    assert!((n0 / 9_780.0 - 1.0).abs() < 0.02, "{n0}");
+    assert!((n / 5_116.0 - 1.0).abs() < 0.02, "{n}");
+}

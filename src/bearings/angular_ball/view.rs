@@ -230,11 +230,20 @@ pub fn view(a: &BallAnalysis) -> View {
                 Quantity::Dimensionless,
                 KeyRole::Guard,
             ),
+            // The heat is the only key output the fidelity study's knobs (dynamics slices
+            // and tolerance, see `system::FIDELITY_GRID`) change, and only when the ball
+            // dynamics computes it: then it is the target that decides the recommended
+            // slice count (the load distribution, pressure and skid threshold do not
+            // depend on slices and are met exactly). With race control it is a guard.
             k(
                 "heat_w",
                 Some(a.total_heat_w),
                 Quantity::Power,
-                KeyRole::Guard,
+                if a.dynamics.is_some() {
+                    KeyRole::Target
+                } else {
+                    KeyRole::Guard
+                },
             ),
             k(
                 "skid_threshold_rpm",

@@ -1,0 +1,104 @@
+//! Criterion benchmarks of the angular-contact ball system (issue 16, "Speed and
+//! stability"): the axisymmetric load distribution with race control on Chen's Bearing A
+//! (target < 20 µs); the whole race-control analysis with the skid search on A (no
+//! target of its own); the quasi-static ball dynamics on Bearing B at 9 500 rpm (target
+//! < 2 ms); the time simulation of B under 500 N radial load, 20 balls × 5 orbits
+//! (target < 100 ms). The dynamics benches time `dynamics::run` alone, from a
+//! race-control analysis solved once outside the loop.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::bearings::angular_ball::analysis::{analyse, BallAnalysis};
+use rollbench::bearings::angular_ball::dynamics;
+use rollbench::bearings::angular_ball::geometry::BallGeometry;
+use rollbench::bearings::angular_ball::input::{Method, PreloadMode};
+use rollbench::bearings::angular_ball::load_distribution::{self, Axial, Conditions};
+use rollbench::bearings::angular_ball::BallInput;
+use rollbench::numerics::cancel::Cancel;
+
+/// The load-solve conditions of `input`, as `analysis` builds them (the preload held as
+/// the rest displacement when the deck says so: that rest solve is done here, once).
+fn conditions(input: &BallInput, geom: &BallGeometry) -> Conditions {
+    let op = &input.operating;
+    let mut c = Conditions {
+        inner_speed_rad_s: op.inner_speed_rad_s,
+        outer_speed_rad_s: op.outer_speed_rad_s,
+        axial: Axial::Force(op.axial_load_n),
+        radial_load_n: op.radial_load_n,
+        race_control: input.kinematics.race_control,
+        gyroscopic_friction: input.kinematics.gyroscopic_friction,
+        max_friction: input.traction.curve().max_mu(),
+    };
+    if op.preload_mode == PreloadMode::Displacement {
+        let rest = Conditions {
+            inner_speed_rad_s: 0.0,
+            outer_speed_rad_s: 0.0,
+            radial_load_n: 0.0,
+            ..c
+        };
+        let d = load_distribution::solve(geom, &rest, Cancel::NONE)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .axial_deflection_m;
+        c.axial = Axial::Displacement(d);
+    }
+    c
+}
+
+fn solved(input: &BallInput) -> BallAnalysis {
+    analyse(input, Cancel::NONE).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn bearing_a(c: &mut Criterion) {
+    let input = BallInput::chen_a();
+    let geom = BallGeometry::new(&input).unwrap_or_else(|e| panic!("{e}"));
+    let cond = conditions(&input, &geom);
+    c.bench_function("ball_a_load_distribution_race_control", |b| {
+        b.iter(|| {
+            load_distribution::solve(&geom, std::hint::black_box(&cond), Cancel::NONE)
+                .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+    c.bench_function("ball_a_analysis_with_skid_search", |b| {
+        b.iter(|| solved(std::hint::black_box(&input)))
+    });
+}
+
+fn bearing_b_dynamics(c: &mut Criterion) {
+    let mut input = BallInput::chen_b();
+    let a = solved(&input);
+    input.dynamics.method = Method::QuasiStatic;
+    c.bench_function("ball_b_quasi_static_9500_rpm", |b| {
+        b.iter(|| {
+            dynamics::run(
+                std::hint::black_box(&input),
+                &a.geometry,
+                &a.balls,
+                Cancel::NONE,
+            )
+            .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+
+    let mut input = BallInput::chen_b();
+    input.operating.radial_load_n = 500.0;
+    let a = solved(&input);
+    input.dynamics.method = Method::TimeSimulation;
+    input.dynamics.orbits = 5.0;
+    assert_eq!(a.balls.len(), 20);
+    let mut g = c.benchmark_group("ball_b_time_simulation");
+    g.sample_size(10);
+    g.bench_function("radial_500_n_20_balls_5_orbits", |b| {
+        b.iter(|| {
+            dynamics::run(
+                std::hint::black_box(&input),
+                &a.geometry,
+                &a.balls,
+                Cancel::NONE,
+            )
+            .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bearing_a, bearing_b_dynamics);
+criterion_main!(benches);
