@@ -311,3 +311,103 @@ mod tests {
         assert!("cgs".parse::<Units>().is_err());
     }
 }
+
+/// `text` with every SI quantity written as a number followed by one of the units `N`,
+/// `N·m`, `Pa`, `m` restated in `units` (US: lbf, in·lbf, psi, in), keeping the number's
+/// form (fixed decimals or scientific, as many digits). Solver messages are written in SI
+/// deep inside the solver; a US deck's user reads them in US units (issue 15). SI text is
+/// returned unchanged.
+pub fn restate_si(text: &str, units: Units) -> String {
+    if units == Units::Si {
+        return text.to_string();
+    }
+    // (SI unit, factor to divide by, US unit), longest first so `N·m` wins over `N`.
+    const TABLE: [(&str, f64, &str); 4] = [
+        ("N·m", INCH_LBF_N_M, "in·lbf"),
+        ("Pa", PSI_PA, "psi"),
+        ("N", LBF_N, "lbf"),
+        ("m", INCH_M, "in"),
+    ];
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < chars.len() {
+        // A number starts at a digit or a sign before a digit, not inside a word.
+        let starts = |k: usize| {
+            let c = chars[k];
+            let prev_ok = k == 0 || !(chars[k - 1].is_alphanumeric() || chars[k - 1] == '_');
+            prev_ok
+                && (c.is_ascii_digit()
+                    || (c == '-' && chars.get(k + 1).is_some_and(|d| d.is_ascii_digit())))
+        };
+        if !starts(i) {
+            out.push(chars[i]);
+            i += 1;
+            continue;
+        }
+        let mut j = i + 1;
+        while j < chars.len() {
+            let c = chars[j];
+            let exp_sign = (c == '-' || c == '+') && matches!(chars[j - 1], 'e' | 'E');
+            if c.is_ascii_digit() || c == '.' || c == 'e' || c == 'E' || exp_sign {
+                j += 1;
+            } else {
+                break;
+            }
+        }
+        let number: String = chars[i..j].iter().collect();
+        let rest: String = chars[j..].iter().collect();
+        let unit = TABLE.iter().find(|(u, _, _)| {
+            rest.strip_prefix(' ')
+                .and_then(|r| r.strip_prefix(u))
+                .is_some_and(|after| {
+                    after
+                        .chars()
+                        .next()
+                        .is_none_or(|c| !(c.is_alphanumeric() || c == '·' || c == '/' || c == '²'))
+                })
+        });
+        match (number.parse::<f64>(), unit) {
+            (Ok(v), Some(&(si, factor, us))) => {
+                let x = v / factor;
+                let formatted = match number.find(['e', 'E']) {
+                    Some(e) => {
+                        let decimals = number[..e].split_once('.').map_or(0, |(_, d)| d.len());
+                        format!("{x:.decimals$e}")
+                    }
+                    None => {
+                        let decimals = number.split_once('.').map_or(0, |(_, d)| d.len());
+                        format!("{x:.decimals$}")
+                    }
+                };
+                out.push_str(&formatted);
+                out.push(' ');
+                out.push_str(us);
+                i = j + 1 + si.chars().count();
+            }
+            _ => {
+                out.push_str(&number);
+                i = j;
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod restate_tests {
+    use super::*;
+
+    /// The issue's message: a US deck's solver failure read in lbf and in; words, rpm,
+    /// degrees and keys are left alone; the number keeps its form.
+    #[test]
+    fn solver_messages_restated_in_us_units() {
+        let si = "the rings moved 1.785e-2 m axially (more than D/2 = 6.350e-3 m) under F_r = 13344.7 N, F_a = 4448.2 N at contact angle 12.00 deg; residual 2.5e-3 N·m, 17000.0 rpm, 2.1e9 Pa, solver.max_roller_iterations 100 m2";
+        let us = restate_si(si, Units::Us);
+        assert_eq!(
+            us,
+            "the rings moved 7.028e-1 in axially (more than D/2 = 2.500e-1 in) under F_r = 3000.0 lbf, F_a = 1000.0 lbf at contact angle 12.00 deg; residual 2.2e-2 in·lbf, 17000.0 rpm, 3.0e5 psi, solver.max_roller_iterations 100 m2"
+        );
+        assert_eq!(restate_si(si, Units::Si), si);
+    }
+}

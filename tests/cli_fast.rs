@@ -151,3 +151,25 @@ fn csv_rows_equal_the_json_rollers() {
         }
     }
 }
+
+/// A solver failure on a US deck is read in US units (issue 15: it printed
+/// `F_r = 13344.7 N … 1.785e-2 m`): the rings' walk in inches and the loads in lbf.
+#[test]
+fn solver_failure_on_a_us_deck_speaks_us_units() {
+    let out = rollbench()
+        .args([
+            "run",
+            "decks/aerospace.toml",
+            "--set",
+            "operating.axial_load=0",
+            "--set",
+            "geometry.contact_angle=20",
+        ])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("F_r = 3000.0 lbf, F_a = 0.0 lbf"), "{err}");
+    assert!(err.contains(" in axially"), "{err}");
+    assert!(!err.contains(" N,") && !err.contains(" m axially"), "{err}");
+}

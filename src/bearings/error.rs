@@ -45,4 +45,19 @@ pub enum SolveError {
         stage: &'static str,
         message: String,
     },
+    /// One of the above, worded for the user in the deck's units
+    /// ([`crate::units::restate_si`]).
+    #[error("{0}")]
+    InDeckUnits(String),
+}
+
+impl SolveError {
+    /// The error with its SI numbers restated in `units` (cancellation stays itself).
+    pub fn in_units(self, units: crate::units::Units) -> SolveError {
+        match (self, units) {
+            (SolveError::Cancelled, _) => SolveError::Cancelled,
+            (e, crate::units::Units::Si) => e,
+            (e, u) => SolveError::InDeckUnits(crate::units::restate_si(&e.to_string(), u)),
+        }
+    }
 }

@@ -146,7 +146,7 @@ impl Case for SphericalCase {
             cancel.flag(),
         )
         .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
-        .map_err(|e| e.to_string())
+        .map_err(|e| e.in_units(self.deck.units).to_string())
     }
 
     fn has_transient(&self) -> bool {
@@ -271,5 +271,6 @@ impl Session for SphericalSession {
                 cancel.flag(),
             )
             .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| e.in_units(case.deck.units))
     }
 }
