@@ -19,6 +19,69 @@ fn load_case(path: &Path, overrides: &[String]) -> Result<Box<dyn Case>, String>
     bearings::load_file(path, overrides).map_err(|e| e.to_string())
 }
 
+/// Refuses an `--output` that is the deck being read (checked before anything is solved):
+/// the exit code to leave with.
+fn refuse_output_over_deck(output: Option<&Path>, deck: &Path) -> Result<(), ExitCode> {
+    match output {
+        Some(out) if same_file(out, deck) => {
+            eprintln!(
+                "--output {}: is the deck being read ({}); refusing to overwrite it",
+                out.display(),
+                deck.display()
+            );
+            Err(ExitCode::from(exit::INVALID_INPUT))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// A deck's case and its solution.
+type Solved = (Box<dyn Case>, Box<dyn bearings::Solution>);
+
+/// Reads the deck with `overrides` and solves it; on failure the message is printed and
+/// the exit code returned (invalid input 1, solve failed 2).
+fn load_and_solve(
+    deck: &Path,
+    overrides: &[String],
+    options: RunOptions,
+) -> Result<Solved, ExitCode> {
+    let case = load_case(deck, overrides).map_err(|e| {
+        eprintln!("{e}");
+        ExitCode::from(exit::INVALID_INPUT)
+    })?;
+    let solution = case.solve(options, Cancel::NONE).map_err(|e| {
+        eprintln!("solve failed: {e}");
+        ExitCode::from(exit::SOLVE_FAILED)
+    })?;
+    Ok((case, solution))
+}
+
+/// The report format of a CLI format.
+fn report_format(format: Format) -> report::Format {
+    match format {
+        Format::Text => report::Format::Text,
+        Format::Json => report::Format::Json,
+        Format::Csv => report::Format::Csv,
+    }
+}
+
+/// Writes `text` to `--output` (atomically, see `rollbench::files`) or standard output.
+fn emit(output: Option<&Path>, text: &str) -> ExitCode {
+    match output {
+        Some(path) => match write_atomic(path, text) {
+            Ok(_) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cannot write {}: {e}", path.display());
+                ExitCode::from(exit::INVALID_INPUT)
+            }
+        },
+        None => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+    }
+}
+
 /// The deck at `path`, or the default system's embedded example deck when there is none.
 fn load_case_or_default(
     path: Option<&Path>,
@@ -99,50 +162,18 @@ fn main() -> ExitCode {
             output,
             no_transient,
         }) => {
-            // Never write the report over the deck being read (checked before solving).
-            if let Some(out) = &output {
-                if same_file(out, &deck) {
-                    eprintln!(
-                        "--output {}: is the deck being read ({}); refusing to overwrite it",
-                        out.display(),
-                        deck.display()
-                    );
-                    return ExitCode::from(exit::INVALID_INPUT);
-                }
+            if let Err(code) = refuse_output_over_deck(output.as_deref(), &deck) {
+                return code;
             }
-            let case = match load_case(&deck, &cli.set) {
-                Ok(c) => c,
-                Err(e) => {
-                    eprintln!("{e}");
-                    return ExitCode::from(exit::INVALID_INPUT);
-                }
-            };
             let options = RunOptions {
                 skip_transient: no_transient,
             };
-            let solution = match case.solve(options, Cancel::NONE) {
-                Ok(s) => s,
-                Err(e) => {
-                    eprintln!("solve failed: {e}");
-                    return ExitCode::from(exit::SOLVE_FAILED);
-                }
+            let (case, solution) = match load_and_solve(&deck, &cli.set, options) {
+                Ok(x) => x,
+                Err(code) => return code,
             };
-            let format = match format {
-                Format::Text => report::Format::Text,
-                Format::Json => report::Format::Json,
-                Format::Csv => report::Format::Csv,
-            };
-            let text = report::render(solution.as_ref(), format, case.units());
-            match output {
-                Some(path) => {
-                    if let Err(e) = write_atomic(&path, &text).map(drop) {
-                        eprintln!("cannot write {}: {e}", path.display());
-                        return ExitCode::from(exit::INVALID_INPUT);
-                    }
-                }
-                None => print!("{text}"),
-            }
-            ExitCode::SUCCESS
+            let text = report::render(solution.as_ref(), report_format(format), case.units());
+            emit(output.as_deref(), &text)
         }
         Some(Command::Stiffness {
             deck,
@@ -150,43 +181,23 @@ fn main() -> ExitCode {
             format,
             output,
         }) => {
-            if let Some(out) = &output {
-                if same_file(out, &deck) {
-                    eprintln!(
-                        "--output {}: is the deck being read ({}); refusing to overwrite it",
-                        out.display(),
-                        deck.display()
-                    );
-                    return ExitCode::from(exit::INVALID_INPUT);
-                }
+            if let Err(code) = refuse_output_over_deck(output.as_deref(), &deck) {
+                return code;
             }
             let mut sets = cli.set.clone();
             if check_fd {
                 sets.push("solver.stiffness=both".into());
             }
-            let case = match load_case(&deck, &sets) {
-                Ok(c) => c,
-                Err(e) => {
-                    eprintln!("{e}");
-                    return ExitCode::from(exit::INVALID_INPUT);
-                }
-            };
             let options = RunOptions {
                 skip_transient: true,
             };
-            let solution = match case.solve(options, Cancel::NONE) {
-                Ok(s) => s,
-                Err(e) => {
-                    eprintln!("solve failed: {e}");
-                    return ExitCode::from(exit::SOLVE_FAILED);
-                }
+            let (case, solution) = match load_and_solve(&deck, &sets, options) {
+                Ok(x) => x,
+                Err(code) => return code,
             };
-            let format = match format {
-                Format::Text => report::Format::Text,
-                Format::Json => report::Format::Json,
-                Format::Csv => report::Format::Csv,
-            };
-            let Some(text) = report::stiffness::render(solution.as_ref(), format, case.units())
+            let units = case.units();
+            let Some(text) =
+                report::stiffness::render(solution.as_ref(), report_format(format), units)
             else {
                 eprintln!(
                     "{}: the {} has no stiffness matrix (tapered-roller decks have one)",
@@ -195,16 +206,7 @@ fn main() -> ExitCode {
                 );
                 return ExitCode::from(exit::INVALID_INPUT);
             };
-            match output {
-                Some(path) => {
-                    if let Err(e) = write_atomic(&path, &text).map(drop) {
-                        eprintln!("cannot write {}: {e}", path.display());
-                        return ExitCode::from(exit::INVALID_INPUT);
-                    }
-                }
-                None => print!("{text}"),
-            }
-            ExitCode::SUCCESS
+            emit(output.as_deref(), &text)
         }
         Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
             Ok(_) => {
@@ -309,15 +311,8 @@ fn sweep(
 ) -> ExitCode {
     use rollbench::verify::sweep;
     use std::io::IsTerminal;
-    if let Some(out) = output {
-        if same_file(out, deck) {
-            eprintln!(
-                "--output {}: is the deck being read ({}); refusing to overwrite it",
-                out.display(),
-                deck.display()
-            );
-            return ExitCode::from(exit::INVALID_INPUT);
-        }
+    if let Err(code) = refuse_output_over_deck(output, deck) {
+        return code;
     }
     let case = match load_case(deck, overrides) {
         Ok(c) => c,
@@ -342,14 +337,9 @@ fn sweep(
         }
         Format::Csv => sweep::to_csv(&result),
     };
-    match output {
-        Some(path) => {
-            if let Err(e) = write_atomic(path, &text).map(drop) {
-                eprintln!("cannot write {}: {e}", path.display());
-                return ExitCode::from(exit::INVALID_INPUT);
-            }
-        }
-        None => print!("{text}"),
+    let written = emit(output, &text);
+    if written != ExitCode::SUCCESS {
+        return written;
     }
     let failed = result.failures();
     if failed > 0 {
