@@ -625,6 +625,13 @@ impl HertzPointContact {
         } else {
             (0.0, 0.0)
         };
+        // Finite inputs far outside any bearing (a modulus of 1e-147 Pa under 1e303 N)
+        // overflow here: a typed error, not an infinite contact.
+        if !(a.is_finite() && b.is_finite() && approach.is_finite() && p0.is_finite()) {
+            return Err(PointContactError::NonFinite(
+                "contact size (inputs overflow)",
+            ));
+        }
         Ok(PointContact {
             load_n,
             semi_major_m: a,
@@ -1191,6 +1198,38 @@ mod tests {
             f64::INFINITY
         } else {
             1.0 / (lambda * base_curvature)
+        }
+    }
+
+    /// Found by `arbitrary_inputs_never_panic` in CI: finite but absurd inputs (E = 4e-147
+    /// Pa under 6.9e303 N) overflowed to an infinite contact reported as a solution; they
+    /// are a typed error now.
+    #[test]
+    fn overflowing_inputs_are_an_error_not_an_infinite_contact() {
+        let b1 = PrincipalRadii {
+            rolling_m: -8.080548535253435e-110,
+            transverse_m: 5.374012895388727e-290,
+        };
+        let b2 = PrincipalRadii {
+            rolling_m: 2.5232932033952605e-290,
+            transverse_m: -5.575315447821732e-6,
+        };
+        for method in [HertzMethod::Exact, HertzMethod::BreweHamrock] {
+            let h = HertzPointContact::from_radii(
+                b1,
+                b2,
+                4.0145606167627437e-147,
+                0.0,
+                2e11,
+                0.3,
+                method,
+            );
+            if let Ok(h) = h {
+                match h.solve(6.943319155391695e303) {
+                    Ok(p) => assert!(p.semi_major_m.is_finite() && p.approach_m.is_finite()),
+                    Err(e) => assert!(matches!(e, PointContactError::NonFinite(_)), "{e}"),
+                }
+            }
         }
     }
 
