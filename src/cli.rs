@@ -94,6 +94,10 @@ pub enum Command {
         /// operating.inner_speed=6000:15000:500. At most 10000 points.
         #[arg(long = "set-range", value_name = "KEY=A:B:STEP")]
         set_range: String,
+        /// Solve every point from the system's own initial guess, as `run --set` would,
+        /// instead of continuing each core's run of points from its previous point.
+        #[arg(long)]
+        cold: bool,
         /// Table format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,

@@ -267,9 +267,10 @@ fn main() -> ExitCode {
         Some(Command::Sweep {
             deck,
             set_range,
+            cold,
             format,
             output,
-        }) => sweep(&deck, &cli.set, &set_range, format, output.as_deref()),
+        }) => sweep(&deck, &cli.set, &set_range, cold, format, output.as_deref()),
         Some(Command::Bench { deck, format }) => {
             match rollbench::verify::fidelity::bench_command(
                 deck.as_deref(),
@@ -306,6 +307,7 @@ fn sweep(
     deck: &Path,
     overrides: &[String],
     range: &str,
+    cold: bool,
     format: Format,
     output: Option<&Path>,
 ) -> ExitCode {
@@ -321,7 +323,16 @@ fn sweep(
             return ExitCode::from(exit::INVALID_INPUT);
         }
     };
-    let result = match sweep::run(case.as_ref(), range, std::io::stderr().is_terminal()) {
+    let result = match sweep::run(
+        case.as_ref(),
+        range,
+        std::io::stderr().is_terminal(),
+        if cold {
+            sweep::Start::Cold
+        } else {
+            sweep::Start::Warm
+        },
+    ) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("{e}");

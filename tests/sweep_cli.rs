@@ -297,3 +297,59 @@ fn a_failed_point_is_a_row_with_its_reason() {
         "{out}"
     );
 }
+
+/// `sweep DECK --set-range RANGE --format json --cold`.
+fn sweep_json_cold(deck_name: &str, range: &str) -> serde_json::Value {
+    let d = deck(deck_name);
+    let (code, out, err) = run(&[
+        "sweep",
+        &d,
+        "--set-range",
+        range,
+        "--format",
+        "json",
+        "--cold",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    parse(&out)
+}
+
+#[test]
+fn warm_start_gives_the_cold_answers_to_the_solver_tolerance() {
+    // The default sweep continues each core's run of points from its previous point
+    // through the system's session; `--cold` solves each point from scratch. A session
+    // promises the cold root to its solver tolerance: 1e-7 relative on every key output
+    // (the loosest equilibrium tolerance of the shipped decks is 1e-8 of the load, and
+    // stiffness, stress and heat are smooth functions of the equilibrium), never a
+    // different branch.
+    for (deck_name, range) in [
+        ("chen_b.toml", "operating.inner_speed=6000:15000:x7"),
+        ("trb_afapl.toml", "operating.inner_speed=0:20000:x7"),
+        ("aerospace.toml", "operating.inner_speed=10000:30000:x5"),
+    ] {
+        let warm = sweep_json(deck_name, range);
+        let cold = sweep_json_cold(deck_name, range);
+        assert_eq!(warm["start"], "warm", "{deck_name}");
+        assert_eq!(cold["start"], "cold", "{deck_name}");
+        let (w, c) = (points(&warm), points(&cold));
+        assert_eq!(w.len(), c.len(), "{deck_name}");
+        for (pw, pc) in w.iter().zip(c) {
+            let Some(fields) = pc.as_object() else {
+                panic!("{pc}")
+            };
+            for (k, vc) in fields {
+                match (vc.as_f64(), pw[k].as_f64()) {
+                    (Some(a), Some(b)) => {
+                        let scale = a.abs().max(b.abs()).max(1e-300);
+                        assert!(
+                            (a - b).abs() <= 1e-7 * scale,
+                            "{deck_name} {k} at {}: warm {b} cold {a}",
+                            pc["value"]
+                        );
+                    }
+                    _ => assert_eq!(&pw[k], vc, "{deck_name} {k}"),
+                }
+            }
+        }
+    }
+}

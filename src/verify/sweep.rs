@@ -20,12 +20,15 @@
 //!
 //! Points are solved in parallel over the cores (rayon); rows stay in sweep order.
 //!
-//! No warm start along the sweep: each point is solved from the system's own initial
-//! guess, exactly as `run --set KEY=VALUE` would solve it. A warm start would need a
-//! system-specific way to hand one solution's state to the next case (the [`Case`] trait
-//! has none), would tie each point to its neighbour (no parallelism), and would make a
-//! point depend on the sweep it is part of; the tests check that a point equals a plain
-//! run of the same value.
+//! Warm start (the default): the points are cut into as many contiguous runs as there are
+//! cores, and each run is solved in sweep order through one [`Session`] of the system
+//! ([`BearingSystem::session`], the same object the workbench re-solves edits with). A
+//! system whose session keeps its last converged state (the tapered roller's ring
+//! displacements and roller states) starts each point from its neighbour's answer: faster,
+//! and a branch followed by continuation (rollers leaving the cone). A session that keeps
+//! nothing ([`crate::bearings::WholeSolve`]) gives exactly the cold answers. Sessions
+//! promise the cold answer to their solver tolerance, never a different root; `--cold`
+//! ([`Start::Cold`]) solves every point as `run --set KEY=VALUE` would, independently.
 //!
 //! [`CaseDeck::with_value`]: crate::bearings::CaseDeck::with_value
 #![cfg_attr(
@@ -39,7 +42,7 @@ use std::fmt::Write as _;
 use rayon::prelude::*;
 
 use crate::bearings::view::{KeyOutput, View};
-use crate::bearings::{Case, RunOptions};
+use crate::bearings::{Case, Detail, RunOptions, Session, SolveError};
 use crate::numerics::cancel::Cancel;
 
 /// Most points a sweep may have.
@@ -225,6 +228,25 @@ pub fn value_text(v: f64) -> String {
     }
 }
 
+/// How each point of a sweep starts its solve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Start {
+    /// From the previous point of its run, through one session of the system.
+    Warm,
+    /// From the system's own initial guess, as `run --set` does.
+    Cold,
+}
+
+impl Start {
+    /// The name the JSON writes (`"warm"`, `"cold"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Start::Warm => "warm",
+            Start::Cold => "cold",
+        }
+    }
+}
+
 /// One point of a sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Point {
@@ -252,6 +274,8 @@ pub struct Sweep {
     pub deck: String,
     /// The points, in sweep order.
     pub points: Vec<Point>,
+    /// How the points were started.
+    pub start: Start,
 }
 
 impl Sweep {
@@ -367,15 +391,35 @@ pub fn build(case: &dyn Case, range_arg: &str) -> Result<(Range, Vec<PointCase>)
     Ok((range, cases))
 }
 
-/// Solves one point: a full solve without the transient, reduced to its key outputs.
-/// A panic inside a solver (a bug, but one a sweep into extreme corners is the likeliest
-/// to find) becomes the point's failure instead of ending the sweep.
-fn solve_point(value: f64, text: String, case: &dyn Case) -> Point {
+/// Solves one point: a full solve without the transient, reduced to its key outputs;
+/// through `session` (warm) when given, else [`Case::solve`] (cold). A panic inside a
+/// solver (a bug, but one a sweep into extreme corners is the likeliest to find) becomes
+/// the point's failure instead of ending the sweep; the session is then dropped, since its
+/// state may be half-updated, and the rest of the run starts cold.
+fn solve_point(
+    value: f64,
+    text: String,
+    case: &dyn Case,
+    session: &mut Option<Box<dyn Session>>,
+) -> Point {
     let options = RunOptions {
         skip_transient: true,
     };
-    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        case.solve(options, Cancel::NONE).map(|s| s.view())
+    let detail = Detail {
+        trace_element: None,
+        transient: false,
+    };
+    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| match session {
+        Some(s) => s
+            .solve(case, detail, &Cancel::NONE)
+            .map(|s| s.view())
+            .map_err(|e| match e {
+                // `WholeSolve` wraps `Case::solve`'s message in the system's name: give the
+                // row the message `run` prints.
+                SolveError::Stage { stage, message } if stage == case.system().id() => message,
+                e => e.to_string(),
+            }),
+        None => case.solve(options, Cancel::NONE).map(|s| s.view()),
     }));
     let (outputs, failure) = match run {
         Ok(Ok(View { key_outputs, .. })) => (key_outputs, None),
@@ -386,6 +430,9 @@ fn solve_point(value: f64, text: String, case: &dyn Case) -> Point {
                 .map(|s| s.to_string())
                 .or_else(|| p.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown panic".to_string());
+            if session.is_some() {
+                *session = Some(case.system().session());
+            }
             (Vec::new(), Some(format!("solver panicked: {msg}")))
         }
     };
@@ -397,10 +444,16 @@ fn solve_point(value: f64, text: String, case: &dyn Case) -> Point {
     }
 }
 
-/// Runs the sweep `range_arg` (`KEY=A:B:STEP` or `KEY=A:B:xN`) over `case`, in parallel;
-/// a progress bar on standard error when `progress`. Errors (bad range, unknown key, a
-/// value out of the key's range) come before any solve.
-pub fn run(case: &dyn Case, range_arg: &str, progress: bool) -> Result<Sweep, String> {
+/// Runs the sweep `range_arg` (`KEY=A:B:STEP` or `KEY=A:B:xN`) over `case`, in parallel
+/// (contiguous runs of points, one per core, each in sweep order when `start` is
+/// [`Start::Warm`]); a progress bar on standard error when `progress`. Errors (bad range,
+/// unknown key, a value out of the key's range) come before any solve.
+pub fn run(
+    case: &dyn Case,
+    range_arg: &str,
+    progress: bool,
+    start: Start,
+) -> Result<Sweep, String> {
     let (range, cases) = build(case, range_arg)?;
     let unit = case
         .fields()
@@ -419,16 +472,40 @@ pub fn run(case: &dyn Case, range_arg: &str, progress: bool) -> Result<Sweep, St
     } else {
         None
     };
-    let points: Vec<Point> = cases
-        .into_par_iter()
-        .map(|pc| {
-            let p = solve_point(pc.value, pc.text, pc.case.as_ref());
-            if let Some(b) = &bar {
-                b.inc(1);
+    let solve = |pc: PointCase, session: &mut Option<Box<dyn Session>>| {
+        let p = solve_point(pc.value, pc.text, pc.case.as_ref(), session);
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+        p
+    };
+    let points: Vec<Point> = match start {
+        Start::Cold => cases
+            .into_par_iter()
+            .map(|pc| solve(pc, &mut None))
+            .collect(),
+        Start::Warm => {
+            // One contiguous run per core: each run continues from its own previous point.
+            let runs = rayon::current_num_threads().max(1);
+            let per_run = cases.len().div_ceil(runs).max(1);
+            let mut chunks: Vec<Vec<PointCase>> = Vec::new();
+            let mut it = cases.into_iter().peekable();
+            while it.peek().is_some() {
+                chunks.push(it.by_ref().take(per_run).collect());
             }
-            p
-        })
-        .collect();
+            let solved: Vec<Vec<Point>> = chunks
+                .into_par_iter()
+                .map(|chunk| {
+                    let mut session = Some(case.system().session());
+                    chunk
+                        .into_iter()
+                        .map(|pc| solve(pc, &mut session))
+                        .collect()
+                })
+                .collect();
+            solved.into_iter().flatten().collect()
+        }
+    };
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -438,6 +515,7 @@ pub fn run(case: &dyn Case, range_arg: &str, progress: bool) -> Result<Sweep, St
         system: case.system().id(),
         deck: case.name().to_string(),
         points,
+        start,
     })
 }
 
@@ -487,11 +565,12 @@ pub fn to_text(s: &Sweep) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "sweep of {} over {} points: {} ({}), no transient{}",
+        "sweep of {} over {} points: {} ({}), no transient, {} start{}",
         s.key,
         s.points.len(),
         s.deck,
         s.system,
+        s.start.name(),
         if any_failure {
             format!(", {} failed", s.failures())
         } else {
@@ -528,7 +607,7 @@ fn opt(v: Option<f64>) -> serde_json::Value {
         .unwrap_or(serde_json::Value::Null)
 }
 
-/// The sweep as JSON: `{"key", "unit", "type", "deck", "points": [{"value", <key output
+/// The sweep as JSON: `{"key", "unit", "type", "deck", "start", "points": [{"value", <key output
 /// name>…, "failure"}]}`; every point has every column (null where absent or failed).
 pub fn to_json(s: &Sweep) -> serde_json::Value {
     use serde_json::{Map, Value};
@@ -554,6 +633,7 @@ pub fn to_json(s: &Sweep) -> serde_json::Value {
     m.insert("unit".into(), Value::String(s.unit.clone()));
     m.insert("type".into(), Value::String(s.system.to_string()));
     m.insert("deck".into(), Value::String(s.deck.clone()));
+    m.insert("start".into(), Value::String(s.start.name().to_string()));
     m.insert("points".into(), Value::Array(points));
     Value::Object(m)
 }
@@ -719,6 +799,7 @@ mod tests {
             unit: "rpm".into(),
             system: "test",
             deck: "deck".into(),
+            start: Start::Warm,
             points: vec![
                 Point {
                     value: 1000.0,
