@@ -52,6 +52,26 @@ pub struct Detail {
     pub transient: bool,
 }
 
+/// A sweep a workbench pane draws: key outputs of the case re-solved at each value of one
+/// deck key (the same path as `rollbench sweep`, warm-started along the values).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepPlan {
+    /// Chart title.
+    pub title: String,
+    /// The deck key swept (`operating.inner_speed`).
+    pub key: &'static str,
+    /// Its values in sweep order, deck units.
+    pub values: Vec<f64>,
+    /// The key outputs drawn ([`view::KeyOutput::name`]).
+    pub outputs: Vec<&'static str>,
+    /// Draw each output divided by its value at the first solved point (stiffness against
+    /// its zero-speed value) instead of in its unit.
+    pub normalise: bool,
+    /// Mark the first value at which this key output becomes positive (rollers leaving
+    /// the cone), with this label.
+    pub marker: Option<(&'static str, &'static str)>,
+}
+
 /// A fidelity setting of a case: how finely its elements are discretised (laminae,
 /// slices) and how tightly its equilibria are solved.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,6 +116,11 @@ pub trait BearingSystem: Sync {
     /// ([`WholeSolve`]).
     fn session(&self) -> Box<dyn Session> {
         Box::new(WholeSolve)
+    }
+    /// Sweep `n` of a [`view::PaneKind::Sweep`] pane over `case`: which deck key, which
+    /// values, which key outputs; `None` when the system has no such sweep.
+    fn sweep_plan(&self, _n: usize, _case: &dyn Case) -> Option<SweepPlan> {
+        None
     }
     /// The fidelity study of `rollbench bench`; `None` when the system has none.
     fn fidelity_grid(&self) -> Option<FidelityGrid> {

@@ -262,6 +262,10 @@ pub enum PaneKind {
     Chart(usize),
     /// Text block `n` of [`View::texts`] (a matrix, a short account), in display units.
     Text(usize),
+    /// Sweep `n` of the system ([`crate::bearings::BearingSystem::sweep_plan`]): key
+    /// outputs against one deck key, solved point by point by the worker while the pane
+    /// is on screen.
+    Sweep(usize),
     /// The thermal network.
     Thermal,
     /// The equilibrium stepper.

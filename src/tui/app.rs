@@ -13,6 +13,7 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 use crate::bearings::view::{PaneKind, View};
 use crate::bearings::{Case, Detail};
 use crate::units::Units;
+use crate::verify::sweep::PlanProgress;
 
 use super::deck_io::{self, DeckDoc, FieldInfo};
 
@@ -36,6 +37,16 @@ pub enum AppEvent {
         generation: u64,
         /// Result or failure reason.
         outcome: SolveOutcome,
+    },
+    /// The worker solved one more point of the sweep of pane `Sweep(pane)` for job
+    /// `generation` (the whole sweep so far).
+    SweepProgress {
+        /// Job generation.
+        generation: u64,
+        /// The sweep pane's index.
+        pane: usize,
+        /// The points solved so far.
+        progress: Arc<PlanProgress>,
     },
     /// A save finished.
     Saved(Result<PathBuf, String>),
@@ -63,6 +74,8 @@ pub struct SolveJob {
     pub case: Arc<dyn Case>,
     /// What the panes on screen need beyond the defaults (stepper trace, transient).
     pub detail: Detail,
+    /// The sweep pane on screen (`PaneKind::Sweep(n)`), solved after the case.
+    pub sweep: Option<usize>,
 }
 
 impl std::fmt::Debug for SolveJob {
@@ -71,6 +84,7 @@ impl std::fmt::Debug for SolveJob {
             .field("generation", &self.generation)
             .field("system", &self.case.system().id())
             .field("detail", &self.detail)
+            .field("sweep", &self.sweep)
             .finish()
     }
 }
@@ -79,6 +93,7 @@ impl PartialEq for SolveJob {
     fn eq(&self, other: &Self) -> bool {
         self.generation == other.generation
             && self.detail == other.detail
+            && self.sweep == other.sweep
             && self.case.system().id() == other.case.system().id()
             && self.case.text() == other.case.text()
     }
@@ -216,6 +231,10 @@ pub struct App {
     pub generation: u64,
     /// What the last submitted solve was asked for.
     pub last_request: Detail,
+    /// The sweep pane the last submitted solve was asked to sweep.
+    pub last_sweep: Option<usize>,
+    /// The newest sweep progress: (generation, pane index, points so far).
+    pub sweep: Option<(u64, usize, Arc<PlanProgress>)>,
     /// Solver state.
     pub solve: SolveState,
     /// The newest accepted solution's view (tables, charts, trace, thermal).
@@ -273,6 +292,8 @@ impl App {
             redo: Vec::new(),
             generation: 0,
             last_request: Detail::default(),
+            last_sweep: None,
+            sweep: None,
             solve: SolveState::Idle,
             view: None,
             roller_sel: 0,
@@ -340,12 +361,22 @@ impl App {
         self.size.0 >= WIDE.0 && self.size.1 >= WIDE.1
     }
 
+    /// The pane the wide layout's chart slot shows: the focused chart, text or sweep
+    /// pane, else the first chart.
+    pub fn chart_slot(&self) -> Pane {
+        match self.focus {
+            p @ (Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_)) => p,
+            _ => Pane::Chart(0),
+        }
+    }
+
     /// True if `pane` is on screen at the current size and focus.
     pub fn visible(&self, pane: Pane) -> bool {
         if self.wide() {
             match pane {
                 Pane::Thermal => self.focus != Pane::Stepper,
                 Pane::Stepper => self.focus == Pane::Stepper,
+                Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) => self.chart_slot() == pane,
                 _ => true,
             }
         } else {
@@ -363,6 +394,14 @@ impl App {
         }
     }
 
+    /// The sweep pane on screen, if any (the worker sweeps only for a visible pane).
+    pub fn wanted_sweep(&self) -> Option<usize> {
+        self.panes().into_iter().find_map(|p| match p {
+            Pane::Sweep(n) if self.visible(p) => Some(n),
+            _ => None,
+        })
+    }
+
     /// Number of rolling elements in the newest solution (0 before the first).
     pub fn roller_count(&self) -> usize {
         self.view.as_deref().map_or(0, view_element_count)
@@ -376,11 +415,13 @@ impl App {
     fn submit(&mut self) -> Command {
         self.generation += 1;
         self.last_request = self.wanted_request();
+        self.last_sweep = self.wanted_sweep();
         self.solve = SolveState::Running;
         Command::Solve(Box::new(SolveJob {
             generation: self.generation,
             case: self.deck.case(),
             detail: self.last_request,
+            sweep: self.last_sweep,
         }))
     }
 
@@ -390,7 +431,9 @@ impl App {
         let have = &self.last_request;
         let need_trace = want.trace_element.is_some() && want.trace_element != have.trace_element;
         let need_thermal = want.transient && !have.transient;
-        if need_trace || need_thermal {
+        let want_sweep = self.wanted_sweep();
+        let need_sweep = want_sweep.is_some() && want_sweep != self.last_sweep;
+        if need_trace || need_thermal || need_sweep {
             vec![self.submit()]
         } else {
             Vec::new()
@@ -448,6 +491,16 @@ impl App {
                         self.error = Some(reason.clone());
                         self.solve = SolveState::Failed(reason);
                     }
+                }
+                Vec::new()
+            }
+            AppEvent::SweepProgress {
+                generation,
+                pane,
+                progress,
+            } => {
+                if generation == self.generation {
+                    self.sweep = Some((generation, pane, progress));
                 }
                 Vec::new()
             }
@@ -752,7 +805,7 @@ impl App {
             (cur as isize).saturating_add(by).clamp(0, len as isize - 1) as usize
         };
         match self.focus {
-            Pane::Text(_) => Vec::new(),
+            Pane::Text(_) | Pane::Sweep(_) => Vec::new(),
             Pane::Inputs => {
                 self.input_sel = step(self.input_sel, self.fields.len());
                 Vec::new()

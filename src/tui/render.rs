@@ -48,7 +48,7 @@ impl Widget for &App {
             let offered = |p: Pane| panes.contains(&p);
             render_pane(self, Pane::Inputs, left, buf);
             render_pane(self, Pane::Elements, top, buf);
-            render_pane(self, Pane::Chart(0), chart, buf);
+            render_pane(self, self.chart_slot(), chart, buf);
             // The side shows the stepper while it has the focus (or when the system
             // has no thermal pane), else the thermal network.
             if self.focus == Pane::Stepper || !offered(Pane::Thermal) {
@@ -223,6 +223,7 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
         Pane::Thermal => render_thermal(app, area, buf),
         Pane::Stepper => render_stepper(app, area, buf),
         Pane::Text(n) => render_text(app, n, area, buf),
+        Pane::Sweep(n) => render_sweep(app, n, area, buf),
     }
 }
 
@@ -511,7 +512,7 @@ fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
 }
 
 /// Series colours, in series order.
-const SERIES_COLOURS: [Color; 2] = [INNER, OUTER];
+const SERIES_COLOURS: [Color; 4] = [INNER, OUTER, Color::Green, Color::Magenta];
 
 /// The Load pane: the view's bearing chart, or with `c` the selected element's chart.
 /// A chart pane: bearing chart `n` of the view, or for chart 0 with `c` the selected
@@ -567,6 +568,17 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
                 .data(&marked),
         );
     }
+    draw_chart(&s, datasets, block, area, buf);
+}
+
+/// Draws `datasets` on `s`'s axes inside `block`.
+fn draw_chart(
+    s: &view_model::ChartSeries,
+    datasets: Vec<Dataset>,
+    block: Block,
+    area: Rect,
+    buf: &mut Buffer,
+) {
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
     let x_prec = label_precision(s.x_bounds[1]);
     let chart = Chart::new(datasets)
@@ -587,6 +599,70 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
                 .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds[1]))),
         );
     chart.render(area, buf);
+}
+
+/// A sweep pane: the plan's outputs against the swept key as the worker fills them in,
+/// the marker (rollers leaving the cone) as a vertical line.
+fn render_sweep(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
+    let pane = Pane::Sweep(n);
+    let progress = app
+        .sweep
+        .as_ref()
+        .filter(|(_, pane_n, _)| *pane_n == n)
+        .map(|(g, _, p)| (*g, p));
+    let Some((generation, p)) = progress else {
+        let block = pane_block(app, pane, "");
+        let inner = block.inner(area);
+        block.render(area, buf);
+        let text = match app.solve {
+            SolveState::Failed(_) => no_solution_text(app),
+            _ => "sweeping…".to_string(),
+        };
+        Paragraph::new(text).render(inner, buf);
+        return;
+    };
+    let (s, marker, note) = view_model::sweep_series(p, app.display_units);
+    let stale = if generation == app.generation {
+        ""
+    } else {
+        " · updating"
+    };
+    // The progress note holds numbers: drop the chart's title rather than cut them.
+    let full = format!(" · {} · {note}{stale}", s.title);
+    let room = usize::from(area.width).saturating_sub(4 + app.pane_title(pane).chars().count());
+    let extra = if full.chars().count() <= room {
+        full
+    } else {
+        format!(" · {note}{stale}")
+    };
+    let block = pane_block(app, pane, &extra);
+    let mut datasets: Vec<Dataset> = s
+        .series
+        .iter()
+        .enumerate()
+        .map(|(k, (name, points))| {
+            Dataset::default()
+                .name(*name)
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
+                .data(points)
+        })
+        .collect();
+    let line: Vec<(f64, f64)> = marker
+        .map(|x| vec![(x, s.y_bounds[0]), (x, s.y_bounds[1])])
+        .unwrap_or_default();
+    if let (Some(_), Some((_, label))) = (marker, p.plan.marker) {
+        datasets.push(
+            Dataset::default()
+                .name(label)
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(Color::Red))
+                .data(&line),
+        );
+    }
+    draw_chart(&s, datasets, block, area, buf);
 }
 
 fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
@@ -891,13 +967,26 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             iterations,
             roller_iterations,
             wall_ms,
-        } => (
-            format!(
-                "✓ solved in {iterations} {} + {roller_iterations} {} iterations, {wall_ms:.1} ms",
-                names[0], names[1]
-            ),
-            Color::Green,
-        ),
+        } => {
+            // The longest wording that leaves room for the rest of the line: numbers are
+            // never cut, words are dropped first.
+            let rest = status_extras_width(app);
+            let room = usize::from(area.width).saturating_sub(rest);
+            let forms = [
+                format!(
+                    "✓ solved in {iterations} {} + {roller_iterations} {} iterations, {wall_ms:.1} ms",
+                    names[0], names[1]
+                ),
+                format!("✓ solved: {iterations} + {roller_iterations} iterations, {wall_ms:.1} ms"),
+                format!("✓ {iterations}+{roller_iterations} it, {wall_ms:.1} ms"),
+            ];
+            let pick = forms
+                .iter()
+                .find(|f| f.chars().count() <= room)
+                .unwrap_or(&forms[2])
+                .clone();
+            (pick, Color::Green)
+        }
         SolveState::Failed(r) => (
             format!(
                 "✗ failed (e: whole message): {}",
@@ -910,6 +999,21 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
         text,
         Style::default().fg(color).add_modifier(Modifier::BOLD),
     )];
+    spans.extend(status_extras(app));
+    Line::from(spans).render(area, buf);
+}
+
+/// Width of [`status_extras`] in cells.
+fn status_extras_width(app: &App) -> usize {
+    status_extras(app)
+        .iter()
+        .map(|s| s.content.chars().count())
+        .sum()
+}
+
+/// The status line after the solver state: warnings, unsaved, edits not solved, message.
+fn status_extras(app: &App) -> Vec<Span<'static>> {
+    let mut spans = Vec::new();
     let warnings = app.view.as_ref().map_or(0, |v| v.warnings.len());
     if warnings > 0 && matches!(app.solve, SolveState::Solved { .. }) {
         spans.push(Span::styled(
@@ -937,7 +1041,7 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
     if let Some(m) = &app.message {
         spans.push(Span::raw(format!(" │ {m}")));
     }
-    Line::from(spans).render(area, buf);
+    spans
 }
 
 /// The footer's hints for the mode and pane, most useful first; the last ones (help,
@@ -971,7 +1075,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
-                Pane::Text(_) => Vec::new(),
+                Pane::Text(_) | Pane::Sweep(_) => Vec::new(),
                 Pane::Inputs => v(&[
                     "jk move",
                     "Enter edit",

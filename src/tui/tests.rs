@@ -43,6 +43,33 @@ fn solve_view(job: &app::SolveJob) -> Result<View, SolveError> {
     Ok(v)
 }
 
+/// The job's sweep (a Sweep pane on screen), solved inline point by point through one
+/// session as the worker does, each point fed back as progress.
+fn sweep_sync(app: &mut App, job: &app::SolveJob) {
+    let Some(n) = job.sweep else { return };
+    let Some(plan) = job.case.system().sweep_plan(n, &*job.case) else {
+        return;
+    };
+    let mut session = job.case.system().session();
+    let mut solve = |c: &dyn crate::bearings::Case| {
+        session
+            .solve(c, crate::bearings::Detail::default(), &Cancel::NONE)
+            .map(|s| s.view())
+    };
+    let mut events = Vec::new();
+    let mut report = |p: &crate::verify::sweep::PlanProgress| {
+        events.push(AppEvent::SweepProgress {
+            generation: job.generation,
+            pane: n,
+            progress: Arc::new(p.clone()),
+        })
+    };
+    crate::verify::sweep::run_plan(&*job.case, plan, &mut solve, &|| false, &mut report);
+    for e in events {
+        app.handle(e);
+    }
+}
+
 /// Feeds every solve command back as a result, like the worker would (but inline).
 fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
     let mut other = Vec::new();
@@ -54,6 +81,7 @@ fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
                     generation: job.generation,
                     outcome: Ok(Arc::new(a)),
                 });
+                sweep_sync(app, &job);
                 other.extend(run_sync(app, more));
             }
             c => other.push(c),
@@ -547,6 +575,7 @@ fn job(generation: u64) -> app::SolveJob {
         generation,
         case: Arc::clone(CASE.get_or_init(|| deck_app().deck.case())),
         detail: Detail::default(),
+        sweep: None,
     }
 }
 
@@ -687,7 +716,7 @@ fn tui_snapshot_shipped_decks() {
             shots.extend(panes.iter().map(|&p| (p, w, h)));
         }
         shots.extend(
-            [Pane::Elements, Pane::Stepper]
+            [Pane::Elements, Pane::Stepper, Pane::Sweep(0)]
                 .into_iter()
                 .filter(|p| panes.contains(p))
                 .map(|p| (p, 200, 50)),
@@ -719,10 +748,14 @@ fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
     for c in cmds {
         if let Command::Solve(job) = c {
             let outcome = solve_view(&job).map(Arc::new).map_err(|e| e.to_string());
+            let solved = outcome.is_ok();
             let more = app.handle(AppEvent::Solved {
                 generation: job.generation,
                 outcome,
             });
+            if solved {
+                sweep_sync(app, &job);
+            }
             run_sync_tolerant(app, more);
         }
     }
@@ -1354,6 +1387,130 @@ fn tui_docs_screens_are_the_snapshots() {
         assert!(found > 0, "{doc} has no screen markers");
         if std::env::var_os("ROLLBENCH_UPDATE_DOCS").is_some() {
             std::fs::write(&path, out).expect("write doc");
+        }
+    }
+}
+
+// ---------------------------------------------------------------- sweep pane
+
+fn tapered_app(w: u16, h: u16) -> App {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/trb_afapl.toml");
+    let deck = DeckDoc::load(std::path::Path::new(path)).expect("deck");
+    let mut app = App::new(deck, None);
+    app.handle(AppEvent::Resize(w, h));
+    app
+}
+
+#[test]
+fn tui_sweep_is_solved_only_while_its_pane_is_on_screen() {
+    // "No stage computed that the view does not need": the first solve of the tapered deck
+    // on the Inputs pane asks for no sweep; focusing the Sweep pane asks for sweep 0 and
+    // re-solves; the points arrive as progress for the current generation, and progress
+    // of an older generation is ignored.
+    let mut app = tapered_app(80, 24);
+    let cmds = app.start();
+    let [Command::Solve(first)] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(first.sweep, None);
+    run_sync(&mut app, cmds);
+    assert!(app.sweep.is_none());
+    let pos = app
+        .panes()
+        .iter()
+        .position(|p| *p == Pane::Sweep(0))
+        .expect("a Sweep pane");
+    let digit = char::from_digit(pos as u32 + 1, 10).expect("digit");
+    let cmds = app.handle(ch(digit));
+    let [Command::Solve(job)] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(job.sweep, Some(0));
+    let generation = job.generation;
+    run_sync(&mut app, cmds);
+    let Some((g, n, p)) = app.sweep.clone() else {
+        panic!("no sweep")
+    };
+    assert_eq!((g, n), (generation, 0));
+    assert!(p.done);
+    assert_eq!(p.points.len(), p.plan.values.len());
+    // Stale progress (an older generation) does not replace it.
+    let mut old = (*p).clone();
+    old.points.clear();
+    app.handle(AppEvent::SweepProgress {
+        generation: generation - 1,
+        pane: 0,
+        progress: Arc::new(old),
+    });
+    assert_eq!(
+        app.sweep.as_ref().map(|s| s.2.points.len()),
+        Some(p.points.len())
+    );
+    // Leaving the pane: the next edit's solve asks for no sweep.
+    let cmds = app.handle(ch('1'));
+    assert!(cmds.is_empty(), "{cmds:?}");
+    assert_eq!(app.wanted_sweep(), None);
+}
+
+#[test]
+fn tui_sweep_points_are_the_cli_sweep_normalised() {
+    // The pane draws each stiffness divided by its zero-speed value: the same numbers as
+    // `rollbench sweep` (verify::sweep, cold) over the plan's values, to 1e-7 (warm
+    // against cold starts, the solver tolerance).
+    let mut app = tapered_app(80, 24);
+    let cmds = app.start();
+    run_sync(&mut app, cmds);
+    let pos = app
+        .panes()
+        .iter()
+        .position(|p| *p == Pane::Sweep(0))
+        .expect("pane");
+    let cmds = app.handle(ch(char::from_digit(pos as u32 + 1, 10).expect("digit")));
+    run_sync(&mut app, cmds);
+    let (_, _, p) = app.sweep.clone().expect("sweep");
+    let (chart, _, note) = view_model::sweep_series(&p, crate::units::Units::Si);
+    assert!(
+        note.starts_with(&format!("{0}/{0} points", p.plan.values.len())),
+        "{note}"
+    );
+    let case = app.deck.case();
+    for (k, name) in p.plan.outputs.iter().enumerate() {
+        let series = &chart.series[k].1;
+        let base = p.points[0].output(name).expect("zero-speed value");
+        for (pt, &(x, y)) in p
+            .points
+            .iter()
+            .filter(|pt| pt.output(name).is_some())
+            .zip(series)
+        {
+            let cold = case
+                .with_value(p.plan.key, &crate::verify::sweep::value_text(pt.value))
+                .expect("valid")
+                .solve(
+                    crate::bearings::RunOptions {
+                        skip_transient: true,
+                    },
+                    Cancel::NONE,
+                )
+                .expect("solves")
+                .view();
+            let v = cold
+                .key_outputs
+                .iter()
+                .find(|o| o.name == *name)
+                .and_then(|o| o.value)
+                .expect("output");
+            assert!(
+                (x - pt.value).abs() <= 1e-9 * pt.value.abs().max(1.0),
+                "{x} {}",
+                pt.value
+            );
+            assert!(
+                (y - v / base).abs() <= 1e-7,
+                "{name} at {}: {y} vs {}",
+                pt.value,
+                v / base
+            );
         }
     }
 }

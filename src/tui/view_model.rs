@@ -6,6 +6,7 @@
 use crate::bearings::view::{Chart, Display, Screen, ThermalResults, Trace, TraceFormat, View};
 
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
+use crate::verify::sweep::{PlanPoint, PlanProgress};
 
 /// Placeholder for a value that the current pipeline does not compute yet.
 pub const DASH: &str = "—";
@@ -316,6 +317,118 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
         x_bounds: c.x.bounds.unwrap_or(x_auto),
         y_bounds: c.y.bounds.unwrap_or([0.0, nice_ceiling(ymax)]),
     }
+}
+
+/// A sweep pane's chart in display units `u`: each output against the swept key (the
+/// key's own unit), divided by its value at the first solved point when the plan
+/// normalises; with the x of the plan's marker (the first point where the marker output
+/// is positive) and a progress note (`"12/21 points"`, failures counted).
+pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, String) {
+    let x_of = |pt: &PlanPoint| p.x_quantity.map_or(pt.value, |q| q.from_si(pt.x_si, u));
+    let series: Vec<(&'static str, Vec<(f64, f64)>)> = p
+        .plan
+        .outputs
+        .iter()
+        .map(|&name| {
+            let label = p
+                .points
+                .iter()
+                .flat_map(|pt| pt.outputs.iter())
+                .find(|o| o.name == name)
+                .map_or(name, |o| o.label);
+            let base = p
+                .points
+                .iter()
+                .find_map(|pt| pt.output(name))
+                .filter(|b| *b != 0.0 && b.is_finite());
+            let pts = p
+                .points
+                .iter()
+                .filter_map(|pt| {
+                    let o = pt.outputs.iter().find(|o| o.name == name)?;
+                    let v = o.value?;
+                    let y = match (p.plan.normalise, base) {
+                        (true, Some(b)) => v / b,
+                        (true, None) => return None,
+                        (false, _) => o.quantity.from_si(v, u),
+                    };
+                    y.is_finite().then_some((x_of(pt), y))
+                })
+                .collect();
+            (label, pts)
+        })
+        .collect();
+    let marker = p.plan.marker.and_then(|(name, _)| {
+        p.points
+            .iter()
+            .find(|pt| pt.output(name).is_some_and(|v| v > 0.0))
+            .map(x_of)
+    });
+    let xs: Vec<f64> = p
+        .plan
+        .values
+        .iter()
+        .map(|&v| {
+            // The planned values in display units (points not solved yet included), so
+            // the axis does not jump while the sweep fills in.
+            p.x_quantity
+                .map_or(v, |q| q.from_si(q.to_si(v, p.deck_units), u))
+        })
+        .collect();
+    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let x_bounds = if lo.is_finite() && hi > lo {
+        [lo, hi]
+    } else {
+        [0.0, 1.0]
+    };
+    let ys = || series.iter().flat_map(|s| s.1.iter().map(|q| q.1));
+    let ymax = ys().fold(0.0, f64::max);
+    // Normalised curves sit near 1: frame them in steps of 0.05 around their range so a
+    // 10 % fall is visible; absolute ones from 0.
+    let y_bounds = if p.plan.normalise {
+        let lo = ys().fold(f64::INFINITY, f64::min);
+        let (lo, hi) = if lo.is_finite() {
+            ((lo * 20.0).floor() / 20.0, (ymax * 20.0).ceil() / 20.0)
+        } else {
+            (0.0, 1.0)
+        };
+        if hi > lo {
+            [lo, hi]
+        } else {
+            [lo - 0.05, hi + 0.05]
+        }
+    } else {
+        [0.0, nice_ceiling(ymax * 1.05)]
+    };
+    let unit = p.x_unit[usize::from(u == Units::Us)];
+    let x_label = if unit.is_empty() {
+        p.x_label.to_string()
+    } else {
+        format!("{} {unit}", p.x_label)
+    };
+    let y_label = if p.plan.normalise {
+        "÷ first point".to_string()
+    } else {
+        "value".to_string()
+    };
+    let failed = p.points.iter().filter(|pt| pt.failure.is_some()).count();
+    let mut note = format!("{}/{} points", p.points.len(), p.plan.values.len());
+    if failed > 0 {
+        note.push_str(&format!(", {failed} failed"));
+    }
+    (
+        ChartSeries {
+            title: p.plan.title.clone(),
+            x_label,
+            y_label,
+            series,
+            x_bounds,
+            y_bounds,
+        },
+        marker,
+        note,
+    )
 }
 
 /// One node of the thermal pane's list, display units.

@@ -14,6 +14,7 @@ use std::thread::{self, JoinHandle};
 use crate::bearings::view::View;
 use crate::bearings::{Case, Detail, Session, SolveError};
 use crate::numerics::cancel::Cancel;
+use crate::verify::sweep::run_plan;
 
 use super::app::{AppEvent, SolveJob};
 
@@ -141,6 +142,7 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             generation,
             case,
             detail,
+            sweep,
         } = &job.job;
         let outcome = catch_unwind(AssertUnwindSafe(|| solver(&**case, *detail, &job.cancel)));
         if job.cancel.load(Ordering::Acquire) {
@@ -152,12 +154,42 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             Ok(Err(e)) => Err(e.to_string()),
             Err(p) => Err(format!("solver panicked: {}", panic_text(p.as_ref()))),
         };
+        let solved = outcome.is_ok();
         let msg = AppEvent::Solved {
             generation: *generation,
             outcome,
         };
         if events.send(msg).is_err() {
             break; // UI gone
+        }
+        // The Sweep pane on screen: its points, one by one after the case itself, each
+        // sent as it is solved; a newer job cancels the rest.
+        let plan = sweep.and_then(|n| case.system().sweep_plan(n, &**case));
+        if let (true, Some(n), Some(plan)) = (solved, *sweep, plan) {
+            let mut solve = |c: &dyn Case| match catch_unwind(AssertUnwindSafe(|| {
+                solver(c, Detail::default(), &job.cancel)
+            })) {
+                Ok(r) => r,
+                Err(p) => Err(SolveError::Stage {
+                    stage: "sweep",
+                    message: format!("solver panicked: {}", panic_text(p.as_ref())),
+                }),
+            };
+            // Every submit raises the previous job's flag: a newer edit stops the sweep.
+            let cancelled = || job.cancel.load(Ordering::Acquire);
+            let mut gone = false;
+            let mut report = |p: &crate::verify::sweep::PlanProgress| {
+                let msg = AppEvent::SweepProgress {
+                    generation: *generation,
+                    pane: n,
+                    progress: Arc::new(p.clone()),
+                };
+                gone |= events.send(msg).is_err();
+            };
+            run_plan(&**case, plan, &mut solve, &cancelled, &mut report);
+            if gone {
+                break;
+            }
         }
     }
 }

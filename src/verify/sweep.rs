@@ -42,7 +42,7 @@ use std::fmt::Write as _;
 use rayon::prelude::*;
 
 use crate::bearings::view::{KeyOutput, View};
-use crate::bearings::{Case, Detail, RunOptions, Session, SolveError};
+use crate::bearings::{Case, Detail, RunOptions, Session, SolveError, SweepPlan};
 use crate::numerics::cancel::Cancel;
 
 /// Most points a sweep may have.
@@ -517,6 +517,108 @@ pub fn run(
         points,
         start,
     })
+}
+
+/// One solved point of a pane's sweep ([`run_plan`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanPoint {
+    /// The swept key's value (deck units).
+    pub value: f64,
+    /// The same value in SI (the field's value in effect), for display in any units.
+    pub x_si: f64,
+    /// The view's key outputs (empty when the solve failed).
+    pub outputs: Vec<KeyOutput>,
+    /// Why the solve failed, if it did.
+    pub failure: Option<String>,
+}
+
+impl PlanPoint {
+    /// The value of key output `name` (SI; `None` when absent or failed).
+    pub fn output(&self, name: &str) -> Option<f64> {
+        self.outputs
+            .iter()
+            .find(|o| o.name == name)
+            .and_then(|o| o.value)
+    }
+}
+
+/// A workbench pane's sweep ([`SweepPlan`]) as far as it has been solved.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanProgress {
+    /// What is swept.
+    pub plan: SweepPlan,
+    /// The swept key's quantity (`None` when it is not a scalar field).
+    pub x_quantity: Option<crate::units::Quantity>,
+    /// The swept key's label in the deck's inputs.
+    pub x_label: &'static str,
+    /// The swept key's unit in SI and US decks (empty when dimensionless).
+    pub x_unit: [&'static str; 2],
+    /// The units the plan's values are written in (the deck's).
+    pub deck_units: crate::units::Units,
+    /// The points solved so far, in sweep order.
+    pub points: Vec<PlanPoint>,
+    /// Every point has been solved (or failed).
+    pub done: bool,
+}
+
+/// Solves `plan` over `case` point by point in sweep order through `solve` (the
+/// workbench's session: warm-started), reporting after each point through `on_point`;
+/// stops early (returning `None`) when `cancelled` says so, as a newer edit makes the
+/// sweep stale. A point whose value the deck refuses is a failed point, not an abort.
+pub fn run_plan(
+    case: &dyn Case,
+    plan: SweepPlan,
+    solve: &mut dyn FnMut(&dyn Case) -> Result<View, SolveError>,
+    cancelled: &dyn Fn() -> bool,
+    on_point: &mut dyn FnMut(&PlanProgress),
+) -> Option<PlanProgress> {
+    let meta = case.fields().into_iter().find(|f| f.key == plan.key);
+    let mut progress = PlanProgress {
+        x_quantity: meta.map(|m| m.quantity),
+        x_label: meta.map_or(plan.key, |m| m.label),
+        x_unit: meta.map_or(["", ""], |m| [m.unit_si, m.unit_us]),
+        deck_units: case.units(),
+        points: Vec::with_capacity(plan.values.len()),
+        done: plan.values.is_empty(),
+        plan,
+    };
+    let values = progress.plan.values.clone();
+    for (i, v) in values.iter().copied().enumerate() {
+        if cancelled() {
+            return None;
+        }
+        let text = value_text(v);
+        let point = match case.with_value(progress.plan.key, &text) {
+            Err(e) => PlanPoint {
+                value: v,
+                x_si: v,
+                outputs: Vec::new(),
+                failure: Some(e.to_string()),
+            },
+            Ok(c) => {
+                let x_si = c.field_si(progress.plan.key).unwrap_or(v);
+                match solve(c.as_ref()) {
+                    Ok(view) => PlanPoint {
+                        value: v,
+                        x_si,
+                        outputs: view.key_outputs,
+                        failure: None,
+                    },
+                    Err(SolveError::Cancelled) => return None,
+                    Err(e) => PlanPoint {
+                        value: v,
+                        x_si,
+                        outputs: Vec::new(),
+                        failure: Some(e.to_string()),
+                    },
+                }
+            }
+        };
+        progress.points.push(point);
+        progress.done = i + 1 == values.len();
+        on_point(&progress);
+    }
+    Some(progress)
 }
 
 /// A key output's value for text: six significant digits, fixed where that is readable,
