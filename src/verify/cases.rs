@@ -49,7 +49,7 @@ pub struct Case {
     pub note: String,
 }
 
-fn case(
+pub(crate) fn case(
     quantity: &str,
     reference: f64,
     source: &str,
@@ -714,6 +714,7 @@ pub fn cases() -> Vec<Case> {
     slicing_cases(&mut out);
     heat_cases(&mut out);
     thermal_cases(&mut out);
+    super::system_cases::cases(&mut out);
     out
 }
 

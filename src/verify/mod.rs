@@ -5,3 +5,4 @@
 pub mod cases;
 pub mod fidelity;
 pub mod sweep;
+mod system_cases;
