@@ -168,6 +168,34 @@ keys y
 wait_for "EXITED:0"
 absent "Inputs [US]"      # the alternate screen is gone: terminal restored
 
+# 8b. The tapered roller's Sweep pane fills in while on screen: 21 speeds, counted in the
+#     title; an edit of the cone speed re-sweeps (the range follows the deck's speed).
+cp decks/trb_afapl.toml "$WORK/trb.toml"
+tm new-session -d -s trb -x 80 -y 24 \
+    "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN' trb.toml; echo \"EXITED:\$?\"; sleep 60"
+TARGET="trb"
+wait_for "Inputs [US]"
+wait_for "solved in"
+keys 5
+wait_for "21/21 points"
+wait_for "Cone speed"
+wait_for "50000"
+keys 1
+keys /
+keys C o n e Space s p e e d Enter
+keys Enter
+keys End BSpace BSpace BSpace BSpace BSpace BSpace BSpace 8 0 0 0 Enter
+wait_for "8000 rpm"
+keys 5
+wait_for "21/21 points"
+wait_for "20000"
+absent "50000"
+keys q
+wait_for "Unsaved changes"
+keys y
+wait_for "EXITED:0"
+TARGET="$SESSION"
+
 # 9. Signals: the workbench runs in the foreground of an interactive shell; kill -SIG on
 #    its pid must leave the terminal as it found it and exit with 128 + signal.
 tm new-session -d -s sig -x 80 -y 24 \
