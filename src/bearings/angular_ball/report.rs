@@ -34,7 +34,46 @@ fn contact(c: &ContactResult) -> Value {
         "spin_heat_w": c.spin_heat_w,
         "central_film_m": c.central_film_m,
         "min_film_m": c.min_film_m,
+        "film_temperature_rise_c": c.film_temperature_rise_k,
+        "surface_temperature_rise_c": c.surface_temperature_rise_k,
     })
+}
+
+/// The traction law used: its name, µ_m, the table (for a table or the rheology curve),
+/// where a rheology curve was tabulated, and the contacts' sliding band.
+fn traction(a: &BallAnalysis) -> Value {
+    let t = &a.input.traction;
+    let mut v = json!({
+        "curve": t.preset.name(),
+        "max_mu": t.curve().max_mu(),
+    });
+    let Some(m) = v.as_object_mut() else {
+        return v;
+    };
+    if let crate::physics::lubrication::traction_curve::TractionCurve::Table { points } = t.curve() {
+        m.insert(
+            "points".into(),
+            json!(points.iter().map(|p| json!({"sliding_m_s": p.0, "mu": p.1})).collect::<Vec<_>>()),
+        );
+    }
+    if let Some((lo, hi)) = super::analysis::sliding_band(a) {
+        m.insert("sliding_band_m_s".into(), json!([lo, hi]));
+    }
+    if let Some(rc) = &a.rheology_contact {
+        m.insert(
+            "rheology_contact".into(),
+            json!({
+                "ball": rc.ball,
+                "race": race_name(rc.race),
+                "max_pressure_pa": rc.strip.max_pressure_pa,
+                "rolling_semi_axis_m": rc.strip.semi_width_m,
+                "film_m": rc.strip.film_m,
+                "rolling_speed_m_s": rc.strip.rolling_speed_m_s,
+                "inlet_temperature_c": rc.strip.inlet_temperature_k - 273.15,
+            }),
+        );
+    }
+    v
 }
 
 /// The JSON report (issue 16's contract).
@@ -136,6 +175,7 @@ pub fn json(a: &BallAnalysis) -> Value {
             "rest_axial_deflection_m": a.rest_axial_deflection_m,
         },
         "balls": balls,
+        "traction": traction(a),
         "speeds": {
             "cage_rpm": cage_rpm(a),
             "ball_spin_rad_s": a.balls.iter().map(|b| b.ball_spin_rad_s).sum::<f64>() / n,

@@ -112,6 +112,7 @@ impl BearingSystem for AngularBall {
     ) -> Result<Box<dyn Case>, DeckErrors> {
         let mut form = Form::parse(text, source_name, &SCHEMA)?;
         form.apply_assignments(overrides)?;
+        super::deck::traction_table(&mut form)?;
         Ok(Box::new(BallCase { form }))
     }
 }
@@ -129,7 +130,8 @@ impl FormCase for BallCase {
         &self.form
     }
 
-    fn with_form(&self, form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
+    fn with_form(&self, mut form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
+        super::deck::traction_table(&mut form)?;
         Ok(Box::new(BallCase { form }))
     }
 }

@@ -479,7 +479,7 @@ pub struct SpinFilmTemperature {
 
 /// [`SpinFilmTemperature`] of an ellipse with semi-axes a (transverse, m) and b (rolling,
 /// m), p₀ (Pa), film h (m), rolling speed V (m/s), spin ω_s (rad/s), on a grid of
-/// `rows` strips across x (at x_k = −a + (k+½)·2a/rows) × [`STRIP_CELLS`] cells.
+/// `rows` strips across x (at x_k = −a + (k+½)·2a/rows) × `cells` cells along y.
 #[allow(clippy::too_many_arguments)]
 pub fn spin_film_temperature(
     thermal: &FilmThermal,
@@ -491,6 +491,7 @@ pub fn spin_film_temperature(
     rolling_speed_m_s: f64,
     spin_rad_s: f64,
     rows: usize,
+    cells: usize,
 ) -> Result<SpinFilmTemperature, RheologyError> {
     thermal.validate()?;
     let mut best = SpinFilmTemperature {
@@ -507,7 +508,8 @@ pub fn spin_film_temperature(
         ));
     }
     let rows = rows.max(1);
-    let s = Strip::new(semi_minor_m, STRIP_CELLS);
+    let cells = cells.max(1);
+    let s = Strip::new(semi_minor_m, cells);
     for k in 0..rows {
         let xr = -1.0 + (k as f64 + 0.5) * 2.0 / rows as f64;
         let c = (1.0 - xr * xr).max(0.0);
@@ -525,9 +527,9 @@ pub fn spin_film_temperature(
         };
         strip.validate()?;
         let mu = curve.mu(u);
-        let cells = march(thermal, &strip, u, STRIP_CELLS, &|p, _| Ok(mu * p))?;
-        let rs = Strip::new(strip.semi_width_m, STRIP_CELLS);
-        for (i, cs) in cells.iter().enumerate() {
+        let states = march(thermal, &strip, u, cells, &|p, _| Ok(mu * p))?;
+        let rs = Strip::new(strip.semi_width_m, cells);
+        for (i, cs) in states.iter().enumerate() {
             if cs.centre_rise_k > best.max_rise_k {
                 best.max_rise_k = cs.centre_rise_k;
                 best.at = (xr, rs.y(i) / s.b);
@@ -768,7 +770,7 @@ mod tests {
         let p0 = 3.0 * q / (2.0 * std::f64::consts::PI * a * b);
         let mu = TractionCurve::Constant { mu: 0.054 };
         let th = chen_thermal();
-        let t = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 938.1, 80).unwrap();
+        let t = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 938.1, 80, 200).unwrap();
         assert!((t.at.0.abs() - 0.65).abs() < 0.06, "{t:?}");
         assert!((t.at.1 - 0.25).abs() < 0.1, "{t:?}");
         assert!(t.max_rise_k > 10.0 * t.max_surface_rise_k, "{t:?}");
@@ -782,7 +784,10 @@ mod tests {
             "{t:?} {hand}"
         );
         // No spin: no heat.
-        let z = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 0.0, 80).unwrap();
+        let z = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 0.0, 80, 200).unwrap();
+        // The grid the analysis uses (40 rows × 60 cells) is within 2 % of 80 × 200.
+        let coarse = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 938.1, 40, 60).unwrap();
+        assert!((coarse.max_rise_k / t.max_rise_k - 1.0).abs() < 0.02, "{coarse:?} {t:?}");
         assert_eq!(z.max_rise_k, 0.0);
     }
 
