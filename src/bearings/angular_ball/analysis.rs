@@ -934,3 +934,101 @@ mod skid_curve {
         assert_eq!(chart.series[0].points.len(), s.len());
     }
 }
+
+#[cfg(test)]
+mod traction_tests {
+    use super::*;
+    use crate::physics::lubrication::rheology::ViscosityModel;
+
+    /// `rheology`: the curve is tabulated at the reported contact and used as the table
+    /// (exactly `rheology::traction_curve` at that strip); µ_m of it drives the resisting
+    /// torque (0.5·µ_m·D·(Q_i+Q_o), 1e-15 relative). The contact is the highest-pressure
+    /// loaded one of a first solve (Bearing B: the outer contact, as every ball is equal).
+    #[test]
+    fn rheology_curve_is_tabulated_at_the_contact() {
+        let mut i = BallInput::chen_b();
+        i.traction.preset = TractionPreset::Rheology;
+        i.lubricant.viscosity_model = ViscosityModel::Roelands;
+        let a = analyse(&i, Cancel::NONE).unwrap();
+        let rc = a.rheology_contact.clone().unwrap();
+        let expect = rheology::traction_curve(&i.lubricant.rheology(), &film_thermal(&i), &rc.strip)
+            .unwrap();
+        assert_eq!(a.input.traction.curve(), expect);
+        let mu = expect.max_mu();
+        assert!(mu > 0.0 && mu < 0.054 + 1e-12, "{mu}");
+        let b = &a.balls[0];
+        let r = 0.5 * mu * 0.012 * (b.inner.load_n + b.outer.load_n);
+        assert!((b.resisting_moment_nm / r - 1.0).abs() < 1e-15);
+        // The first solve is the analysis with the Coulomb µ of traction.mu (here B skids
+        // with the Roelands curve's µ_m = 0.043, so the final contacts differ from it).
+        let mut first = i.clone();
+        first.traction.preset = TractionPreset::Constant;
+        let f = analyse(&first, Cancel::NONE).unwrap();
+        let p = |c: &ContactResult| c.hertz.max_pressure_pa;
+        let top = f.balls.iter().map(|b| p(&b.inner).max(p(&b.outer))).fold(0.0, f64::max);
+        assert!((rc.strip.max_pressure_pa / top - 1.0).abs() < 1e-12);
+        // At rest there is no film to tabulate at: a typed error.
+        i.operating.inner_speed_rad_s = 0.0;
+        assert!(matches!(analyse(&i, Cancel::NONE), Err(BallError::InvalidInput(_))));
+    }
+
+    /// Film temperature per contact: the controlling (outer) race does not spin, so its
+    /// film is not heated (exactly 0); the inner contact's rise is
+    /// `rheology::spin_film_temperature` of its own numbers (exact), with µ(u_s) of the
+    /// deck's curve; more spin (higher speed) heats it more.
+    #[test]
+    fn film_temperature_of_the_spinning_contact() {
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let b = &a.balls[0];
+        assert_eq!(b.outer.film_temperature_rise_k, Some(0.0));
+        let (ax, bx) = semi_axes(&b.inner.hertz);
+        let t = rheology::spin_film_temperature(
+            &film_thermal(&a.input),
+            &a.input.traction.curve(),
+            ax,
+            bx,
+            b.inner.hertz.max_pressure_pa,
+            b.inner.central_film_m.unwrap(),
+            b.inner.kinematics.rolling_speed_m_s,
+            b.inner.kinematics.spin_rad_s,
+            40,
+            60,
+        )
+        .unwrap();
+        assert_eq!(b.inner.film_temperature_rise_k, Some(t.max_rise_k));
+        assert!(t.max_rise_k > 1.0 && t.max_rise_k < 100.0, "{t:?}");
+        let mut fast = BallInput::chen_a();
+        fast.operating.inner_speed_rad_s *= 1.3;
+        let f = analyse(&fast, Cancel::NONE).unwrap();
+        assert!(f.balls[0].inner.film_temperature_rise_k.unwrap() > t.max_rise_k);
+    }
+
+    /// The sliding band over the slices (odd n puts a slice on the centre line): min 0,
+    /// max |ω_s|·a·(1 − 1/n) of the fastest-spinning contact (1e-12 relative).
+    #[test]
+    fn sliding_band_over_the_slices() {
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let (lo, hi) = sliding_band(&a).unwrap();
+        let n = a.input.dynamics.slices as f64;
+        assert_eq!(n % 2.0, 1.0);
+        let c = &a.balls[0].inner;
+        let expect = c.kinematics.spin_rad_s.abs() * semi_axes(&c.hertz).0 * (1.0 - 1.0 / n);
+        assert!(lo.abs() < 1e-12, "{lo}");
+        assert!((hi / expect - 1.0).abs() < 1e-12, "{hi} {expect}");
+    }
+
+    /// A table curve is used as given: with a table equal to curve 1's points the whole
+    /// analysis equals curve 1's (exact).
+    #[test]
+    fn table_curve_equals_the_same_preset() {
+        let c1 = analyse(&BallInput::chen_b(), Cancel::NONE).unwrap();
+        let mut t = BallInput::chen_b();
+        t.traction.preset = TractionPreset::Table;
+        t.traction.table = vec![(0.0, 0.0), (0.2, 0.054)];
+        let a = analyse(&t, Cancel::NONE).unwrap();
+        assert_eq!(a.balls, c1.balls);
+        assert_eq!(a.skid, c1.skid);
+        t.traction.table.clear();
+        assert!(analyse(&t, Cancel::NONE).is_err());
+    }
+}

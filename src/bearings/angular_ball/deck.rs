@@ -680,3 +680,84 @@ pub fn traction_table(form: &mut Form<BallInput>) -> Result<(), DeckErrors> {
     form.value.traction.table = points;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bearings::BearingSystem;
+
+    const DECK: &str = include_str!("../../../decks/chen_b.toml");
+
+    fn load(extra: &str, curve: &str) -> Result<Form<BallInput>, DeckErrors> {
+        let text = DECK.replace(
+            "curve = \"curve-1\"",
+            &format!("curve = \"{curve}\""),
+        ) + extra;
+        let mut form = Form::parse(&text, "b.toml", &SCHEMA)?;
+        traction_table(&mut form)?;
+        Ok(form)
+    }
+
+    /// A table deck gives the points (exact) and the piecewise-linear curve through them;
+    /// the system's `load` reads it too.
+    #[test]
+    fn table_is_read() {
+        let f = load("\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06], [3.0, 0.04]]\n", "table").unwrap();
+        assert_eq!(f.value.traction.preset, TractionPreset::Table);
+        assert_eq!(f.value.traction.table, vec![(0.0, 0.0), (0.5, 0.06), (3.0, 0.04)]);
+        let c = f.value.traction.curve();
+        assert!((c.mu(0.25) - 0.03).abs() < 1e-15);
+        assert_eq!(c.max_mu(), 0.06);
+        let text = DECK.replace("curve = \"curve-1\"", "curve = \"table\"")
+            + "\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06]]\n";
+        assert!(super::super::system::SYSTEM.load(&text, "b.toml", &[]).is_ok());
+    }
+
+    /// Bad tables are refused with file:line of the offending point and the rule.
+    #[test]
+    fn bad_tables_name_the_point() {
+        let line = DECK.lines().count() + 3;
+        let cases = [
+            ("points = [[0, 0.0]]", "at least two points"),
+            ("points = [[0, 0.0], [0.5, 0.06], [0.5, 0.07]]", "increase strictly"),
+            ("points = [[0, 0.0], [0.5, 1.5]]", "µ must be in [0, 1]"),
+            ("points = [[0, 0.0], [0.5]]", "pair"),
+            ("points = [[0.1, 0.0], [0.5, 0.06]]", "zero sliding"),
+            ("points = 3", "array"),
+        ];
+        for (table, rule) in cases {
+            let e = load(&format!("\n[traction_table]\n{table}\n"), "table")
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(rule), "{table}: {e}");
+            assert!(e.contains(&format!("b.toml:{line}:")), "{table}: {e}");
+            assert!(e.contains("traction_table.points"), "{e}");
+        }
+        let e = load("", "table").unwrap_err().to_string();
+        assert!(e.contains("traction_table.points") && e.contains("needs"), "{e}");
+        let e = load("\n[traction_table]\npointz = []\n", "table").unwrap_err().to_string();
+        assert!(e.contains("unknown key") && e.contains("pointz"), "{e}");
+        // Other curves ignore a table's absence; the deck as shipped has none.
+        assert!(load("", "curve-2").unwrap().value.traction.table.is_empty());
+    }
+
+    /// The rheology keys: defaults (Barus, Z from α, C = 0.054, τ₀ = 0) and overrides.
+    #[test]
+    fn rheology_keys() {
+        let f = load("", "rheology").unwrap();
+        let l = &f.value.lubricant;
+        assert_eq!(f.value.traction.preset, TractionPreset::Rheology);
+        assert_eq!(l.viscosity_model, ViscosityModel::Barus);
+        assert_eq!((l.roelands_z, l.limiting_shear_coefficient, l.limiting_shear_stress_pa), (0.0, 0.054, 0.0));
+        let text = DECK.replace(
+            "supply_temperature = 40.0",
+            "supply_temperature = 40.0\nviscosity_model = \"roelands\"\nroelands_z = 0.42\nlimiting_shear_coefficient = 0.07\nlimiting_shear_stress = 1e6",
+        );
+        let f = Form::parse(&text, "b.toml", &SCHEMA).unwrap();
+        let r = f.value.lubricant.rheology();
+        assert_eq!(r.model, ViscosityModel::Roelands);
+        assert_eq!(r.roelands_z, Some(0.42));
+        assert_eq!(r.limiting_shear_stress_pa(0.0), Some(1e6));
+        assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
+    }
+}
