@@ -218,7 +218,11 @@ pub fn resolve_traction<'a>(
             if !(c.load_n > 0.0 && k.rolling_speed_m_s > 0.0) {
                 continue;
             }
-            let name = if race == Race::Inner { "inner" } else { "outer" };
+            let name = if race == Race::Inner {
+                "inner"
+            } else {
+                "outer"
+            };
             let model = geom.contact(race, c.angle_rad)?;
             let h = model
                 .solve(c.load_n)
@@ -567,8 +571,12 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
     // A contact's result depends only on its load state and kinematics: balls in the
     // same state (every ball under an axial load) share it instead of recomputing the
     // film temperature (exact: the same inputs give the same numbers).
-    let mut done: Vec<(Race, load_distribution::ContactLoad, ContactKinematics, ContactResult)> =
-        Vec::new();
+    let mut done: Vec<(
+        Race,
+        load_distribution::ContactLoad,
+        ContactKinematics,
+        ContactResult,
+    )> = Vec::new();
     let mut contact = |race: Race, l: &load_distribution::ContactLoad, k: ContactKinematics| {
         if let Some(c) = done
             .iter()
@@ -951,8 +959,9 @@ mod traction_tests {
         i.lubricant.viscosity_model = ViscosityModel::Roelands;
         let a = analyse(&i, Cancel::NONE).unwrap();
         let rc = a.rheology_contact.clone().unwrap();
-        let expect = rheology::traction_curve(&i.lubricant.rheology(), &film_thermal(&i), &rc.strip)
-            .unwrap();
+        let expect =
+            rheology::traction_curve(&i.lubricant.rheology(), &film_thermal(&i), &rc.strip)
+                .unwrap();
         assert_eq!(a.input.traction.curve(), expect);
         let mu = expect.max_mu();
         assert!(mu > 0.0 && mu < 0.054 + 1e-12, "{mu}");
@@ -965,11 +974,18 @@ mod traction_tests {
         first.traction.preset = TractionPreset::Constant;
         let f = analyse(&first, Cancel::NONE).unwrap();
         let p = |c: &ContactResult| c.hertz.max_pressure_pa;
-        let top = f.balls.iter().map(|b| p(&b.inner).max(p(&b.outer))).fold(0.0, f64::max);
+        let top = f
+            .balls
+            .iter()
+            .map(|b| p(&b.inner).max(p(&b.outer)))
+            .fold(0.0, f64::max);
         assert!((rc.strip.max_pressure_pa / top - 1.0).abs() < 1e-12);
         // At rest there is no film to tabulate at: a typed error.
         i.operating.inner_speed_rad_s = 0.0;
-        assert!(matches!(analyse(&i, Cancel::NONE), Err(BallError::InvalidInput(_))));
+        assert!(matches!(
+            analyse(&i, Cancel::NONE),
+            Err(BallError::InvalidInput(_))
+        ));
     }
 
     /// Film temperature per contact: the controlling (outer) race does not spin, so its
@@ -1030,5 +1046,23 @@ mod traction_tests {
         assert_eq!(a.skid, c1.skid);
         t.traction.table.clear();
         assert!(analyse(&t, Cancel::NONE).is_err());
+    }
+
+    /// The Traction pane's chart: the curve's points lie on µ(u_s) (exact), the x range
+    /// covers the band, and the band is a box at its min and max sliding speeds from 0
+    /// to above µ_m.
+    #[test]
+    fn traction_chart_shows_the_curve_and_the_band() {
+        let a = analyse(&BallInput::chen_b(), Cancel::NONE).unwrap();
+        let c = crate::bearings::angular_ball::view::traction_chart(&a);
+        let curve = a.input.traction.curve();
+        assert_eq!(c.series.len(), 2);
+        assert!(c.series[0].points.iter().all(|&(u, m)| m == curve.mu(u)));
+        assert!(c.series[0].points.iter().any(|&(u, _)| u == 0.2));
+        let (lo, hi) = sliding_band(&a).unwrap();
+        let b = &c.series[1].points;
+        assert_eq!((b[0].0, b[0].1, b[3].0, b[3].1), (lo, 0.0, hi, 0.0));
+        assert!(b[1].1 > curve.max_mu());
+        assert!(c.x.bounds.unwrap()[1] >= hi);
     }
 }

@@ -2,10 +2,10 @@
 //! generic deck reader (`crate::deck::form`). Key names are a contract (issue 16).
 
 use super::input::*;
+use crate::deck::form::Form;
 use crate::deck::form::{
     material_fields, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
 };
-use crate::deck::form::Form;
 use crate::deck::thermal::PathSeg;
 use crate::deck::{DeckError, DeckErrors, Location};
 use crate::physics::contact::point::HertzMethod;
@@ -432,7 +432,7 @@ static FIELDS: [FieldSpec<BallInput>; 43] = [
         meta: FieldMeta::new(
             "lubricant.limiting_shear_coefficient",
             "lubricant",
-            "Limiting shear coefficient C",
+            "Limiting shear coeff. C",
             Quantity::Dimensionless,
             FieldKind::Real,
             (0.0, false),
@@ -658,24 +658,47 @@ pub fn traction_table(form: &mut Form<BallInput>) -> Result<(), DeckErrors> {
             .into());
         };
         if !(u.is_finite() && u >= 0.0) {
-            return Err(invalid(loc(form, &path), p.to_string(), format!("point {}: the sliding speed must be ≥ 0 m/s", i + 1)));
+            return Err(invalid(
+                loc(form, &path),
+                p.to_string(),
+                format!("point {}: the sliding speed must be ≥ 0 m/s", i + 1),
+            ));
         }
         if !(mu.is_finite() && (0.0..=1.0).contains(&mu)) {
-            return Err(invalid(loc(form, &path), p.to_string(), format!("point {}: µ must be in [0, 1]", i + 1)));
+            return Err(invalid(
+                loc(form, &path),
+                p.to_string(),
+                format!("point {}: µ must be in [0, 1]", i + 1),
+            ));
         }
         if let Some(&(prev, _)) = points.last() {
             if u <= prev {
-                return Err(invalid(loc(form, &path), p.to_string(), format!("point {}: sliding speeds must increase strictly ({u} after {prev} m/s)", i + 1)));
+                return Err(invalid(
+                    loc(form, &path),
+                    p.to_string(),
+                    format!(
+                        "point {}: sliding speeds must increase strictly ({u} after {prev} m/s)",
+                        i + 1
+                    ),
+                ));
             }
         }
         points.push((u, mu));
     }
     if points.len() < 2 {
-        return Err(invalid(loc(form, &points_path), raw.to_string(), "at least two points are needed".into()));
+        return Err(invalid(
+            loc(form, &points_path),
+            raw.to_string(),
+            "at least two points are needed".into(),
+        ));
     }
     // µ below the first point: the table starts at zero sliding with the first µ.
     if points[0].0 > 0.0 {
-        return Err(invalid(loc(form, &points_path), raw.to_string(), "the first point must be at zero sliding speed (0 m/s)".into()));
+        return Err(invalid(
+            loc(form, &points_path),
+            raw.to_string(),
+            "the first point must be at zero sliding speed (0 m/s)".into(),
+        ));
     }
     form.value.traction.table = points;
     Ok(())
@@ -689,10 +712,7 @@ mod tests {
     const DECK: &str = include_str!("../../../decks/chen_b.toml");
 
     fn load(extra: &str, curve: &str) -> Result<Form<BallInput>, DeckErrors> {
-        let text = DECK.replace(
-            "curve = \"curve-1\"",
-            &format!("curve = \"{curve}\""),
-        ) + extra;
+        let text = DECK.replace("curve = \"curve-1\"", &format!("curve = \"{curve}\"")) + extra;
         let mut form = Form::parse(&text, "b.toml", &SCHEMA)?;
         traction_table(&mut form)?;
         Ok(form)
@@ -702,15 +722,24 @@ mod tests {
     /// the system's `load` reads it too.
     #[test]
     fn table_is_read() {
-        let f = load("\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06], [3.0, 0.04]]\n", "table").unwrap();
+        let f = load(
+            "\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06], [3.0, 0.04]]\n",
+            "table",
+        )
+        .unwrap();
         assert_eq!(f.value.traction.preset, TractionPreset::Table);
-        assert_eq!(f.value.traction.table, vec![(0.0, 0.0), (0.5, 0.06), (3.0, 0.04)]);
+        assert_eq!(
+            f.value.traction.table,
+            vec![(0.0, 0.0), (0.5, 0.06), (3.0, 0.04)]
+        );
         let c = f.value.traction.curve();
         assert!((c.mu(0.25) - 0.03).abs() < 1e-15);
         assert_eq!(c.max_mu(), 0.06);
         let text = DECK.replace("curve = \"curve-1\"", "curve = \"table\"")
             + "\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06]]\n";
-        assert!(super::super::system::SYSTEM.load(&text, "b.toml", &[]).is_ok());
+        assert!(super::super::system::SYSTEM
+            .load(&text, "b.toml", &[])
+            .is_ok());
     }
 
     /// Bad tables are refused with file:line of the offending point and the rule.
@@ -719,7 +748,10 @@ mod tests {
         let line = DECK.lines().count() + 3;
         let cases = [
             ("points = [[0, 0.0]]", "at least two points"),
-            ("points = [[0, 0.0], [0.5, 0.06], [0.5, 0.07]]", "increase strictly"),
+            (
+                "points = [[0, 0.0], [0.5, 0.06], [0.5, 0.07]]",
+                "increase strictly",
+            ),
             ("points = [[0, 0.0], [0.5, 1.5]]", "µ must be in [0, 1]"),
             ("points = [[0, 0.0], [0.5]]", "pair"),
             ("points = [[0.1, 0.0], [0.5, 0.06]]", "zero sliding"),
@@ -734,8 +766,13 @@ mod tests {
             assert!(e.contains("traction_table.points"), "{e}");
         }
         let e = load("", "table").unwrap_err().to_string();
-        assert!(e.contains("traction_table.points") && e.contains("needs"), "{e}");
-        let e = load("\n[traction_table]\npointz = []\n", "table").unwrap_err().to_string();
+        assert!(
+            e.contains("traction_table.points") && e.contains("needs"),
+            "{e}"
+        );
+        let e = load("\n[traction_table]\npointz = []\n", "table")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("unknown key") && e.contains("pointz"), "{e}");
         // Other curves ignore a table's absence; the deck as shipped has none.
         assert!(load("", "curve-2").unwrap().value.traction.table.is_empty());
@@ -748,7 +785,14 @@ mod tests {
         let l = &f.value.lubricant;
         assert_eq!(f.value.traction.preset, TractionPreset::Rheology);
         assert_eq!(l.viscosity_model, ViscosityModel::Barus);
-        assert_eq!((l.roelands_z, l.limiting_shear_coefficient, l.limiting_shear_stress_pa), (0.0, 0.054, 0.0));
+        assert_eq!(
+            (
+                l.roelands_z,
+                l.limiting_shear_coefficient,
+                l.limiting_shear_stress_pa
+            ),
+            (0.0, 0.054, 0.0)
+        );
         let text = DECK.replace(
             "supply_temperature = 40.0",
             "supply_temperature = 40.0\nviscosity_model = \"roelands\"\nroelands_z = 0.42\nlimiting_shear_coefficient = 0.07\nlimiting_shear_stress = 1e6",

@@ -50,10 +50,14 @@ fn traction(a: &BallAnalysis) -> Value {
     let Some(m) = v.as_object_mut() else {
         return v;
     };
-    if let crate::physics::lubrication::traction_curve::TractionCurve::Table { points } = t.curve() {
+    if let crate::physics::lubrication::traction_curve::TractionCurve::Table { points } = t.curve()
+    {
         m.insert(
             "points".into(),
-            json!(points.iter().map(|p| json!({"sliding_m_s": p.0, "mu": p.1})).collect::<Vec<_>>()),
+            json!(points
+                .iter()
+                .map(|p| json!({"sliding_m_s": p.0, "mu": p.1}))
+                .collect::<Vec<_>>()),
         );
     }
     if let Some((lo, hi)) = super::analysis::sliding_band(a) {

@@ -71,7 +71,7 @@ impl BearingSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 4] = [
+        const PANES: [PaneSpec; 5] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -87,6 +87,10 @@ impl BearingSystem for AngularBall {
             PaneSpec {
                 kind: PaneKind::Chart(1),
                 title: "Dynamics",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(2),
+                title: "Traction",
             },
         ];
         &PANES

@@ -786,8 +786,12 @@ mod tests {
         // No spin: no heat.
         let z = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 0.0, 80, 200).unwrap();
         // The grid the analysis uses (40 rows × 60 cells) is within 2 % of 80 × 200.
-        let coarse = spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 938.1, 40, 60).unwrap();
-        assert!((coarse.max_rise_k / t.max_rise_k - 1.0).abs() < 0.02, "{coarse:?} {t:?}");
+        let coarse =
+            spin_film_temperature(&th, &mu, a, b, p0, 2.6e-6, 29.8, 938.1, 40, 60).unwrap();
+        assert!(
+            (coarse.max_rise_k / t.max_rise_k - 1.0).abs() < 0.02,
+            "{coarse:?} {t:?}"
+        );
         assert_eq!(z.max_rise_k, 0.0);
     }
 
