@@ -4,7 +4,7 @@
 use super::input::*;
 use crate::deck::form::Form;
 use crate::deck::form::{
-    material_fields, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
+    material_fields, show, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
 };
 use crate::deck::thermal::PathSeg;
 use crate::deck::{DeckError, DeckErrors, Location};
@@ -27,7 +27,7 @@ const BALL: [FieldSpec<BallInput>; 5] =
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 43] = [
+static FIELDS: [FieldSpec<BallInput>; 44] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -112,11 +112,29 @@ static FIELDS: [FieldSpec<BallInput>; 43] = [
             FieldKind::Real,
             (0.0, false),
             (std::f64::consts::FRAC_PI_2, true),
-            Presence::Required,
-            "unloaded contact angle (sets the clearance 2(f_i+f_o−1)D(1−cos α₀))",
+            Presence::OneOf("geometry.clearance"),
+            "unloaded contact angle (sets the clearance 2(f_i+f_o−1)D(1−cos α₀)); give this OR clearance",
         ),
-        get: |b| b.geometry.free_contact_angle_rad,
-        set: |b, v| b.geometry.free_contact_angle_rad = v,
+        get: |b| b.geometry.free_contact_angle(),
+        set: |b, v| {
+            b.geometry.free_contact_angle_rad = v;
+            b.geometry.clearance_m = None;
+        },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "geometry.clearance",
+            "geometry",
+            "Diametral clearance P_d",
+            Quantity::Length,
+            FieldKind::Real,
+            (0.0, false),
+            (0.1, false),
+            Presence::OneOf("geometry.free_contact_angle"),
+            "diametral clearance before loading: α₀ = acos(1 − P_d/(2(f_i+f_o−1)D)); give this OR free_contact_angle",
+        ),
+        get: |b| b.geometry.clearance(),
+        set: |b, v| b.geometry.clearance_m = Some(v),
     },
     FieldSpec {
         meta: FieldMeta::new(
@@ -535,8 +553,22 @@ static FIELDS: [FieldSpec<BallInput>; 43] = [
     },
 ];
 
-fn cross_checks(b: &BallInput, _units: Units) -> Vec<(&'static str, String)> {
+fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
     let mut v = Vec::new();
+    if let Some(pd) = b.geometry.clearance_m {
+        let two_a = 2.0 * b.geometry.centre_distance_m();
+        if pd >= two_a {
+            v.push((
+                "geometry.clearance",
+                format!(
+                    "must be below 2(f_i+f_o−1)·D (where α₀ reaches 90°) for {}, {} and {}",
+                    show(&SCHEMA, b, "geometry.ball_diameter", units),
+                    show(&SCHEMA, b, "geometry.inner_groove_curvature", units),
+                    show(&SCHEMA, b, "geometry.outer_groove_curvature", units),
+                ),
+            ));
+        }
+    }
     if b.geometry.pitch_diameter_m <= b.geometry.ball_diameter_m {
         v.push((
             "geometry.pitch_diameter",
@@ -803,5 +835,43 @@ mod tests {
         assert_eq!(r.roelands_z, Some(0.42));
         assert_eq!(r.limiting_shear_stress_pa(0.0), Some(1e6));
         assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
+    }
+
+    /// `geometry.clearance` instead of the free contact angle: read as P_d (SI), one of
+    /// the pair only, and P_d ≥ 2(f_i+f_o−1)D refused by the cross-check.
+    #[test]
+    fn clearance_or_free_contact_angle() {
+        let text = DECK.replace(
+            "free_contact_angle = 60.0        # deg",
+            "clearance = 50e-6",
+        );
+        let f = Form::parse(&text, "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.geometry.clearance_m, Some(50e-6));
+        assert!(
+            (f.value.geometry.free_contact_angle() - (1.0 - 50e-6 / 0.96e-3f64).acos()).abs()
+                < 1e-12
+        );
+        let both = DECK.replace(
+            "free_contact_angle = 60.0",
+            "clearance = 50e-6\nfree_contact_angle = 60.0",
+        );
+        let e = Form::parse(&both, "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("exactly one"), "{e}");
+        let big = DECK.replace(
+            "free_contact_angle = 60.0        # deg",
+            "clearance = 0.002",
+        );
+        let e = Form::parse(&big, "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("geometry.clearance") && e.contains("must be below"),
+            "{e}"
+        );
+        // The shipped deck: α₀ as given, no clearance.
+        let f = Form::parse(DECK, "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.geometry.clearance_m, None);
     }
 }

@@ -20,8 +20,13 @@ pub struct Geometry {
     pub inner_groove_curvature: f64,
     /// f_o, outer groove radius over D (> ½).
     pub outer_groove_curvature: f64,
-    /// α₀, free (unloaded) contact angle, rad.
+    /// α₀, free (unloaded) contact angle, rad; used when [`Geometry::clearance_m`] is
+    /// `None`.
     pub free_contact_angle_rad: f64,
+    /// P_d, diametral clearance, m, when the deck gives it instead of α₀
+    /// (`geometry.clearance`): α₀ = acos(1 − P_d/(2(f_i + f_o − 1)D)) (Harris; seed 001
+    /// Fig. 3-1). `None`: α₀ as given.
+    pub clearance_m: Option<f64>,
     /// How κ, K, E of the contact ellipse are found (exact, or the Brewe–Hamrock fits
     /// A-17 that Chen used).
     pub hertz_method: HertzMethod,
@@ -291,6 +296,35 @@ pub fn rpm(n: f64) -> f64 {
     n * std::f64::consts::PI / 30.0
 }
 
+impl Geometry {
+    /// A = (f_i + f_o − 1)·D, the distance between the groove centres when the ball
+    /// touches both grooves unloaded, m.
+    pub fn centre_distance_m(&self) -> f64 {
+        (self.inner_groove_curvature + self.outer_groove_curvature - 1.0) * self.ball_diameter_m
+    }
+
+    /// The free contact angle, rad: from the clearance when given,
+    /// cos α₀ = 1 − P_d/(2A) (P_d clamped to [0, 2A]; the deck's cross-check refuses
+    /// P_d ≥ 2A), else α₀ as given.
+    pub fn free_contact_angle(&self) -> f64 {
+        match self.clearance_m {
+            Some(pd) => {
+                let a = self.centre_distance_m();
+                (1.0 - (pd / (2.0 * a)).clamp(0.0, 1.0)).acos()
+            }
+            None => self.free_contact_angle_rad,
+        }
+    }
+
+    /// The diametral clearance, m: as given, else P_d = 2A(1 − cos α₀).
+    pub fn clearance(&self) -> f64 {
+        match self.clearance_m {
+            Some(pd) => pd,
+            None => 2.0 * self.centre_distance_m() * (1.0 - self.free_contact_angle_rad.cos()),
+        }
+    }
+}
+
 impl BallInput {
     /// Chen's Bearing A (seed 001 ch. 5): a 7018-size spindle bearing, ball 12 mm, pitch
     /// diameter 115 mm, f_i = f_o = 0.52, 20 balls, free contact angle 15°, steel
@@ -315,6 +349,7 @@ impl BallInput {
                 inner_groove_curvature: 0.52,
                 outer_groove_curvature: 0.52,
                 free_contact_angle_rad: 15f64.to_radians(),
+                clearance_m: None,
                 hertz_method: HertzMethod::Exact,
             },
             materials: Materials {
