@@ -1065,4 +1065,32 @@ mod traction_tests {
         assert!(b[1].1 > curve.max_mu());
         assert!(c.x.bounds.unwrap()[1] >= hi);
     }
+
+    /// Film thickness and sliding (seed ch. 4, "Effects of Sliding on Film Thickness"):
+    /// sliding enters (4-10, 4-11) only through the entraining speed, the mean of the two
+    /// surface speeds, with the inlet viscosity. Race control rolls without sliding at the
+    /// contact centre, so the ball's surface speed there equals the race's and the
+    /// correction is zero: the reported film equals the film at the race surface speed
+    /// (1e-12 relative); a slide ±s/2 about the same mean leaves it unchanged (exact).
+    #[test]
+    fn film_uses_the_entraining_speed() {
+        use crate::physics::lubrication::film_point::entrainment_speed_m_s;
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let c = &a.balls[0].inner;
+        let k = &c.kinematics;
+        let model = a.geometry.contact(Race::Inner, c.angle_rad).unwrap();
+        let film = |u: f64| {
+            PointFilmInputs::from_contact(&model, c.load_n, 0.071, 1.5e-8, u)
+                .central_film_thickness_m()
+                .unwrap()
+        };
+        let race = k.race_surface_speed_m_s.abs();
+        let h0 = film(entrainment_speed_m_s(race, race));
+        assert!((c.central_film_m.unwrap() / h0 - 1.0).abs() < 1e-12);
+        let s = 0.8;
+        assert_eq!(
+            film(entrainment_speed_m_s(race + s / 2.0, race - s / 2.0)),
+            h0
+        );
+    }
 }
