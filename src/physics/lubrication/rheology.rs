@@ -466,7 +466,7 @@ pub fn traction_curve(
 
 /// The film temperature of a contact with spin ω_s (rad/s) about its normal, under a
 /// given traction curve (seed ch. 6, Figs. 6-16…6-18: sliding u_s = |ω_s·x| across the
-/// major axis; τ = µ(u_s)·p; film-centre temperature by 4-7 over the surfaces' by 4-3).
+/// major axis; τ = µ(u_s)·p; film-centre temperature by 4-7 over the surfaces' by 4-4).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SpinFilmTemperature {
     /// Largest film-centre temperature rise above the inlet, K.
@@ -502,9 +502,15 @@ pub fn spin_film_temperature(
     if spin_rad_s == 0.0 || max_pressure_pa <= 0.0 {
         return Ok(best);
     }
-    if !(semi_major_m > 0.0 && semi_minor_m > 0.0 && spin_rad_s.is_finite()) {
+    if !(semi_major_m > 0.0
+        && semi_minor_m > 0.0
+        && spin_rad_s.is_finite()
+        && film_m > 0.0
+        && rolling_speed_m_s.is_finite()
+        && rolling_speed_m_s != 0.0)
+    {
         return Err(RheologyError::BadInput(
-            "contact semi-axes must be positive and the spin finite".into(),
+            "contact semi-axes, film and rolling speed must be positive and the spin finite".into(),
         ));
     }
     let rows = rows.max(1);
@@ -517,24 +523,36 @@ pub fn spin_film_temperature(
         if c == 0.0 || u == 0.0 {
             continue;
         }
-        // The row is a strip of half-width b√c and pressure p₀√c (Hertz ellipse).
-        let strip = ContactStrip {
-            max_pressure_pa: max_pressure_pa * c.sqrt(),
-            semi_width_m: semi_minor_m * c.sqrt(),
-            film_m,
-            rolling_speed_m_s,
-            inlet_temperature_k: 1.0,
-        };
-        strip.validate()?;
+        // The row is a strip of half-width b√c and pressure p₀√c (Hertz ellipse). As
+        // the seed does for Figs. 6-17/18 ("Using … Eq. (4-4), and Eq. (4-6)"), the
+        // surface temperature is (4-4), the constant-flux form of (4-3), with the local
+        // flux; τ = µ(u_s)·p does not depend on the temperature here, so each cell is
+        // explicit (no march).
+        let half = semi_minor_m * c.sqrt();
+        let p_row = max_pressure_pa * c.sqrt();
         let mu = curve.mu(u);
-        let states = march(thermal, &strip, u, cells, &|p, _| Ok(mu * p))?;
-        let rs = Strip::new(strip.semi_width_m, cells);
-        for (i, cs) in states.iter().enumerate() {
-            if cs.centre_rise_k > best.max_rise_k {
-                best.max_rise_k = cs.centre_rise_k;
-                best.at = (xr, rs.y(i) / s.b);
+        let arch = thermal.archard(rolling_speed_m_s);
+        let rs = Strip::new(half, cells);
+        for i in 0..cells {
+            let y = rs.y(i);
+            let from_inlet = y + half;
+            let tau = mu * p_row * (1.0 - (y / half).powi(2)).max(0.0).sqrt();
+            let e = thermal.convection_factor(rolling_speed_m_s, film_m, from_inlet);
+            let q = tau * u / (2.0 * (1.0 + e));
+            let surface = 2.0 * q * from_inlet.sqrt() * arch;
+            let centre = surface + thermal.centre_rise_k(tau, u, film_m, e);
+            if !centre.is_finite() {
+                return Err(RheologyError::NonFinite {
+                    what: "film temperature",
+                    pressure_pa: tau / mu.max(f64::MIN_POSITIVE),
+                    temperature_k: centre,
+                });
             }
-            best.max_surface_rise_k = best.max_surface_rise_k.max(cs.surface_rise_k);
+            if centre > best.max_rise_k {
+                best.max_rise_k = centre;
+                best.at = (xr, y / s.b);
+            }
+            best.max_surface_rise_k = best.max_surface_rise_k.max(surface);
         }
     }
     Ok(best)
