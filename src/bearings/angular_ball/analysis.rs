@@ -816,7 +816,8 @@ mod properties {
     proptest! {
         #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
-        /// Random ball bearings, loads, speeds, traction and options: the analysis either
+        /// Random ball bearings, loads, speeds, traction (constant, curves 1–3, a table,
+        /// the rheology curve by Barus or Roelands), α₀ or its clearance, and options: the analysis either
         /// returns a typed error or an answer whose numbers are all finite, with the ring
         /// in equilibrium (held force met to 1e-6 relative) and every ball's residual below
         /// its tolerance; it never panics.
@@ -834,7 +835,9 @@ mod properties {
             force in any::<bool>(),
             seed_sign in any::<bool>(),
             control in 0usize..3,
-            curve in 0usize..4,
+            curve in 0usize..6,
+            roelands in any::<bool>(),
+            clearance in any::<bool>(),
         ) {
             let mut i = BallInput::chen_a();
             let g = &mut i.geometry;
@@ -855,7 +858,18 @@ mod properties {
                 crate::bearings::angular_ball::input::TractionPreset::Curve1,
                 crate::bearings::angular_ball::input::TractionPreset::Curve2,
                 crate::bearings::angular_ball::input::TractionPreset::Curve3,
+                crate::bearings::angular_ball::input::TractionPreset::Table,
+                crate::bearings::angular_ball::input::TractionPreset::Rheology,
             ][curve];
+            i.traction.table = vec![(0.0, 0.01), (0.1 * fi, 0.09 * fo), (2.0, 0.03)];
+            if roelands {
+                i.lubricant.viscosity_model = crate::physics::lubrication::rheology::ViscosityModel::Roelands;
+            }
+            if clearance {
+                // The same α₀ given as its diametral clearance.
+                let g = &i.geometry;
+                i.geometry.clearance_m = Some(2.0 * g.centre_distance_m() * (1.0 - alpha.to_radians().cos()));
+            }
             i.dynamics.skid_search_limit_rad_s = rpm(20_000.0);
             match analyse(&i, Cancel::NONE) {
                 Err(e) => {
