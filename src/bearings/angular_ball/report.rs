@@ -301,6 +301,35 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         a.total_heat_w / a.balls.len().max(1) as f64,
         a.bulk_temperature_k - 273.15
     );
+    let curve = a.input.traction.curve();
+    let hottest = |f: fn(&super::analysis::BallResult) -> Option<f64>| {
+        a.balls.iter().filter_map(f).fold(0.0, f64::max)
+    };
+    let _ = writeln!(
+        s,
+        "TRACTION  {}: µm {:.4}{}; film temperature rise (4-3…4-7) up to {:.1} K inner, {:.1} K outer",
+        a.input.traction.preset.name(),
+        curve.max_mu(),
+        match super::analysis::sliding_band(a) {
+            Some((lo, hi)) => format!("; contacts slide {lo:.3}–{hi:.3} m/s"),
+            None => String::new(),
+        },
+        hottest(|b| b.inner.film_temperature_rise_k),
+        hottest(|b| b.outer.film_temperature_rise_k),
+    );
+    if let Some(rc) = &a.rheology_contact {
+        let _ = writeln!(
+            s,
+            "  rheology curve ({:?}) tabulated at ball {} {}: p₀ {:.3} GPa, b {:.4} mm, h {:.3} µm, V {:.2} m/s",
+            a.input.lubricant.viscosity_model,
+            rc.ball,
+            race_name(rc.race),
+            rc.strip.max_pressure_pa * 1e-9,
+            rc.strip.semi_width_m * 1e3,
+            rc.strip.film_m * 1e6,
+            rc.strip.rolling_speed_m_s
+        );
+    }
     if let Some(d) = &a.dynamics {
         let _ = writeln!(
             s,
