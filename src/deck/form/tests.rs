@@ -655,5 +655,8 @@ fn location_in_an_opaque_table() {
     assert_eq!(at(&[Key("anything".into())]), "toy.toml:18:12");
     assert_eq!(at(&[Key("anything".into()), Index(1)]), "toy.toml:18:16");
     assert!(at(&[Key("nothing".into())]).starts_with("toy.toml:17:"));
-    assert!(f.location_in("absent", &[]).to_string().starts_with("toy.toml:1"));
+    assert!(f
+        .location_in("absent", &[])
+        .to_string()
+        .starts_with("toy.toml:1"));
 }
