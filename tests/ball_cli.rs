@@ -242,3 +242,46 @@ fn chen_b_radial_load_skid_threshold_is_not_zero() {
     assert!((n0 / 9_780.0 - 1.0).abs() < 0.02, "{n0}");
     assert!((n / 5_116.0 - 1.0).abs() < 0.02, "{n}");
 }
+
+/// Issue 16's traction choices through the binary: `traction.curve = "rheology"` reports
+/// the tabulated curve (from µ = 0 at rest, µ_m below the limiting-shear coefficient
+/// 0.054 + 1e-12) and the contact it was tabulated at; every contact reports its film
+/// temperature rise, the controlling outer race 0 (no spin); a bad traction table is
+/// refused with file:line.
+#[test]
+fn traction_rheology_table_and_film_temperature() {
+    let v = json("chen_b.toml", &["--set", "traction.curve=rheology"]);
+    let t = &v["traction"];
+    assert_eq!(t["curve"], "rheology");
+    let mu = t["max_mu"].as_f64().unwrap_or(f64::NAN);
+    assert!(mu > 0.0 && mu <= 0.054 + 1e-12, "{mu}");
+    assert_eq!(t["points"][0]["mu"].as_f64(), Some(0.0));
+    assert!(t["rheology_contact"]["film_m"].as_f64().unwrap_or(0.0) > 0.0);
+    let b = &v["balls"][0];
+    assert!(
+        b["inner"]["film_temperature_rise_c"]
+            .as_f64()
+            .unwrap_or(0.0)
+            > 1.0
+    );
+    assert_eq!(b["outer"]["film_temperature_rise_c"].as_f64(), Some(0.0));
+    let text = match std::fs::read_to_string(deck("chen_b.toml")) {
+        Ok(t) => t,
+        Err(e) => panic!("{e}"),
+    };
+    let bad = text.replace("curve = \"curve-1\"", "curve = \"table\"")
+        + "\n[traction_table]\npoints = [[0.0, 0.0], [0.3, 0.05], [0.2, 0.04]]\n";
+    let dir = std::env::temp_dir().join(format!("rollbench-traction-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let path = dir.join("table.toml");
+    if let Err(e) = std::fs::write(&path, bad) {
+        panic!("{e}");
+    }
+    let p = path.to_string_lossy().into_owned();
+    let (ok, _, err) = run(&["run", p.as_str()]);
+    assert!(!ok);
+    let line = text.lines().count() + 3;
+    assert!(err.contains(&format!("table.toml:{line}:")), "{err}");
+    assert!(err.contains("increase strictly"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

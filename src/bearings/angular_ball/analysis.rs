@@ -5,12 +5,15 @@
 use super::dynamics::DynamicsResult;
 use super::error::BallError;
 use super::geometry::BallGeometry;
-use super::input::{BallInput, Method, PreloadMode};
+use super::input::{BallInput, Method, PreloadMode, TractionPreset};
 use super::load_distribution::{self, Axial, BallLoad, Conditions, LoadDistribution};
 use super::race_control::{spin_moment_nm, ContactKinematics};
 use crate::numerics::cancel::Cancel;
-use crate::physics::contact::point::{PointContact, Race};
+use crate::physics::contact::point::{Axis, PointContact, Race};
 use crate::physics::lubrication::film_point::PointFilmInputs;
+use crate::physics::lubrication::rheology::{self, ContactStrip, FilmThermal};
+use crate::physics::lubrication::traction_curve::TractionCurve;
+use std::borrow::Cow;
 
 /// One contact of one ball, everything a report shows.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,6 +38,23 @@ pub struct ContactResult {
     pub central_film_m: Option<f64>,
     /// Minimum film, m (4-10).
     pub min_film_m: Option<f64>,
+    /// Largest film-centre temperature rise above the inlet in the contact from the
+    /// race-control spin (4-3…4-7, `rheology::spin_film_temperature`, traction curve
+    /// µ(|ω_s x|)·p), K; `None` without a film.
+    pub film_temperature_rise_k: Option<f64>,
+    /// Largest surface temperature rise (4-3) of the same calculation, K.
+    pub surface_temperature_rise_k: Option<f64>,
+}
+
+/// Where a `traction.curve = "rheology"` curve was tabulated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RheologyContact {
+    /// Ball index (0-based) and race of the contact.
+    pub ball: usize,
+    /// Its race.
+    pub race: Race,
+    /// The strip the curve was computed on (p₀, b, h, V, inlet temperature).
+    pub strip: ContactStrip,
 }
 
 /// One ball.
@@ -111,6 +131,145 @@ pub struct BallAnalysis {
     pub dynamics: Option<DynamicsResult>,
     /// Bulk temperature T_oil + H/(ρ c Q̇), K (4-1).
     pub bulk_temperature_k: f64,
+    /// For `traction.curve = "rheology"`: the contact the curve was tabulated at.
+    pub rheology_contact: Option<RheologyContact>,
+}
+
+/// Film thermal data of ch. 6 from the deck: the oil of `[lubricant]`, the rings'
+/// steel for both solids.
+pub fn film_thermal(input: &BallInput) -> FilmThermal {
+    let (l, r) = (&input.lubricant, &input.materials.rings);
+    FilmThermal {
+        oil_density_kg_m3: l.density_kg_m3,
+        oil_specific_heat_j_kg_k: l.specific_heat_j_kg_k,
+        oil_conductivity_w_m_k: l.conductivity_w_m_k,
+        solid_density_kg_m3: r.density_kg_m3,
+        solid_specific_heat_j_kg_k: r.specific_heat_j_kg_k,
+        solid_conductivity_w_m_k: r.conductivity_w_m_k,
+    }
+}
+
+/// The sliding-speed band of the contacts, m/s: min and max of the slice sliding speeds
+/// |ω_s·x_k| over every loaded contact of every ball, the slices at
+/// x_k = −a + (k+½)·2a/n across the transverse axis (n = `dynamics.slices`, as the ball
+/// dynamics cuts them) with race control's spin; `None` when no contact is loaded. The
+/// Traction pane shades it on the curve.
+pub fn sliding_band(a: &BallAnalysis) -> Option<(f64, f64)> {
+    let n = a.input.dynamics.slices.max(1);
+    let mut band: Option<(f64, f64)> = None;
+    for b in &a.balls {
+        for c in [&b.inner, &b.outer] {
+            if c.load_n <= 0.0 {
+                continue;
+            }
+            let (ax, _) = semi_axes(&c.hertz);
+            for k in 0..n {
+                let x = -ax + (k as f64 + 0.5) * 2.0 * ax / n as f64;
+                let u = (c.kinematics.spin_rad_s * x).abs();
+                band = Some(match band {
+                    None => (u, u),
+                    Some((lo, hi)) => (lo.min(u), hi.max(u)),
+                });
+            }
+        }
+    }
+    band
+}
+
+/// (transverse, rolling) semi-axes of a Hertz contact, m.
+fn semi_axes(h: &PointContact) -> (f64, f64) {
+    match h.major_axis {
+        Axis::Transverse => (h.semi_major_m, h.semi_minor_m),
+        Axis::Rolling => (h.semi_minor_m, h.semi_major_m),
+    }
+}
+
+/// For `traction.curve = "rheology"`, the input with the curve tabulated (ch. 4: "the
+/// traction curve … is better to be determined before performing bearing analysis"):
+/// a first load solve with the Coulomb µ of `traction.mu` (friction enters the load
+/// distribution only through a skidding ball's cap) finds the contacts; the curve is
+/// computed (`rheology::traction_curve`) on the centre strip of the contact with the
+/// highest Hertz pressure that has a film (p₀, rolling semi-axis b, central film 4-11,
+/// rolling speed, oil at the supply temperature) and then used as a table by every
+/// stage (load distribution's cap, spin heat, skid search, dynamics). Other curves: the
+/// input unchanged.
+pub fn resolve_traction<'a>(
+    input: &'a BallInput,
+    cancel: Cancel,
+) -> Result<(Cow<'a, BallInput>, Option<RheologyContact>), BallError> {
+    if input.traction.preset != TractionPreset::Rheology {
+        return Ok((Cow::Borrowed(input), None));
+    }
+    let rheo = input.lubricant.rheology();
+    rheo.validate()
+        .map_err(|e| BallError::InvalidInput(format!("lubricant: {e}")))?;
+    let mut first = input.clone();
+    first.traction.preset = TractionPreset::Constant;
+    let geom = BallGeometry::new(&first)?;
+    let (axial, _) = axial_condition(&first, &geom, cancel)?;
+    let load = load_distribution::solve(&geom, &conditions(&first, axial, 1.0), cancel)?;
+    let lub = &input.lubricant;
+    let mut best: Option<RheologyContact> = None;
+    for (i, b) in load.balls.iter().enumerate() {
+        for (race, c, k) in [
+            (Race::Inner, &b.equilibrium.inner, &b.kinematics.inner),
+            (Race::Outer, &b.equilibrium.outer, &b.kinematics.outer),
+        ] {
+            if !(c.load_n > 0.0 && k.rolling_speed_m_s > 0.0) {
+                continue;
+            }
+            let name = if race == Race::Inner {
+                "inner"
+            } else {
+                "outer"
+            };
+            let model = geom.contact(race, c.angle_rad)?;
+            let h = model
+                .solve(c.load_n)
+                .map_err(|source| BallError::Contact { race: name, source })?;
+            if best
+                .as_ref()
+                .is_some_and(|b| b.strip.max_pressure_pa >= h.max_pressure_pa)
+            {
+                continue;
+            }
+            let film = PointFilmInputs::from_contact(
+                &model,
+                c.load_n,
+                lub.viscosity_pa_s,
+                lub.pressure_viscosity_pa_inv,
+                k.rolling_speed_m_s,
+            )
+            .central_film_thickness_m()
+            .map_err(|e| BallError::InvalidInput(format!("rheology traction: film: {e}")))?;
+            best = Some(RheologyContact {
+                ball: i,
+                race,
+                strip: ContactStrip {
+                    max_pressure_pa: h.max_pressure_pa,
+                    semi_width_m: semi_axes(&h).1,
+                    film_m: film,
+                    rolling_speed_m_s: k.rolling_speed_m_s,
+                    inlet_temperature_k: lub.supply_temperature_k,
+                },
+            });
+        }
+    }
+    let Some(at) = best else {
+        return Err(BallError::InvalidInput(
+            "traction.curve = \"rheology\" needs a loaded, rolling contact (zero speed or no load: no film to tabulate the curve at)".into(),
+        ));
+    };
+    let curve = rheology::traction_curve(&rheo, &film_thermal(input), &at.strip)
+        .map_err(|e| BallError::InvalidInput(format!("rheology traction: {e}")))?;
+    let TractionCurve::Table { points } = curve else {
+        return Err(BallError::InvalidInput(
+            "rheology traction: the tabulated curve is not a table".into(),
+        ));
+    };
+    let mut out = input.clone();
+    out.traction.tabulated = points;
+    Ok((Cow::Owned(out), Some(at)))
 }
 
 /// The bearing bulk temperature of eq. 4-1: all heat H (W) carried off by the oil flow
@@ -340,6 +499,34 @@ fn contact_result(
         kin.rolling_speed_m_s,
     );
     let ok = load.load_n > 0.0 && kin.rolling_speed_m_s > 0.0;
+    let central = if ok {
+        film.central_film_thickness_m().ok()
+    } else {
+        None
+    };
+    // Film temperature of the spinning contact (seed ch. 6, Figs. 6-16…6-18): 40 strips
+    // across the transverse axis × 60 cells along the rolling one (within 2 % of a
+    // 80 × 200 grid, `rheology` tests).
+    let thermal = match central {
+        Some(h) if h > 0.0 => {
+            let (ax, bx) = semi_axes(&hertz);
+            let t = rheology::spin_film_temperature(
+                &film_thermal(input),
+                &input.traction.curve(),
+                ax,
+                bx,
+                hertz.max_pressure_pa,
+                h,
+                kin.rolling_speed_m_s,
+                kin.spin_rad_s,
+                40,
+                60,
+            )
+            .map_err(|e| BallError::InvalidInput(format!("{name} film temperature: {e}")))?;
+            Some(t)
+        }
+        _ => None,
+    };
     Ok(ContactResult {
         load_n: load.load_n,
         angle_rad: load.angle_rad,
@@ -349,21 +536,21 @@ fn contact_result(
         kinematics: kin,
         spin_moment_nm: ms,
         spin_heat_w: ms * kin.spin_rad_s.abs(),
-        central_film_m: if ok {
-            film.central_film_thickness_m().ok()
-        } else {
-            None
-        },
+        central_film_m: central,
         min_film_m: if ok {
             film.minimum_film_thickness_m().ok()
         } else {
             None
         },
+        film_temperature_rise_k: thermal.map(|t| t.max_rise_k),
+        surface_temperature_rise_k: thermal.map(|t| t.max_surface_rise_k),
     })
 }
 
 /// Solve a case by the race-control method.
 pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallError> {
+    let (input, rheology_contact) = resolve_traction(input, cancel)?;
+    let input: &BallInput = &input;
     input
         .traction
         .curve()
@@ -381,10 +568,31 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
     let load = load_distribution::solve(&geom, &conditions(input, axial, 1.0), cancel)?;
     let mu = input.traction.curve().max_mu();
     let mut balls = Vec::with_capacity(load.balls.len());
+    // A contact's result depends only on its load state and kinematics: balls in the
+    // same state (every ball under an axial load) share it instead of recomputing the
+    // film temperature (exact: the same inputs give the same numbers).
+    let mut done: Vec<(
+        Race,
+        load_distribution::ContactLoad,
+        ContactKinematics,
+        ContactResult,
+    )> = Vec::new();
+    let mut contact = |race: Race, l: &load_distribution::ContactLoad, k: ContactKinematics| {
+        if let Some(c) = done
+            .iter()
+            .find(|d| d.0 == race && d.1 == *l && d.2 == k)
+            .map(|d| d.3)
+        {
+            return Ok(c);
+        }
+        let c = contact_result(input, &geom, race, l, k)?;
+        done.push((race, *l, k, c));
+        Ok::<_, BallError>(c)
+    };
     for b in &load.balls {
         let k = &b.kinematics;
-        let inner = contact_result(input, &geom, Race::Inner, &b.equilibrium.inner, k.inner)?;
-        let outer = contact_result(input, &geom, Race::Outer, &b.equilibrium.outer, k.outer)?;
+        let inner = contact(Race::Inner, &b.equilibrium.inner, k.inner)?;
+        let outer = contact(Race::Outer, &b.equilibrium.outer, k.outer)?;
         let res = resisting(mu, &geom, b);
         balls.push(BallResult {
             azimuth_rad: b.azimuth_rad,
@@ -437,6 +645,7 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
             lub.flow_rate_m3_s,
             lub.supply_temperature_k,
         ),
+        rheology_contact,
     })
 }
 
@@ -607,7 +816,8 @@ mod properties {
     proptest! {
         #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
-        /// Random ball bearings, loads, speeds, traction and options: the analysis either
+        /// Random ball bearings, loads, speeds, traction (constant, curves 1–3, a table,
+        /// the rheology curve by Barus or Roelands), α₀ or its clearance, and options: the analysis either
         /// returns a typed error or an answer whose numbers are all finite, with the ring
         /// in equilibrium (held force met to 1e-6 relative) and every ball's residual below
         /// its tolerance; it never panics.
@@ -625,7 +835,9 @@ mod properties {
             force in any::<bool>(),
             seed_sign in any::<bool>(),
             control in 0usize..3,
-            curve in 0usize..4,
+            curve in 0usize..6,
+            roelands in any::<bool>(),
+            clearance in any::<bool>(),
         ) {
             let mut i = BallInput::chen_a();
             let g = &mut i.geometry;
@@ -646,7 +858,18 @@ mod properties {
                 crate::bearings::angular_ball::input::TractionPreset::Curve1,
                 crate::bearings::angular_ball::input::TractionPreset::Curve2,
                 crate::bearings::angular_ball::input::TractionPreset::Curve3,
+                crate::bearings::angular_ball::input::TractionPreset::Table,
+                crate::bearings::angular_ball::input::TractionPreset::Rheology,
             ][curve];
+            i.traction.table = vec![(0.0, 0.01), (0.1 * fi, 0.09 * fo), (2.0, 0.03)];
+            if roelands {
+                i.lubricant.viscosity_model = crate::physics::lubrication::rheology::ViscosityModel::Roelands;
+            }
+            if clearance {
+                // The same α₀ given as its diametral clearance.
+                let g = &i.geometry;
+                i.geometry.clearance_m = Some(2.0 * g.centre_distance_m() * (1.0 - alpha.to_radians().cos()));
+            }
             i.dynamics.skid_search_limit_rad_s = rpm(20_000.0);
             match analyse(&i, Cancel::NONE) {
                 Err(e) => {
@@ -731,5 +954,157 @@ mod skid_curve {
         let chart = crate::bearings::angular_ball::view::skid_chart(&a);
         assert_eq!(chart.series.len(), 2);
         assert_eq!(chart.series[0].points.len(), s.len());
+    }
+}
+
+#[cfg(test)]
+mod traction_tests {
+    use super::*;
+    use crate::physics::lubrication::rheology::ViscosityModel;
+
+    /// `rheology`: the curve is tabulated at the reported contact and used as the table
+    /// (exactly `rheology::traction_curve` at that strip); µ_m of it drives the resisting
+    /// torque (0.5·µ_m·D·(Q_i+Q_o), 1e-15 relative). The contact is the highest-pressure
+    /// loaded one of a first solve (Bearing B: the outer contact, as every ball is equal).
+    #[test]
+    fn rheology_curve_is_tabulated_at_the_contact() {
+        let mut i = BallInput::chen_b();
+        i.traction.preset = TractionPreset::Rheology;
+        i.lubricant.viscosity_model = ViscosityModel::Roelands;
+        let a = analyse(&i, Cancel::NONE).unwrap();
+        let rc = a.rheology_contact.clone().unwrap();
+        let expect =
+            rheology::traction_curve(&i.lubricant.rheology(), &film_thermal(&i), &rc.strip)
+                .unwrap();
+        assert_eq!(a.input.traction.curve(), expect);
+        let mu = expect.max_mu();
+        assert!(mu > 0.0 && mu < 0.054 + 1e-12, "{mu}");
+        let b = &a.balls[0];
+        let r = 0.5 * mu * 0.012 * (b.inner.load_n + b.outer.load_n);
+        assert!((b.resisting_moment_nm / r - 1.0).abs() < 1e-15);
+        // The first solve is the analysis with the Coulomb µ of traction.mu (here B skids
+        // with the Roelands curve's µ_m = 0.043, so the final contacts differ from it).
+        let mut first = i.clone();
+        first.traction.preset = TractionPreset::Constant;
+        let f = analyse(&first, Cancel::NONE).unwrap();
+        let p = |c: &ContactResult| c.hertz.max_pressure_pa;
+        let top = f
+            .balls
+            .iter()
+            .map(|b| p(&b.inner).max(p(&b.outer)))
+            .fold(0.0, f64::max);
+        assert!((rc.strip.max_pressure_pa / top - 1.0).abs() < 1e-12);
+        // At rest there is no film to tabulate at: a typed error.
+        i.operating.inner_speed_rad_s = 0.0;
+        assert!(matches!(
+            analyse(&i, Cancel::NONE),
+            Err(BallError::InvalidInput(_))
+        ));
+    }
+
+    /// Film temperature per contact: the controlling (outer) race does not spin, so its
+    /// film is not heated (exactly 0); the inner contact's rise is
+    /// `rheology::spin_film_temperature` of its own numbers (exact), with µ(u_s) of the
+    /// deck's curve; more spin (higher speed) heats it more.
+    #[test]
+    fn film_temperature_of_the_spinning_contact() {
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let b = &a.balls[0];
+        assert_eq!(b.outer.film_temperature_rise_k, Some(0.0));
+        let (ax, bx) = semi_axes(&b.inner.hertz);
+        let t = rheology::spin_film_temperature(
+            &film_thermal(&a.input),
+            &a.input.traction.curve(),
+            ax,
+            bx,
+            b.inner.hertz.max_pressure_pa,
+            b.inner.central_film_m.unwrap(),
+            b.inner.kinematics.rolling_speed_m_s,
+            b.inner.kinematics.spin_rad_s,
+            40,
+            60,
+        )
+        .unwrap();
+        assert_eq!(b.inner.film_temperature_rise_k, Some(t.max_rise_k));
+        assert!(t.max_rise_k > 1.0 && t.max_rise_k < 100.0, "{t:?}");
+        let mut fast = BallInput::chen_a();
+        fast.operating.inner_speed_rad_s *= 1.3;
+        let f = analyse(&fast, Cancel::NONE).unwrap();
+        assert!(f.balls[0].inner.film_temperature_rise_k.unwrap() > t.max_rise_k);
+    }
+
+    /// The sliding band over the slices (odd n puts a slice on the centre line): min 0,
+    /// max |ω_s|·a·(1 − 1/n) of the fastest-spinning contact (1e-12 relative).
+    #[test]
+    fn sliding_band_over_the_slices() {
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let (lo, hi) = sliding_band(&a).unwrap();
+        let n = a.input.dynamics.slices as f64;
+        assert_eq!(n % 2.0, 1.0);
+        let c = &a.balls[0].inner;
+        let expect = c.kinematics.spin_rad_s.abs() * semi_axes(&c.hertz).0 * (1.0 - 1.0 / n);
+        assert!(lo.abs() < 1e-12, "{lo}");
+        assert!((hi / expect - 1.0).abs() < 1e-12, "{hi} {expect}");
+    }
+
+    /// A table curve is used as given: with a table equal to curve 1's points the whole
+    /// analysis equals curve 1's (exact).
+    #[test]
+    fn table_curve_equals_the_same_preset() {
+        let c1 = analyse(&BallInput::chen_b(), Cancel::NONE).unwrap();
+        let mut t = BallInput::chen_b();
+        t.traction.preset = TractionPreset::Table;
+        t.traction.table = vec![(0.0, 0.0), (0.2, 0.054)];
+        let a = analyse(&t, Cancel::NONE).unwrap();
+        assert_eq!(a.balls, c1.balls);
+        assert_eq!(a.skid, c1.skid);
+        t.traction.table.clear();
+        assert!(analyse(&t, Cancel::NONE).is_err());
+    }
+
+    /// The Traction pane's chart: the curve's points lie on µ(u_s) (exact), the x range
+    /// covers the band, and the band is a box at its min and max sliding speeds from 0
+    /// to above µ_m.
+    #[test]
+    fn traction_chart_shows_the_curve_and_the_band() {
+        let a = analyse(&BallInput::chen_b(), Cancel::NONE).unwrap();
+        let c = crate::bearings::angular_ball::view::traction_chart(&a);
+        let curve = a.input.traction.curve();
+        assert_eq!(c.series.len(), 2);
+        assert!(c.series[0].points.iter().all(|&(u, m)| m == curve.mu(u)));
+        assert!(c.series[0].points.iter().any(|&(u, _)| u == 0.2));
+        let (lo, hi) = sliding_band(&a).unwrap();
+        let b = &c.series[1].points;
+        assert_eq!((b[0].0, b[0].1, b[3].0, b[3].1), (lo, 0.0, hi, 0.0));
+        assert!(b[1].1 > curve.max_mu());
+        assert!(c.x.bounds.unwrap()[1] >= hi);
+    }
+
+    /// Film thickness and sliding (seed ch. 4, "Effects of Sliding on Film Thickness"):
+    /// sliding enters (4-10, 4-11) only through the entraining speed, the mean of the two
+    /// surface speeds, with the inlet viscosity. Race control rolls without sliding at the
+    /// contact centre, so the ball's surface speed there equals the race's and the
+    /// correction is zero: the reported film equals the film at the race surface speed
+    /// (1e-12 relative); a slide ±s/2 about the same mean leaves it unchanged (exact).
+    #[test]
+    fn film_uses_the_entraining_speed() {
+        use crate::physics::lubrication::film_point::entrainment_speed_m_s;
+        let a = analyse(&BallInput::chen_a(), Cancel::NONE).unwrap();
+        let c = &a.balls[0].inner;
+        let k = &c.kinematics;
+        let model = a.geometry.contact(Race::Inner, c.angle_rad).unwrap();
+        let film = |u: f64| {
+            PointFilmInputs::from_contact(&model, c.load_n, 0.071, 1.5e-8, u)
+                .central_film_thickness_m()
+                .unwrap()
+        };
+        let race = k.race_surface_speed_m_s.abs();
+        let h0 = film(entrainment_speed_m_s(race, race));
+        assert!((c.central_film_m.unwrap() / h0 - 1.0).abs() < 1e-12);
+        let s = 0.8;
+        assert_eq!(
+            film(entrainment_speed_m_s(race + s / 2.0, race - s / 2.0)),
+            h0
+        );
     }
 }

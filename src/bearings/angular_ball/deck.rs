@@ -2,17 +2,24 @@
 //! generic deck reader (`crate::deck::form`). Key names are a contract (issue 16).
 
 use super::input::*;
+use crate::deck::form::Form;
 use crate::deck::form::{
-    material_fields, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
+    material_fields, show, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
 };
+use crate::deck::thermal::PathSeg;
+use crate::deck::{DeckError, DeckErrors, Location};
 use crate::physics::contact::point::HertzMethod;
+use crate::physics::lubrication::rheology::ViscosityModel;
 use crate::units::{Quantity, Units};
 
 const HERTZ: &[&str] = &["exact", "brewe-hamrock"];
 const PRELOAD: &[&str] = &["displacement", "force"];
 const RACE: &[&str] = &["outer", "inner", "auto"];
 const GYRO: &[&str] = &["resisting", "seed"];
-const CURVES: &[&str] = &["constant", "curve-1", "curve-2", "curve-3"];
+const CURVES: &[&str] = &[
+    "constant", "curve-1", "curve-2", "curve-3", "table", "rheology",
+];
+const VISCOSITY: &[&str] = &["barus", "roelands"];
 const METHODS: &[&str] = &["race-control", "quasi-static", "time-simulation"];
 
 const BALL: [FieldSpec<BallInput>; 5] =
@@ -20,7 +27,7 @@ const BALL: [FieldSpec<BallInput>; 5] =
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 39] = [
+static FIELDS: [FieldSpec<BallInput>; 44] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -105,11 +112,29 @@ static FIELDS: [FieldSpec<BallInput>; 39] = [
             FieldKind::Real,
             (0.0, false),
             (std::f64::consts::FRAC_PI_2, true),
-            Presence::Required,
-            "unloaded contact angle (sets the clearance 2(f_i+f_o−1)D(1−cos α₀))",
+            Presence::OneOf("geometry.clearance"),
+            "unloaded contact angle (sets the clearance 2(f_i+f_o−1)D(1−cos α₀)); give this OR clearance",
         ),
-        get: |b| b.geometry.free_contact_angle_rad,
-        set: |b, v| b.geometry.free_contact_angle_rad = v,
+        get: |b| b.geometry.free_contact_angle(),
+        set: |b, v| {
+            b.geometry.free_contact_angle_rad = v;
+            b.geometry.clearance_m = None;
+        },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "geometry.clearance",
+            "geometry",
+            "Diametral clearance P_d",
+            Quantity::Length,
+            FieldKind::Real,
+            (0.0, false),
+            (0.1, false),
+            Presence::OneOf("geometry.free_contact_angle"),
+            "diametral clearance before loading: α₀ = acos(1 − P_d/(2(f_i+f_o−1)D)); give this OR free_contact_angle",
+        ),
+        get: |b| b.geometry.clearance(),
+        set: |b, v| b.geometry.clearance_m = Some(v),
     },
     FieldSpec {
         meta: FieldMeta::new(
@@ -249,12 +274,12 @@ static FIELDS: [FieldSpec<BallInput>; 39] = [
             Quantity::Dimensionless,
             FieldKind::Choice(CURVES),
             (0.0, false),
-            (3.0, false),
+            (5.0, false),
             Presence::Default(1.0),
-            "constant µ, or the seed's curves 1–3 (piecewise linear between the printed points)",
+            "constant µ, the seed's curves 1–3 (piecewise linear between the printed points), a table ([traction_table] points = [[u_s m/s, µ], …]) or the ch. 4 rheology of [lubricant] tabulated at the contact before the run",
         ),
-        get: |b| match b.traction.preset { TractionPreset::Constant => 0.0, TractionPreset::Curve1 => 1.0, TractionPreset::Curve2 => 2.0, TractionPreset::Curve3 => 3.0 },
-        set: |b, v| b.traction.preset = match v as usize { 0 => TractionPreset::Constant, 2 => TractionPreset::Curve2, 3 => TractionPreset::Curve3, _ => TractionPreset::Curve1 },
+        get: |b| match b.traction.preset { TractionPreset::Constant => 0.0, TractionPreset::Curve1 => 1.0, TractionPreset::Curve2 => 2.0, TractionPreset::Curve3 => 3.0, TractionPreset::Table => 4.0, TractionPreset::Rheology => 5.0 },
+        set: |b, v| b.traction.preset = match v as usize { 0 => TractionPreset::Constant, 2 => TractionPreset::Curve2, 3 => TractionPreset::Curve3, 4 => TractionPreset::Table, 5 => TractionPreset::Rheology, _ => TractionPreset::Curve1 },
     },
     FieldSpec {
         meta: FieldMeta::new(
@@ -393,6 +418,66 @@ static FIELDS: [FieldSpec<BallInput>; 39] = [
     },
     FieldSpec {
         meta: FieldMeta::new(
+            "lubricant.viscosity_model",
+            "lubricant",
+            "Pressure–viscosity law",
+            Quantity::Dimensionless,
+            FieldKind::Choice(VISCOSITY),
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(0.0),
+            "Barus (4-18) or Roelands (4-22) viscosity of the rheology traction curve (traction.curve = \"rheology\")",
+        ),
+        get: |b| match b.lubricant.viscosity_model { ViscosityModel::Barus => 0.0, ViscosityModel::Roelands => 1.0 },
+        set: |b, v| b.lubricant.viscosity_model = if v == 1.0 { ViscosityModel::Roelands } else { ViscosityModel::Barus },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "lubricant.roelands_z",
+            "lubricant",
+            "Roelands Z",
+            Quantity::Dimensionless,
+            FieldKind::Real,
+            (0.0, false),
+            (5.0, false),
+            Presence::Default(0.0),
+            "Roelands pressure index Z (4-19); 0: from α by (4-20) (SAE 30: 0.42)",
+        ),
+        get: |b| b.lubricant.roelands_z,
+        set: |b, v| b.lubricant.roelands_z = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "lubricant.limiting_shear_coefficient",
+            "lubricant",
+            "Limiting shear coeff. C",
+            Quantity::Dimensionless,
+            FieldKind::Real,
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(0.054),
+            "C of the limiting shear stress τ_L = τ₀ + C·p (4-17; Chen's Fig. 6-19: 0.054); C = τ₀ = 0: no limit",
+        ),
+        get: |b| b.lubricant.limiting_shear_coefficient,
+        set: |b, v| b.lubricant.limiting_shear_coefficient = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "lubricant.limiting_shear_stress",
+            "lubricant",
+            "Limiting shear stress τ₀",
+            Quantity::Pressure,
+            FieldKind::Real,
+            (0.0, false),
+            (1e10, false),
+            Presence::Default(0.0),
+            "τ₀ of the limiting shear stress τ_L = τ₀ + C·p (4-17)",
+        ),
+        get: |b| b.lubricant.limiting_shear_stress_pa,
+        set: |b, v| b.lubricant.limiting_shear_stress_pa = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
             "dynamics.method",
             "dynamics",
             "Method",
@@ -468,8 +553,22 @@ static FIELDS: [FieldSpec<BallInput>; 39] = [
     },
 ];
 
-fn cross_checks(b: &BallInput, _units: Units) -> Vec<(&'static str, String)> {
+fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
     let mut v = Vec::new();
+    if let Some(pd) = b.geometry.clearance_m {
+        let two_a = 2.0 * b.geometry.centre_distance_m();
+        if pd >= two_a {
+            v.push((
+                "geometry.clearance",
+                format!(
+                    "must be below 2(f_i+f_o−1)·D (where α₀ reaches 90°) for {}, {} and {}",
+                    show(&SCHEMA, b, "geometry.ball_diameter", units),
+                    show(&SCHEMA, b, "geometry.inner_groove_curvature", units),
+                    show(&SCHEMA, b, "geometry.outer_groove_curvature", units),
+                ),
+            ));
+        }
+    }
     if b.geometry.pitch_diameter_m <= b.geometry.ball_diameter_m {
         v.push((
             "geometry.pitch_diameter",
@@ -488,6 +587,7 @@ pub static SCHEMA: Schema<BallInput> = Schema {
         "operating",
         "kinematics",
         "traction",
+        "traction_table",
         "lubricant",
         "dynamics",
     ],
@@ -510,8 +610,268 @@ pub static SCHEMA: Schema<BallInput> = Schema {
             }
         },
     }),
-    opaque_tables: &[],
+    opaque_tables: &["traction_table"],
     defaults: BallInput::chen_a,
     cross_checks,
     template_header: "rollbench deck: angular-contact ball bearing (seed 001, S.-H. Chen 1989)\nLoad distribution with centrifugal force and gyroscopic moment, race-control\nkinematics, spin heat, EHD film and the skidding threshold.",
 };
+
+/// Reads the deck's `[traction_table] points = [[u_s, µ], …]` (sliding speed m/s and
+/// µ, in both unit systems) into `form.value.traction.table`, checked: at least two
+/// points, each two finite numbers, speeds ≥ 0 and strictly increasing, 0 ≤ µ ≤ 1.
+/// `traction.curve = "table"` needs the table. Errors name the point with file:line.
+/// The table is an opaque table of the generic form (arrays are not form fields).
+pub fn traction_table(form: &mut Form<BallInput>) -> Result<(), DeckErrors> {
+    const KEY: &str = "traction_table.points";
+    let loc = |form: &Form<BallInput>, path: &[PathSeg]| form.location_in("traction_table", path);
+    let points_path = vec![PathSeg::Key("points".into())];
+    let Some(table) = form.opaque.get("traction_table") else {
+        form.value.traction.table.clear();
+        if form.value.traction.preset == TractionPreset::Table {
+            return Err(DeckError::Missing {
+                location: Location::start(form.source_name()),
+                key: KEY.into(),
+                hint: " (traction.curve = \"table\" needs [traction_table] points = [[u_s m/s, µ], …])".into(),
+            }
+            .into());
+        }
+        return Ok(());
+    };
+    let invalid = |location: Location, value: String, rule: String| -> DeckErrors {
+        DeckError::Invalid {
+            location,
+            key: KEY.into(),
+            value,
+            rule,
+        }
+        .into()
+    };
+    if let Some(other) = table.keys().find(|k| k.as_str() != "points") {
+        return Err(DeckError::UnknownKey {
+            location: loc(form, &[PathSeg::Key(other.clone())]),
+            key: format!("traction_table.{other}"),
+            hint: " (allowed: points)".into(),
+        }
+        .into());
+    }
+    let Some(raw) = table.get("points") else {
+        return Err(DeckError::Missing {
+            location: loc(form, &[]),
+            key: KEY.into(),
+            hint: " ([[u_s m/s, µ], …])".into(),
+        }
+        .into());
+    };
+    let Some(list) = raw.as_array() else {
+        return Err(DeckError::WrongType {
+            location: loc(form, &points_path),
+            key: KEY.into(),
+            value: raw.to_string(),
+            expected: "an array of [sliding speed m/s, µ] pairs".into(),
+        }
+        .into());
+    };
+    let mut points = Vec::with_capacity(list.len());
+    for (i, p) in list.iter().enumerate() {
+        let mut path = points_path.clone();
+        path.push(PathSeg::Index(i));
+        let num = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|n| n as f64));
+        let pair = p
+            .as_array()
+            .filter(|a| a.len() == 2)
+            .and_then(|a| Some((num(&a[0])?, num(&a[1])?)));
+        let Some((u, mu)) = pair else {
+            return Err(DeckError::WrongType {
+                location: loc(form, &path),
+                key: format!("{KEY}[{i}]"),
+                value: p.to_string(),
+                expected: "a pair [sliding speed m/s, µ] of numbers".into(),
+            }
+            .into());
+        };
+        if !(u.is_finite() && u >= 0.0) {
+            return Err(invalid(
+                loc(form, &path),
+                p.to_string(),
+                format!("point {}: the sliding speed must be ≥ 0 m/s", i + 1),
+            ));
+        }
+        if !(mu.is_finite() && (0.0..=1.0).contains(&mu)) {
+            return Err(invalid(
+                loc(form, &path),
+                p.to_string(),
+                format!("point {}: µ must be in [0, 1]", i + 1),
+            ));
+        }
+        if let Some(&(prev, _)) = points.last() {
+            if u <= prev {
+                return Err(invalid(
+                    loc(form, &path),
+                    p.to_string(),
+                    format!(
+                        "point {}: sliding speeds must increase strictly ({u} after {prev} m/s)",
+                        i + 1
+                    ),
+                ));
+            }
+        }
+        points.push((u, mu));
+    }
+    if points.len() < 2 {
+        return Err(invalid(
+            loc(form, &points_path),
+            raw.to_string(),
+            "at least two points are needed".into(),
+        ));
+    }
+    // µ below the first point: the table starts at zero sliding with the first µ.
+    if points[0].0 > 0.0 {
+        return Err(invalid(
+            loc(form, &points_path),
+            raw.to_string(),
+            "the first point must be at zero sliding speed (0 m/s)".into(),
+        ));
+    }
+    form.value.traction.table = points;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bearings::BearingSystem;
+
+    const DECK: &str = include_str!("../../../decks/chen_b.toml");
+
+    fn load(extra: &str, curve: &str) -> Result<Form<BallInput>, DeckErrors> {
+        let text = DECK.replace("curve = \"curve-1\"", &format!("curve = \"{curve}\"")) + extra;
+        let mut form = Form::parse(&text, "b.toml", &SCHEMA)?;
+        traction_table(&mut form)?;
+        Ok(form)
+    }
+
+    /// A table deck gives the points (exact) and the piecewise-linear curve through them;
+    /// the system's `load` reads it too.
+    #[test]
+    fn table_is_read() {
+        let f = load(
+            "\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06], [3.0, 0.04]]\n",
+            "table",
+        )
+        .unwrap();
+        assert_eq!(f.value.traction.preset, TractionPreset::Table);
+        assert_eq!(
+            f.value.traction.table,
+            vec![(0.0, 0.0), (0.5, 0.06), (3.0, 0.04)]
+        );
+        let c = f.value.traction.curve();
+        assert!((c.mu(0.25) - 0.03).abs() < 1e-15);
+        assert_eq!(c.max_mu(), 0.06);
+        let text = DECK.replace("curve = \"curve-1\"", "curve = \"table\"")
+            + "\n[traction_table]\npoints = [[0, 0.0], [0.5, 0.06]]\n";
+        assert!(super::super::system::SYSTEM
+            .load(&text, "b.toml", &[])
+            .is_ok());
+    }
+
+    /// Bad tables are refused with file:line of the offending point and the rule.
+    #[test]
+    fn bad_tables_name_the_point() {
+        let line = DECK.lines().count() + 3;
+        let cases = [
+            ("points = [[0, 0.0]]", "at least two points"),
+            (
+                "points = [[0, 0.0], [0.5, 0.06], [0.5, 0.07]]",
+                "increase strictly",
+            ),
+            ("points = [[0, 0.0], [0.5, 1.5]]", "µ must be in [0, 1]"),
+            ("points = [[0, 0.0], [0.5]]", "pair"),
+            ("points = [[0.1, 0.0], [0.5, 0.06]]", "zero sliding"),
+            ("points = 3", "array"),
+        ];
+        for (table, rule) in cases {
+            let e = load(&format!("\n[traction_table]\n{table}\n"), "table")
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(rule), "{table}: {e}");
+            assert!(e.contains(&format!("b.toml:{line}:")), "{table}: {e}");
+            assert!(e.contains("traction_table.points"), "{e}");
+        }
+        let e = load("", "table").unwrap_err().to_string();
+        assert!(
+            e.contains("traction_table.points") && e.contains("needs"),
+            "{e}"
+        );
+        let e = load("\n[traction_table]\npointz = []\n", "table")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("unknown key") && e.contains("pointz"), "{e}");
+        // Other curves ignore a table's absence; the deck as shipped has none.
+        assert!(load("", "curve-2").unwrap().value.traction.table.is_empty());
+    }
+
+    /// The rheology keys: defaults (Barus, Z from α, C = 0.054, τ₀ = 0) and overrides.
+    #[test]
+    fn rheology_keys() {
+        let f = load("", "rheology").unwrap();
+        let l = &f.value.lubricant;
+        assert_eq!(f.value.traction.preset, TractionPreset::Rheology);
+        assert_eq!(l.viscosity_model, ViscosityModel::Barus);
+        assert_eq!(
+            (
+                l.roelands_z,
+                l.limiting_shear_coefficient,
+                l.limiting_shear_stress_pa
+            ),
+            (0.0, 0.054, 0.0)
+        );
+        let text = DECK.replace(
+            "supply_temperature = 40.0",
+            "supply_temperature = 40.0\nviscosity_model = \"roelands\"\nroelands_z = 0.42\nlimiting_shear_coefficient = 0.07\nlimiting_shear_stress = 1e6",
+        );
+        let f = Form::parse(&text, "b.toml", &SCHEMA).unwrap();
+        let r = f.value.lubricant.rheology();
+        assert_eq!(r.model, ViscosityModel::Roelands);
+        assert_eq!(r.roelands_z, Some(0.42));
+        assert_eq!(r.limiting_shear_stress_pa(0.0), Some(1e6));
+        assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
+    }
+
+    /// `geometry.clearance` instead of the free contact angle: read as P_d (SI), one of
+    /// the pair only, and P_d ≥ 2(f_i+f_o−1)D refused by the cross-check.
+    #[test]
+    fn clearance_or_free_contact_angle() {
+        let text = DECK.replace(
+            "free_contact_angle = 60.0        # deg",
+            "clearance = 50e-6",
+        );
+        let f = Form::parse(&text, "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.geometry.clearance_m, Some(50e-6));
+        assert!(
+            (f.value.geometry.free_contact_angle() - (1.0 - 50e-6 / 0.96e-3f64).acos()).abs()
+                < 1e-12
+        );
+        let both = DECK.replace(
+            "free_contact_angle = 60.0",
+            "clearance = 50e-6\nfree_contact_angle = 60.0",
+        );
+        let e = Form::parse(&both, "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("exactly one"), "{e}");
+        let big = DECK.replace(
+            "free_contact_angle = 60.0        # deg",
+            "clearance = 0.002",
+        );
+        let e = Form::parse(&big, "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("geometry.clearance") && e.contains("must be below"),
+            "{e}"
+        );
+        // The shipped deck: α₀ as given, no clearance.
+        let f = Form::parse(DECK, "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.geometry.clearance_m, None);
+    }
+}

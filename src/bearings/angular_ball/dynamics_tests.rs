@@ -230,7 +230,7 @@ fn view_has_the_dynamics_charts() {
         .any(|p| p.kind == PaneKind::Chart(1) && p.title == "Dynamics"));
     let a = analyse(&case(9_500.0, Method::TimeSimulation), Cancel::NONE).unwrap();
     let v = crate::bearings::angular_ball::view::view(&a);
-    assert_eq!(v.charts.len(), 2);
+    assert_eq!(v.charts.len(), 3); // Skid, Dynamics, Traction
     let c = &v.charts[1];
     assert_eq!(c.series.len(), 2);
     assert!(c.series.iter().all(|s| s.points.len() == 20));

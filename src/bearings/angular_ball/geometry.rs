@@ -61,7 +61,16 @@ impl BallGeometry {
                 return bad("geometry: groove curvature f must exceed 0.5");
             }
         }
-        let a0 = g.free_contact_angle_rad;
+        if let Some(pd) = g.clearance_m {
+            let two_a = 2.0 * (g.inner_groove_curvature + g.outer_groove_curvature - 1.0) * d;
+            if !(pd.is_finite() && pd >= 0.0 && pd < two_a) {
+                return Err(BallError::InvalidInput(format!(
+                    "geometry: clearance {pd:e} m must be in [0, 2(f_i+f_o−1)D = {two_a:e} m) (α₀ < 90°)"
+                )));
+            }
+        }
+        // α₀ from the clearance when the deck gives one (cos α₀ = 1 − P_d/(2A)).
+        let a0 = g.free_contact_angle();
         if !(a0.is_finite() && (0.0..std::f64::consts::FRAC_PI_2).contains(&a0)) {
             return bad("geometry: free contact angle must be in [0°, 90°)");
         }
@@ -167,5 +176,56 @@ mod tests {
         let mut i = BallInput::chen_a();
         i.geometry.ball_count = 0;
         assert!(BallGeometry::new(&i).is_err());
+    }
+}
+
+#[cfg(test)]
+mod clearance_tests {
+    use super::*;
+    use crate::bearings::angular_ball::analysis::analyse;
+    use crate::numerics::cancel::Cancel;
+
+    /// A diametral clearance sets the free contact angle by cos α₀ = 1 − P_d/(2(f_i+f_o−1)D)
+    /// (Harris): Chen's A (A = 0.04·12 mm = 0.48 mm) with P_d = 2A(1 − cos 15°) = 32.7 µm
+    /// is Bearing A (α₀ 15° to 1e-12, the whole analysis' loads to 1e-9 relative); a
+    /// larger clearance, 50 µm, gives α₀ = acos(1 − 50/960) = 18.6° and larger loaded
+    /// contact angles at rest.
+    #[test]
+    fn clearance_sets_the_free_contact_angle() {
+        let a = BallInput::chen_a();
+        let two_a = 2.0 * 0.04 * 12e-3;
+        let pd = two_a * (1.0 - 15f64.to_radians().cos());
+        assert!((pd - 32.7e-6).abs() < 0.05e-6, "{pd}");
+        let mut c = a.clone();
+        c.geometry.clearance_m = Some(pd);
+        c.geometry.free_contact_angle_rad = 40f64.to_radians(); // not used
+        let g = BallGeometry::new(&c).unwrap();
+        assert!((g.free_contact_angle_rad - 15f64.to_radians()).abs() < 1e-12);
+        assert!((g.diametral_clearance_m / pd - 1.0).abs() < 1e-12);
+        let (x, y) = (
+            analyse(&a, Cancel::NONE).unwrap(),
+            analyse(&c, Cancel::NONE).unwrap(),
+        );
+        for (p, q) in x.balls.iter().zip(&y.balls) {
+            assert!((p.inner.load_n / q.inner.load_n - 1.0).abs() < 1e-9);
+            assert!((p.outer.angle_rad - q.outer.angle_rad).abs() < 1e-9);
+        }
+        c.geometry.clearance_m = Some(50e-6);
+        let g = BallGeometry::new(&c).unwrap();
+        let expect = (1.0 - 50e-6 / two_a).acos();
+        assert!((g.free_contact_angle_rad - expect).abs() < 1e-12);
+        assert!((expect.to_degrees() - 18.6).abs() < 0.05);
+        let mut rest = c.clone();
+        rest.operating.inner_speed_rad_s = 0.0;
+        let mut rest0 = a.clone();
+        rest0.operating.inner_speed_rad_s = 0.0;
+        let (r1, r0) = (
+            analyse(&rest, Cancel::NONE).unwrap(),
+            analyse(&rest0, Cancel::NONE).unwrap(),
+        );
+        assert!(r1.balls[0].inner.angle_rad > r0.balls[0].inner.angle_rad);
+        // A clearance at or beyond 2A (α₀ ≥ 90°) is a typed error.
+        c.geometry.clearance_m = Some(1.0001 * two_a);
+        assert!(BallGeometry::new(&c).is_err());
     }
 }

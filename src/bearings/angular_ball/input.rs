@@ -3,6 +3,7 @@
 //! as constructors for tests and decks.
 
 use crate::physics::contact::point::HertzMethod;
+use crate::physics::lubrication::rheology::{Rheology, ViscosityModel};
 use crate::physics::lubrication::traction_curve::TractionCurve;
 use crate::physics::material::Material;
 
@@ -19,8 +20,13 @@ pub struct Geometry {
     pub inner_groove_curvature: f64,
     /// f_o, outer groove radius over D (> ½).
     pub outer_groove_curvature: f64,
-    /// α₀, free (unloaded) contact angle, rad.
+    /// α₀, free (unloaded) contact angle, rad; used when [`Geometry::clearance_m`] is
+    /// `None`.
     pub free_contact_angle_rad: f64,
+    /// P_d, diametral clearance, m, when the deck gives it instead of α₀
+    /// (`geometry.clearance`): α₀ = acos(1 − P_d/(2(f_i + f_o − 1)D)) (Harris; seed 001
+    /// Fig. 3-1). `None`: α₀ as given.
+    pub clearance_m: Option<f64>,
     /// How κ, K, E of the contact ellipse are found (exact, or the Brewe–Hamrock fits
     /// A-17 that Chen used).
     pub hertz_method: HertzMethod,
@@ -101,22 +107,52 @@ pub enum TractionPreset {
     Curve2,
     /// Chen's curve 3 (0.075 at 0.2 m/s, 0.035 beyond 2 m/s).
     Curve3,
+    /// The deck's table of (sliding speed m/s, µ) points (`[traction_table] points`),
+    /// piecewise linear, constant beyond the last point.
+    Table,
+    /// Generated from the ch. 4 rheology of `[lubricant]` at a contact of the solve
+    /// (`physics::lubrication::rheology`), tabulated before the run and then used as a
+    /// table ([`Traction::tabulated`]).
+    Rheology,
+}
+
+impl TractionPreset {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            TractionPreset::Constant => "constant",
+            TractionPreset::Curve1 => "curve-1",
+            TractionPreset::Curve2 => "curve-2",
+            TractionPreset::Curve3 => "curve-3",
+            TractionPreset::Table => "table",
+            TractionPreset::Rheology => "rheology",
+        }
+    }
 }
 
 /// The traction law of the contacts.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Traction {
     /// The curve.
     pub preset: TractionPreset,
-    /// µ of the constant law (unused by the seed's curves).
+    /// µ of the constant law (unused by the seed's curves); for `rheology`, the Coulomb
+    /// µ of the first load solve that finds the contact the curve is tabulated at.
     pub mu: f64,
+    /// The deck's (sliding speed m/s, µ) points for `table` (empty otherwise).
+    pub table: Vec<(f64, f64)>,
+    /// For `rheology`: the curve tabulated by the analysis (empty before it runs).
+    pub tabulated: Vec<(f64, f64)>,
 }
 
 impl Traction {
-    /// The curve as a function µ(u_s).
+    /// The curve as a function µ(u_s). `table` gives the deck's points and `rheology`
+    /// the tabulated curve (an empty table, refused by [`TractionCurve::validate`],
+    /// before the analysis tabulates it).
     pub fn curve(&self) -> TractionCurve {
         let points = match self.preset {
             TractionPreset::Constant => return TractionCurve::Constant { mu: self.mu },
+            TractionPreset::Table => self.table.clone(),
+            TractionPreset::Rheology => self.tabulated.clone(),
             TractionPreset::Curve1 => vec![(0.0, 0.0), (0.2, 0.054)],
             TractionPreset::Curve2 => vec![(0.0, 0.0), (0.2, 0.075), (3.0, 0.035)],
             TractionPreset::Curve3 => vec![(0.0, 0.0), (0.2, 0.075), (2.0, 0.035)],
@@ -168,6 +204,31 @@ pub struct Lubricant {
     pub flow_rate_m3_s: f64,
     /// Oil supply temperature, K.
     pub supply_temperature_k: f64,
+    /// Pressure–viscosity law of the rheology traction curve: Barus (4-18) or Roelands
+    /// (4-22).
+    pub viscosity_model: ViscosityModel,
+    /// Roelands's Z; 0: from α by (4-20).
+    pub roelands_z: f64,
+    /// C of the limiting shear stress τ_L = τ₀ + C·p (4-17); C = τ₀ = 0: no limit.
+    pub limiting_shear_coefficient: f64,
+    /// τ₀ of (4-17), Pa.
+    pub limiting_shear_stress_pa: f64,
+}
+
+impl Lubricant {
+    /// The rheology of ch. 4 with η₀ at the supply temperature.
+    pub fn rheology(&self) -> Rheology {
+        Rheology {
+            viscosity_pa_s: self.viscosity_pa_s,
+            pressure_viscosity_pa_inv: self.pressure_viscosity_pa_inv,
+            temperature_viscosity_per_k: self.temperature_viscosity_per_k,
+            reference_temperature_k: self.supply_temperature_k,
+            model: self.viscosity_model,
+            roelands_z: (self.roelands_z > 0.0).then_some(self.roelands_z),
+            limiting_shear_coefficient: self.limiting_shear_coefficient,
+            limiting_shear_stress_pa: self.limiting_shear_stress_pa,
+        }
+    }
 }
 
 /// Which analysis runs.
@@ -235,6 +296,35 @@ pub fn rpm(n: f64) -> f64 {
     n * std::f64::consts::PI / 30.0
 }
 
+impl Geometry {
+    /// A = (f_i + f_o − 1)·D, the distance between the groove centres when the ball
+    /// touches both grooves unloaded, m.
+    pub fn centre_distance_m(&self) -> f64 {
+        (self.inner_groove_curvature + self.outer_groove_curvature - 1.0) * self.ball_diameter_m
+    }
+
+    /// The free contact angle, rad: from the clearance when given,
+    /// cos α₀ = 1 − P_d/(2A) (P_d clamped to [0, 2A]; the deck's cross-check refuses
+    /// P_d ≥ 2A), else α₀ as given.
+    pub fn free_contact_angle(&self) -> f64 {
+        match self.clearance_m {
+            Some(pd) => {
+                let a = self.centre_distance_m();
+                (1.0 - (pd / (2.0 * a)).clamp(0.0, 1.0)).acos()
+            }
+            None => self.free_contact_angle_rad,
+        }
+    }
+
+    /// The diametral clearance, m: as given, else P_d = 2A(1 − cos α₀).
+    pub fn clearance(&self) -> f64 {
+        match self.clearance_m {
+            Some(pd) => pd,
+            None => 2.0 * self.centre_distance_m() * (1.0 - self.free_contact_angle_rad.cos()),
+        }
+    }
+}
+
 impl BallInput {
     /// Chen's Bearing A (seed 001 ch. 5): a 7018-size spindle bearing, ball 12 mm, pitch
     /// diameter 115 mm, f_i = f_o = 0.52, 20 balls, free contact angle 15°, steel
@@ -259,6 +349,7 @@ impl BallInput {
                 inner_groove_curvature: 0.52,
                 outer_groove_curvature: 0.52,
                 free_contact_angle_rad: 15f64.to_radians(),
+                clearance_m: None,
                 hertz_method: HertzMethod::Exact,
             },
             materials: Materials {
@@ -279,6 +370,8 @@ impl BallInput {
             traction: Traction {
                 preset: TractionPreset::Curve1,
                 mu: 0.054,
+                table: Vec::new(),
+                tabulated: Vec::new(),
             },
             lubricant: Lubricant {
                 viscosity_pa_s: 0.071,
@@ -289,6 +382,11 @@ impl BallInput {
                 conductivity_w_m_k: 0.14,
                 flow_rate_m3_s: 0.1e-3 / 60.0,
                 supply_temperature_k: 313.15,
+                viscosity_model: ViscosityModel::Barus,
+                roelands_z: 0.0,
+                // Chen's Fig. 6-19, first curve: τ_L = 0.054·p.
+                limiting_shear_coefficient: 0.054,
+                limiting_shear_stress_pa: 0.0,
             },
             dynamics: Dynamics {
                 method: Method::RaceControl,
@@ -321,12 +419,19 @@ mod tests {
             (TractionPreset::Curve2, 2),
             (TractionPreset::Curve3, 3),
         ] {
-            let t = Traction { preset: p, mu: 0.0 };
+            let t = Traction {
+                preset: p,
+                mu: 0.0,
+                table: Vec::new(),
+                tabulated: Vec::new(),
+            };
             assert_eq!(t.curve(), TractionCurve::seed_curve(n).unwrap());
         }
         let t = Traction {
             preset: TractionPreset::Constant,
             mu: 0.07,
+            table: vec![(0.0, 0.0), (1.0, 0.1)],
+            tabulated: Vec::new(),
         };
         assert_eq!(t.curve().max_mu(), 0.07);
     }

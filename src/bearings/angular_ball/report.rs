@@ -34,7 +34,50 @@ fn contact(c: &ContactResult) -> Value {
         "spin_heat_w": c.spin_heat_w,
         "central_film_m": c.central_film_m,
         "min_film_m": c.min_film_m,
+        "film_temperature_rise_c": c.film_temperature_rise_k,
+        "surface_temperature_rise_c": c.surface_temperature_rise_k,
     })
+}
+
+/// The traction law used: its name, µ_m, the table (for a table or the rheology curve),
+/// where a rheology curve was tabulated, and the contacts' sliding band.
+fn traction(a: &BallAnalysis) -> Value {
+    let t = &a.input.traction;
+    let mut v = json!({
+        "curve": t.preset.name(),
+        "max_mu": t.curve().max_mu(),
+    });
+    let Some(m) = v.as_object_mut() else {
+        return v;
+    };
+    if let crate::physics::lubrication::traction_curve::TractionCurve::Table { points } = t.curve()
+    {
+        m.insert(
+            "points".into(),
+            json!(points
+                .iter()
+                .map(|p| json!({"sliding_m_s": p.0, "mu": p.1}))
+                .collect::<Vec<_>>()),
+        );
+    }
+    if let Some((lo, hi)) = super::analysis::sliding_band(a) {
+        m.insert("sliding_band_m_s".into(), json!([lo, hi]));
+    }
+    if let Some(rc) = &a.rheology_contact {
+        m.insert(
+            "rheology_contact".into(),
+            json!({
+                "ball": rc.ball,
+                "race": race_name(rc.race),
+                "max_pressure_pa": rc.strip.max_pressure_pa,
+                "rolling_semi_axis_m": rc.strip.semi_width_m,
+                "film_m": rc.strip.film_m,
+                "rolling_speed_m_s": rc.strip.rolling_speed_m_s,
+                "inlet_temperature_c": rc.strip.inlet_temperature_k - 273.15,
+            }),
+        );
+    }
+    v
 }
 
 /// The JSON report (issue 16's contract).
@@ -136,6 +179,7 @@ pub fn json(a: &BallAnalysis) -> Value {
             "rest_axial_deflection_m": a.rest_axial_deflection_m,
         },
         "balls": balls,
+        "traction": traction(a),
         "speeds": {
             "cage_rpm": cage_rpm(a),
             "ball_spin_rad_s": a.balls.iter().map(|b| b.ball_spin_rad_s).sum::<f64>() / n,
@@ -257,6 +301,35 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         a.total_heat_w / a.balls.len().max(1) as f64,
         a.bulk_temperature_k - 273.15
     );
+    let curve = a.input.traction.curve();
+    let hottest = |f: fn(&super::analysis::BallResult) -> Option<f64>| {
+        a.balls.iter().filter_map(f).fold(0.0, f64::max)
+    };
+    let _ = writeln!(
+        s,
+        "TRACTION  {}: µm {:.4}{}; film temperature rise (4-3…4-7) up to {:.1} K inner, {:.1} K outer",
+        a.input.traction.preset.name(),
+        curve.max_mu(),
+        match super::analysis::sliding_band(a) {
+            Some((lo, hi)) => format!("; contacts slide {lo:.3}–{hi:.3} m/s"),
+            None => String::new(),
+        },
+        hottest(|b| b.inner.film_temperature_rise_k),
+        hottest(|b| b.outer.film_temperature_rise_k),
+    );
+    if let Some(rc) = &a.rheology_contact {
+        let _ = writeln!(
+            s,
+            "  rheology curve ({:?}) tabulated at ball {} {}: p₀ {:.3} GPa, b {:.4} mm, h {:.3} µm, V {:.2} m/s",
+            a.input.lubricant.viscosity_model,
+            rc.ball,
+            race_name(rc.race),
+            rc.strip.max_pressure_pa * 1e-9,
+            rc.strip.semi_width_m * 1e3,
+            rc.strip.film_m * 1e6,
+            rc.strip.rolling_speed_m_s
+        );
+    }
     if let Some(d) = &a.dynamics {
         let _ = writeln!(
             s,

@@ -71,7 +71,7 @@ impl BearingSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 4] = [
+        const PANES: [PaneSpec; 5] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -87,6 +87,10 @@ impl BearingSystem for AngularBall {
             PaneSpec {
                 kind: PaneKind::Chart(1),
                 title: "Dynamics",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(2),
+                title: "Traction",
             },
         ];
         &PANES
@@ -112,6 +116,7 @@ impl BearingSystem for AngularBall {
     ) -> Result<Box<dyn Case>, DeckErrors> {
         let mut form = Form::parse(text, source_name, &SCHEMA)?;
         form.apply_assignments(overrides)?;
+        super::deck::traction_table(&mut form)?;
         Ok(Box::new(BallCase { form }))
     }
 }
@@ -129,7 +134,8 @@ impl FormCase for BallCase {
         &self.form
     }
 
-    fn with_form(&self, form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
+    fn with_form(&self, mut form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
+        super::deck::traction_table(&mut form)?;
         Ok(Box::new(BallCase { form }))
     }
 }

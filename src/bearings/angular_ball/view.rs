@@ -189,7 +189,7 @@ pub fn view(a: &BallAnalysis) -> View {
             columns: COLUMNS.to_vec(),
             rows,
         }],
-        charts: vec![skid_chart(a), dynamics_chart(a)],
+        charts: vec![skid_chart(a), dynamics_chart(a), traction_chart(a)],
         element_charts: ball_charts(a),
         summary: vec![
             Summary {
@@ -313,6 +313,73 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
                 points: pts(|s| s.2),
             },
         ],
+        per_element: false,
+    }
+}
+
+/// The Traction chart (Figs. 2-10, 6-19, 6-20): µ against the sliding speed from the
+/// deck's curve (the constant, a seed curve, the table, or the tabulated rheology
+/// curve), with the contacts' sliding band (`analysis::sliding_band`: the slices'
+/// sliding speeds under race control's spin) marked as a box from µ = 0 to above the
+/// curve. The x range covers the band (×1.5) and the curve's corners up to 5 m/s.
+pub fn traction_chart(a: &BallAnalysis) -> Chart {
+    use crate::physics::lubrication::traction_curve::TractionCurve;
+    let curve = a.input.traction.curve();
+    let band = super::analysis::sliding_band(a);
+    let corners: Vec<f64> = match &curve {
+        TractionCurve::Constant { .. } => Vec::new(),
+        TractionCurve::Table { points } => points.iter().map(|p| p.0).collect(),
+    };
+    let corner_max = corners
+        .iter()
+        .copied()
+        .filter(|&u| u <= 5.0)
+        .fold(0.0, f64::max);
+    let x_max = (band.map_or(0.0, |b| 1.5 * b.1))
+        .max(1.2 * corner_max)
+        .max(0.5);
+    // Piecewise linear: the corners inside the range and the range's end draw it
+    // exactly; a few evenly spaced points keep a constant curve visible.
+    let mut xs: Vec<f64> = (0..=20).map(|k| x_max * k as f64 / 20.0).collect();
+    xs.extend(corners.iter().copied().filter(|&u| u < x_max));
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let points: Vec<(f64, f64)> = xs.iter().map(|&u| (u, curve.mu(u))).collect();
+    let top = curve.max_mu().max(1e-3) * 1.1;
+    let mut series = vec![Series {
+        name: "µ(u_s)",
+        points,
+    }];
+    if let Some((lo, hi)) = band {
+        series.push(Series {
+            name: "sliding band",
+            points: vec![(lo, 0.0), (lo, top), (hi, top), (hi, 0.0)],
+        });
+    }
+    Chart {
+        title: match band {
+            Some((lo, hi)) => format!(
+                "{}: µm {:.4}, contacts slide {lo:.2}–{hi:.2} m/s",
+                a.input.traction.preset.name(),
+                curve.max_mu()
+            ),
+            None => format!(
+                "{}: µm {:.4}",
+                a.input.traction.preset.name(),
+                curve.max_mu()
+            ),
+        },
+        x: ChartAxis {
+            label: "sliding m/s",
+            display: Display::Plain,
+            bounds: Some([0.0, x_max]),
+        },
+        y: ChartAxis {
+            label: "µ",
+            display: Display::Plain,
+            bounds: Some([0.0, top * 1.05]),
+        },
+        series,
         per_element: false,
     }
 }

@@ -9,6 +9,9 @@ use super::*;
 pub(super) fn opaque_keys(table: &str) -> &'static [&'static str] {
     match table {
         "thermal" => crate::deck::thermal::EDITABLE_KEYS,
+        // The angular-contact ball bearing's traction table (its own parser:
+        // `bearings::angular_ball::deck::traction_table`).
+        "traction_table" => &["points"],
         _ => &[],
     }
 }

@@ -727,6 +727,14 @@ impl<T: Clone> Form<T> {
         )
     }
 
+    /// Where `path` (keys and array indices) inside the top-level table `table` stands
+    /// in the deck text: the deepest node found (a value, its entry, else the table's
+    /// header; the file start when the table is absent). For a system that parses one of
+    /// its opaque tables itself and reports errors at file:line.
+    pub fn location_in(&self, table: &str, path: &[crate::deck::thermal::PathSeg]) -> Location {
+        location_in_table(&self.doc, &self.source_name, table, path)
+    }
+
     /// The source name given to [`Form::parse`].
     pub fn source_name(&self) -> &str {
         &self.source_name

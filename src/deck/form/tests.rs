@@ -643,3 +643,20 @@ fn thermal_table_is_read_by_the_thermal_parser() {
     .map(|e| e.to_string());
     assert!(e.is_some_and(|e| e.contains("materials.ball = \"steel\": this deck takes an inline table")));
 }
+
+/// `Form::location_in` (for systems that parse an opaque table themselves): the value
+/// of a key, an array element, the table header for a missing key, the file start for a
+/// missing table — line and column of the toy deck (`[extra]` at line 161 − 144 = 17).
+#[test]
+fn location_in_an_opaque_table() {
+    use crate::deck::thermal::PathSeg::{Index, Key};
+    let f = parse(DECK).unwrap_or_else(|e| panic!("{e}"));
+    let at = |path: &[crate::deck::thermal::PathSeg]| f.location_in("extra", path).to_string();
+    assert_eq!(at(&[Key("anything".into())]), "toy.toml:18:12");
+    assert_eq!(at(&[Key("anything".into()), Index(1)]), "toy.toml:18:16");
+    assert!(at(&[Key("nothing".into())]).starts_with("toy.toml:17:"));
+    assert!(f
+        .location_in("absent", &[])
+        .to_string()
+        .starts_with("toy.toml:1"));
+}

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 pub mod film;
 pub mod film_point;
+pub mod rheology;
 pub mod traction;
 pub mod traction_curve;
 
