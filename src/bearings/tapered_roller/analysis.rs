@@ -72,9 +72,28 @@ impl Analysis {
 
 /// Solve `input` (named `name`).
 pub fn analyse(input: &TaperedInput, name: &str) -> Result<Analysis, BearingError> {
+    analyse_from(input, name, None)
+}
+
+/// Solve `input` (named `name`) with the bearing equilibrium started from `start` (a
+/// neighbouring solution: a previous point of a sweep, the workbench's last solve), and
+/// from the cold pure-thrust start if that fails. Either way Newton stops on the same
+/// force tolerance, so the answer equals the cold start's to that tolerance
+/// (test `session_warm_start_equals_cold_start`).
+pub fn analyse_from(
+    input: &TaperedInput,
+    name: &str,
+    start: Option<&BearingSolution>,
+) -> Result<Analysis, BearingError> {
     let t0 = std::time::Instant::now();
     let bearing = Bearing::new(input)?;
-    let solution = bearing.solve()?;
+    let solution = match start {
+        Some(st) => match bearing.solve_from(Some(st)) {
+            Ok(sol) => sol,
+            Err(_) => bearing.solve()?,
+        },
+        None => bearing.solve()?,
+    };
     let stiffness_fd = match input.solver.stiffness {
         StiffnessMethod::Analytic => None,
         _ => Some(bearing.stiffness_fd(&solution)?),
