@@ -512,7 +512,10 @@ fn no_equilibrium_above_the_flange_thrust_speed_proof_in_numbers() {
         Err(BearingError::FlangeThrustExceedsLoad {
             axial_load_n,
             flange_thrust_n,
+            limit_inner_speed_rpm,
         }) => {
+            // The error names the limit: the cone speed where the thrusts are equal.
+            assert!((limit_inner_speed_rpm / rpm_star - 1.0).abs() < 1e-9);
             let ratio = flange_thrust_n / axial_load_n;
             assert!(
                 (ratio / (1.0 + 1e-4f64).powi(2) - 1.0).abs() < 1e-9,
