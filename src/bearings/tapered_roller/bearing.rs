@@ -229,10 +229,19 @@ impl Bearing {
             let sol = if let Some(&(_, _, i)) = keys.iter().find(|k| (k.0, k.1) == key) {
                 rollers[i].0
             } else {
+                // Warm start on the tangent of the neighbouring solution (its exact
+                // ∂(Δ₁, θ₁)/∂(Δ, Θ) of eqs. 88–91): the start is then second-order close
+                // and Newton saves an iteration per roller.
                 let w = warm
                     .and_then(|w| w.get(q))
                     .filter(|w| w.0.state == RollerState::BothRaces)
-                    .map(|w| (w.0.delta1_m, w.0.theta1_rad));
+                    .map(|(w, d0, t0)| {
+                        let (dd, dt) = (delta - d0, theta - t0);
+                        (
+                            w.delta1_m + w.du[0][0] * dd + w.du[0][1] * dt,
+                            w.theta1_rad + w.du[1][0] * dd + w.du[1][1] * dt,
+                        )
+                    });
                 let r =
                     self.model
                         .solve(delta, theta, w)
