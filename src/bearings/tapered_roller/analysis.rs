@@ -103,8 +103,21 @@ pub fn analyse_from(
         _ => solution.stiffness,
     };
     let m = &bearing.model;
-    let mut slices = Vec::with_capacity(solution.rollers.len());
-    for (r, _, _) in &solution.rollers {
+    let mut slices: Vec<[Vec<SliceResult>; 2]> = Vec::with_capacity(solution.rollers.len());
+    // Rollers with bit-equal approaches and misalignments (the symmetry the equilibrium
+    // uses: mirror pairs, every roller under pure thrust) have the same slices: copied.
+    let key = |r: &super::roller::RollerSolution| {
+        [r.delta1_m, r.theta1_rad, r.delta2_m, r.theta2_rad].map(f64::to_bits)
+    };
+    for (q, (r, _, _)) in solution.rollers.iter().enumerate() {
+        let same = solution.rollers[..q]
+            .iter()
+            .position(|(o, _, _)| key(o) == key(r));
+        if let Some(i) = same {
+            let copy = slices[i].clone();
+            slices.push(copy);
+            continue;
+        }
         let (mut cup, mut cone) = (Vec::new(), Vec::new());
         m.cup.eval(r.delta1_m, r.theta1_rad, Some(&mut cup))?;
         m.cone.eval(r.delta2_m, r.theta2_rad, Some(&mut cone))?;

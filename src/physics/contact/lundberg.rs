@@ -367,6 +367,17 @@ mod tests {
     /// 320 lbf, 1.256 at 3000 lbf). The bound states that band (1.15–1.27); the issue's
     /// 10 % holds only below ≈ 20 lbf for this roller (ratio 1.104 at 20 lbf, 1.074 at
     /// 10 lbf), not at the loads the sample carries.
+    ///
+    /// Checked for a consistent comparison (issue 17 asked for 10 %): units (Palmgren's
+    /// in–lbf constant is Harris's per-contact 3.84e-5 mm–N form, δ of one roller–race
+    /// contact like eq. 62, and l the effective length: the total length would make the
+    /// gap larger, as would counting both races); the race's conformity changes the
+    /// logarithm by ½ln(1 ± γ) ≈ ±0.03 (under 1 %); over the loads of Palmgren's fit
+    /// (Hertz stresses 0.5–2 GPa) the ratio stays 1.10–1.25 for rollers of 0.3–1 in
+    /// diameter and 0.3–1 in length. The two laws differ in form: Lundberg's local
+    /// exponent d ln δ/d ln Q = 1 − 1/(2(K + ln(L/2b))) equals Palmgren's 0.9 only at
+    /// L/(2b) ≈ 22.5, where their ratio is largest, so no load range of working stresses
+    /// brings them within 10 %: the measured band is the test.
     #[test]
     fn lundberg_vs_palmgren() {
         let d = 0.2913 * INCH_M;
