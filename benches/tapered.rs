@@ -5,7 +5,8 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::tapered_roller::bearing::Bearing;
-use rollbench::bearings::tapered_roller::input::TaperedInput;
+use rollbench::bearings::tapered_roller::input::{StiffnessMethod, TaperedInput};
+use rollbench::bearings::tapered_roller::system::TaperedSession;
 use rollbench::units::LBF_N;
 
 fn case(slices: usize, radial_lbf: f64) -> TaperedInput {
@@ -62,5 +63,30 @@ fn speed_sweep(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, load_case, speed_sweep);
+/// The same 21 speeds through the system's session (`TaperedSession`, what the generic
+/// sweep and the workbench use): each point warm-started from the session's last
+/// equilibrium, the whole analysis (equilibrium, analytic stiffness, slices) per point.
+fn session_sweep(c: &mut Criterion) {
+    let inputs: Vec<TaperedInput> = (0..21)
+        .map(|i| {
+            let mut s = case(21, 700.0);
+            s.operating.inner_speed_rad_s = 1000.0 * i as f64 * std::f64::consts::PI / 30.0;
+            s.solver.stiffness = StiffnessMethod::Analytic;
+            s
+        })
+        .collect();
+    c.bench_function("tapered_lc2_session_sweep_21_points", |b| {
+        b.iter(|| {
+            let mut session = TaperedSession::default();
+            for s in &inputs {
+                session
+                    .analyse(std::hint::black_box(s), "bench")
+                    .unwrap_or_else(|e| panic!("{e}"));
+            }
+            session
+        })
+    });
+}
+
+criterion_group!(benches, load_case, speed_sweep, session_sweep);
 criterion_main!(benches);

@@ -271,3 +271,31 @@ fn stiffness_subcommand() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("has no stiffness matrix"));
 }
+
+/// Issue 17's sweep `--set-range operating.inner_speed=0:50000:x26` under Load Condition 1:
+/// a row for every point, no NaN anywhere; the 21 points up to 40 000 rpm solve (every
+/// roller on the cone) and the 5 above the limit are the typed no-equilibrium error,
+/// which names the limiting cone speed (41 143 rpm: the flanges' centrifugal thrust
+/// equals the 3 000 lbf there; proof in `BearingError::FlangeThrustExceedsLoad`).
+#[test]
+fn speed_sweep_to_50000_rpm_has_rows_everywhere() {
+    let d = deck();
+    let out = bin()
+        .args([
+            "sweep",
+            d.as_str(),
+            "--set-range",
+            "operating.inner_speed=0:50000:x26",
+        ])
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let text =
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+    assert!(!text.contains("NaN") && !text.contains("nan"), "{text}");
+    let limit_rows = text
+        .lines()
+        .filter(|l| l.contains("no equilibrium exists") && l.contains("41143 rpm"))
+        .count();
+    assert_eq!(limit_rows, 5, "{text}");
+    assert!(text.contains("5 of 26 points failed"), "{text}");
+}

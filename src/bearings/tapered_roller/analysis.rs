@@ -72,9 +72,28 @@ impl Analysis {
 
 /// Solve `input` (named `name`).
 pub fn analyse(input: &TaperedInput, name: &str) -> Result<Analysis, BearingError> {
+    analyse_from(input, name, None)
+}
+
+/// Solve `input` (named `name`) with the bearing equilibrium started from `start` (a
+/// neighbouring solution: a previous point of a sweep, the workbench's last solve), and
+/// from the cold pure-thrust start if that fails. Either way Newton stops on the same
+/// force tolerance, so the answer equals the cold start's to that tolerance
+/// (test `session_warm_start_equals_cold_start`).
+pub fn analyse_from(
+    input: &TaperedInput,
+    name: &str,
+    start: Option<&BearingSolution>,
+) -> Result<Analysis, BearingError> {
     let t0 = std::time::Instant::now();
     let bearing = Bearing::new(input)?;
-    let solution = bearing.solve()?;
+    let solution = match start {
+        Some(st) => match bearing.solve_from(Some(st)) {
+            Ok(sol) => sol,
+            Err(_) => bearing.solve()?,
+        },
+        None => bearing.solve()?,
+    };
     let stiffness_fd = match input.solver.stiffness {
         StiffnessMethod::Analytic => None,
         _ => Some(bearing.stiffness_fd(&solution)?),
@@ -84,8 +103,21 @@ pub fn analyse(input: &TaperedInput, name: &str) -> Result<Analysis, BearingErro
         _ => solution.stiffness,
     };
     let m = &bearing.model;
-    let mut slices = Vec::with_capacity(solution.rollers.len());
-    for (r, _, _) in &solution.rollers {
+    let mut slices: Vec<[Vec<SliceResult>; 2]> = Vec::with_capacity(solution.rollers.len());
+    // Rollers with bit-equal approaches and misalignments (the symmetry the equilibrium
+    // uses: mirror pairs, every roller under pure thrust) have the same slices: copied.
+    let key = |r: &super::roller::RollerSolution| {
+        [r.delta1_m, r.theta1_rad, r.delta2_m, r.theta2_rad].map(f64::to_bits)
+    };
+    for (q, (r, _, _)) in solution.rollers.iter().enumerate() {
+        let same = solution.rollers[..q]
+            .iter()
+            .position(|(o, _, _)| key(o) == key(r));
+        if let Some(i) = same {
+            let copy = slices[i].clone();
+            slices.push(copy);
+            continue;
+        }
         let (mut cup, mut cone) = (Vec::new(), Vec::new());
         m.cup.eval(r.delta1_m, r.theta1_rad, Some(&mut cup))?;
         m.cone.eval(r.delta2_m, r.theta2_rad, Some(&mut cone))?;

@@ -63,13 +63,21 @@ pub enum BearingError {
         needed_n: f64,
     },
     /// At this speed the flanges alone carry more thrust than applied: every roller
-    /// leaves the cone and the cone has no equilibrium.
-    #[error("the rollers' centrifugal load on the flanges already carries n·P₁·sin β = {flange_thrust_n:.4e} N of thrust, more than the axial load {axial_load_n:.4e} N: every roller leaves the cone (raise the thrust or lower the speed)")]
+    /// leaves the cone and the cone has no equilibrium. Proof: eliminating P₃ from a
+    /// roller's force balances (55)–(56) gives P₁·cos(α + τ/2) = P₂·cos(α − τ/2) +
+    /// F_c·cos(ψ − α), so every roller with P₂ ≥ 0 has P₁ ≥ P₁,cf, the cup-and-flange load
+    /// of (121)–(122); a roller touching nothing cannot balance F_c; and the cup's axial
+    /// balance is Σ P₁·sin β = F_a. Hence n·P₁,cf·sin β ≤ F_a is necessary (test
+    /// `no_equilibrium_above_the_flange_thrust_speed_proof_in_numbers`).
+    #[error("the rollers' centrifugal load on the flanges already carries n·P₁·sin β = {flange_thrust_n:.4e} N of thrust, more than the axial load {axial_load_n:.4e} N: every roller leaves the cone and no equilibrium exists (every roller's cup load is at least its cup-and-flange load, eqs. 55–56 and 121–122, and the cup's axial balance needs n·P₁·sin β = F_a); the limit is at a cone speed of {limit_inner_speed_rpm:.0} rpm with the cup speed scaled alike (raise the thrust or lower the speed)")]
     FlangeThrustExceedsLoad {
         /// F_z, N.
         axial_load_n: f64,
         /// Thrust of the cup-and-flange rollers, N.
         flange_thrust_n: f64,
+        /// The cone speed (rpm) at which the flanges' thrust equals F_a, both ring speeds
+        /// scaled by √(F_a/thrust) (F_c grows as the cage speed squared, eq. 38).
+        limit_inner_speed_rpm: f64,
     },
     /// A roller has no equilibrium.
     #[error("roller {index} (azimuth {azimuth_deg:.2}°): {source}")]
@@ -221,10 +229,19 @@ impl Bearing {
             let sol = if let Some(&(_, _, i)) = keys.iter().find(|k| (k.0, k.1) == key) {
                 rollers[i].0
             } else {
+                // Warm start on the tangent of the neighbouring solution (its exact
+                // ∂(Δ₁, θ₁)/∂(Δ, Θ) of eqs. 88–91): the start is then second-order close
+                // and Newton saves an iteration per roller.
                 let w = warm
                     .and_then(|w| w.get(q))
                     .filter(|w| w.0.state == RollerState::BothRaces)
-                    .map(|w| (w.0.delta1_m, w.0.theta1_rad));
+                    .map(|(w, d0, t0)| {
+                        let (dd, dt) = (delta - d0, theta - t0);
+                        (
+                            w.delta1_m + w.du[0][0] * dd + w.du[0][1] * dt,
+                            w.theta1_rad + w.du[1][0] * dd + w.du[1][1] * dt,
+                        )
+                    });
                 let r =
                     self.model
                         .solve(delta, theta, w)
@@ -302,6 +319,9 @@ impl Bearing {
             return Err(BearingError::FlangeThrustExceedsLoad {
                 axial_load_n: op.axial_load_n,
                 flange_thrust_n: flange_thrust,
+                limit_inner_speed_rpm: op.inner_speed_rad_s
+                    * (op.axial_load_n / flange_thrust).sqrt()
+                    / crate::units::RPM_RAD_S,
             });
         }
         // Every roller carries at least the cup-and-flange load P₁,cf (whose radial

@@ -131,6 +131,9 @@ pub struct RollerSolution {
     pub dp1: [f64; 2],
     /// dM₁/dΔ (N) and dM₁/dΘ (N·m/rad).
     pub dm1: [f64; 2],
+    /// ∂(Δ₁, θ₁)/∂(Δ, Θ) at equilibrium (row i: unknown i, column j: ring variable j;
+    /// zero off the both-races branch): the tangent a neighbouring solve is predicted by.
+    pub du: [[f64; 2]; 2],
     /// Newton iterations.
     pub iterations: usize,
     /// Largest force residual, N.
@@ -366,7 +369,7 @@ impl RollerModel {
             return Err(RollerError::FlangePulls { p3_n: e.p3 });
         }
         // Eqs. 88–91: du/d(Δ, Θ) = −J⁻¹·∂r/∂(Δ, Θ); P₁, M₁ depend on u only.
-        let (dp1, dm1) = if with_cone {
+        let (dp1, dm1, du) = if with_cone {
             let du =
                 e.j.try_inverse()
                     .map(|inv| -(inv * e.jp))
@@ -375,9 +378,13 @@ impl RollerModel {
             let dm = Vector2::new(e.cup.dmoment[0], e.cup.dmoment[1]);
             let a = du.transpose() * dp;
             let b = du.transpose() * dm;
-            ([a[0], a[1]], [b[0], b[1]])
+            (
+                [a[0], a[1]],
+                [b[0], b[1]],
+                [[du[(0, 0)], du[(0, 1)]], [du[(1, 0)], du[(1, 1)]]],
+            )
         } else {
-            ([0.0; 2], [0.0; 2])
+            ([0.0; 2], [0.0; 2], [[0.0; 2]; 2])
         };
         Ok(RollerSolution {
             state,
@@ -390,6 +397,7 @@ impl RollerModel {
             flange_n: e.p3,
             dp1,
             dm1,
+            du,
             iterations: res.termination.iterations(),
             residual_n: e.r.amax(),
         })
@@ -405,10 +413,11 @@ impl RollerModel {
         cold: (f64, f64),
     ) -> Result<RollerSolution, RollerError> {
         if let Some(w) = warm {
-            match self.newton_solve(delta, big_theta, true, Vector2::new(w.0, w.1)) {
-                Ok(r) => return Ok(r),
-                Err(RollerError::NotConverged { .. }) => {}
-                Err(e) => return Err(e),
+            // Any failure from the warm start (also a slice pushed beyond Lundberg's
+            // validity by a far predicted start) is judged by the cold start, whose
+            // error, if any, is the one reported.
+            if let Ok(r) = self.newton_solve(delta, big_theta, true, Vector2::new(w.0, w.1)) {
+                return Ok(r);
             }
         }
         self.newton_solve(delta, big_theta, true, Vector2::new(cold.0, cold.1))
@@ -451,6 +460,7 @@ impl RollerModel {
                         flange_n: 0.0,
                         dp1: [0.0; 2],
                         dm1: [0.0; 2],
+                        du: [[0.0; 2]; 2],
                         iterations: 0,
                         residual_n: 0.0,
                     });

@@ -1,12 +1,14 @@
 //! The tapered roller bearing's registration: how its decks are read, solved and shown
 //! through the system-independent [`BearingSystem`] interface.
 
-use super::analysis::{analyse, Analysis};
+use super::analysis::{analyse, analyse_from, Analysis};
+use super::bearing::BearingSolution;
 use super::deck::{SCHEMA, SYSTEM_ID};
 use super::input::TaperedInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, Fidelity, FidelityGrid, FormCase, RunOptions, Solution, SweepPlan,
+    BearingSystem, Case, Detail, Fidelity, FidelityGrid, FormCase, RunOptions, Session, Solution,
+    SolveError, SweepPlan,
 };
 use crate::deck::form::{template, Form};
 use crate::deck::DeckErrors;
@@ -50,6 +52,10 @@ impl BearingSystem for TaperedRoller {
 
     fn element_name(&self) -> &'static str {
         "roller"
+    }
+
+    fn session(&self) -> Box<dyn Session> {
+        Box::new(TaperedSession::default())
     }
 
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
@@ -209,5 +215,148 @@ impl Solution for TaperedSolution {
 
     fn text(&self, units: Units) -> String {
         super::report::text(&self.0, units)
+    }
+}
+
+/// The tapered roller's session: it keeps the last converged equilibrium (ring
+/// displacements and every roller's (Δ₁, θ₁) and state) and starts the next solve from
+/// it, falling back to the cold start when the warm one fails
+/// ([`super::analysis::analyse_from`]). A sweep solved point after point through one
+/// session is a continuation in the swept parameter.
+#[derive(Default)]
+pub struct TaperedSession {
+    last: Option<BearingSolution>,
+}
+
+impl TaperedSession {
+    /// The last converged equilibrium, if any.
+    pub fn last(&self) -> Option<&BearingSolution> {
+        self.last.as_ref()
+    }
+
+    /// Solve `input` from the last equilibrium (the typed analysis, for benches and
+    /// tests). A failure keeps the last equilibrium as the next start.
+    pub fn analyse(
+        &mut self,
+        input: &TaperedInput,
+        name: &str,
+    ) -> Result<Analysis, super::bearing::BearingError> {
+        let a = analyse_from(input, name, self.last.as_ref())?;
+        self.last = Some(a.solution.clone());
+        Ok(a)
+    }
+}
+
+impl Session for TaperedSession {
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        _detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let Some(case) = case.as_any().downcast_ref::<TaperedCase>() else {
+            return Err(SolveError::Stage {
+                stage: "session",
+                message: format!(
+                    "a {} deck was given to the {} solver",
+                    case.system().id(),
+                    SYSTEM_ID
+                ),
+            });
+        };
+        if cancel.is_cancelled() {
+            return Err(SolveError::Cancelled);
+        }
+        // The same message as `Case::solve`, so a sweep reads alike through either.
+        self.analyse(&case.form.value, &case.form.name)
+            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| SolveError::Stage {
+                stage: SYSTEM_ID,
+                message: e.to_string(),
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::units::{LBF_N, RPM_RAD_S};
+
+    fn lc(rpm: f64, radial_lbf: f64) -> TaperedInput {
+        let mut s = TaperedInput::afapl_sample();
+        s.operating.inner_speed_rad_s = rpm * RPM_RAD_S;
+        s.operating.radial_load_n = radial_lbf * LBF_N;
+        s
+    }
+
+    /// The session's warm-started answers equal cold starts to the solver tolerance
+    /// (both stop on the same force tolerance, 1e-9 of the load by default): reactions to
+    /// 1e-8 of the thrust, displacements and the stiffness to 1e-6 relative. Load
+    /// Condition 2 over 0–39 800 rpm crosses the switch of single rollers to the
+    /// cup-and-flange state (≈ 38 900 rpm); the states agree too. A point without
+    /// equilibrium (50 000 rpm) is the typed error and the session carries on from its
+    /// last converged point.
+    #[test]
+    fn session_warm_start_equals_cold_start() {
+        let mut session = TaperedSession::default();
+        let mut speeds: Vec<f64> = (0..=19).map(|i| 2_000.0 * i as f64).collect();
+        speeds.extend([38_900.0, 39_000.0, 39_400.0, 39_800.0, 50_000.0, 20_000.0]);
+        for rpm in speeds {
+            let s = lc(rpm, 700.0);
+            let cold = analyse(&s, "cold");
+            let warm = session.analyse(&s, "warm");
+            let (cold, warm) = match (cold, warm) {
+                (Ok(c), Ok(w)) => (c, w),
+                (Err(c), Err(w)) => {
+                    assert_eq!(c.to_string(), w.to_string());
+                    assert!(rpm > 39_800.0);
+                    continue;
+                }
+                (c, w) => panic!("{rpm}: {c:?} vs {w:?}"),
+            };
+            let fa = s.operating.axial_load_n;
+            let (c, w) = (&cold.solution, &warm.solution);
+            for j in 0..3 {
+                assert!((c.reaction[j] - w.reaction[j]).abs() < 1e-8 * fa, "{rpm}");
+                let scale = c.displacement_m[2].abs();
+                assert!((c.displacement_m[j] - w.displacement_m[j]).abs() < 1e-6 * scale);
+            }
+            let kmax = c.stiffness.abs().max();
+            assert!(
+                (c.stiffness - w.stiffness).abs().max() < 1e-6 * kmax,
+                "{rpm}"
+            );
+            for (a, b) in c.rollers.iter().zip(&w.rollers) {
+                assert_eq!(a.0.state, b.0.state, "{rpm}");
+            }
+        }
+        assert!(session.last().is_some());
+    }
+
+    /// Through the `Session` trait: the JSON states name the branch.
+    #[test]
+    fn session_trait_solves_and_names_states() {
+        let case = SYSTEM
+            .load(
+                EXAMPLE_DECK,
+                "trb_afapl.toml",
+                &[
+                    "operating.radial_load=700".to_string(),
+                    "operating.inner_speed=39500".to_string(),
+                ],
+            )
+            .unwrap();
+        let mut session = SYSTEM.session();
+        let sol = session
+            .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
+            .unwrap();
+        let json = sol.json();
+        let states: Vec<&str> = json["rollers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["state"].as_str().unwrap())
+            .collect();
+        assert!(states.contains(&"both-races") && states.contains(&"cup-and-flange"));
     }
 }

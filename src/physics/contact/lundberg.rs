@@ -129,10 +129,61 @@ impl LundbergSlice {
     }
 
     /// The load per length p (N/m) that gives approach `delta` over contact length
-    /// `length` (eqs. 69–71, by Newton's iteration (70) from below: δ(p) is increasing and
-    /// concave on the valid branch, so iterates started under the root rise monotonically
-    /// to it). Not positive `delta`: zero load. Beyond the valid branch: a typed error.
+    /// `length` (eqs. 69–71). Not positive `delta`: zero load. Beyond the valid branch: a
+    /// typed error.
+    ///
+    /// Solved for the logarithmic factor t = K + ln(L/(2b)) rather than for p (the
+    /// tapered roller's solve spends most of its time here): with p = D/t, D = δ/c and
+    /// b² = w·p, eq. 62 becomes t − ½·ln t = C₀ = K + ½·ln(L²/(4wD)), one scalar equation
+    /// whose g(t) = t − ½ ln t is smooth and convex with g′ = 1 − 1/(2t) ≥ ⅔ where this path
+    /// is taken (t ≥ 1.5, far from the validity limit t = ½ where g′ = 0). Start
+    /// t₀ = C₀ + ½ ln C₀ (one fixed-point step, within a few per cent), then Halley's
+    /// cubic iteration: once a step is below 1e-5·t the next error is below 1e-17 and
+    /// the loop stops. Then ∂δ/∂p = c(t − ½) (eq. 71) exactly at the root. Near the
+    /// validity limit, the Newton iteration in p below ([`Self::load_by_p`]) decides; the
+    /// two agree to round-off (test `t_form_matches_p_form`).
     pub fn load(&self, delta_m: f64, length_m: f64) -> Result<SliceLoad, LundbergError> {
+        if !(length_m > 0.0 && length_m.is_finite()) {
+            return Err(LundbergError::InvalidInput(
+                "contact length must be positive",
+            ));
+        }
+        if delta_m <= 0.0 {
+            return Ok(SliceLoad::default());
+        }
+        let c = self.compliance;
+        let d = delta_m / c;
+        let c0 =
+            LUNDBERG_CONSTANT + 0.5 * (length_m * length_m / (4.0 * self.width_factor * d)).ln();
+        // g(1.5) = 1.5 − ½ ln 1.5 = 1.2973: C₀ above it puts the root at t > 1.5.
+        if !(c0 > 1.3 && c0.is_finite()) {
+            return self.load_by_p(delta_m, length_m);
+        }
+        let mut t = c0 + 0.5 * c0.ln();
+        for _ in 0..20 {
+            let g = t - 0.5 * t.ln() - c0;
+            let g1 = 1.0 - 0.5 / t;
+            let g2 = 0.5 / (t * t);
+            let step = -2.0 * g * g1 / (2.0 * g1 * g1 - g * g2);
+            t += step;
+            if step.abs() <= 1e-5 * t {
+                break;
+            }
+        }
+        let p = d / t;
+        let slope = c * (t - 0.5);
+        Ok(SliceLoad {
+            load_n_m: p,
+            dload_dapproach: 1.0 / slope,
+            dload_dlength: -(c * p / length_m) / slope,
+            half_width_m: self.half_width(p),
+        })
+    }
+
+    /// [`Self::load`] by Newton's iteration (70) in p from below: δ(p) is increasing and
+    /// concave on the valid branch, so iterates started under the root rise monotonically
+    /// to it. Used near the validity limit.
+    pub fn load_by_p(&self, delta_m: f64, length_m: f64) -> Result<SliceLoad, LundbergError> {
         if !(length_m > 0.0 && length_m.is_finite()) {
             return Err(LundbergError::InvalidInput(
                 "contact length must be positive",
@@ -284,6 +335,30 @@ mod tests {
         assert!(((-(LUNDBERG_CONSTANT - 0.5)).exp() - 0.25).abs() < 5e-5);
     }
 
+    /// The t-form of the inversion (the fast path of `load`) and Newton in p agree to
+    /// round-off (2e-14 relative in p and its derivatives: both are solved to the last
+    /// bits of a 5-digit-magnitude logarithm) from featherweight loads to beyond the
+    /// switch to the p-form near the validity limit, and both invert eq. 62 to 1e-13.
+    #[test]
+    fn t_form_matches_p_form() {
+        let d = 0.2913 * INCH_M;
+        let slice = steel_slice(d);
+        for l in [1e-4, 0.6001 * INCH_M, 0.05] {
+            let (dmax, _) = slice.max_approach(l);
+            for k in 1..=400 {
+                let delta = dmax * (k as f64 / 400.0).powi(6) * 0.999;
+                let a = slice.load(delta, l).unwrap();
+                let b = slice.load_by_p(delta, l).unwrap();
+                let rel = |x: f64, y: f64| (x - y).abs() / y.abs();
+                assert!(rel(a.load_n_m, b.load_n_m) < 2e-14, "{l} {k}");
+                assert!(rel(a.dload_dapproach, b.dload_dapproach) < 2e-12, "{l} {k}");
+                assert!(rel(a.dload_dlength, b.dload_dlength) < 2e-12, "{l} {k}");
+                let (back, _, _) = slice.approach(a.load_n_m, l);
+                assert!(rel(back, delta) < 1e-13, "{l} {k}");
+            }
+        }
+    }
+
     /// Lundberg against Palmgren's empirical line-contact law δ = 4.36e-7·Q^0.9/l^0.8
     /// (in, lbf) for steel on steel, the sample's 0.2913 in roller loaded uniformly over its
     /// 0.6001 in length from 100 to 3000 lbf. The two are different laws (logarithmic vs
@@ -292,6 +367,17 @@ mod tests {
     /// 320 lbf, 1.256 at 3000 lbf). The bound states that band (1.15–1.27); the issue's
     /// 10 % holds only below ≈ 20 lbf for this roller (ratio 1.104 at 20 lbf, 1.074 at
     /// 10 lbf), not at the loads the sample carries.
+    ///
+    /// Checked for a consistent comparison (issue 17 asked for 10 %): units (Palmgren's
+    /// in–lbf constant is Harris's per-contact 3.84e-5 mm–N form, δ of one roller–race
+    /// contact like eq. 62, and l the effective length: the total length would make the
+    /// gap larger, as would counting both races); the race's conformity changes the
+    /// logarithm by ½ln(1 ± γ) ≈ ±0.03 (under 1 %); over the loads of Palmgren's fit
+    /// (Hertz stresses 0.5–2 GPa) the ratio stays 1.10–1.25 for rollers of 0.3–1 in
+    /// diameter and 0.3–1 in length. The two laws differ in form: Lundberg's local
+    /// exponent d ln δ/d ln Q = 1 − 1/(2(K + ln(L/2b))) equals Palmgren's 0.9 only at
+    /// L/(2b) ≈ 22.5, where their ratio is largest, so no load range of working stresses
+    /// brings them within 10 %: the measured band is the test.
     #[test]
     fn lundberg_vs_palmgren() {
         let d = 0.2913 * INCH_M;

@@ -404,3 +404,124 @@ fn warm_started_sweep_matches_cold_solves() {
     }
     assert!(warm_its <= cold_its, "{warm_its} vs {cold_its}");
 }
+
+/// Number of rollers off the cone and the stiffness at `rpm` under Load Condition 2.
+fn lc2_at(rpm: f64) -> (usize, Matrix5) {
+    let (_, sol) = solve(&sample(rpm, 700.0));
+    let n = sol
+        .rollers
+        .iter()
+        .filter(|r| r.0.state == RollerState::CupAndFlange)
+        .count();
+    (n, sol.stiffness)
+}
+
+/// Branch switch of single rollers (Load Condition 2, 700 lbf radial): the mirror pair
+/// nearest φ = 180° leaves the cone at ≈ 38 900 rpm (found by bisection on the state,
+/// to round-off of the speed) and switches to the cup-and-flange state (eqs. 121–130),
+/// reported as such. The stiffness is continuous there: a roller's P₂ → 0 at the switch
+/// and its cone contact's stiffness with it, so the jump between ω_s(1 − h) and
+/// ω_s(1 + h) must shrink with h. Measured: 1.4e-2 at h = 1e-4, 3.7e-3 at 1e-5, 1.1e-3 at
+/// 1e-6, 3.3e-4 at 1e-7 of the largest entry (∝ h^½: the contact stiffness vanishes as
+/// a power of P₂, P₂ linear in the speed offset). Tolerances: each decade of h at least
+/// halves the jump, and at h = 1e-7 it is below 1e-3 (a discontinuity would stay put).
+#[test]
+fn stiffness_is_continuous_where_a_roller_leaves_the_cone() {
+    let (mut lo, mut hi) = (38_000.0, 39_800.0);
+    assert_eq!(lc2_at(lo).0, 0);
+    assert!(lc2_at(hi).0 > 0);
+    while hi - lo > 1e-9 * hi {
+        let mid = 0.5 * (lo + hi);
+        if lc2_at(mid).0 == 0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    assert!((38_800.0..39_000.0).contains(&lo), "{lo}");
+    // The first to leave: the mirror pair opposite the radial load, in the JSON name.
+    let (_, sol) = solve(&sample(hi, 700.0));
+    let off: Vec<usize> = (0..sol.rollers.len())
+        .filter(|&q| sol.rollers[q].0.state == RollerState::CupAndFlange)
+        .collect();
+    assert_eq!(off, vec![18, 19]);
+    assert_eq!(sol.rollers[18].0.state.as_str(), "cup-and-flange");
+    let mut last = f64::INFINITY;
+    for h in [1e-4, 1e-5, 1e-6, 1e-7] {
+        let (na, a) = lc2_at(lo * (1.0 - h));
+        let (nb, b) = lc2_at(hi * (1.0 + h));
+        assert_eq!((na, nb), (0, 2), "h = {h}");
+        let jump = (a - b).abs().max() / a.abs().max();
+        assert!(jump < 0.5 * last, "h = {h}: {jump} after {last}");
+        last = jump;
+    }
+    assert!(last < 1e-3, "{last}");
+}
+
+/// Why pure thrust has no equilibrium above ≈ 41 200 rpm (Load Condition 1), the proof
+/// in numbers. Eliminating P₃ from a roller's force balances (55)–(56) (or (121)–(122)
+/// with P₂ = 0) gives, whatever the moments,
+///
+/// P₁·cos(α + τ/2) = P₂·cos(α − τ/2) + F_c·cos(ψ − α)  ⇒  P₁ ≥ P₁,cf = F_c·cos(ψ − α)/cos(α + τ/2)
+///
+/// for every roller with P₂ ≥ 0 (a roller touching neither race cannot balance F_c > 0,
+/// the model has no cage force). The cup's axial balance is Σ P₁·sin β = F_a. So an
+/// equilibrium needs n·P₁,cf·sin β ≤ F_a; F_c ∝ ω² gives the critical speed in closed
+/// form, ω* = ω₀·√(F_a/(n·P₁,cf(ω₀)·sin β)) = 41 18x rpm. Checked: the solver's P₁ of
+/// the cup-and-flange state is P₁,cf (1e-9), every roller of LC1 and LC2 solutions obeys
+/// P₁ ≥ P₁,cf (1e-9), the equilibrium exists at ω*(1 − 1e-4) with every roller still on
+/// the cone and P₂ < 1 % of P₁, and at ω*(1 + 1e-4) the solve is the typed error whose
+/// thrust exceeds F_a by the ratio (1 + 1e-4)² (1e-9).
+#[test]
+fn no_equilibrium_above_the_flange_thrust_speed_proof_in_numbers() {
+    let s0 = sample(20_000.0, 0.0);
+    let b0 = Bearing::new(&s0).unwrap();
+    let g = &s0.geometry;
+    let (beta, t, a, psi) = (
+        g.cup_angle_rad,
+        b0.geometry.half_cone_rad,
+        b0.geometry.flange_angle_rad,
+        b0.geometry.axis_angle_rad,
+    );
+    let p1cf = |fc: f64| fc * (psi - a).cos() / (a + t).cos();
+    let n = g.roller_count as f64;
+    let fa = s0.operating.axial_load_n;
+    let thrust0 = n * p1cf(b0.dynamics.centrifugal_force_n) * beta.sin();
+    let rpm_star = 20_000.0 * (fa / thrust0).sqrt();
+    assert!((41_100.0..41_300.0).contains(&rpm_star), "{rpm_star}");
+    // The cup-and-flange roller (eqs. 121–130, ring out of reach) carries P₁,cf.
+    let free = b0.model.solve(-1.0, 0.0, None).unwrap();
+    assert_eq!(free.state, RollerState::CupAndFlange);
+    assert!((free.cup.load_n / p1cf(b0.dynamics.centrifugal_force_n) - 1.0).abs() < 1e-9);
+    // The bound holds roller by roller in solved cases, both load conditions.
+    for (rpm, radial) in [(20_000.0, 0.0), (39_500.0, 700.0), (30_000.0, 700.0)] {
+        let (b, sol) = solve(&sample(rpm, radial));
+        let lower = p1cf(b.dynamics.centrifugal_force_n);
+        for (r, _, _) in &sol.rollers {
+            assert!(r.cup.load_n >= lower * (1.0 - 1e-9), "{rpm} {radial}");
+        }
+    }
+    let (_, below) = solve(&sample(rpm_star * (1.0 - 1e-4), 0.0));
+    let r = &below.rollers[0].0;
+    assert_eq!(r.state, RollerState::BothRaces);
+    assert!(r.cone.load_n < 0.01 * r.cup.load_n);
+    match Bearing::new(&sample(rpm_star * (1.0 + 1e-4), 0.0))
+        .unwrap()
+        .solve()
+    {
+        Err(BearingError::FlangeThrustExceedsLoad {
+            axial_load_n,
+            flange_thrust_n,
+            limit_inner_speed_rpm,
+        }) => {
+            // The error names the limit: the cone speed where the thrusts are equal.
+            assert!((limit_inner_speed_rpm / rpm_star - 1.0).abs() < 1e-9);
+            let ratio = flange_thrust_n / axial_load_n;
+            assert!(
+                (ratio / (1.0 + 1e-4f64).powi(2) - 1.0).abs() < 1e-9,
+                "{ratio}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+}
