@@ -174,6 +174,30 @@ impl BallModel<'_> {
         out
     }
 
+    /// The moment of one contact's tractions about the ball centre, N·m: what
+    /// [`Self::contact`] gives as `moment`, without the forces and powers (the
+    /// right-hand side needs only this; the integrator calls it thousands of times per
+    /// orbit, the powers are evaluated at the recorded samples only).
+    pub fn contact_moment(
+        &self,
+        inner: bool,
+        c: &ContactLoads,
+        omega: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m = Vector3::zeros();
+        let vc = self.cage_rad_s * self.centre_radius_m * Vector3::new(0.0, 0.0, 1.0);
+        self.for_each_slice(inner, c, |q, nu, p, v_race| {
+            let sl = vc + omega.cross(p) - v_race;
+            let sl = sl - sl.dot(nu) * nu;
+            let u = sl.norm();
+            if u == 0.0 {
+                return;
+            }
+            m -= (self.curve.mu(u) * q / u) * p.cross(&sl);
+        });
+        m
+    }
+
     /// Both contacts at time `t_s` with angular velocity ω.
     pub fn contacts(&self, t_s: f64, omega: &Vector3<f64>) -> (ContactPower, ContactPower) {
         let l = self.track.at(self.azimuth(t_s));
@@ -190,8 +214,9 @@ impl BallModel<'_> {
 
     /// dω/dt = M/J − ω_m a × ω (module docs).
     pub fn omega_dot(&self, t_s: f64, omega: &Vector3<f64>) -> Vector3<f64> {
-        let (i, o) = self.contacts(t_s, omega);
-        let m = i.moment + o.moment;
+        let l = self.track.at(self.azimuth(t_s));
+        let m = self.contact_moment(true, &l.inner, omega)
+            + self.contact_moment(false, &l.outer, omega);
         let a = Vector3::new(1.0, 0.0, 0.0);
         m / self.inertia_kg_m2 - self.cage_rad_s * a.cross(omega)
     }

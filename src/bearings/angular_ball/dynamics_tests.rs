@@ -508,3 +508,31 @@ fn radial_load_heat_matches_the_seed() {
         d.total_w()
     );
 }
+
+/// The right-hand side's moment-only path equals the full contact's moment (1e-12 of its
+/// norm: the same sums in a different association) at race control's state and at a
+/// perturbed one, both contacts, under radial load.
+#[test]
+fn moment_only_path_matches_the_full_contact() {
+    let mut input = case(9_500.0, Method::TimeSimulation);
+    input.operating.radial_load_n = 500.0;
+    let curve = input.traction.curve();
+    with_model(&input, &curve, |m, w0| {
+        for w in [
+            Vector3::from(w0),
+            Vector3::new(w0[0], 1.1 * w0[1], 0.2 * w0[1]),
+        ] {
+            for t in [0.0, 1e-3, 7e-3] {
+                let l = m.track.at(m.azimuth(t));
+                for (inner, c) in [(true, &l.inner), (false, &l.outer)] {
+                    let full = m.contact(inner, c, &w).moment;
+                    let fast = m.contact_moment(inner, c, &w);
+                    assert!(
+                        (full - fast).norm() <= 1e-12 * full.norm(),
+                        "{full} vs {fast}"
+                    );
+                }
+            }
+        }
+    });
+}
