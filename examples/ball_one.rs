@@ -71,8 +71,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (d, st) = last.ok_or("no run")?;
     let w = d.history.last().ok_or("empty history")?.omega_rad_s;
     println!(
-        "time_s={best:.6e} heat_w={:.10e} omega_a={:.10e} omega_r={:.10e} omega_t={:.10e} steps={} rhs={} switched_at={:?}",
-        d.heat_w, w[0], w[1], w[2], st.steps, st.rhs_evaluations, st.switched_to_implicit_at
+        "time_s={best:.6e} heat_w={:.10e} omega_a={:.10e} omega_r={:.10e} omega_t={:.10e} steps={} rejected={} rhs={} switched_at={:?}",
+        d.heat_w, w[0], w[1], w[2], st.steps, st.rejected, st.rhs_evaluations, st.switched_to_implicit_at
     );
     if let Some(path) = args.get(4) {
         let points = match &curve {
