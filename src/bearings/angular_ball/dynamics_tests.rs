@@ -404,11 +404,12 @@ fn radial_load_energy_balance_over_an_orbit() {
         }
         let dt = period / n as f64;
         let simpson = |f: &[f64]| {
-            let mut s = f[0] + f[n];
-            for k in 1..n {
-                s += if k % 2 == 1 { 4.0 } else { 2.0 } * f[k];
-            }
-            s * dt / 3.0
+            let inner: f64 = f[1..n]
+                .iter()
+                .enumerate()
+                .map(|(k, x)| if k % 2 == 0 { 4.0 } else { 2.0 } * x)
+                .sum();
+            (f[0] + f[n] + inner) * dt / 3.0
         };
         let ke = |y: &[f64]| 0.5 * m.inertia_kg_m2 * Vector3::new(y[0], y[1], y[2]).norm_squared();
         let d_ke = ke(&sol.y[n]) - ke(&sol.y[0]);
