@@ -3,8 +3,10 @@
 //! (target < 20 µs); the whole race-control analysis with the skid search on A (no
 //! target of its own); the quasi-static ball dynamics on Bearing B at 9 500 rpm (target
 //! < 2 ms); the time simulation of B under 500 N radial load, 20 balls × 5 orbits
-//! (target < 100 ms). The dynamics benches time `dynamics::run` alone, from a
-//! race-control analysis solved once outside the loop.
+//! (target < 100 ms); A's load distribution under 500 N radial load (target < 0.3 ms);
+//! a 19-speed skid sweep of B with the quasi-static dynamics (target < 50 ms). The
+//! dynamics benches time `dynamics::run` alone, from a race-control analysis solved once
+//! outside the loop.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::angular_ball::analysis::{analyse, BallAnalysis};
@@ -60,6 +62,46 @@ fn bearing_a(c: &mut Criterion) {
     c.bench_function("ball_a_analysis_with_skid_search", |b| {
         b.iter(|| solved(std::hint::black_box(&input)))
     });
+
+    // Under radial load (issue 16: < 0.3 ms): A with 500 N radial on its preload, every
+    // ball its own loads (ring equilibrium in axial and radial).
+    let mut radial = BallInput::chen_a();
+    radial.operating.radial_load_n = 500.0;
+    let cond = conditions(&radial, &geom);
+    c.bench_function("ball_a_load_distribution_race_control_radial_500_n", |b| {
+        b.iter(|| {
+            load_distribution::solve(&geom, std::hint::black_box(&cond), Cancel::NONE)
+                .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+}
+
+/// The 19-speed skid sweep with dynamics (issue 16: < 50 ms): Bearing B from 6 000 to
+/// 15 000 rpm by 500 (the issue's `--set-range operating.inner_speed=6000:15000:500`),
+/// each point the whole analysis (load distribution, race control, skid threshold) with
+/// the quasi-static ball dynamics, one after the other (the CLI's sweep runs the points
+/// in parallel; this is the serial cost).
+fn skid_sweep(c: &mut Criterion) {
+    let inputs: Vec<BallInput> = (0..19)
+        .map(|k| {
+            let mut i = BallInput::chen_b();
+            i.operating.inner_speed_rad_s =
+                (6_000.0 + 500.0 * k as f64) * std::f64::consts::PI / 30.0;
+            i.dynamics.method = Method::QuasiStatic;
+            i
+        })
+        .collect();
+    let mut g = c.benchmark_group("ball_b_skid_sweep");
+    g.sample_size(20);
+    g.bench_function("19_speeds_quasi_static", |b| {
+        b.iter(|| {
+            inputs
+                .iter()
+                .map(|i| solved(std::hint::black_box(i)).total_heat_w)
+                .sum::<f64>()
+        })
+    });
+    g.finish();
 }
 
 fn bearing_b_dynamics(c: &mut Criterion) {
@@ -100,5 +142,5 @@ fn bearing_b_dynamics(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bearing_a, bearing_b_dynamics);
+criterion_group!(benches, bearing_a, bearing_b_dynamics, skid_sweep);
 criterion_main!(benches);

@@ -35,6 +35,11 @@ pub enum Command {
         /// Skip the loss-of-oil thermal transient (the steady state is still solved).
         #[arg(long)]
         no_transient: bool,
+        /// Also write the time history of a time-domain solution (the ball system's
+        /// `dynamics.method = "time-simulation"`) to FILE as CSV, SI, units in the header;
+        /// written as `--output` is (atomically; the deck and the `--output` file are refused).
+        #[arg(long, value_name = "FILE")]
+        series: Option<PathBuf>,
     },
     /// Validate a deck; exit 1 with messages if it is invalid.
     Check {

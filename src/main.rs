@@ -35,6 +35,33 @@ fn refuse_output_over_deck(output: Option<&Path>, deck: &Path) -> Result<(), Exi
     }
 }
 
+/// Refuses a `--series` file that is the deck or the `--output` file (checked before
+/// anything is solved): the exit code to leave with.
+fn refuse_series_file(
+    series: Option<&Path>,
+    output: Option<&Path>,
+    deck: &Path,
+) -> Result<(), ExitCode> {
+    let Some(s) = series else { return Ok(()) };
+    let clash = if same_file(s, deck) {
+        Some(format!("the deck being read ({})", deck.display()))
+    } else {
+        output
+            .filter(|o| same_file(s, o) || s == *o)
+            .map(|o| format!("the --output file ({})", o.display()))
+    };
+    match clash {
+        Some(what) => {
+            eprintln!(
+                "--series {}: is {what}; refusing to overwrite it",
+                s.display()
+            );
+            Err(ExitCode::from(exit::INVALID_INPUT))
+        }
+        None => Ok(()),
+    }
+}
+
 /// A deck's case and its solution.
 type Solved = (Box<dyn Case>, Box<dyn bearings::Solution>);
 
@@ -161,8 +188,12 @@ fn main() -> ExitCode {
             format,
             output,
             no_transient,
+            series,
         }) => {
             if let Err(code) = refuse_output_over_deck(output.as_deref(), &deck) {
+                return code;
+            }
+            if let Err(code) = refuse_series_file(series.as_deref(), output.as_deref(), &deck) {
                 return code;
             }
             let options = RunOptions {
@@ -172,8 +203,21 @@ fn main() -> ExitCode {
                 Ok(x) => x,
                 Err(code) => return code,
             };
+            // The history first: a run that cannot give what was asked writes nothing.
+            let series_csv = match series.as_deref().map(|_| solution.series_csv()) {
+                Some(Err(e)) => {
+                    eprintln!("--series: {e}");
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+                Some(Ok(csv)) => Some(csv),
+                None => None,
+            };
             let text = report::render(solution.as_ref(), report_format(format), case.units());
-            emit(output.as_deref(), &text)
+            let code = emit(output.as_deref(), &text);
+            match (series.as_deref(), series_csv) {
+                (Some(path), Some(csv)) if code == ExitCode::SUCCESS => emit(Some(path), &csv),
+                _ => code,
+            }
         }
         Some(Command::Stiffness {
             deck,

@@ -285,3 +285,65 @@ fn traction_rheology_table_and_film_temperature() {
     assert!(err.contains("increase strictly"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `run --series FILE` (issue 16): Bearing B's time simulation writes its history as CSV
+/// with units in the header — 20 balls (an axisymmetric load: every ball shifted from
+/// the first), each with 90 samples per orbit over `dynamics.orbits = 1` (91 rows), the
+/// heats' lateral and rolling parts adding up to the total (1e-9 relative, the printed
+/// digits), the first row of ball 0 at t = 0; the report still goes to standard output.
+/// Race control has no history: exit 1 naming `dynamics.method`, and no file written.
+/// The deck and the `--output` file are refused before solving.
+#[test]
+fn series_writes_the_time_history_or_says_why_not() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let series = dir.path().join("history.csv");
+    let s = series.to_string_lossy().into_owned();
+    let d = deck("chen_b.toml");
+    let (ok, out, err) = run(&[
+        "run",
+        &d,
+        "--set",
+        "dynamics.method=time-simulation",
+        "--set",
+        "dynamics.orbits=1",
+        "--series",
+        &s,
+    ]);
+    assert!(ok, "{err}");
+    assert!(!out.is_empty());
+    let csv = std::fs::read_to_string(&series).unwrap_or_else(|e| panic!("{e}"));
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("time_s,ball,azimuth_deg,orbit_deg,omega_axial_rad_s,omega_radial_rad_s,omega_tangential_rad_s,heat_w,lateral_heat_w,rolling_heat_w")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|x| x.parse().unwrap_or_else(|e| panic!("{e}: {l}")))
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 20 * 91);
+    assert_eq!(rows[0][0], 0.0);
+    assert_eq!(rows[0][1], 0.0);
+    assert_eq!(rows[rows.len() - 1][1], 19.0);
+    for r in &rows {
+        assert_eq!(r.len(), 10);
+        assert!((0.0..360.0).contains(&r[2]));
+        assert!((r[8] + r[9] - r[7]).abs() <= 1e-9 * r[7].max(1.0), "{r:?}");
+    }
+
+    std::fs::remove_file(&series).ok();
+    let (ok, _, err) = run(&["run", &d, "--series", &s]);
+    assert!(!ok);
+    assert!(err.contains("dynamics.method"), "{err}");
+    assert!(!series.exists());
+
+    let (ok, _, err) = run(&["run", &d, "--series", &d]);
+    assert!(!ok);
+    assert!(err.contains("refusing"), "{err}");
+    let (ok, _, err) = run(&["run", &d, "--series", &s, "--output", &s]);
+    assert!(!ok);
+    assert!(err.contains("--output"), "{err}");
+}

@@ -312,6 +312,12 @@ pub trait Solution: Send + Sync {
     fn json(&self) -> serde_json::Value;
     /// The text report in `units`.
     fn text(&self, units: Units) -> String;
+    /// The time history of a time-domain solution as CSV (SI, units in the header; the
+    /// CLI's `run --series FILE`), or why there is none, naming the deck key that would
+    /// give one. Systems without a time history keep this default.
+    fn series_csv(&self) -> Result<String, String> {
+        Err("this bearing system records no time history".to_string())
+    }
 }
 
 /// The system a deck `type` names.

@@ -18,44 +18,14 @@ impl BallModel<'_> {
         omega: &Vector3<f64>,
     ) -> Matrix3<f64> {
         let mut jac = Matrix3::zeros();
-        if c.load_n <= 0.0 || c.semi_major_m <= 0.0 {
-            return jac;
-        }
-        let h = 0.5 * self.diameter_m;
-        let (s, co) = c.angle_rad.sin_cos();
-        let (n, f, w_race) = if inner {
-            (
-                Vector3::new(-s, -co, 0.0),
-                self.groove_curvatures.0,
-                self.ring_speeds_rad_s.0,
-            )
-        } else {
-            (
-                Vector3::new(s, co, 0.0),
-                self.groove_curvatures.1,
-                self.ring_speeds_rad_s.1,
-            )
-        };
-        let tau = Vector3::new(n[1], -n[0], 0.0);
-        let t = Vector3::new(0.0, 0.0, 1.0);
-        let r_def = 2.0 / (2.0 / self.diameter_m + 1.0 / (f * self.diameter_m));
-        let vc = self.cage_rad_s * self.centre_radius_m * t;
-        let cum = |xi: f64| 0.75 * (xi - xi * xi * xi / 3.0);
-        let nsl = self.slices.max(1);
-        for k in 0..nsl {
-            let x0 = -1.0 + 2.0 * k as f64 / nsl as f64;
-            let x1 = -1.0 + 2.0 * (k + 1) as f64 / nsl as f64;
-            let q = c.load_n * (cum(x1) - cum(x0));
-            let phi = 0.5 * (x0 + x1) * c.semi_major_m / r_def;
-            let nu = phi.cos() * n + phi.sin() * tau;
-            let p = (h - r_def) * n + r_def * nu;
-            let v_race = w_race * (self.centre_radius_m + p[1]) * t;
-            let sl = vc + omega.cross(&p) - v_race;
+        let vc = self.cage_rad_s * self.centre_radius_m * Vector3::new(0.0, 0.0, 1.0);
+        self.for_each_slice(inner, c, |q, nu, p, v_race| {
+            let sl = vc + omega.cross(p) - v_race;
             let proj = Matrix3::identity() - nu * nu.transpose();
             let sl = proj * sl;
             let u = sl.norm();
             if u == 0.0 {
-                continue;
+                return;
             }
             let (mu, slope) = mu_and_slope(self.curve, u);
             let sh = sl / u;
@@ -63,7 +33,7 @@ impl BallModel<'_> {
                 -q * ((mu / u) * Matrix3::identity() + (slope - mu / u) * (sh * sh.transpose()));
             let px = p.cross_matrix();
             jac += px * dfds * proj * (-px);
-        }
+        });
         jac
     }
 

@@ -352,3 +352,190 @@ fn analytic_jacobian_matches_differences() {
         });
     }
 }
+
+/// Issue 16's radial anomaly, settled as physics: under Chen's 500 N radial load
+/// (Bearing B, 9 500 rpm, curve 1) the time simulation makes far more heat than race
+/// control and does not settle. The energy of the ball is accounted for over its whole
+/// first orbit (from race control, the hardest transient): the friction power taken
+/// from the rings plus the held cage's power (−F_t ω_m R_b, see
+/// `steady_heat_equals_power_from_rings`) equals the slices' heat plus d(½J|ω|²)/dt, so
+/// ∫(rings + cage − heat) dt over the orbit equals ΔKE. Integrated by Simpson's rule on
+/// 20 001 dense-output points at rtol 1e-10: 1e-6 of ∫heat dt (the quadrature error at
+/// the load track's 20 kinks per orbit is ~1e-8 of it; measured below). A unit slip, a
+/// wrong frame or a chattering load switch would break this balance; it holds, so the
+/// heat is supplied by the rings and is not an artefact of the integration.
+#[test]
+fn radial_load_energy_balance_over_an_orbit() {
+    let mut input = case(9_500.0, Method::TimeSimulation);
+    input.operating.radial_load_n = 500.0;
+    let curve = input.traction.curve();
+    with_model(&input, &curve, |m, w0| {
+        let period = std::f64::consts::TAU / m.cage_rad_s.abs();
+        let n = 20_000;
+        let times: Vec<f64> = (0..=n)
+            .map(|k| (period * k as f64 / n as f64).min(period))
+            .collect();
+        let opts = OdeOptions {
+            rtol: 1e-10,
+            atol: 1e-10 * Vector3::from(w0).norm(),
+            max_steps: 2_000_000,
+            ..OdeOptions::default()
+        };
+        let sol = ode::solve(
+            m,
+            0.0,
+            &w0,
+            period,
+            &opts,
+            &mut [],
+            Output::Times(times),
+            Cancel::NONE,
+        )
+        .unwrap();
+        let (mut gap, mut heat) = (Vec::new(), Vec::new());
+        for (&t, y) in sol.t.iter().zip(&sol.y) {
+            let w = Vector3::new(y[0], y[1], y[2]);
+            let (i, o) = m.contacts(t, &w);
+            let h = i.lateral_w + i.rolling_w + o.lateral_w + o.rolling_w;
+            let rings = i.ring_power_w + o.ring_power_w;
+            let cage = -(i.force[2] + o.force[2]) * m.cage_rad_s * m.centre_radius_m;
+            gap.push(rings + cage - h);
+            heat.push(h);
+        }
+        let dt = period / n as f64;
+        let simpson = |f: &[f64]| {
+            let inner: f64 = f[1..n]
+                .iter()
+                .enumerate()
+                .map(|(k, x)| if k % 2 == 0 { 4.0 } else { 2.0 } * x)
+                .sum();
+            (f[0] + f[n] + inner) * dt / 3.0
+        };
+        let ke = |y: &[f64]| 0.5 * m.inertia_kg_m2 * Vector3::new(y[0], y[1], y[2]).norm_squared();
+        let d_ke = ke(&sol.y[n]) - ke(&sol.y[0]);
+        let (g, q) = (simpson(&gap), simpson(&heat));
+        eprintln!(
+            "radial orbit: ∫heat {q:.6e} J (mean {:.3} W), ∫(rings+cage−heat) {g:.6e} J, ΔKE {d_ke:.6e} J, rel {:.2e}",
+            q / period,
+            (g - d_ke).abs() / q
+        );
+        assert!((g - d_ke).abs() < 1e-6 * q, "{g} vs {d_ke} (heat {q})");
+    });
+}
+
+/// Seed ch. 6, Figs. 6-11/6-12 (Bearing B, 1 000 N preload, 500 N radial, 9 500 rpm, five
+/// orbits): "a radial load can significantly increase the magnitude of the ball
+/// skidding. The maximum heat generation rate reaches 100 Watts (at the final state)
+/// which is twice the heat generated in the pure axial load case"; "the peaks of the
+/// time-simulated curve correspond to the lowest loaded position"; the quasi-static
+/// results are "much smaller than the time-simulation results" (the friction torque
+/// cannot turn the spin axis as fast as the loads change: the motion has a history).
+/// Checked qualitatively: the peak per-ball heat over the last orbit is at least 1.6× the
+/// axial-only simulated heat, it lies on the low-load half of the orbit (90°…270°, the
+/// lowest load being at 180°; it lags it by the ball's history), the simulated total
+/// exceeds the quasi-static total, and the run is reported as not steady.
+/// NOT reproduced quantitatively: we get a peak of 176 W per ball (seed ≈ 100 W read off
+/// the figure, ≈ 2× the axial case; we are 3.0× our axial 59.4 W) and a mean of 90 W per
+/// ball (1 804 W for the bearing). The energy balance of
+/// `radial_load_energy_balance_over_an_orbit` holds to 3e-8, so the excess is in the
+/// model, not the integration; the likely candidate is the held cage speed (Chen
+/// integrates the orbital equation 2-14a per ball; a cage-guided ball here cannot
+/// lag or lead its position) — the bound below is the measured value +10 %, a regression
+/// guard, not agreement with the seed.
+#[test]
+fn radial_load_heat_matches_the_seed() {
+    let mut input = case(9_500.0, Method::TimeSimulation);
+    input.operating.radial_load_n = 500.0;
+    let ts = analyse(&input, Cancel::NONE).unwrap();
+    let d = ts.dynamics.as_ref().unwrap();
+    let track = LoadTrack::new(&ts.balls);
+    // Peak heat over every ball's last orbit, and the azimuth where it occurs.
+    let (mut peak, mut peak_deg): (f64, f64) = (0.0, 0.0);
+    for b in &d.balls {
+        let end = b.history.last().unwrap().orbit_deg;
+        for s in b.history.iter().filter(|s| s.orbit_deg >= end - 360.0) {
+            if s.heat_w > peak {
+                (peak, peak_deg) = (s.heat_w, s.orbit_deg.rem_euclid(360.0));
+            }
+        }
+    }
+    // The lowest- and highest-loaded positions (inner contact) of the load track.
+    let load = |deg: f64| track.at(deg.to_radians()).inner.load_n;
+    let grid: Vec<f64> = (0..360).map(f64::from).collect();
+    let lowest = grid
+        .iter()
+        .copied()
+        .fold(0.0, |m, x| if load(x) < load(m) { x } else { m });
+    let highest = grid
+        .iter()
+        .copied()
+        .fold(0.0, |m, x| if load(x) > load(m) { x } else { m });
+    eprintln!(
+        "peak at {peak_deg:.0}°, lowest load {:.1} N at {lowest}°, highest {:.1} N at {highest}°",
+        load(lowest),
+        load(highest)
+    );
+    let axial = analyse(&case(9_500.0, Method::TimeSimulation), Cancel::NONE).unwrap();
+    let axial_w = axial.dynamics.as_ref().unwrap().balls[0].heat_w;
+    input.dynamics.method = Method::QuasiStatic;
+    let qs = analyse(&input, Cancel::NONE).unwrap();
+    let dq = qs.dynamics.as_ref().unwrap();
+    eprintln!(
+        "radial: peak {peak:.1} W/ball, axial {axial_w:.1} W/ball, total {:.10e} W, quasi-static total {:.10e} W, amplitude {:.1} rad/s",
+        d.total_w(),
+        dq.total_w(),
+        d.oscillation_amplitude_rad_s
+    );
+    assert!(peak > 1.6 * axial_w, "{peak} / {axial_w}");
+    assert!(
+        peak < 1.1 * 176.1,
+        "{peak}: above the measured value, see the doc"
+    );
+    assert!((90.0..270.0).contains(&peak_deg), "{peak_deg}");
+    assert!(load(lowest) < load(highest));
+    assert!(
+        d.total_w() > dq.total_w(),
+        "{} vs {}",
+        d.total_w(),
+        dq.total_w()
+    );
+    assert!(!d.steady);
+    // Pinned before the speed-up (slice recurrence, parallel balls, moment-only RHS,
+    // integration piecewise between the load track's kinks): 1 803.9709 W then,
+    // 1 803.9739 W after (1.7e-6: the step sequence moves within rtol 1e-8; a Rodas4
+    // run agrees with the piecewise one to 2e-8); 1e-4 relative is the brief's bound
+    // for a change that is not a fix.
+    assert!(
+        (d.total_w() / 1_803.971 - 1.0).abs() < 1e-4,
+        "{}",
+        d.total_w()
+    );
+}
+
+/// The right-hand side's moment-only path equals the full contact's moment (1e-12 of its
+/// norm: the same sums in a different association) at race control's state and at a
+/// perturbed one, both contacts, under radial load.
+#[test]
+fn moment_only_path_matches_the_full_contact() {
+    let mut input = case(9_500.0, Method::TimeSimulation);
+    input.operating.radial_load_n = 500.0;
+    let curve = input.traction.curve();
+    with_model(&input, &curve, |m, w0| {
+        for w in [
+            Vector3::from(w0),
+            Vector3::new(w0[0], 1.1 * w0[1], 0.2 * w0[1]),
+        ] {
+            for t in [0.0, 1e-3, 7e-3] {
+                let l = m.track.at(m.azimuth(t));
+                for (inner, c) in [(true, &l.inner), (false, &l.outer)] {
+                    let full = m.contact(inner, c, &w).moment;
+                    let fast = m.contact_moment(inner, c, &w);
+                    assert!(
+                        (full - fast).norm() <= 1e-12 * full.norm(),
+                        "{full} vs {fast}"
+                    );
+                }
+            }
+        }
+    });
+}

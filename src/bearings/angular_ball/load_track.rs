@@ -73,6 +73,18 @@ impl LoadTrack {
         LoadTrack { points }
     }
 
+    /// The azimuths of the track's points in [0, 2π), rad, ascending: where its loads
+    /// change slope (the right-hand side of the ball equations has a kink there).
+    pub fn azimuths(&self) -> impl Iterator<Item = f64> + '_ {
+        self.points.iter().map(|p| p.0)
+    }
+
+    /// Whether every point has the same loads (an axisymmetric load): then there is no
+    /// kink to respect.
+    pub fn is_uniform(&self) -> bool {
+        self.points.windows(2).all(|w| w[0].1 == w[1].1)
+    }
+
     /// The loads at azimuth ψ (rad, any value).
     pub fn at(&self, psi: f64) -> BallLoads {
         let tau = std::f64::consts::TAU;

@@ -5,6 +5,7 @@
 use serde_json::{json, Value};
 
 use super::analysis::{BallAnalysis, ContactResult};
+use super::input::Method;
 use super::view::cage_rpm;
 use crate::physics::contact::point::Race;
 use crate::units::Units;
@@ -394,4 +395,46 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         }
     }
     s
+}
+
+/// The time history of the time simulation as CSV (`run --series FILE`, issue 16): one
+/// row per ball and recorded time (90 per orbit, the dense output of the integrator),
+/// SI with the unit in every column name — time, ball (the JSON's `balls[].index`), azimuth (wrapped to [0, 360)° and
+/// unwrapped as the orbit travelled), the ball's angular velocity in the cage frame
+/// (axial, radial, tangential: the frame of `dynamics`), and the heat of both contacts
+/// with its lateral and rolling-direction parts. Only the time simulation has a
+/// history: any other `dynamics.method` is refused with the key to set.
+pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
+    let method = a.input.dynamics.method;
+    let d = match (&a.dynamics, method) {
+        (Some(d), Method::TimeSimulation) => d,
+        _ => {
+            return Err(format!(
+                "no time history: dynamics.method = \"{}\" does not simulate the balls in time; set dynamics.method = \"time-simulation\" (e.g. --set dynamics.method=time-simulation)",
+                method.name()
+            ))
+        }
+    };
+    let mut out = String::from(
+        "time_s,ball,azimuth_deg,orbit_deg,omega_axial_rad_s,omega_radial_rad_s,omega_tangential_rad_s,heat_w,lateral_heat_w,rolling_heat_w\n",
+    );
+    for (j, b) in d.balls.iter().enumerate() {
+        for s in &b.history {
+            let w = s.omega_rad_s;
+            out.push_str(&format!(
+                "{:e},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}\n",
+                s.time_s,
+                j,
+                s.orbit_deg.rem_euclid(360.0),
+                s.orbit_deg,
+                w[0],
+                w[1],
+                w[2],
+                s.heat_w,
+                s.lateral_w,
+                s.rolling_w
+            ));
+        }
+    }
+    Ok(out)
 }

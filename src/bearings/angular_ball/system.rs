@@ -190,6 +190,10 @@ impl Solution for BallSolution {
     fn text(&self, units: Units) -> String {
         super::report::text(&self.0, units)
     }
+
+    fn series_csv(&self) -> Result<String, String> {
+        super::report::series_csv(&self.0)
+    }
 }
 
 #[cfg(test)]

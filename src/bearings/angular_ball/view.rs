@@ -30,15 +30,15 @@ pub const COLUMNS: [Column; 21] = [
         Quantity::Moment,
         CsvStyle::Scientific,
     )
-    .shown("Mg N·m", Display::Plain, 4, 8),
+    .shown("Mg", Display::Moment, 4, 8),
     Column::new(
         "resisting_moment_nm",
         Quantity::Moment,
         CsvStyle::Scientific,
     )
-    .shown("Mr N·m", Display::Plain, 4, 8),
+    .shown("Mr", Display::Moment, 4, 8),
     Column::new("skidding", Quantity::Count, CsvStyle::Integer).shown("skid", Display::Plain, 0, 4),
-    Column::new("heat_w", Quantity::Power, CsvStyle::Scientific).shown("H W", Display::Plain, 3, 7),
+    Column::new("heat_w", Quantity::Power, CsvStyle::Scientific).shown("H", Display::Power, 3, 7),
     Column::new("inner_normal_load_n", Quantity::Force, CsvStyle::Scientific).shown(
         "Qi",
         Display::Force,
@@ -502,4 +502,35 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
             per_element: false,
         })
         .collect()
+}
+
+#[cfg(test)]
+mod display_tests {
+    use super::*;
+    use crate::units::Units;
+
+    /// The Balls pane's moments and heat follow the display units (they were plain SI
+    /// even on a US display): N·m/lbf·in and W/Btu/hr, with the SI headers unchanged
+    /// ("Mg N·m", "H W"); 1 N·m = 8.850746 lbf·in and 1 W = 3.412142 Btu/hr (1e-6).
+    #[test]
+    fn ball_moments_and_heat_use_display_units() {
+        let col = |key: &str| {
+            COLUMNS
+                .iter()
+                .find(|c| c.key == key)
+                .and_then(|c| c.screen)
+                .unwrap_or_else(|| panic!("{key}"))
+        };
+        for (key, si, us, per_si) in [
+            ("gyroscopic_moment_nm", "Mg N·m", "Mg lbf·in", 8.850746),
+            ("resisting_moment_nm", "Mr N·m", "Mr lbf·in", 8.850746),
+            ("heat_w", "H W", "H Btu/hr", 3.412142),
+        ] {
+            let s = col(key);
+            assert_eq!(s.display.header(s.label, Units::Si), si);
+            assert_eq!(s.display.header(s.label, Units::Us), us);
+            assert!((s.display.convert(1.0, Units::Us) / per_si - 1.0).abs() < 1e-6);
+            assert_eq!(s.display.convert(1.0, Units::Si), 1.0);
+        }
+    }
 }
