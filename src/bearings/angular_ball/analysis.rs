@@ -911,7 +911,12 @@ mod properties {
                             prop_assert!((load.axial_force_n / fa - 1.0).abs() < 1e-6);
                         }
                         if fr_share > 0.0 {
-                            prop_assert!((load.radial_force_n / (fa * fr_share) - 1.0).abs() < 1e-6);
+                            // Relative to the ring's load (the solver's ring tolerance is
+                            // 1e-10 of it): a 0.03 N radial load beside a 35 kN axial
+                            // force under held displacement is met to 8e-8 N, 2e-6 of
+                            // itself (the regression case).
+                            let scale = load.axial_force_n.abs().max(fa * fr_share);
+                            prop_assert!((load.radial_force_n - fa * fr_share).abs() < 1e-6 * scale);
                         }
                         prop_assert!(load.axial_deflection_m.is_finite() && load.radial_deflection_m.is_finite());
                         for (b, (ci, co)) in load.balls.iter().zip(&balls) {
@@ -938,7 +943,8 @@ mod properties {
                         prop_assert!((a.load.axial_force_n / fa - 1.0).abs() < 1e-6);
                     }
                     if fr_share > 0.0 {
-                        prop_assert!((a.load.radial_force_n / (fa * fr_share) - 1.0).abs() < 1e-6);
+                        let scale = a.load.axial_force_n.abs().max(fa * fr_share);
+                        prop_assert!((a.load.radial_force_n - fa * fr_share).abs() < 1e-6 * scale);
                     }
                     for b in &a.balls {
                         prop_assert!(b.inner.load_n.is_finite() && b.outer.load_n >= 0.0);
