@@ -28,13 +28,16 @@ pub enum Display {
     Power,
     /// Moments: N·m or lbf·in.
     Moment,
+    /// A state stored as its index into these names (the tapered roller's
+    /// `both-races`/`cup-and-flange`/`free`): the pane shows the name, CSV the index.
+    Choice(&'static [&'static str]),
 }
 
 impl Display {
     /// The SI value `v` in display units.
     pub fn convert(self, v: f64, u: Units) -> f64 {
         match (self, u) {
-            (Display::Plain, _) => v,
+            (Display::Plain | Display::Choice(_), _) => v,
             (Display::Force, Units::Si) => v,
             (Display::Force, Units::Us) => v / LBF_N,
             (Display::LineLoad, Units::Si) => v * 1e-3,
@@ -56,7 +59,7 @@ impl Display {
     /// The display unit's label (empty for [`Display::Plain`]).
     pub fn unit(self, u: Units) -> &'static str {
         match (self, u) {
-            (Display::Plain, _) => "",
+            (Display::Plain | Display::Choice(_), _) => "",
             (Display::Force, Units::Si) => "N",
             (Display::Force, Units::Us) => "lbf",
             (Display::LineLoad, Units::Si) => "N/mm",
@@ -72,6 +75,17 @@ impl Display {
             (Display::Power, Units::Us) => "Btu/hr",
             (Display::Moment, Units::Si) => "N·m",
             (Display::Moment, Units::Us) => "lbf·in",
+        }
+    }
+
+    /// The name a [`Display::Choice`] value stands for (`None` for other kinds, or an
+    /// index out of range).
+    pub fn choice(self, v: f64) -> Option<&'static str> {
+        match self {
+            Display::Choice(names) if v >= 0.0 && v.fract() == 0.0 => {
+                names.get(v as usize).copied()
+            }
+            _ => None,
         }
     }
 
@@ -181,6 +195,9 @@ pub enum KeyRole {
     Target,
     /// Must stay within the looser guard band (e.g. heat, cage speed).
     Guard,
+    /// Reported (sweeps, the Sweep pane's marker), not judged by the fidelity bench
+    /// (a count of rollers off the cone has no relative error).
+    Info,
 }
 
 /// One scalar a user judges a design by. Its value is in the unit its name ends with

@@ -1514,3 +1514,40 @@ fn tui_sweep_points_are_the_cli_sweep_normalised() {
         }
     }
 }
+
+#[test]
+fn tui_sweep_marks_the_first_speed_with_a_roller_off_the_cone() {
+    // Load Condition 2 (700 lbf radial) at a deck speed of 15 600 rpm: the pane sweeps
+    // 0–39 000 rpm in steps of 1 950; the rollers nearest φ = 180° leave the cone at
+    // ≈ 38 900 rpm (tapered_roller tests), so 39 000 is the first point with
+    // `rollers_off_cone` > 0 and the marker sits there, 37 050 still has none.
+    let app = tapered_app(80, 24);
+    let case = app
+        .deck
+        .case()
+        .with_value("operating.radial_load", "700")
+        .and_then(|c| c.with_value("operating.inner_speed", "15600"))
+        .expect("valid");
+    let plan = case
+        .system()
+        .sweep_plan(0, case.as_ref())
+        .expect("a sweep plan");
+    let mut session = case.system().session();
+    let mut solve = |c: &dyn crate::bearings::Case| {
+        session
+            .solve(c, Detail::default(), &Cancel::NONE)
+            .map(|s| s.view())
+    };
+    let p = crate::verify::sweep::run_plan(case.as_ref(), plan, &mut solve, &|| false, &mut |_| {})
+        .expect("not cancelled");
+    let off = |v: f64| {
+        p.points
+            .iter()
+            .find(|pt| pt.value == v)
+            .and_then(|pt| pt.output("rollers_off_cone"))
+    };
+    assert_eq!(off(37_050.0), Some(0.0));
+    assert!(off(39_000.0).is_some_and(|n| n > 0.0));
+    let (_, marker, _) = view_model::sweep_series(&p, crate::units::Units::Us);
+    assert_eq!(marker, Some(39_000.0));
+}

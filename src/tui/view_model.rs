@@ -176,7 +176,10 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
         .enumerate()
         .map(|(c, (_, s))| {
             let cells = values.iter().map(|r| match r.get(c).copied().flatten() {
-                Some(v) => fixed(v, s.precision).chars().count(),
+                Some(v) => match s.display.choice(v) {
+                    Some(name) => name.chars().count(),
+                    None => fixed(v, s.precision).chars().count(),
+                },
                 None => DASH.chars().count(),
             });
             cells
@@ -187,10 +190,15 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
                 .unwrap_or(0)
         })
         .collect();
+    // A state name is never shortened: its floor is its natural width.
     let floor: Vec<usize> = headers
         .iter()
         .zip(&natural)
-        .map(|(h, &n)| h.chars().count().max(MIN_NUMBER_WIDTH).min(n))
+        .zip(&shown)
+        .map(|((h, &n), (_, s))| match s.display {
+            crate::bearings::view::Display::Choice(_) => n,
+            _ => h.chars().count().max(MIN_NUMBER_WIDTH).min(n),
+        })
         .collect();
     let mut widths = natural.clone();
     // Two spaces between columns when the natural widths allow it, else one.
@@ -236,7 +244,10 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
                 .take(n)
                 .enumerate()
                 .map(|(c, ((_, s), &w))| match row.get(c).copied().flatten() {
-                    Some(v) => fit_number(v, s.precision, w),
+                    Some(v) => match s.display.choice(v) {
+                        Some(name) => name.to_string(),
+                        None => fit_number(v, s.precision, w),
+                    },
                     None => DASH.to_string(),
                 })
                 .collect()

@@ -119,6 +119,7 @@ impl KeyError {
 /// name; the reference's list decides the columns).
 fn key_errors(x: &[KeyOutput], r: &[KeyOutput]) -> Vec<KeyError> {
     r.iter()
+        .filter(|k| k.role != KeyRole::Info)
         .map(|k| {
             let v = x.iter().find(|o| o.name == k.name).and_then(|o| o.value);
             let error = if k.quantity == Quantity::Temperature {
@@ -158,6 +159,7 @@ impl Row {
             && self.errors.iter().all(|e| match e.role {
                 KeyRole::Target => e.error.is_some_and(|x| x < TARGET_ERROR),
                 KeyRole::Guard => e.error.is_none_or(|x| x < GUARD_ERROR),
+                KeyRole::Info => true,
             })
     }
 
@@ -271,7 +273,12 @@ pub fn measure(
         .fidelity()
         .ok_or_else(|| format!("the {} has no fidelity settings", system.title()))?;
     let (reference_median_s, reference) = timed(&*at(case, grid.reference)?);
-    let reference_outputs = reference?.key_outputs;
+    // Informational outputs (counts) are not judged: no column, no error.
+    let reference_outputs: Vec<KeyOutput> = reference?
+        .key_outputs
+        .into_iter()
+        .filter(|k| k.role != KeyRole::Info)
+        .collect();
     let mut rows = Vec::with_capacity(resolutions.len() * tolerances.len());
     for &resolution in resolutions {
         for &tolerance in tolerances {

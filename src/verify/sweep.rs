@@ -648,10 +648,18 @@ pub fn to_text(s: &Sweep) -> String {
         .iter()
         .map(|p| {
             let mut r = vec![p.text.clone()];
-            r.extend(
-                cols.iter()
-                    .map(|c| p.output(c).map_or_else(|| "-".to_string(), text_number)),
-            );
+            r.extend(cols.iter().map(|c| {
+                let count = p
+                    .outputs
+                    .iter()
+                    .any(|o| o.name == *c && o.quantity == crate::units::Quantity::Count);
+                match p.output(c) {
+                    // Counts (rollers off the cone) as whole numbers.
+                    Some(v) if count && v.fract() == 0.0 => format!("{v:.0}"),
+                    Some(v) => text_number(v),
+                    None => "-".to_string(),
+                }
+            }));
             r
         })
         .collect();

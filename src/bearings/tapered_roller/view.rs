@@ -58,9 +58,9 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
         Quantity::Count,
         CsvStyle::Integer,
         "state",
-        Display::Plain,
+        Display::Choice(&STATE_NAMES),
         0,
-        5,
+        14,
     ),
     col(
         "outer_load_n",
@@ -144,6 +144,9 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
         8,
     ),
 ];
+
+/// The states' names, by code (the JSON's `rollers[].state`).
+pub const STATE_NAMES: [&str; 3] = ["both-races", "cup-and-flange", "free"];
 
 /// The state code of the table.
 fn state_code(s: super::roller::RollerState) -> f64 {
@@ -293,6 +296,7 @@ pub fn view(a: &Analysis) -> View {
             "stiffness_thetax_nm_rad" => "Kθθ",
             "max_flange_load_n" => "Pfl",
             "max_stress_pa" => "σmax",
+            "rollers_off_cone" => "off cone",
             _ => "?",
         },
         value: Some(value),
@@ -335,6 +339,18 @@ pub fn view(a: &Analysis) -> View {
             max_stress,
             Quantity::Pressure,
             KeyRole::Guard,
+        ),
+        // Rollers that have left the cone (cup-and-flange or free): the Sweep pane
+        // marks the first speed where this becomes positive.
+        key(
+            "rollers_off_cone",
+            a.solution
+                .rollers
+                .iter()
+                .filter(|r| r.0.state != super::roller::RollerState::BothRaces)
+                .count() as f64,
+            Quantity::Count,
+            KeyRole::Info,
         ),
     ];
     View {
