@@ -21,13 +21,14 @@ const CURVES: &[&str] = &[
 ];
 const VISCOSITY: &[&str] = &["barus", "roelands"];
 const METHODS: &[&str] = &["race-control", "quasi-static", "time-simulation"];
+const INTEGRATORS: &[&str] = &["auto", "dopri5", "rodas4"];
 
 const BALL: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "ball", "Ball", |b| b.materials.ball);
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 44] = [
+static FIELDS: [FieldSpec<BallInput>; 45] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -550,6 +551,31 @@ static FIELDS: [FieldSpec<BallInput>; 44] = [
         ),
         get: |b| b.dynamics.tolerance,
         set: |b, v| b.dynamics.tolerance = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.integrator",
+            "dynamics",
+            "Integrator",
+            Quantity::Dimensionless,
+            FieldKind::Choice(INTEGRATORS),
+            (0.0, false),
+            (2.0, false),
+            Presence::Default(0.0),
+            "time simulation's integrator: auto (DOPRI5, Rodas4 once the stiffness test fires), dopri5 or rodas4",
+        ),
+        get: |b| match b.dynamics.integrator {
+            Integrator::Auto => 0.0,
+            Integrator::Dopri5 => 1.0,
+            Integrator::Rodas4 => 2.0,
+        },
+        set: |b, v| {
+            b.dynamics.integrator = match v as usize {
+                1 => Integrator::Dopri5,
+                2 => Integrator::Rodas4,
+                _ => Integrator::Auto,
+            }
+        },
     },
 ];
 

@@ -47,7 +47,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::analysis::BallResult;
 use super::error::BallError;
 use super::geometry::BallGeometry;
-use super::input::{BallInput, Method};
+use super::input::{BallInput, Integrator, Method};
 pub use super::load_track::{BallLoads, ContactLoads, LoadTrack};
 use crate::numerics::cancel::Cancel;
 use crate::numerics::ode::{self, OdeError, OdeOptions, OdeSystem, Output};
@@ -589,54 +589,61 @@ pub fn run(
     let op = &input.operating;
     let axisymmetric = op.radial_load_n == 0.0;
     // One ball: its dynamics, steps, RHS evaluations and whether Rodas4 took over.
-    let solve_one =
-        |j: usize, b: &BallResult| -> Result<(BallDynamics, usize, usize, bool), BallError> {
-            let model = BallModel {
-                diameter_m: geom.ball_diameter_m,
-                centre_radius_m: 0.5 * geom.pitch_diameter_m,
-                inertia_kg_m2: geom.ball_inertia_kg_m2,
-                cage_rad_s: cage,
-                ring_speeds_rad_s: (op.inner_speed_rad_s, op.outer_speed_rad_s),
-                groove_curvatures: (geom.inner_groove_curvature, geom.outer_groove_curvature),
-                curve: &curve,
-                slices: d.slices,
-                track: &track,
-                start_azimuth_rad: b.azimuth_rad,
-            };
-            // Race control: ω = (ω_a, ω_r, 0) (no gyroscopic pivoting).
-            let omega0 = [b.ball_axial_rad_s, b.ball_radial_rad_s, 0.0];
-            match d.method {
-                Method::TimeSimulation => {
-                    let (bd, st) = simulate_ball(&model, omega0, d.orbits, d.tolerance, j, cancel)?;
-                    Ok((
-                        bd,
-                        st.steps,
-                        st.rhs_evaluations,
-                        st.switched_to_implicit_at.is_some(),
-                    ))
-                }
-                _ => {
-                    if cancel.is_cancelled() {
-                        return Err(BallError::Cancelled);
-                    }
-                    let (w, it, ev) = quasi_static_ball(&model, omega0, j)?;
-                    let s = sample(&model, 0.0, &w);
-                    Ok((
-                        BallDynamics {
-                            start_azimuth_rad: b.azimuth_rad,
-                            history: vec![s],
-                            heat_w: s.heat_w,
-                            lateral_w: s.lateral_w,
-                            rolling_w: s.rolling_w,
-                            oscillation_rad_s: 0.0,
-                        },
-                        it,
-                        ev,
-                        false,
-                    ))
-                }
-            }
+    let solve_one = |j: usize,
+                     b: &BallResult|
+     -> Result<(BallDynamics, usize, usize, bool), BallError> {
+        let model = BallModel {
+            diameter_m: geom.ball_diameter_m,
+            centre_radius_m: 0.5 * geom.pitch_diameter_m,
+            inertia_kg_m2: geom.ball_inertia_kg_m2,
+            cage_rad_s: cage,
+            ring_speeds_rad_s: (op.inner_speed_rad_s, op.outer_speed_rad_s),
+            groove_curvatures: (geom.inner_groove_curvature, geom.outer_groove_curvature),
+            curve: &curve,
+            slices: d.slices,
+            track: &track,
+            start_azimuth_rad: b.azimuth_rad,
         };
+        // Race control: ω = (ω_a, ω_r, 0) (no gyroscopic pivoting).
+        let omega0 = [b.ball_axial_rad_s, b.ball_radial_rad_s, 0.0];
+        match d.method {
+            Method::TimeSimulation => {
+                let method = match d.integrator {
+                    Integrator::Auto => ode::Method::Auto,
+                    Integrator::Dopri5 => ode::Method::DormandPrince45,
+                    Integrator::Rodas4 => ode::Method::Sdirk,
+                };
+                let (bd, st) =
+                    simulate_ball_with(&model, omega0, d.orbits, d.tolerance, method, j, cancel)?;
+                Ok((
+                    bd,
+                    st.steps,
+                    st.rhs_evaluations,
+                    st.switched_to_implicit_at.is_some(),
+                ))
+            }
+            _ => {
+                if cancel.is_cancelled() {
+                    return Err(BallError::Cancelled);
+                }
+                let (w, it, ev) = quasi_static_ball(&model, omega0, j)?;
+                let s = sample(&model, 0.0, &w);
+                Ok((
+                    BallDynamics {
+                        start_azimuth_rad: b.azimuth_rad,
+                        history: vec![s],
+                        heat_w: s.heat_w,
+                        lateral_w: s.lateral_w,
+                        rolling_w: s.rolling_w,
+                        oscillation_rad_s: 0.0,
+                    },
+                    it,
+                    ev,
+                    false,
+                ))
+            }
+        }
+    };
     let solved: Vec<(BallDynamics, usize, usize, bool)> = if axisymmetric || balls.len() < 2 {
         // Every ball sees the same loads at every position: solve the first, shift its
         // copies to the others' start azimuths.
@@ -685,9 +692,10 @@ pub fn run(
         .fold(1.0, f64::max);
     Ok(DynamicsResult {
         method: d.method,
-        integrator: match d.method {
-            Method::TimeSimulation if switched => "dopri5→rodas4".to_string(),
-            Method::TimeSimulation => "dopri5".to_string(),
+        integrator: match (d.method, d.integrator) {
+            (Method::TimeSimulation, Integrator::Rodas4) => "rodas4".to_string(),
+            (Method::TimeSimulation, _) if switched => "dopri5→rodas4".to_string(),
+            (Method::TimeSimulation, _) => "dopri5".to_string(),
             _ => "newton".to_string(),
         },
         steps,

@@ -256,6 +256,30 @@ impl Method {
     }
 }
 
+/// The time simulation's integrator (issue 16: an adaptive explicit one with error
+/// control and an implicit one, chosen automatically by the stiffness estimate).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Integrator {
+    /// DOPRI5, switching once for good to Rodas4 when Hairer's stiffness test fires.
+    #[default]
+    Auto,
+    /// DOPRI5 throughout (explicit, 5(4) with error control).
+    Dopri5,
+    /// Rodas4 throughout (linearly implicit, L-stable, analytic Jacobian per ball).
+    Rodas4,
+}
+
+impl Integrator {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            Integrator::Auto => "auto",
+            Integrator::Dopri5 => "dopri5",
+            Integrator::Rodas4 => "rodas4",
+        }
+    }
+}
+
 /// Analysis options.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dynamics {
@@ -270,6 +294,8 @@ pub struct Dynamics {
     /// Relative tolerance of the ball-dynamics integrator (absolute: this times the
     /// initial |ω|).
     pub tolerance: f64,
+    /// The time simulation's integrator.
+    pub integrator: Integrator,
 }
 
 /// A whole angular-contact ball bearing case, SI.
@@ -394,6 +420,7 @@ impl BallInput {
                 slices: 41,
                 orbits: 5.0,
                 tolerance: 1e-8,
+                integrator: Integrator::Auto,
             },
         }
     }
