@@ -164,12 +164,15 @@ impl Range {
                     vec![a]
                 } else {
                     let last = (n - 1) as f64;
+                    // To 12 significant digits: A + (B − A)·i/(N − 1) carries floating-point
+                    // noise (14000.000000000002) that the deck would receive as written.
+                    let clean = |v: f64| -> f64 { format!("{v:.11e}").parse().unwrap_or(v) };
                     (0..n)
                         .map(|i| {
                             if i == n - 1 {
                                 b
                             } else {
-                                a + span * (i as f64 / last)
+                                clean(a + span * (i as f64 / last))
                             }
                         })
                         .collect()
@@ -877,6 +880,21 @@ mod tests {
         assert!(err("0:1:1").contains("KEY=A:B:STEP"));
         // Exactly MAX_POINTS is allowed.
         assert_eq!(values("k=1:10000:1").len(), MAX_POINTS);
+    }
+
+    #[test]
+    fn count_ranges_carry_no_floating_point_noise() {
+        // 0:50000:x26 steps by 2000; 6000:15000:x19 by 500: every point is the number a
+        // user would type (exact), not 14000.000000000002.
+        for (arg, step) in [("k=0:50000:x26", 2000.0), ("k=6000:15000:x19", 500.0)] {
+            let v = values(arg);
+            for (i, x) in v.iter().enumerate() {
+                assert_eq!(*x, v[0] + step * i as f64, "{arg}: {x}");
+            }
+        }
+        // Spacing that is not a short decimal keeps 12 significant digits.
+        let v = values("k=0:1:x4");
+        assert!((v[1] - 1.0 / 3.0).abs() < 1e-12);
     }
 
     #[test]

@@ -330,9 +330,13 @@ pub fn text(a: &Analysis, units: Units) -> String {
     let _ = writeln!(s, "\nDamping: {DAMPING_NOTE}.");
     let _ = writeln!(
         s,
-        "\nEquilibrium residual {:.3e} {fu} after {} iterations; {} distinct roller solves; {:.3} ms",
+        "\nEquilibrium residual {:.3e} {fu} {}; {} distinct roller solves; {:.3} ms",
         force(sol.residual_n),
-        sol.iterations,
+        if sol.iterations == 0 {
+            "at the starting point (no bearing Newton step needed)".to_string()
+        } else {
+            format!("after {} bearing Newton iterations", sol.iterations)
+        },
         sol.unique_rollers,
         a.wall_time_s * 1e3
     );
