@@ -121,6 +121,10 @@ pub enum Quantity {
     Moment,
     /// Power (heat rate): Btu/hr | W.
     Power,
+    /// Lineal stiffness: lbf/in | N/m.
+    LinearStiffness,
+    /// Angular stiffness: lbf·in/rad | N·m/rad.
+    AngularStiffness,
 }
 
 impl Quantity {
@@ -150,6 +154,8 @@ impl Quantity {
             (Mass, Units::Us) => LBM_KG,
             (Moment, Units::Us) => LBF_N * INCH_M,
             (Power, Units::Us) => BTU_J / HOUR_S,
+            (LinearStiffness, Units::Us) => LBF_N / INCH_M,
+            (AngularStiffness, Units::Us) => LBF_N * INCH_M,
         }
     }
 
@@ -211,6 +217,10 @@ impl Quantity {
             (Moment, Units::Us) => "in·lbf",
             (Power, Units::Si) => "W",
             (Power, Units::Us) => "Btu/hr",
+            (LinearStiffness, Units::Si) => "N/m",
+            (LinearStiffness, Units::Us) => "lbf/in",
+            (AngularStiffness, Units::Si) => "N·m/rad",
+            (AngularStiffness, Units::Us) => "in·lbf/rad",
         }
     }
 }
@@ -229,7 +239,9 @@ pub fn celsius_to_fahrenheit(c: f64) -> f64 {
 mod tests {
     use super::*;
 
-    const ALL: [Quantity; 19] = [
+    const ALL: [Quantity; 21] = [
+        Quantity::LinearStiffness,
+        Quantity::AngularStiffness,
         Quantity::Moment,
         Quantity::Power,
         Quantity::Dimensionless,

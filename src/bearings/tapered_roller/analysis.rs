@@ -47,6 +47,33 @@ impl Analysis {
         (den > 0.0).then(|| (k[(0, 4)] + k[(1, 3)]) / den)
     }
 
+    /// The effective support stiffness with the deck's pedestal in series, seed 004
+    /// eq. (9): K_eff = (K_b⁻¹ + K_p⁻¹)⁻¹ with K_p = diag(k_x, k_y, k_z, k_θx, k_θy) and a
+    /// rigid coordinate (k = 0 in the deck) adding no compliance. `None` when the pedestal
+    /// is rigid throughout; an error when the bearing's matrix cannot be inverted (a
+    /// coordinate it does not restrain, so the series combination is undefined).
+    pub fn stiffness_with_pedestal(&self) -> Option<Result<Matrix5, String>> {
+        let p = &self.bearing.input.pedestal;
+        if !p.is_compliant() {
+            return None;
+        }
+        let Some(cb) = self.stiffness.try_inverse() else {
+            return Some(Err(
+                "the bearing's 5×5 stiffness is singular: the series combination with the pedestal (eq. 9) is undefined".to_string(),
+            ));
+        };
+        let mut c = cb;
+        for (i, &k) in p.stiffness.iter().enumerate() {
+            if k > 0.0 {
+                c[(i, i)] += 1.0 / k;
+            }
+        }
+        Some(
+            c.try_inverse()
+                .ok_or_else(|| "the combined compliance is singular (eq. 9)".to_string()),
+        )
+    }
+
     /// The stiffness referred to the load centre: K′ = TᵀKT with δx_O = δx_C − a·θy and
     /// δy_O = δy_C − a·θx (T = I but T₀₄ = T₁₃ = −a), the change of reference point of a
     /// rigid ring's small motion; K′_xθy = K_xθy − a·K_xx vanishes by the choice of a.
@@ -132,4 +159,55 @@ pub fn analyse_from(
         slices,
         wall_time_s: t0.elapsed().as_secs_f64(),
     })
+}
+
+#[cfg(test)]
+mod pedestal_tests {
+    use super::*;
+
+    /// Seed 004 eq. (9), bearing and pedestal in series: the combined compliance is the
+    /// bearing's plus the pedestal's, K_eff⁻¹ − K_b⁻¹ = diag(1/k) exactly (1e-9 of the
+    /// pedestal compliance: two 5×5 inversions); a rigid coordinate (k = 0) adds nothing;
+    /// a pedestal 10⁶ times stiffer than the bearing leaves K_xx within 1e-5 of the
+    /// bearing's; no pedestal, no combined matrix. Under Load Condition 2 (radial load:
+    /// a fully coupled matrix).
+    #[test]
+    fn series_combination_of_eq_9() {
+        let mut input = TaperedInput::afapl_sample();
+        input.operating.radial_load_n = 700.0 * crate::units::LBF_N;
+        let bare = analyse(&input, "lc2").unwrap();
+        assert!(bare.stiffness_with_pedestal().is_none());
+        let kb = bare.stiffness;
+        let p = [1e8, 2e8, 0.0, 3e5, 0.0];
+        input.pedestal.stiffness = p;
+        let a = analyse(&input, "lc2 + pedestal").unwrap();
+        assert_eq!(a.stiffness, kb, "the bearing itself is unchanged");
+        let keff = a.stiffness_with_pedestal().unwrap().unwrap();
+        let added = keff.try_inverse().unwrap() - kb.try_inverse().unwrap();
+        for i in 0..5 {
+            for j in 0..5 {
+                let want = if i == j && p[i] > 0.0 {
+                    1.0 / p[i]
+                } else {
+                    0.0
+                };
+                let scale = if p[i] > 0.0 {
+                    1.0 / p[i]
+                } else {
+                    1.0 / kb[(i, i)]
+                };
+                assert!(
+                    (added[(i, j)] - want).abs() <= 1e-9 * scale,
+                    "{i},{j}: {} vs {want}",
+                    added[(i, j)]
+                );
+            }
+        }
+        // Softer than either alone in every compliant coordinate.
+        assert!(keff[(0, 0)] < kb[(0, 0)] && keff[(0, 0)] < p[0]);
+        input.pedestal.stiffness = [1e6 * kb[(0, 0)], 0.0, 0.0, 0.0, 0.0];
+        let stiff = analyse(&input, "stiff pedestal").unwrap();
+        let k = stiff.stiffness_with_pedestal().unwrap().unwrap();
+        assert!((k[(0, 0)] / kb[(0, 0)] - 1.0).abs() < 1e-5);
+    }
 }

@@ -43,7 +43,7 @@ const CUP: [FieldSpec<TaperedInput>; 5] =
 const CONE: [FieldSpec<TaperedInput>; 5] =
     material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
 
-static FIELDS: [FieldSpec<TaperedInput>; 45] = [
+static FIELDS: [FieldSpec<TaperedInput>; 50] = [
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
         get: |t| t.geometry.roller_count as f64,
@@ -215,6 +215,30 @@ static FIELDS: [FieldSpec<TaperedInput>; 45] = [
                 GyroInertia::Polar
             }
         },
+    },    FieldSpec {
+        meta: meta("pedestal.stiffness_x", "pedestal", "Pedestal k_x", Quantity::LinearStiffness, REAL, (0.0, false), (1e15, false), Presence::Default(0.0), "pedestal stiffness in series with the bearing (eq. 9); 0 = rigid"),
+        get: |t| t.pedestal.stiffness[0],
+        set: |t, v| t.pedestal.stiffness[0] = v,
+    },
+    FieldSpec {
+        meta: meta("pedestal.stiffness_y", "pedestal", "Pedestal k_y", Quantity::LinearStiffness, REAL, (0.0, false), (1e15, false), Presence::Default(0.0), "pedestal stiffness in series with the bearing (eq. 9); 0 = rigid"),
+        get: |t| t.pedestal.stiffness[1],
+        set: |t, v| t.pedestal.stiffness[1] = v,
+    },
+    FieldSpec {
+        meta: meta("pedestal.stiffness_z", "pedestal", "Pedestal k_z", Quantity::LinearStiffness, REAL, (0.0, false), (1e15, false), Presence::Default(0.0), "pedestal stiffness in series with the bearing (eq. 9); 0 = rigid"),
+        get: |t| t.pedestal.stiffness[2],
+        set: |t, v| t.pedestal.stiffness[2] = v,
+    },
+    FieldSpec {
+        meta: meta("pedestal.stiffness_thetax", "pedestal", "Pedestal k_θx", Quantity::AngularStiffness, REAL, (0.0, false), (1e15, false), Presence::Default(0.0), "pedestal stiffness in series with the bearing (eq. 9); 0 = rigid"),
+        get: |t| t.pedestal.stiffness[3],
+        set: |t, v| t.pedestal.stiffness[3] = v,
+    },
+    FieldSpec {
+        meta: meta("pedestal.stiffness_thetay", "pedestal", "Pedestal k_θy", Quantity::AngularStiffness, REAL, (0.0, false), (1e15, false), Presence::Default(0.0), "pedestal stiffness in series with the bearing (eq. 9); 0 = rigid"),
+        get: |t| t.pedestal.stiffness[4],
+        set: |t, v| t.pedestal.stiffness[4] = v,
     },
 ];
 
@@ -256,7 +280,7 @@ fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
 /// The tapered roller deck's schema.
 pub static SCHEMA: Schema<TaperedInput> = Schema {
     system: SYSTEM_ID,
-    groups: &["geometry", "materials", "operating", "solver"],
+    groups: &["geometry", "materials", "operating", "solver", "pedestal"],
     required_groups: &["geometry", "materials", "operating"],
     fields: &FIELDS,
     material_bodies: &["roller", "cup", "cone"],

@@ -156,6 +156,25 @@ pub struct TaperedInput {
     pub operating: Operating,
     /// Solver settings.
     pub solver: Solver,
+    /// The pedestal the cup sits in (seed 004 eq. 9).
+    pub pedestal: Pedestal,
+}
+
+/// The pedestal's stiffness in the coordinates of the 5×5 matrix (x, y, z, θx, θy), SI
+/// (N/m, N·m/rad); 0 stands for a rigid pedestal in that coordinate (no compliance
+/// added). Seed 004 eq. (9) combines bearing and pedestal as impedances in series:
+/// Z = (Z_b⁻¹ + Z_p⁻¹)⁻¹; the bearing model has no damping, so here Z = K.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Pedestal {
+    /// k_x, k_y, k_z (N/m), k_θx, k_θy (N·m/rad); 0: rigid.
+    pub stiffness: [f64; 5],
+}
+
+impl Pedestal {
+    /// True when any coordinate has a finite pedestal stiffness.
+    pub fn is_compliant(&self) -> bool {
+        self.stiffness.iter().any(|&k| k > 0.0)
+    }
 }
 
 impl Default for Solver {
@@ -206,6 +225,7 @@ impl TaperedInput {
                 misalignment_rad: [0.0; 2],
             },
             solver: Solver::default(),
+            pedestal: Pedestal::default(),
         }
     }
 }

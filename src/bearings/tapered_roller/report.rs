@@ -102,6 +102,17 @@ pub fn json(a: &Analysis) -> Value {
         obj.insert("load_centre_offset_m".into(), json!(off));
         obj.insert("matrix_at_load_centre".into(), json!(matrix(&kc)));
     }
+    if let (Some(with), Some(obj)) = (a.stiffness_with_pedestal(), stiffness.as_object_mut()) {
+        let pedestal = json!({
+            "stiffness": b.input.pedestal.stiffness,
+            "note": "x, y, z in N/m, θx, θy in N·m/rad; 0 = rigid",
+        });
+        obj.insert("pedestal".into(), pedestal);
+        match with {
+            Ok(k) => obj.insert("with_pedestal_matrix".into(), json!(matrix(&k))),
+            Err(e) => obj.insert("with_pedestal_error".into(), json!(e)),
+        };
+    }
     if let (Some(fd), Some(obj)) = (a.stiffness_fd, stiffness.as_object_mut()) {
         obj.insert("finite_difference_matrix".into(), json!(matrix(&fd)));
         if let Some(d) = a.finite_difference_max_rel() {
@@ -222,6 +233,46 @@ pub fn stiffness_lines(a: &Analysis, units: Units) -> Vec<String> {
             s,
             "  analytic vs finite differences: largest gap {d:.3e} of the row scale"
         );
+    }
+    match a.stiffness_with_pedestal() {
+        None => {}
+        Some(Err(e)) => {
+            let _ = writeln!(s, "With the pedestal in series (eq. 9): {e}");
+        }
+        Some(Ok(kp)) => {
+            let p = &a.bearing.input.pedestal.stiffness;
+            let show = |i: usize| {
+                if p[i] > 0.0 {
+                    let q = if i < 3 {
+                        Quantity::LinearStiffness
+                    } else {
+                        Quantity::AngularStiffness
+                    };
+                    format!("{:.4e}", q.from_si(p[i], units))
+                } else {
+                    "rigid".to_string()
+                }
+            };
+            let _ = writeln!(
+                s,
+                "With the pedestal in series (eq. 9; pedestal x {} y {} z {} {} · theta_x {} theta_y {} {}):",
+                show(0),
+                show(1),
+                show(2),
+                Quantity::LinearStiffness.unit(units),
+                show(3),
+                show(4),
+                Quantity::AngularStiffness.unit(units),
+            );
+            for i in 0..5 {
+                let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
+                for j in 0..5 {
+                    let (f, _) = unit(i, j);
+                    let _ = write!(line, " {:>12.4e}", kp[(i, j)] / f);
+                }
+                let _ = writeln!(s, "{line}");
+            }
+        }
     }
     s.lines().map(str::to_string).collect()
 }
