@@ -1551,3 +1551,22 @@ fn tui_sweep_marks_the_first_speed_with_a_roller_off_the_cone() {
     let (_, marker, _) = view_model::sweep_series(&p, crate::units::Units::Us);
     assert_eq!(marker, Some(39_000.0));
 }
+
+#[test]
+fn system_docs_hold_the_keys_tables() {
+    // docs/ball.md and docs/tapered.md quote `rollbench keys --type …` verbatim: a key
+    // added, renamed or re-ranged must show up there (regenerate the fenced block from
+    // the command's output).
+    for (doc, id) in [
+        ("docs/ball.md", "angular-contact-ball"),
+        ("docs/tapered.md", "tapered-roller"),
+    ] {
+        let path = format!("{}/{doc}", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).expect("doc");
+        let table = crate::bearings::system(id).expect("system").keys_table();
+        assert!(
+            text.contains(table.trim_end()),
+            "{doc} does not hold the output of `rollbench keys --type {id}`"
+        );
+    }
+}
