@@ -375,7 +375,11 @@ impl App {
         if self.wide() {
             match pane {
                 Pane::Thermal => self.focus != Pane::Stepper,
-                Pane::Stepper => self.focus == Pane::Stepper,
+                // The side slot shows the stepper while it has the focus, or always when
+                // the system has no thermal pane (the renderer's rule).
+                Pane::Stepper => {
+                    self.focus == Pane::Stepper || !self.panes().contains(&Pane::Thermal)
+                }
                 Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) => self.chart_slot() == pane,
                 _ => true,
             }

@@ -133,6 +133,9 @@ pub struct BallAnalysis {
     pub bulk_temperature_k: f64,
     /// For `traction.curve = "rheology"`: the contact the curve was tabulated at.
     pub rheology_contact: Option<RheologyContact>,
+    /// The load distribution's fixed-point iterations for one ball (the workbench's
+    /// stepper), when asked for: (ball, steps).
+    pub load_trace: Option<(usize, Vec<load_distribution::LoadStep>)>,
 }
 
 /// Film thermal data of ch. 6 from the deck: the oil of `[lubricant]`, the rings'
@@ -549,6 +552,16 @@ fn contact_result(
 
 /// Solve a case by the race-control method.
 pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallError> {
+    analyse_traced(input, cancel, None)
+}
+
+/// [`analyse`], recording the load distribution's iterations of ball `trace_ball`
+/// (0-based) for the stepper when given (the answer is the same: recording only reads).
+pub fn analyse_traced(
+    input: &BallInput,
+    cancel: Cancel,
+    trace_ball: Option<usize>,
+) -> Result<BallAnalysis, BallError> {
     let (input, rheology_contact) = resolve_traction(input, cancel)?;
     let input: &BallInput = &input;
     input
@@ -565,7 +578,17 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
     }
     let geom = BallGeometry::new(input)?;
     let (axial, rest) = axial_condition(input, &geom, cancel)?;
-    let load = load_distribution::solve(&geom, &conditions(input, axial, 1.0), cancel)?;
+    let (load, load_trace) = match trace_ball {
+        None => (
+            load_distribution::solve(&geom, &conditions(input, axial, 1.0), cancel)?,
+            None,
+        ),
+        Some(j) => {
+            let (l, steps) =
+                load_distribution::solve_traced(&geom, &conditions(input, axial, 1.0), cancel, j)?;
+            (l, Some((j, steps)))
+        }
+    };
     let mu = input.traction.curve().max_mu();
     let mut balls = Vec::with_capacity(load.balls.len());
     // A contact's result depends only on its load state and kinematics: balls in the
@@ -646,6 +669,7 @@ pub fn analyse(input: &BallInput, cancel: Cancel) -> Result<BallAnalysis, BallEr
             lub.supply_temperature_k,
         ),
         rheology_contact,
+        load_trace,
     })
 }
 

@@ -540,7 +540,54 @@ pub fn solve(
     cond: &Conditions,
     cancel: Cancel,
 ) -> Result<LoadDistribution, BallError> {
-    let first = match solve_warm(geom, cond, cancel, None) {
+    solve_recorded(geom, cond, cancel, &mut None)
+}
+
+/// One fixed-point iteration of the load distribution as the workbench's stepper shows it
+/// for one ball: the ring Newton's answer for that iteration and the ball's contact state
+/// it produced.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadStep {
+    /// Fixed-point iteration (1-based), counted over every continuation stage.
+    pub fixed_point: usize,
+    /// Ring Newton iterations of this fixed-point iteration.
+    pub ring_iterations: usize,
+    /// Ring displacement (axial, radial), m.
+    pub ring_m: [f64; 2],
+    /// The ring Newton's final force residual, N.
+    pub ring_residual_n: f64,
+    /// The ball's contact angles (inner, outer), rad.
+    pub angles_rad: [f64; 2],
+    /// The ball's contact loads (inner, outer), N.
+    pub loads_n: [f64; 2],
+    /// The friction coefficient of (2-7) this iteration was solved with.
+    pub friction: f64,
+    /// Largest change of any ball's contact angle over the iteration, rad.
+    pub angle_change_rad: f64,
+    /// Largest relative change of any ball's contact loads.
+    pub load_change: f64,
+}
+
+/// [`solve`], recording each fixed-point iteration of ball `ball` (0-based) for the
+/// stepper.
+pub fn solve_traced(
+    geom: &BallGeometry,
+    cond: &Conditions,
+    cancel: Cancel,
+    ball: usize,
+) -> Result<(LoadDistribution, Vec<LoadStep>), BallError> {
+    let mut trace = Some((ball, Vec::new()));
+    let l = solve_recorded(geom, cond, cancel, &mut trace)?;
+    Ok((l, trace.map(|t| t.1).unwrap_or_default()))
+}
+
+fn solve_recorded(
+    geom: &BallGeometry,
+    cond: &Conditions,
+    cancel: Cancel,
+    trace: &mut Option<(usize, Vec<LoadStep>)>,
+) -> Result<LoadDistribution, BallError> {
+    let first = match solve_warm(geom, cond, cancel, None, trace) {
         Ok((l, _)) => return Ok(l),
         Err(
             e @ (BallError::Cancelled
@@ -557,7 +604,7 @@ pub fn solve(
         ..*cond
     };
     // Rest, axial load only (always axisymmetric); then the way up.
-    let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None) {
+    let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None, trace) {
         Ok(r) => r,
         Err(_) => return Err(first),
     };
@@ -565,7 +612,7 @@ pub fn solve(
     let (mut s, mut h) = (0.0f64, 0.25f64);
     while s < 1.0 {
         let next = (s + h).min(1.0);
-        match solve_warm(geom, &at(next), cancel, Some(&state)) {
+        match solve_warm(geom, &at(next), cancel, Some(&state), trace) {
             Ok((l, w)) => {
                 stats.fixed_point_iterations += l.stats.fixed_point_iterations;
                 stats.ring_iterations += l.stats.ring_iterations;
@@ -593,6 +640,7 @@ fn solve_warm(
     cond: &Conditions,
     cancel: Cancel,
     start: Option<&Warm>,
+    trace: &mut Option<(usize, Vec<LoadStep>)>,
 ) -> Result<(LoadDistribution, Warm), BallError> {
     let z = geom.ball_count;
     let a0 = geom.free_contact_angle_rad;
@@ -776,6 +824,27 @@ fn solve_warm(
             radii[k] = mix(radii[k], b.centre_radius_m);
         }
         stats.fixed_point_iterations = it + 1;
+        if let Some((ball, steps)) = trace.as_mut() {
+            // An axisymmetric solve computes ball 0 for all.
+            let k = if axisymmetric {
+                0
+            } else {
+                (*ball).min(balls.len().saturating_sub(1))
+            };
+            if let (Some(b), Some(p)) = (balls.get(k), params.get(k)) {
+                steps.push(LoadStep {
+                    fixed_point: steps.last().map_or(1, |s: &LoadStep| s.fixed_point + 1),
+                    ring_iterations: r.stats.iterations,
+                    ring_m: [x[0], x[1]],
+                    ring_residual_n: ring_residual,
+                    angles_rad: [b.inner.angle_rad, b.outer.angle_rad],
+                    loads_n: [b.inner.load_n, b.outer.load_n],
+                    friction: p.friction,
+                    angle_change_rad: change,
+                    load_change,
+                });
+            }
+        }
         if it > 0 && change < 1e-12 && load_change < 1e-10 {
             let l = finish(
                 geom,

@@ -1,12 +1,13 @@
 //! The angular-contact ball bearing's registration: decks read through the generic deck
 //! form, solved by `analysis`, shown through `view` and `report`.
 
-use super::analysis::{analyse, BallAnalysis};
+use super::analysis::{analyse, analyse_traced, BallAnalysis};
 use super::deck::SCHEMA;
 use super::input::BallInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, Fidelity, FidelityGrid, FormCase, RunOptions, Solution,
+    BearingSystem, Case, Detail, Fidelity, FidelityGrid, FormCase, RunOptions, Session, Solution,
+    SolveError,
 };
 use crate::deck::form::Form;
 use crate::deck::DeckErrors;
@@ -70,8 +71,13 @@ impl BearingSystem for AngularBall {
         Some(FIDELITY_GRID)
     }
 
+    /// A session that records the stepper's trace when the Stepper pane asks for it.
+    fn session(&self) -> Box<dyn Session> {
+        Box::new(BallSession)
+    }
+
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 5] = [
+        const PANES: [PaneSpec; 6] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -91,6 +97,10 @@ impl BearingSystem for AngularBall {
             PaneSpec {
                 kind: PaneKind::Chart(2),
                 title: "Traction",
+            },
+            PaneSpec {
+                kind: PaneKind::Stepper,
+                title: "Stepper",
             },
         ];
         &PANES
@@ -175,6 +185,39 @@ impl Case for BallCase {
     }
 }
 
+/// The workbench's solver of ball cases: a whole solve, with the load distribution's
+/// iterations of the ball the Stepper pane shows recorded when it is on screen.
+pub struct BallSession;
+
+impl Session for BallSession {
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let Some(ball) = case.as_any().downcast_ref::<BallCase>() else {
+            return Err(SolveError::Stage {
+                stage: SYSTEM_ID,
+                message: format!("not a ball bearing case: {}", case.system().id()),
+            });
+        };
+        analyse_traced(
+            &ball.form.value,
+            Cancel::from_option(cancel.flag()),
+            detail.trace_element,
+        )
+        .map(|a| Box::new(BallSolution(a)) as Box<dyn Solution>)
+        .map_err(|e| match e {
+            super::error::BallError::Cancelled => SolveError::Cancelled,
+            e => SolveError::Stage {
+                stage: SYSTEM_ID,
+                message: e.to_string(),
+            },
+        })
+    }
+}
+
 /// A solved ball bearing.
 pub struct BallSolution(pub BallAnalysis);
 
@@ -199,6 +242,47 @@ impl Solution for BallSolution {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The stepper's trace of the load distribution (issue 16: "stepper (the
+    /// load-distribution Newton)"): recording only reads, so the traced analysis's report
+    /// equals the plain one exactly; there is one step per fixed-point iteration; the
+    /// last step's angles and loads of the traced ball are the solution's (the fixed
+    /// point stops when they change by < 1e-12 rad and < 1e-10 relative: 1e-9 relative
+    /// here) and its changes meet those tolerances. Bearing B under 500 N radial load
+    /// (every ball different), ball 11 (ψ = 198°).
+    #[test]
+    fn stepper_trace_ends_at_the_solution() {
+        let case = SYSTEM
+            .load(
+                include_str!("../../../decks/chen_b.toml"),
+                "chen_b",
+                &["operating.radial_load=500".to_string()],
+            )
+            .unwrap();
+        let input = &case.as_any().downcast_ref::<BallCase>().unwrap().form.value;
+        let plain = analyse(input, Cancel::NONE).unwrap();
+        let traced = analyse_traced(input, Cancel::NONE, Some(10)).unwrap();
+        assert_eq!(
+            super::super::report::json(&plain),
+            super::super::report::json(&traced)
+        );
+        let (ball, steps) = traced.load_trace.as_ref().unwrap();
+        assert_eq!(*ball, 10);
+        assert_eq!(steps.len(), traced.load.stats.fixed_point_iterations);
+        let last = steps.last().unwrap();
+        let b = &traced.balls[10];
+        let rel = |x: f64, y: f64| (x / y - 1.0).abs();
+        assert!(rel(last.angles_rad[0], b.inner.angle_rad) < 1e-9);
+        assert!(rel(last.angles_rad[1], b.outer.angle_rad) < 1e-9);
+        assert!(rel(last.loads_n[0], b.inner.load_n) < 1e-9);
+        assert!(rel(last.loads_n[1], b.outer.load_n) < 1e-9);
+        assert!(last.angle_change_rad < 1e-12 && last.load_change < 1e-10);
+        // The view carries it for the stepper, one step per iteration.
+        let n = steps.len();
+        let view = BallSolution(traced).view();
+        let t = view.trace.unwrap();
+        assert_eq!((t.element, t.steps.len()), (10, n));
+    }
 
     /// `with_fidelity` sets exactly the two knobs `fidelity` reads (exact), leaves the
     /// rest of the deck alone, and the quasi-static heat converges at second order in the

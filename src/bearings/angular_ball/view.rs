@@ -4,7 +4,7 @@
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use crate::bearings::view::{
     Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, SolveStats, Summary,
-    Table, View,
+    Table, Trace, TraceColumn, TraceFormat, TraceLine, TraceStep, View,
 };
 use crate::units::Quantity;
 
@@ -252,7 +252,7 @@ pub fn view(a: &BallAnalysis) -> View {
                 KeyRole::Target,
             ),
         ],
-        trace: None,
+        trace: trace(a),
         thermal: None,
         stats: SolveStats {
             iterations: a.load.stats.fixed_point_iterations,
@@ -502,6 +502,94 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
             per_element: false,
         })
         .collect()
+}
+
+/// The stepper's trace: one step per fixed-point iteration of the load distribution
+/// (race control and the friction of (2-7) updated, then the ring Newton solved), showing
+/// the traced ball's contact angles, loads and friction and the ring's displacement, with
+/// the changes that decide convergence (angles to 1e-12 rad, loads to 1e-10).
+fn trace(a: &BallAnalysis) -> Option<Trace> {
+    let (ball, steps) = a.load_trace.as_ref()?;
+    let line = |label, display, format, values: Vec<f64>| TraceLine {
+        label,
+        display,
+        format,
+        values,
+    };
+    let steps = steps
+        .iter()
+        .map(|t| TraceStep {
+            iteration: vec![t.fixed_point, t.ring_iterations],
+            residuals: vec![t.angle_change_rad, t.ring_residual_n],
+            lines: vec![
+                line(
+                    "fixed point/ring",
+                    Display::Plain,
+                    TraceFormat::Counts,
+                    vec![t.fixed_point as f64, t.ring_iterations as f64],
+                ),
+                line(
+                    "ring ax,rad",
+                    Display::SmallLength,
+                    TraceFormat::Signed(5),
+                    t.ring_m.to_vec(),
+                ),
+                line(
+                    "αi,αo deg",
+                    Display::Plain,
+                    TraceFormat::Signed(3),
+                    t.angles_rad.iter().map(|r| r.to_degrees()).collect(),
+                ),
+                line(
+                    "Qi,Qo",
+                    Display::Force,
+                    TraceFormat::Signed(2),
+                    t.loads_n.to_vec(),
+                ),
+                line(
+                    "µ (2-7)",
+                    Display::Plain,
+                    TraceFormat::Signed(5),
+                    vec![t.friction],
+                ),
+                line(
+                    "Δα max",
+                    Display::SmallAngle,
+                    TraceFormat::Residual,
+                    vec![t.angle_change_rad],
+                ),
+                line(
+                    "ΔQ/Q max",
+                    Display::Plain,
+                    TraceFormat::Residual,
+                    vec![t.load_change],
+                ),
+                line(
+                    "ring resid",
+                    Display::Force,
+                    TraceFormat::Residual,
+                    vec![t.ring_residual_n],
+                ),
+            ],
+            bars: Vec::new(),
+        })
+        .collect();
+    Some(Trace {
+        element: *ball,
+        label: "load distribution fixed point".to_string(),
+        iterations: vec!["fp", "ring"],
+        residuals: vec![
+            TraceColumn {
+                label: "Δα",
+                display: Display::SmallAngle,
+            },
+            TraceColumn {
+                label: "ring",
+                display: Display::Force,
+            },
+        ],
+        steps,
+    })
 }
 
 #[cfg(test)]
