@@ -196,6 +196,26 @@ keys y
 wait_for "EXITED:0"
 TARGET="$SESSION"
 
+# 8c. The ball deck's stepper: Enter on the Balls table opens the load distribution's
+#     fixed-point steps of the selected ball; l steps forward.
+cp decks/chen_b.toml "$WORK/ball.toml"
+tm new-session -d -s ball -x 80 -y 24 \
+    "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN' ball.toml; echo \"EXITED:\$?\"; sleep 60"
+TARGET="ball"
+wait_for "Inputs [SI]"
+wait_for "solved in"
+keys 2
+wait_for "Balls"
+keys j j
+keys Enter
+wait_for "Stepper · ball 3 · step 1/"
+wait_for "αi,αo deg"
+keys l
+wait_for "step 2/"
+keys q
+wait_for "EXITED:0"
+TARGET="$SESSION"
+
 # 9. Signals: the workbench runs in the foreground of an interactive shell; kill -SIG on
 #    its pid must leave the terminal as it found it and exit with 128 + signal.
 tm new-session -d -s sig -x 80 -y 24 \
