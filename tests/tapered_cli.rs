@@ -266,7 +266,33 @@ fn stiffness_subcommand() {
     let out = run(&["stiffness", "decks/trb_afapl.toml", "--format", "csv"]);
     let csv = String::from_utf8_lossy(&out.stdout);
     assert_eq!(csv.lines().count(), 6, "{csv}");
-    assert!(csv.starts_with("row,x,y,z,theta_x,theta_y\nF_x,"), "{csv}");
+    assert!(
+        csv.starts_with("row,x,y,z,theta_x,theta_y,unit_lineal,unit_angular\nF_x,"),
+        "{csv}"
+    );
+    // In the deck's units (issue 17): K_xx in lbf/in = the JSON's N/m ÷ (4.4482216152605
+    // N/lbf ÷ 0.0254 m/in), to the CSV's shortest round-trip digits (1e-12).
+    let kxx_si = m[0][0].as_f64().expect("K_xx");
+    let kxx_us: f64 = csv
+        .lines()
+        .nth(1)
+        .and_then(|l| l.split(',').nth(1))
+        .and_then(|c| c.parse().ok())
+        .expect("F_x,x");
+    let want = kxx_si / (4.4482216152605 / 0.0254);
+    assert!((kxx_us / want - 1.0).abs() < 1e-12, "{kxx_us} vs {want}");
+    assert!(
+        csv.lines()
+            .nth(1)
+            .is_some_and(|l| l.ends_with(",lbf/in,lbf/rad")),
+        "{csv}"
+    );
+    assert!(
+        csv.lines()
+            .nth(4)
+            .is_some_and(|l| l.ends_with(",in·lbf/in,in·lbf/rad")),
+        "{csv}"
+    );
     let out = run(&["stiffness", "decks/aerospace.toml"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("has no stiffness matrix"));

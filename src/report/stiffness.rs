@@ -1,9 +1,10 @@
 //! `rollbench stiffness`: the bearing's stiffness matrix alone, from any system whose
 //! solution has one (the tapered roller's 5×5): the view's "stiffness" text block in the
-//! deck's units, the JSON report's `stiffness` object, or its matrix as CSV (SI).
+//! deck's units, the JSON report's `stiffness` object (SI), or its matrix as CSV in the
+//! deck's units.
 
 use crate::bearings::Solution;
-use crate::units::Units;
+use crate::units::{Quantity, Units};
 
 use super::Format;
 
@@ -29,18 +30,43 @@ pub fn render(solution: &dyn Solution, format: Format, units: Units) -> Option<S
             let cols = k.get("columns")?.as_array()?;
             let matrix = k.get("matrix")?.as_array()?;
             let name = |v: &serde_json::Value| v.as_str().unwrap_or("").to_string();
-            // SI: N/m, N/rad (forces), N·m/m, N·m/rad (moments).
+            // In the deck's units (issue 17: "Text and CSV in the deck's units"): rows of
+            // forces then moments, columns of displacements then rotations; each row
+            // says its units (lineal columns, angular columns).
+            let (f, l, m) = (Quantity::Force, Quantity::Length, Quantity::Moment);
+            let per = |i: usize, j: usize| -> (f64, String) {
+                let (num, nu) = if i < 3 {
+                    (f.factor(units), f.unit(units))
+                } else {
+                    (m.factor(units), m.unit(units))
+                };
+                if j < 3 {
+                    (num / l.factor(units), format!("{nu}/{}", l.unit(units)))
+                } else {
+                    (num, format!("{nu}/rad"))
+                }
+            };
             let mut s = format!(
-                "row,{}\n",
+                "row,{},unit_lineal,unit_angular\n",
                 cols.iter().map(name).collect::<Vec<_>>().join(",")
             );
-            for (r, row) in rows.iter().zip(matrix) {
+            for (i, (r, row)) in rows.iter().zip(matrix).enumerate() {
                 let cells: Vec<String> = row
                     .as_array()?
                     .iter()
-                    .map(|c| c.as_f64().map_or(String::new(), super::csv::csv_number))
+                    .enumerate()
+                    .map(|(j, c)| {
+                        c.as_f64()
+                            .map_or(String::new(), |v| super::csv::csv_number(v / per(i, j).0))
+                    })
                     .collect();
-                s.push_str(&format!("{},{}\n", name(r), cells.join(",")));
+                s.push_str(&format!(
+                    "{},{},{},{}\n",
+                    name(r),
+                    cells.join(","),
+                    per(i, 0).1,
+                    per(i, 3).1
+                ));
             }
             Some(s)
         }
