@@ -188,6 +188,9 @@ class Roller:
         )
         d1, t1 = z * self.scale
         res, out = self.forces(d1, t1, delta, big_theta, with_cone)
+        # fsolve may report "not making good progress" when the residual is already at the
+        # round-off of the slice sums (~1e-11 N here); only that case is accepted, and any
+        # residual above 1 uN (1e-9 of a roller's ~1 kN load) is an error with its numbers.
         if ier != 1 and np.max(np.abs(res)) > 1e-6:
             raise RuntimeError(
                 f"roller fsolve failed at Delta={delta:.4e} m, Theta={big_theta:.3e}: "
