@@ -322,6 +322,23 @@ pub struct TraceLine {
     pub values: Vec<f64>,
 }
 
+impl TraceLine {
+    /// A line of `values` (SI) shown in `display` units as `format` says.
+    pub fn new(
+        label: &'static str,
+        display: Display,
+        format: TraceFormat,
+        values: Vec<f64>,
+    ) -> TraceLine {
+        TraceLine {
+            label,
+            display,
+            format,
+            values,
+        }
+    }
+}
+
 /// A row of bars across an element (one per lamina or slice), scaled with the other rows
 /// of its group.
 #[derive(Debug, Clone, PartialEq)]
@@ -519,6 +536,28 @@ impl View {
         self.tables
             .iter()
             .find(|t| t.columns.iter().any(|c| c.screen.is_some()))
+    }
+}
+
+#[cfg(test)]
+mod choice_tests {
+    use super::*;
+
+    /// A `Choice` column shows its code's name and nothing for codes it has no name for
+    /// (a fraction, a negative or an out-of-range code are not states), has no unit and
+    /// passes the code through unconverted; other kinds have no names.
+    #[test]
+    fn choice_names_its_codes() {
+        const NAMES: [&str; 3] = ["both-races", "cup-and-flange", "free"];
+        let d = Display::Choice(&NAMES);
+        assert_eq!(d.choice(0.0), Some("both-races"));
+        assert_eq!(d.choice(2.0), Some("free"));
+        for bad in [3.0, 0.5, -1.0, f64::NAN] {
+            assert_eq!(d.choice(bad), None, "{bad}");
+        }
+        assert_eq!(d.unit(Units::Us), "");
+        assert_eq!(d.convert(1.0, Units::Us), 1.0);
+        assert_eq!(Display::Force.choice(0.0), None);
     }
 }
 

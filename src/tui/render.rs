@@ -537,19 +537,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     };
     let s = view_model::chart_series(c, app.display_units);
     let block = pane_block(app, pane, &format!(" · {}{}", s.title, stale_note(app)));
-    let mut datasets: Vec<Dataset> = s
-        .series
-        .iter()
-        .enumerate()
-        .map(|(k, (name, points))| {
-            Dataset::default()
-                .name(*name)
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
-                .data(points)
-        })
-        .collect();
+    let mut datasets = series_datasets(&s);
     let marked: Vec<(f64, f64)> = if c.per_element {
         s.series
             .iter()
@@ -569,6 +557,22 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         );
     }
     draw_chart(&s, datasets, block, area, buf);
+}
+
+/// One line per series of `s`, in the series colours.
+fn series_datasets(s: &view_model::ChartSeries) -> Vec<Dataset<'_>> {
+    s.series
+        .iter()
+        .enumerate()
+        .map(|(k, (name, points))| {
+            Dataset::default()
+                .name(*name)
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
+                .data(points)
+        })
+        .collect()
 }
 
 /// Draws `datasets` on `s`'s axes inside `block`.
@@ -636,19 +640,7 @@ fn render_sweep(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         format!(" · {note}{stale}")
     };
     let block = pane_block(app, pane, &extra);
-    let mut datasets: Vec<Dataset> = s
-        .series
-        .iter()
-        .enumerate()
-        .map(|(k, (name, points))| {
-            Dataset::default()
-                .name(*name)
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
-                .data(points)
-        })
-        .collect();
+    let mut datasets = series_datasets(&s);
     let line: Vec<(f64, f64)> = marker
         .map(|x| vec![(x, s.y_bounds[0]), (x, s.y_bounds[1])])
         .unwrap_or_default();

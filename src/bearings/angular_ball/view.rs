@@ -510,12 +510,7 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
 /// the changes that decide convergence (angles to 1e-12 rad, loads to 1e-10).
 fn trace(a: &BallAnalysis) -> Option<Trace> {
     let (ball, steps) = a.load_trace.as_ref()?;
-    let line = |label, display, format, values: Vec<f64>| TraceLine {
-        label,
-        display,
-        format,
-        values,
-    };
+    let line = TraceLine::new;
     let steps = steps
         .iter()
         .map(|t| TraceStep {

@@ -417,12 +417,7 @@ fn trace(a: &Analysis) -> Option<Trace> {
             .map(|(&q, &w)| if w > 0.0 { q / w } else { 0.0 })
             .collect()
     };
-    let line = |label, display, format, values: Vec<f64>| TraceLine {
-        label,
-        display,
-        format,
-        values,
-    };
+    let line = TraceLine::new;
     let bars = |label, display, group, side, precision, values| TraceBars {
         label,
         display,
