@@ -50,6 +50,10 @@ pub struct Detail {
     pub trace_element: Option<usize>,
     /// Run the expensive time simulations (the thermal transient).
     pub transient: bool,
+    /// The chart pane (`view::PaneKind::Chart(n)`) on screen: a system whose session
+    /// fills that chart stage by stage sends it as it grows
+    /// ([`Session::solve_streaming`]); others ignore it.
+    pub stream_chart: Option<usize>,
 }
 
 /// A sweep a workbench pane draws: key outputs of the case re-solved at each value of one
@@ -278,6 +282,22 @@ pub trait Session: Send {
         detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError>;
+
+    /// [`Session::solve`], sending chart `detail.stream_chart` through `on_chart` as it
+    /// grows (the ball's Skid chart: one call per speed the skidding search solves) for a
+    /// system that builds that chart stage by stage. The solution is the same as
+    /// [`Session::solve`]'s; the last chart sent equals its view's. By default nothing
+    /// is streamed.
+    fn solve_streaming(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+        on_chart: &mut dyn FnMut(usize, view::Chart),
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let _ = on_chart;
+        self.solve(case, detail, cancel)
+    }
 }
 
 /// The session of a system that caches nothing: every solve is [`Case::solve`], with the

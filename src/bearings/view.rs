@@ -2,7 +2,9 @@
 //! their columns' units, and the key outputs the fidelity bench compares. Reports and
 //! panes draw from a [`View`]; none of them re-joins a system's per-element arrays.
 
-use crate::units::{Quantity, Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA};
+use crate::units::{
+    Quantity, Units, BTU_PER_HOUR_PER_WATT, FOOT_M, INCH_LBF_N_M, INCH_M, LBF_N, PSI_PA,
+};
 
 /// How a value is shown on screen: the display unit an engineer reads it in, per unit
 /// system (contact stress in MPa or ksi, film in µm or µin, deflections in mm or mil).
@@ -28,6 +30,8 @@ pub enum Display {
     Power,
     /// Moments: N·m or lbf·in.
     Moment,
+    /// Surface and sliding speeds: m/s or ft/s.
+    Speed,
     /// A state stored as its index into these names (the tapered roller's
     /// `both-races`/`cup-and-flange`/`free`): the pane shows the name, CSV the index.
     Choice(&'static [&'static str]),
@@ -53,6 +57,8 @@ impl Display {
             (Display::Power, Units::Us) => v * BTU_PER_HOUR_PER_WATT,
             (Display::Moment, Units::Si) => v,
             (Display::Moment, Units::Us) => v / INCH_LBF_N_M,
+            (Display::Speed, Units::Si) => v,
+            (Display::Speed, Units::Us) => v / FOOT_M,
         }
     }
 
@@ -75,6 +81,8 @@ impl Display {
             (Display::Power, Units::Us) => "Btu/hr",
             (Display::Moment, Units::Si) => "N·m",
             (Display::Moment, Units::Us) => "lbf·in",
+            (Display::Speed, Units::Si) => "m/s",
+            (Display::Speed, Units::Us) => "ft/s",
         }
     }
 
@@ -241,8 +249,11 @@ pub struct Series {
 /// A chart: series against a common x axis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Chart {
-    /// Title.
+    /// Title (with any number it holds in SI).
     pub title: String,
+    /// The title in US customary units, when it holds a number whose unit differs (a
+    /// heat in W is in Btu/hr there); `None` when [`Chart::title`] serves both.
+    pub title_us: Option<String>,
     /// X axis.
     pub x: ChartAxis,
     /// Y axis.
@@ -252,6 +263,16 @@ pub struct Chart {
     /// True when point `i` of every series belongs to element `i` (the pane marks the
     /// selected element).
     pub per_element: bool,
+}
+
+impl Chart {
+    /// The title in display units `u`.
+    pub fn title_in(&self, u: Units) -> &str {
+        match (u, &self.title_us) {
+            (Units::Us, Some(t)) => t,
+            _ => &self.title,
+        }
+    }
 }
 
 /// A labelled scalar for a pane's summary line.
@@ -582,6 +603,7 @@ mod tests {
         assert!(close(Display::LineLoad.convert(2.5e3, Units::Si), 2.5));
         assert_eq!(Display::Plain.convert(7.0, Units::Us), 7.0);
         assert!(close(us(Display::Moment, INCH_LBF_N_M), 1.0));
+        assert!(close(us(Display::Speed, FOOT_M), 1.0));
         // BTU_PER_HOUR_PER_WATT is given to 10 digits (units.rs checks it to 1e-10).
         let btu_per_hour = us(Display::Power, crate::units::BTU_J / crate::units::HOUR_S);
         assert!((btu_per_hour - 1.0).abs() < 1e-9);

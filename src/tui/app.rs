@@ -48,6 +48,16 @@ pub enum AppEvent {
         /// The points solved so far.
         progress: Arc<PlanProgress>,
     },
+    /// The solver sent chart `chart_index` of job `generation` as it grows (a stage
+    /// still running, e.g. the ball's skidding search; [`crate::bearings::Session::solve_streaming`]).
+    ChartProgress {
+        /// Job generation.
+        generation: u64,
+        /// The chart's index (`PaneKind::Chart(chart_index)`).
+        chart_index: usize,
+        /// The chart so far.
+        chart: Arc<crate::bearings::view::Chart>,
+    },
     /// A save finished.
     Saved(Result<PathBuf, String>),
     /// An open (or revert) finished.
@@ -235,6 +245,9 @@ pub struct App {
     pub last_sweep: Option<usize>,
     /// The newest sweep progress: (generation, pane index, points so far).
     pub sweep: Option<(u64, usize, Arc<PlanProgress>)>,
+    /// The chart the running solve is filling: (generation, chart index, chart so far);
+    /// drawn in place of the last solution's while that solve runs.
+    pub streamed: Option<(u64, usize, Arc<crate::bearings::view::Chart>)>,
     /// Solver state.
     pub solve: SolveState,
     /// The newest accepted solution's view (tables, charts, trace, thermal).
@@ -294,6 +307,7 @@ impl App {
             last_request: Detail::default(),
             last_sweep: None,
             sweep: None,
+            streamed: None,
             solve: SolveState::Idle,
             view: None,
             roller_sel: 0,
@@ -395,6 +409,19 @@ impl App {
         Detail {
             trace_element: self.visible(Pane::Stepper).then_some(self.roller_sel),
             transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
+            stream_chart: self.panes().into_iter().find_map(|p| match p {
+                Pane::Chart(n) if self.visible(p) => Some(n),
+                _ => None,
+            }),
+        }
+    }
+
+    /// Chart `n` as the running solve has streamed it so far, if it streams that chart
+    /// (only while the newest job runs: its solution's chart replaces it).
+    pub fn streamed_chart(&self, n: usize) -> Option<&crate::bearings::view::Chart> {
+        match (&self.solve, &self.streamed) {
+            (SolveState::Running, Some((g, i, c))) if *g == self.generation && *i == n => Some(c),
+            _ => None,
         }
     }
 
@@ -473,6 +500,7 @@ impl App {
                 if generation != self.generation {
                     return Vec::new(); // stale: a newer job is pending
                 }
+                self.streamed = None; // the solution's own charts take over
                 match outcome {
                     Ok(view) => {
                         let s = view.stats;
@@ -495,6 +523,16 @@ impl App {
                         self.error = Some(reason.clone());
                         self.solve = SolveState::Failed(reason);
                     }
+                }
+                Vec::new()
+            }
+            AppEvent::ChartProgress {
+                generation,
+                chart_index,
+                chart,
+            } => {
+                if generation == self.generation {
+                    self.streamed = Some((generation, chart_index, chart));
                 }
                 Vec::new()
             }

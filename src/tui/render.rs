@@ -519,17 +519,24 @@ const SERIES_COLOURS: [Color; 4] = [INNER, OUTER, Color::Green, Color::Magenta];
 /// element's chart.
 fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     let pane = Pane::Chart(n);
-    let Some(view) = app.view.as_deref() else {
+    // A chart the running solve streams (the ball's skidding search) is drawn as it
+    // grows, in place of the last solution's.
+    let streamed = app.streamed_chart(n).filter(|_| !app.chart_laminae);
+    let view = app.view.as_deref();
+    if view.is_none() && streamed.is_none() {
         let block = pane_block(app, pane, "");
         let inner = block.inner(area);
         block.render(area, buf);
         Paragraph::new(no_solution_text(app)).render(inner, buf);
         return;
-    };
-    let chart = if app.chart_laminae && n == 0 {
-        view.element_charts.get(app.roller_sel)
-    } else {
-        view.charts.get(n)
+    }
+    let chart = match (streamed, view) {
+        (Some(c), _) => Some(c),
+        (None, Some(view)) if app.chart_laminae && n == 0 => {
+            view.element_charts.get(app.roller_sel)
+        }
+        (None, Some(view)) => view.charts.get(n),
+        (None, None) => None,
     };
     let Some(c) = chart else {
         pane_block(app, pane, "").render(area, buf);

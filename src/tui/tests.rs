@@ -406,7 +406,8 @@ fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
     let deck = DeckDoc::load(&path).expect("load");
     let mut app = App::new(deck, Some(path.clone()));
     let (tx, _rx) = mpsc::channel();
-    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut worker =
+        Worker::spawn(tx, Arc::new(|_, _, _, _| Err(SolveError::Cancelled))).expect("w");
     let cmds = app.start();
     perform(&mut app, cmds, &mut worker);
     select_field(&mut app, "operating.radial_load");
@@ -454,7 +455,8 @@ fn tui_open_and_revert() {
     let cmds = app.handle(key(KeyCode::Enter));
     assert_eq!(cmds, vec![Command::Open(path.clone())]);
     let (tx, _rx) = mpsc::channel();
-    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut worker =
+        Worker::spawn(tx, Arc::new(|_, _, _, _| Err(SolveError::Cancelled))).expect("w");
     perform(&mut app, cmds, &mut worker);
     assert_eq!(app.path.as_deref(), Some(path.as_path()));
     select_field(&mut app, "operating.axial_load");
@@ -584,7 +586,7 @@ fn tui_worker_two_quick_edits_yield_one_result_for_the_second() {
     let template = Arc::new(solve_now(&job(0)));
     let t2 = Arc::clone(&template);
     // A slow solver that honours the cancel flag between "iterations".
-    let solver: Solver = Arc::new(move |_, _, cancel: &AtomicBool| {
+    let solver: Solver = Arc::new(move |_, _, cancel: &AtomicBool, _| {
         for _ in 0..40 {
             if cancel.load(Ordering::Acquire) {
                 return Err(SolveError::Cancelled);
@@ -616,7 +618,7 @@ fn tui_worker_queued_burst_runs_only_newest() {
     let calls = Arc::new(std::sync::atomic::AtomicUsize::new(0));
     let c2 = Arc::clone(&calls);
     let template = Arc::new(solve_now(&job(0)));
-    let solver: Solver = Arc::new(move |_, _, _| {
+    let solver: Solver = Arc::new(move |_, _, _, _| {
         c2.fetch_add(1, Ordering::SeqCst);
         std::thread::sleep(Duration::from_millis(30));
         Ok((*template).clone())
@@ -638,7 +640,7 @@ fn tui_worker_queued_burst_runs_only_newest() {
 #[test]
 fn tui_worker_panic_becomes_failed_solve() {
     install_solver_panic_filter(); // keeps the test output quiet, as in the app
-    let solver: Solver = Arc::new(|_, _, _| panic!("deliberate solver panic"));
+    let solver: Solver = Arc::new(|_, _, _, _| panic!("deliberate solver panic"));
     let (tx, rx) = mpsc::channel();
     let mut worker = Worker::spawn(tx, solver).expect("spawn");
     worker.submit(job(7));
@@ -949,7 +951,7 @@ fn tui_event_loop_survives_solver_panic() {
     install_solver_panic_filter();
     let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
     let (tx, rx) = mpsc::channel();
-    let solver: Solver = Arc::new(|_, _, _| panic!("deliberate solver panic"));
+    let solver: Solver = Arc::new(|_, _, _, _| panic!("deliberate solver panic"));
     let mut worker = Worker::spawn(tx.clone(), solver).expect("spawn");
     // Keys arrive well after the first (panicking) solve has been reported.
     let forward = std::thread::spawn({
@@ -1007,7 +1009,8 @@ fn tui_quit_prompt_save_without_file_asks_for_a_name_then_quits() {
     }
     let cmds = app.handle(key(KeyCode::Enter));
     let (tx, _rx) = mpsc::channel();
-    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut worker =
+        Worker::spawn(tx, Arc::new(|_, _, _, _| Err(SolveError::Cancelled))).expect("w");
     perform(&mut app, cmds, &mut worker);
     assert!(app.quit, "{:?}", app.message);
     assert!(target.exists());
@@ -1084,7 +1087,8 @@ fn save_as_asks_before_replacing_an_existing_file() {
     let target = dir.path().join("other.toml");
     std::fs::write(&target, "# someone else's deck\n").expect("write");
     let (tx, _rx) = mpsc::channel();
-    let mut worker = Worker::spawn(tx, Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut worker =
+        Worker::spawn(tx, Arc::new(|_, _, _, _| Err(SolveError::Cancelled))).expect("w");
     let mut app = deck_app();
     let type_target = |app: &mut App| {
         app.handle(ch('S'));
@@ -1180,8 +1184,11 @@ fn signal_quits_without_asking() {
 #[test]
 fn run_loop_leaves_on_a_signal() {
     let (tx, rx) = mpsc::channel();
-    let mut worker =
-        Worker::spawn(tx.clone(), Arc::new(|_, _, _| Err(SolveError::Cancelled))).expect("w");
+    let mut worker = Worker::spawn(
+        tx.clone(),
+        Arc::new(|_, _, _, _| Err(SolveError::Cancelled)),
+    )
+    .expect("w");
     let mut terminal = Terminal::new(TestBackend::new(80, 24)).expect("backend");
     let mut app = deck_app();
     app.saved_text = String::new(); // unsaved
@@ -1569,4 +1576,89 @@ fn system_docs_hold_the_keys_tables() {
             "{doc} does not hold the output of `rollbench keys --type {id}`"
         );
     }
+}
+
+/// The ball's Skid pane fills as the worker solves (issue 16: "Skid … filled in
+/// progressively by the worker"). With the pane on screen the job asks for chart 0 to be
+/// streamed; the real worker sends it after every speed the skidding search solves (the
+/// search runs before the ball dynamics) and then the solution. Checked: at least the
+/// 30 bracketing speeds arrive, each with one more point than the last, all before the
+/// solution; the last streamed chart is the solution's (exact: the same samples); the
+/// screen shows the partial chart under a "searching" title while the job runs and the
+/// solution's title once it lands; a stale generation's chart is ignored.
+#[test]
+fn tui_ball_skid_chart_streams_while_the_search_runs() {
+    let deck =
+        DeckDoc::parse(include_str!("../../decks/chen_b.toml"), "decks/chen_b.toml").expect("deck");
+    let mut app = App::new(deck, Some(PathBuf::from("decks/chen_b.toml")));
+    app.handle(AppEvent::Resize(80, 24));
+    app.focus = Pane::Chart(0);
+    let job = app
+        .start()
+        .into_iter()
+        .find_map(|c| match c {
+            Command::Solve(j) => Some(*j),
+            _ => None,
+        })
+        .expect("a solve");
+    assert_eq!(job.detail.stream_chart, Some(0));
+    let generation = job.generation;
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, session_solver()).expect("spawn");
+    worker.submit(job);
+    let mut partials = Vec::new();
+    let solved = loop {
+        match rx
+            .recv_timeout(Duration::from_secs(30))
+            .expect("worker answers")
+        {
+            AppEvent::ChartProgress {
+                generation: g,
+                chart_index,
+                chart,
+            } => {
+                assert_eq!((g, chart_index), (generation, 0));
+                partials.push(chart);
+            }
+            e @ AppEvent::Solved { .. } => break e,
+            other => panic!("unexpected {other:?}"),
+        }
+    };
+    drop(worker);
+    assert!(partials.len() >= 31, "{}", partials.len());
+    let sizes: Vec<usize> = partials.iter().map(|c| c.series[0].points.len()).collect();
+    // One more point per speed, then the finished chart (as many points as the last).
+    for (k, w) in sizes.windows(2).enumerate() {
+        let last = k + 2 == sizes.len();
+        assert!(w[1] == w[0] + 1 || (last && w[1] == w[0]), "{sizes:?}");
+    }
+    let AppEvent::Solved {
+        outcome: Ok(view), ..
+    } = &solved
+    else {
+        panic!("solve failed: {solved:?}");
+    };
+    assert_eq!(**partials.last().expect("partials"), view.charts[0]);
+    // On screen: the partial chart while the job runs, the solution's afterwards.
+    app.handle(AppEvent::ChartProgress {
+        generation: generation - 1, // stale: ignored
+        chart_index: 0,
+        chart: Arc::clone(&partials[3]),
+    });
+    assert!(app.streamed_chart(0).is_none());
+    app.handle(AppEvent::ChartProgress {
+        generation,
+        chart_index: 0,
+        chart: Arc::clone(&partials[5]),
+    });
+    assert_eq!(app.streamed_chart(0), Some(&*partials[5]));
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(
+        screen.contains("searching for the skidding speed"),
+        "{screen}"
+    );
+    app.handle(solved);
+    assert!(app.streamed_chart(0).is_none());
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(screen.contains("skidding from"), "{screen}");
 }

@@ -321,12 +321,18 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
         [-xmax, xmax]
     };
     ChartSeries {
-        title: c.title.clone(),
+        title: c.title_in(u).to_string(),
         x_label: c.x.display.header(c.x.label, u),
         y_label: c.y.display.header(c.y.label, u),
         series,
-        x_bounds: c.x.bounds.unwrap_or(x_auto),
-        y_bounds: c.y.bounds.unwrap_or([0.0, nice_ceiling(ymax)]),
+        // Bounds are given in SI, like the points.
+        x_bounds: c
+            .x
+            .bounds
+            .map_or(x_auto, |b| b.map(|v| c.x.display.convert(v, u))),
+        y_bounds: c.y.bounds.map_or([0.0, nice_ceiling(ymax)], |b| {
+            b.map(|v| c.y.display.convert(v, u))
+        }),
     }
 }
 

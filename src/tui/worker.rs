@@ -11,7 +11,7 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Arc;
 use std::thread::{self, JoinHandle};
 
-use crate::bearings::view::View;
+use crate::bearings::view::{Chart, View};
 use crate::bearings::{Case, Detail, Session, SolveError};
 use crate::numerics::cancel::Cancel;
 use crate::verify::sweep::run_plan;
@@ -24,8 +24,14 @@ pub const SOLVER_THREAD: &str = "solver";
 /// The function the worker calls: the deck's system's session in the app, anything in
 /// tests. It returns the solution's view (built on the solver thread, so the UI thread
 /// only draws).
-pub type Solver =
-    Arc<dyn Fn(&dyn Case, Detail, &AtomicBool) -> Result<View, SolveError> + Send + Sync>;
+///
+/// The last argument receives chart `detail.stream_chart` as it grows
+/// ([`Session::solve_streaming`]); a solver that streams nothing never calls it.
+pub type Solver = Arc<
+    dyn Fn(&dyn Case, Detail, &AtomicBool, &mut dyn FnMut(usize, Chart)) -> Result<View, SolveError>
+        + Send
+        + Sync,
+>;
 
 /// The real solvers: one [`Session`] per bearing system, kept across jobs so an edit
 /// re-runs only the stages whose inputs it changed (only the solver thread calls it; the
@@ -34,7 +40,7 @@ pub type Solver =
 pub fn session_solver() -> Solver {
     type Sessions = Vec<(&'static str, Box<dyn Session>)>;
     let sessions: Arc<std::sync::Mutex<Sessions>> = Arc::default();
-    Arc::new(move |case, detail, cancel| {
+    Arc::new(move |case, detail, cancel, on_chart| {
         let mut guard = match sessions.lock() {
             Ok(g) => g,
             Err(poisoned) => {
@@ -60,11 +66,13 @@ pub fn session_solver() -> Solver {
         // The status line's time is the solve as the user waited for it, measured here
         // for every system alike (a system's own counters may not time themselves).
         let start = std::time::Instant::now();
-        session.solve(case, detail, &Cancel::new(cancel)).map(|s| {
-            let mut view = s.view();
-            view.stats.wall_time_s = start.elapsed().as_secs_f64();
-            view
-        })
+        session
+            .solve_streaming(case, detail, &Cancel::new(cancel), on_chart)
+            .map(|s| {
+                let mut view = s.view();
+                view.stats.wall_time_s = start.elapsed().as_secs_f64();
+                view
+            })
     })
 }
 
@@ -144,7 +152,18 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             detail,
             sweep,
         } = &job.job;
-        let outcome = catch_unwind(AssertUnwindSafe(|| solver(&**case, *detail, &job.cancel)));
+        // A chart the session streams (the ball's Skid chart) goes to the UI as it grows;
+        // a send to a closed UI is noticed after the solve.
+        let mut on_chart = |n: usize, chart: Chart| {
+            let _ = events.send(AppEvent::ChartProgress {
+                generation: *generation,
+                chart_index: n,
+                chart: Arc::new(chart),
+            });
+        };
+        let outcome = catch_unwind(AssertUnwindSafe(|| {
+            solver(&**case, *detail, &job.cancel, &mut on_chart)
+        }));
         if job.cancel.load(Ordering::Acquire) {
             continue; // superseded while solving: stale
         }
@@ -167,7 +186,7 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
         let plan = sweep.and_then(|n| case.system().sweep_plan(n, &**case));
         if let (true, Some(n), Some(plan)) = (solved, *sweep, plan) {
             let mut solve = |c: &dyn Case| match catch_unwind(AssertUnwindSafe(|| {
-                solver(c, Detail::default(), &job.cancel)
+                solver(c, Detail::default(), &job.cancel, &mut |_, _| {})
             })) {
                 Ok(r) => r,
                 Err(p) => Err(SolveError::Stage {

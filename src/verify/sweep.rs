@@ -408,10 +408,7 @@ fn solve_point(
     let options = RunOptions {
         skip_transient: true,
     };
-    let detail = Detail {
-        trace_element: None,
-        transient: false,
-    };
+    let detail = Detail::default();
     let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| match session {
         Some(s) => s
             .solve(case, detail, &Cancel::NONE)

@@ -107,6 +107,10 @@ pub struct SkidThreshold {
     pub samples: Vec<(f64, f64, f64)>,
 }
 
+/// One speed of the skidding search: (relative ring speed rad/s, |M_g| N·m, resisting
+/// moment N·m) of the ball nearest to skidding.
+pub type SkidSample = (f64, f64, f64);
+
 /// A solved case.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BallAnalysis {
@@ -384,6 +388,19 @@ pub fn skid_threshold(
     axial: Axial,
     cancel: Cancel,
 ) -> Result<SkidThreshold, BallError> {
+    skid_threshold_streaming(input, geom, axial, cancel, &mut |_| {})
+}
+
+/// [`skid_threshold`], calling `on_sample` with every speed solved so far (ascending, as
+/// [`SkidThreshold::samples`]) after each load solve: the workbench's Skid pane grows
+/// with it. Only reads: the threshold is the same.
+pub fn skid_threshold_streaming(
+    input: &BallInput,
+    geom: &BallGeometry,
+    axial: Axial,
+    cancel: Cancel,
+    on_sample: &mut dyn FnMut(&[SkidSample]),
+) -> Result<SkidThreshold, BallError> {
     let mu = input.traction.curve().max_mu();
     let limit = input.dynamics.skid_search_limit_rad_s;
     let (_, wi, wo) = speed_basis(input);
@@ -395,6 +412,7 @@ pub fn skid_threshold(
         let l = load_distribution::solve(geom, &c, cancel)?;
         let (margin, mg, mr) = worst(mu, geom, &l);
         samples.push((n, mg, mr));
+        on_sample(&sorted(samples.clone()));
         Ok(margin)
     };
     const SAMPLES: usize = 30;
@@ -562,6 +580,19 @@ pub fn analyse_traced(
     cancel: Cancel,
     trace_ball: Option<usize>,
 ) -> Result<BallAnalysis, BallError> {
+    analyse_streaming(input, cancel, trace_ball, &mut |_| {})
+}
+
+/// [`analyse_traced`], calling `on_skid_sample` with the skidding search's speeds solved
+/// so far after each of them ([`skid_threshold_streaming`]; the workbench's Skid pane).
+/// The search runs before the ball dynamics, which it does not depend on, so the pane
+/// fills before a long time simulation ends. The analysis is the same.
+pub fn analyse_streaming(
+    input: &BallInput,
+    cancel: Cancel,
+    trace_ball: Option<usize>,
+    on_skid_sample: &mut dyn FnMut(&[SkidSample]),
+) -> Result<BallAnalysis, BallError> {
     let (input, rheology_contact) = resolve_traction(input, cancel)?;
     let input: &BallInput = &input;
     input
@@ -638,6 +669,7 @@ pub fn analyse_traced(
         });
     }
     let race_control_heat: f64 = balls.iter().map(|b| b.heat_w).sum();
+    let skid = skid_threshold_streaming(input, &geom, axial, cancel, on_skid_sample)?;
     let dynamics = match input.dynamics.method {
         Method::RaceControl => None,
         Method::QuasiStatic | Method::TimeSimulation => {
@@ -648,7 +680,6 @@ pub fn analyse_traced(
             Some(d)
         }
     };
-    let skid = skid_threshold(input, &geom, axial, cancel)?;
     let total: f64 = balls.iter().map(|b| b.heat_w).sum();
     let lub = &input.lubricant;
     Ok(BallAnalysis {

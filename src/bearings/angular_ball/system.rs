@@ -1,10 +1,12 @@
 //! The angular-contact ball bearing's registration: decks read through the generic deck
 //! form, solved by `analysis`, shown through `view` and `report`.
 
-use super::analysis::{analyse, analyse_traced, BallAnalysis};
+#[cfg(test)]
+use super::analysis::analyse_traced;
+use super::analysis::{analyse, analyse_streaming, BallAnalysis};
 use super::deck::SCHEMA;
 use super::input::BallInput;
-use crate::bearings::view::{PaneKind, PaneSpec, View};
+use crate::bearings::view::{Chart, PaneKind, PaneSpec, View};
 use crate::bearings::{
     BearingSystem, Case, Detail, Fidelity, FidelityGrid, FormCase, RunOptions, Session, Solution,
     SolveError,
@@ -87,7 +89,7 @@ impl BearingSystem for AngularBall {
                 title: "Balls",
             },
             PaneSpec {
-                kind: PaneKind::Chart(0),
+                kind: PaneKind::Chart(SKID_CHART),
                 title: "Skid",
             },
             PaneSpec {
@@ -196,18 +198,43 @@ impl Session for BallSession {
         detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError> {
+        self.solve_streaming(case, detail, cancel, &mut |_, _| {})
+    }
+
+    /// The Skid chart (chart 0) grows as the skidding search solves its speeds: with the
+    /// Skid pane on screen every speed solved is sent at once, before the ball dynamics
+    /// (which may take a tenth of a second under radial load) end.
+    fn solve_streaming(
+        &mut self,
+        case: &dyn Case,
+        detail: Detail,
+        cancel: &Cancel,
+        on_chart: &mut dyn FnMut(usize, Chart),
+    ) -> Result<Box<dyn Solution>, SolveError> {
         let Some(ball) = case.as_any().downcast_ref::<BallCase>() else {
             return Err(SolveError::Stage {
                 stage: SYSTEM_ID,
                 message: format!("not a ball bearing case: {}", case.system().id()),
             });
         };
-        analyse_traced(
+        let stream = detail.stream_chart == Some(SKID_CHART);
+        analyse_streaming(
             &ball.form.value,
             Cancel::from_option(cancel.flag()),
             detail.trace_element,
+            &mut |samples| {
+                if stream {
+                    on_chart(SKID_CHART, super::view::skid_chart_partial(samples));
+                }
+            },
         )
-        .map(|a| Box::new(BallSolution(a)) as Box<dyn Solution>)
+        .map(|a| {
+            if stream {
+                // The finished chart, as the solution's view draws it.
+                on_chart(SKID_CHART, super::view::skid_chart(&a));
+            }
+            Box::new(BallSolution(a)) as Box<dyn Solution>
+        })
         .map_err(|e| match e {
             super::error::BallError::Cancelled => SolveError::Cancelled,
             e => SolveError::Stage {
@@ -217,6 +244,9 @@ impl Session for BallSession {
         })
     }
 }
+
+/// The Skid pane's chart: `PaneKind::Chart(SKID_CHART)`, the first of the view's charts.
+pub const SKID_CHART: usize = 0;
 
 /// A solved ball bearing.
 pub struct BallSolution(pub BallAnalysis);
@@ -335,5 +365,57 @@ mod tests {
                 .value
                 .operating
         );
+    }
+
+    /// Streaming the Skid chart changes no number (the search only reports what it
+    /// solved; moving it before the dynamics changes no input of either): the solution
+    /// streamed is the plain one to the last digit (JSON equal), with a time simulation
+    /// under radial load (every ball different); the stream sends one chart per speed
+    /// the search solved plus the finished one, and nothing when the pane is not asked
+    /// for.
+    #[test]
+    fn streaming_the_skid_chart_changes_no_number() {
+        let case = SYSTEM
+            .load(
+                include_str!("../../../decks/chen_b.toml"),
+                "chen_b",
+                &[
+                    "operating.radial_load=500".to_string(),
+                    "dynamics.method=time-simulation".to_string(),
+                    "dynamics.orbits=1".to_string(),
+                ],
+            )
+            .unwrap();
+        let plain = BallSession
+            .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
+            .unwrap();
+        let mut charts = Vec::new();
+        let streamed = BallSession
+            .solve_streaming(
+                case.as_ref(),
+                Detail {
+                    stream_chart: Some(SKID_CHART),
+                    ..Detail::default()
+                },
+                &Cancel::NONE,
+                &mut |n, c| charts.push((n, c)),
+            )
+            .unwrap();
+        assert_eq!(plain.json(), streamed.json());
+        let samples = streamed.json()["skid"]["curve"].as_array().unwrap().len();
+        assert!(samples > 10, "{samples}"); // 22: the crossing at 5 116 rpm
+        assert_eq!(charts.len(), samples + 1);
+        assert!(charts.iter().all(|(n, _)| *n == SKID_CHART));
+        assert_eq!(charts.last().unwrap().1, streamed.view().charts[SKID_CHART]);
+        let mut none = 0;
+        BallSession
+            .solve_streaming(
+                case.as_ref(),
+                Detail::default(),
+                &Cancel::NONE,
+                &mut |_, _| none += 1,
+            )
+            .unwrap();
+        assert_eq!(none, 0);
     }
 }

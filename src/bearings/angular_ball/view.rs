@@ -6,7 +6,7 @@ use crate::bearings::view::{
     Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, SolveStats, Summary,
     Table, Trace, TraceColumn, TraceFormat, TraceLine, TraceStep, View,
 };
-use crate::units::Quantity;
+use crate::units::{Quantity, Units};
 
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
 
@@ -281,26 +281,41 @@ fn short_label(name: &str) -> &'static str {
 /// against the relative ring speed (rpm) at the speeds the threshold search solved; the
 /// crossing is the threshold.
 pub fn skid_chart(a: &BallAnalysis) -> Chart {
+    let title = match a.skid.speed_rad_s {
+        Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
+        None => "no skidding below the search limit".to_string(),
+    };
+    skid_chart_of(&a.skid.samples, title)
+}
+
+/// The Skid chart while the search is under way (the workbench's worker sends it after
+/// every speed solved, [`super::analysis::skid_threshold_streaming`]): the samples so far
+/// under a title that says the search is not finished.
+pub fn skid_chart_partial(samples: &[(f64, f64, f64)]) -> Chart {
+    let title = format!(
+        "searching for the skidding speed: {} speeds solved",
+        samples.len()
+    );
+    skid_chart_of(samples, title)
+}
+
+fn skid_chart_of(samples: &[(f64, f64, f64)], title: String) -> Chart {
     let pts = |f: fn(&(f64, f64, f64)) -> f64| {
-        a.skid
-            .samples
+        samples
             .iter()
             .map(|s| (s.0 * RPM_PER_RAD_S, f(s)))
             .collect::<Vec<_>>()
     };
     Chart {
-        title: match a.skid.speed_rad_s {
-            Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
-            None => "no skidding below the search limit".to_string(),
-        },
+        title,
         x: ChartAxis {
             label: "speed rpm",
             display: Display::Plain,
             bounds: None,
         },
         y: ChartAxis {
-            label: "moment N·m",
-            display: Display::Plain,
+            label: "moment",
+            display: Display::Moment,
             bounds: None,
         },
         series: vec![
@@ -313,6 +328,7 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
                 points: pts(|s| s.2),
             },
         ],
+        title_us: None,
         per_element: false,
     }
 }
@@ -356,22 +372,28 @@ pub fn traction_chart(a: &BallAnalysis) -> Chart {
             points: vec![(lo, 0.0), (lo, top), (hi, top), (hi, 0.0)],
         });
     }
+    let title = |u: Units| {
+        let name = a.input.traction.preset.name();
+        match band {
+            Some((lo, hi)) => {
+                let sp = Display::Speed;
+                format!(
+                    "{name}: µm {:.4}, contacts slide {:.2}–{:.2} {}",
+                    curve.max_mu(),
+                    sp.convert(lo, u),
+                    sp.convert(hi, u),
+                    sp.unit(u)
+                )
+            }
+            None => format!("{name}: µm {:.4}", curve.max_mu()),
+        }
+    };
     Chart {
-        title: match band {
-            Some((lo, hi)) => format!(
-                "{}: µm {:.4}, contacts slide {lo:.2}–{hi:.2} m/s",
-                a.input.traction.preset.name(),
-                curve.max_mu()
-            ),
-            None => format!(
-                "{}: µm {:.4}",
-                a.input.traction.preset.name(),
-                curve.max_mu()
-            ),
-        },
+        title: title(Units::Si),
+        title_us: Some(title(Units::Us)),
         x: ChartAxis {
-            label: "sliding m/s",
-            display: Display::Plain,
+            label: "sliding",
+            display: Display::Speed,
             bounds: Some([0.0, x_max]),
         },
         y: ChartAxis {
@@ -434,25 +456,36 @@ pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
                     .map(|(b, bd)| (deg(b), heat_at_own_azimuth(bd)))
                     .collect(),
             });
-            format!(
-                "heat per ball: {:.2} W mean ({}, {})",
-                d.total_w() / a.balls.len().max(1) as f64,
-                d.method.name(),
-                if d.steady { "steady" } else { "oscillating" }
-            )
+            let mean = d.total_w() / a.balls.len().max(1) as f64;
+            let state = if d.steady { "steady" } else { "oscillating" };
+            let t = |u: Units| {
+                let p = Display::Power;
+                format!(
+                    "heat per ball: {:.2} {} mean ({}, {state})",
+                    p.convert(mean, u),
+                    p.unit(u),
+                    d.method.name(),
+                )
+            };
+            [t(Units::Si), t(Units::Us)]
         }
-        None => "race-control heat per ball (set dynamics.method)".into(),
+        None => {
+            let t = "race-control heat per ball (set dynamics.method)";
+            [t.to_string(), t.to_string()]
+        }
     };
+    let [title, title_us] = title;
     Chart {
         title,
+        title_us: Some(title_us),
         x: ChartAxis {
             label: "ψ deg",
             display: Display::Plain,
             bounds: Some([0.0, 360.0]),
         },
         y: ChartAxis {
-            label: "heat W",
-            display: Display::Plain,
+            label: "heat",
+            display: Display::Power,
             bounds: None,
         },
         series,
@@ -471,10 +504,9 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
         .iter()
         .enumerate()
         .map(|(j, bd)| Chart {
-            title: format!(
-                "ball {j}: {:.2} W ({:.2} lateral, {:.2} rolling)",
-                bd.heat_w, bd.lateral_w, bd.rolling_w
-            ),
+            // Ball j as the Balls table and the JSON number it (from 0).
+            title: per_ball_title(j, bd, Units::Si),
+            title_us: Some(per_ball_title(j, bd, Units::Us)),
             x: ChartAxis {
                 label: "orbit deg",
                 display: Display::Plain,
@@ -502,6 +534,20 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
             per_element: false,
         })
         .collect()
+}
+
+/// The title of ball `j`'s chart: its heat and the heat's lateral and rolling parts in
+/// display units `u` (the curves below stay in rad/s and W, as their names say: one
+/// axis cannot hold two units).
+fn per_ball_title(j: usize, bd: &super::dynamics::BallDynamics, u: Units) -> String {
+    let p = Display::Power;
+    format!(
+        "ball {j}: {:.2} {} ({:.2} lateral, {:.2} rolling)",
+        p.convert(bd.heat_w, u),
+        p.unit(u),
+        p.convert(bd.lateral_w, u),
+        p.convert(bd.rolling_w, u)
+    )
 }
 
 /// The stepper's trace: one step per fixed-point iteration of the load distribution

@@ -349,6 +349,7 @@ pub fn view(a: &Analysis) -> View {
                 points: load(|r| r.outer.normal_load_n),
             },
         ],
+        title_us: None,
         per_element: true,
     };
     View {
@@ -606,6 +607,7 @@ fn lamina_chart(r: &RollerResult) -> Chart {
             series("inner", |l| l.inner_load_n),
             series("outer", |l| l.outer_load_n),
         ],
+        title_us: None,
         per_element: false,
     }
 }

@@ -216,6 +216,7 @@ pub fn view(a: &Analysis) -> View {
             series("cone P2", &|r| r.cone.load_n),
             series("flange P3", &|r| r.flange_n),
         ],
+        title_us: None,
         per_element: true,
     };
     let element_charts = a
@@ -244,6 +245,7 @@ pub fn view(a: &Analysis) -> View {
                     points: cone.iter().map(|s| (s.x_m, s.load_n_m)).collect(),
                 },
             ],
+            title_us: None,
             per_element: false,
         })
         .collect();
