@@ -416,6 +416,22 @@ impl App {
         }
     }
 
+    /// The selected element's number as the element table shows it (its `index`
+    /// column: the balls count from 0, like their JSON and CSV; the rollers from 1), so
+    /// the stepper and chart labels name the row the table shows; its position + 1 when
+    /// the table has no such column (or before the first solution).
+    pub fn element_number(&self) -> usize {
+        self.view
+            .as_deref()
+            .and_then(|v| v.screen_table())
+            .and_then(|t| {
+                let c = t.columns.iter().position(|c| c.key == "index")?;
+                let v = (*t.rows.get(self.roller_sel)?.get(c)?)?;
+                (v.is_finite() && v >= 0.0).then_some(v as usize)
+            })
+            .unwrap_or(self.roller_sel + 1)
+    }
+
     /// Chart `n` as the running solve has streamed it so far, if it streams that chart
     /// (only while the newest job runs: its solution's chart replaces it).
     pub fn streamed_chart(&self, n: usize) -> Option<&crate::bearings::view::Chart> {

@@ -556,7 +556,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     if !marked.is_empty() {
         datasets.push(
             Dataset::default()
-                .name(format!("{} {}", app.element_name(), app.roller_sel + 1))
+                .name(format!("{} {}", app.element_name(), app.element_number()))
                 .marker(Marker::Block)
                 .graph_type(GraphType::Scatter)
                 .style(Style::default().fg(Color::White))
@@ -858,12 +858,12 @@ fn render_stepper(app: &App, area: Rect, buf: &mut Buffer) {
     let extra = if n > 0 {
         format!(
             " · {element} {} · step {}/{}",
-            app.roller_sel + 1,
+            app.element_number(),
             app.step + 1,
             n
         )
     } else {
-        format!(" · {element} {}", app.roller_sel + 1)
+        format!(" · {element} {}", app.element_number())
     };
     let block = pane_block(app, Pane::Stepper, &extra);
     let inner = block.inner(area);
