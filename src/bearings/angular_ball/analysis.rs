@@ -1067,8 +1067,11 @@ mod skid_curve {
             }
         }
         let chart = crate::bearings::angular_ball::view::skid_chart(&a);
-        assert_eq!(chart.series.len(), 2);
+        assert_eq!(chart.series.len(), 3);
         assert_eq!(chart.series[0].points.len(), s.len());
+        // The third series marks the root: a vertical line at the threshold speed.
+        let x = n * 30.0 / std::f64::consts::PI;
+        assert!(chart.series[2].points.iter().all(|p| p.0 == x));
     }
 }
 

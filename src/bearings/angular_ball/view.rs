@@ -285,7 +285,23 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
         Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
         None => "no skidding below the search limit".to_string(),
     };
-    skid_chart_of(&a.skid.samples, title)
+    let mut chart = skid_chart_of(&a.skid.samples, title);
+    // The crossing marked: a vertical line at the threshold (the root, not a sample),
+    // from 0 to the larger moment there.
+    if let Some(n) = a.skid.speed_rad_s {
+        let top = a
+            .skid
+            .samples
+            .iter()
+            .map(|s| s.1.max(s.2))
+            .fold(0.0, f64::max);
+        let x = n * RPM_PER_RAD_S;
+        chart.series.push(Series {
+            name: "threshold",
+            points: vec![(x, 0.0), (x, top)],
+        });
+    }
+    chart
 }
 
 /// The Skid chart while the search is under way (the workbench's worker sends it after
