@@ -543,7 +543,18 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         return;
     };
     let s = view_model::chart_series(c, app.display_units);
-    let block = pane_block(app, pane, &format!(" · {}{}", s.title, stale_note(app)));
+    // The title in what the border leaves (2 corners, 2 spaces, the pane's name, " · "
+    // and the stale note), clause by clause: never a cut number.
+    let stale = stale_note(app);
+    let room = usize::from(area.width)
+        .saturating_sub(7 + app.pane_title(pane).chars().count() + stale.chars().count());
+    let title = view_model::fit_title(&s.title, room);
+    let extra = if title.is_empty() {
+        stale.to_string()
+    } else {
+        format!(" · {title}{stale}")
+    };
+    let block = pane_block(app, pane, &extra);
     let mut datasets = series_datasets(&s);
     let marked: Vec<(f64, f64)> = if c.per_element {
         s.series

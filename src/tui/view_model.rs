@@ -292,6 +292,49 @@ fn nice_ceiling(v: f64) -> f64 {
     10.0 * p
 }
 
+/// A chart title that fits `room` characters without cutting anything: the whole title,
+/// else its longest leading run of clauses (ending before a ", ", " (" or " · ", with
+/// its parentheses balanced) that fits, else (a title without digits) its leading
+/// whole words and "…", else nothing. A clause holds a number with its
+/// unit ("contacts slide 0.00–2.18 m/s"), so a title is never cut inside one: the pane
+/// border cut "… 2.18 m/s" to "… 2.18 m" at 60 columns.
+pub fn fit_title(title: &str, room: usize) -> String {
+    if title.chars().count() <= room {
+        return title.to_string();
+    }
+    let mut best = "";
+    for sep in [", ", " (", " · "] {
+        for (at, _) in title.match_indices(sep) {
+            let head = &title[..at];
+            let balanced = head.matches('(').count() == head.matches(')').count();
+            if balanced && head.chars().count() <= room && head.len() > best.len() {
+                best = head;
+            }
+        }
+    }
+    if best.is_empty() && !title.chars().any(|c| c.is_ascii_digit()) {
+        // Words only (no number to cut): as many whole words as fit, then "…".
+        let mut head = String::new();
+        for w in title.split_whitespace() {
+            let next = if head.is_empty() {
+                w.to_string()
+            } else {
+                format!("{head} {w}")
+            };
+            if next.chars().count() + 1 > room {
+                break;
+            }
+            head = next;
+        }
+        return if head.is_empty() {
+            head
+        } else {
+            format!("{head}…")
+        };
+    }
+    best.to_string()
+}
+
 /// A view's chart in display units `u`: fixed bounds where the chart gives them, else y
 /// from 0 to a round ceiling of the data and x symmetric about 0.
 pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
@@ -725,5 +768,28 @@ mod tests {
         assert_eq!(fit_number(999_960.0, 0, 5), "1.00M");
         assert_eq!(fit_number(999_960.0, 0, 4), "1.0M");
         assert_eq!(fit_number(1051.8, 1, 4), "1052");
+    }
+}
+
+#[cfg(test)]
+mod fit_title_tests {
+    use super::fit_title;
+
+    /// Whole when it fits; else the longest balanced run of clauses that fits; else
+    /// nothing: never a number or unit cut in two.
+    #[test]
+    fn titles_drop_clauses_not_numbers() {
+        let t = "curve-1: µ_max 0.0540, contacts slide 0.00–2.18 m/s";
+        assert_eq!(fit_title(t, 80), t);
+        assert_eq!(fit_title(t, t.chars().count()), t);
+        assert_eq!(fit_title(t, t.chars().count() - 1), "curve-1: µ_max 0.0540");
+        assert_eq!(fit_title(t, 10), "");
+        let d = "heat per ball: 96.30 W mean (time-simulation, oscillating)";
+        // The ", oscillating)" cut would leave "(time-simulation" open: skipped.
+        assert_eq!(fit_title(d, 55), "heat per ball: 96.30 W mean");
+        assert_eq!(fit_title("no separators at all here", 5), "no…");
+        assert_eq!(fit_title("no separators at all here", 2), "");
+        assert_eq!(fit_title("no separators at all here", 16), "no separators…");
+        assert_eq!(fit_title("roller 12 of many", 12), "");
     }
 }

@@ -394,14 +394,14 @@ pub fn traction_chart(a: &BallAnalysis) -> Chart {
             Some((lo, hi)) => {
                 let sp = Display::Speed;
                 format!(
-                    "{name}: µm {:.4}, contacts slide {:.2}–{:.2} {}",
+                    "{name}: µ_max {:.4}, contacts slide {:.2}–{:.2} {}",
                     curve.max_mu(),
                     sp.convert(lo, u),
                     sp.convert(hi, u),
                     sp.unit(u)
                 )
             }
-            None => format!("{name}: µm {:.4}", curve.max_mu()),
+            None => format!("{name}: µ_max {:.4}", curve.max_mu()),
         }
     };
     Chart {
