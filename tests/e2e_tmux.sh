@@ -208,11 +208,29 @@ keys 2
 wait_for "Balls"
 keys j j
 keys Enter
-wait_for "Stepper · ball 3 · step 1/"
+# Ball 2 (from 0, as the Balls table and the JSON number them) after two steps down.
+wait_for "Stepper · ball 2 · step 1/"
 wait_for "αi,αo deg"
 keys l
 wait_for "step 2/"
+# The Skid pane: the threshold in the title and marked; an edit re-solves it (a lower
+# preload skids earlier) with the pane on screen (the streamed chart, then the solution).
+keys 3
+wait_for "Skid · skidding from 9780 rpm"
+wait_for "threshold"
+keys 1
+keys /
+keys A x i a l Space l o a d Enter
+keys Enter
+keys End BSpace BSpace BSpace BSpace BSpace BSpace 8 0 0 Enter
+wait_for "800 N"
+keys 3
+wait_for "Skid · skidding from"
+wait_for "threshold"
+absent "9780 rpm"
 keys q
+wait_for "Unsaved changes"
+keys y
 wait_for "EXITED:0"
 TARGET="$SESSION"
 
