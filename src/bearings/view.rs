@@ -244,6 +244,10 @@ pub struct Series {
     pub name: &'static str,
     /// Points, SI.
     pub points: Vec<(f64, f64)>,
+    /// The series' own display kind when its y differs from the chart's y axis (a heat
+    /// curve on an angular-speed axis): its values are converted by it and its legend
+    /// names the unit. `None`: the axis's.
+    pub display: Option<Display>,
 }
 
 /// A chart: series against a common x axis.
@@ -483,6 +487,9 @@ pub struct View {
     pub charts: Vec<Chart>,
     /// One chart per element (the load pane's detail view of the selected element).
     pub element_charts: Vec<Chart>,
+    /// The chart pane (`PaneKind::Chart(n)`) whose `c` key swaps in the selected
+    /// element's chart (the rollers' Load pane: 0; the balls' Dynamics pane: 1).
+    pub element_chart_pane: usize,
     /// Bearing-level scalars shown under the element table.
     pub summary: Vec<Summary>,
     /// Key outputs.

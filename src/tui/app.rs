@@ -801,11 +801,9 @@ impl App {
             KeyCode::Char('r') => vec![self.submit()],
             // The chart pane's mode: shown there, so only acted on where it is seen.
             KeyCode::Char('c')
-                if self.visible(Pane::Chart(0))
-                    && self
-                        .view
-                        .as_ref()
-                        .is_some_and(|v| !v.element_charts.is_empty()) =>
+                if self.view.as_ref().is_some_and(|v| {
+                    !v.element_charts.is_empty() && self.visible(Pane::Chart(v.element_chart_pane))
+                }) =>
             {
                 self.chart_laminae = !self.chart_laminae;
                 Vec::new()

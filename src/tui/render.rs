@@ -514,15 +514,16 @@ fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
 /// Series colours, in series order.
 const SERIES_COLOURS: [Color; 4] = [INNER, OUTER, Color::Green, Color::Magenta];
 
-/// The Load pane: the view's bearing chart, or with `c` the selected element's chart.
-/// A chart pane: bearing chart `n` of the view, or for chart 0 with `c` the selected
-/// element's chart.
+/// A chart pane: bearing chart `n` of the view (as streamed while the solve runs, when
+/// the session streams it), or on the view's `element_chart_pane` with `c` the selected
+/// element's chart (a roller's laminae, a ball's motion).
 fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     let pane = Pane::Chart(n);
     // A chart the running solve streams (the ball's skidding search) is drawn as it
     // grows, in place of the last solution's.
-    let streamed = app.streamed_chart(n).filter(|_| !app.chart_laminae);
     let view = app.view.as_deref();
+    let element_mode = app.chart_laminae && view.is_some_and(|v| v.element_chart_pane == n);
+    let streamed = app.streamed_chart(n).filter(|_| !element_mode);
     if view.is_none() && streamed.is_none() {
         let block = pane_block(app, pane, "");
         let inner = block.inner(area);
@@ -532,9 +533,7 @@ fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     }
     let chart = match (streamed, view) {
         (Some(c), _) => Some(c),
-        (None, Some(view)) if app.chart_laminae && n == 0 => {
-            view.element_charts.get(app.roller_sel)
-        }
+        (None, Some(view)) if element_mode => view.element_charts.get(app.roller_sel),
         (None, Some(view)) => view.charts.get(n),
         (None, None) => None,
     };
@@ -584,7 +583,7 @@ fn series_datasets(s: &view_model::ChartSeries) -> Vec<Dataset<'_>> {
         .enumerate()
         .map(|(k, (name, points))| {
             Dataset::default()
-                .name(*name)
+                .name(name.as_str())
                 .marker(Marker::Braille)
                 .graph_type(GraphType::Line)
                 .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
@@ -1094,12 +1093,12 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
                     "^s save",
                 ]),
                 Pane::Elements => vec![format!("jk {el}")],
-                Pane::Chart(_) => {
+                Pane::Chart(n) => {
                     let mut h = vec![format!("jk {el}")];
                     if app
                         .view
                         .as_ref()
-                        .is_some_and(|v| !v.element_charts.is_empty())
+                        .is_some_and(|v| !v.element_charts.is_empty() && v.element_chart_pane == n)
                     {
                         h.push("c chart".into());
                     }

@@ -1662,3 +1662,38 @@ fn tui_ball_skid_chart_streams_while_the_search_runs() {
     let screen = draw(&app, 80, 24).backend().to_string();
     assert!(screen.contains("skidding from"), "{screen}");
 }
+
+/// `c` swaps in the selected element's chart only on the pane that owns the element
+/// charts (the ball's Dynamics pane, `View::element_chart_pane` = 1): on the Skid pane it
+/// does nothing and the footer does not offer it (it used to draw ball 0's motion in the
+/// Skid pane). On Dynamics it shows the ball's chart, whose heat curve is in the display
+/// unit with the unit in its legend (Btu/hr in US).
+#[test]
+fn tui_ball_element_chart_lives_on_the_dynamics_pane() {
+    let text = include_str!("../../decks/chen_b.toml")
+        .replace("method = \"race-control\"", "method = \"time-simulation\"");
+    assert!(text.contains("time-simulation"));
+    let deck = DeckDoc::parse(&text, "decks/chen_b.toml").expect("deck");
+    let mut app = App::new(deck, Some(PathBuf::from("decks/chen_b.toml")));
+    app.handle(AppEvent::Resize(80, 24));
+    let cmds = app.start();
+    run_sync(&mut app, cmds);
+    app.focus = Pane::Chart(0);
+    app.handle(ch('c'));
+    assert!(!app.chart_laminae);
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(
+        screen.contains("Skid ·") && !screen.contains("c chart"),
+        "{screen}"
+    );
+    app.focus = Pane::Chart(1);
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(screen.contains("c chart"), "{screen}");
+    app.handle(ch('c'));
+    assert!(app.chart_laminae);
+    app.handle(ch('u'));
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(screen.contains("Dynamics · ball 0:"), "{screen}");
+    assert!(screen.contains("Btu/hr"), "{screen}");
+    assert!(screen.contains("heat Btu/hr"), "{screen}");
+}

@@ -271,7 +271,7 @@ pub struct ChartSeries {
     /// Y axis label with unit.
     pub y_label: String,
     /// Named series of `(x, y)` points, display units.
-    pub series: Vec<(&'static str, Vec<(f64, f64)>)>,
+    pub series: Vec<(String, Vec<(f64, f64)>)>,
     /// X bounds.
     pub x_bounds: [f64; 2],
     /// Y bounds (0 to a rounded-up maximum).
@@ -338,16 +338,22 @@ pub fn fit_title(title: &str, room: usize) -> String {
 /// A view's chart in display units `u`: fixed bounds where the chart gives them, else y
 /// from 0 to a round ceiling of the data and x symmetric about 0.
 pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
-    let series: Vec<(&'static str, Vec<(f64, f64)>)> = c
+    let series: Vec<(String, Vec<(f64, f64)>)> = c
         .series
         .iter()
         .map(|s| {
+            let yd = s.display.unwrap_or(c.y.display);
             let pts = s
                 .points
                 .iter()
-                .map(|&(x, y)| (c.x.display.convert(x, u), c.y.display.convert(y, u)))
+                .map(|&(x, y)| (c.x.display.convert(x, u), yd.convert(y, u)))
                 .collect();
-            (s.name, pts)
+            // A series in its own unit names it in the legend.
+            let name = match s.display {
+                Some(d) if !d.unit(u).is_empty() => format!("{} {}", s.name, d.unit(u)),
+                _ => s.name.to_string(),
+            };
+            (name, pts)
         })
         .collect();
     let ymax = series
@@ -482,7 +488,10 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
             title: p.plan.title.clone(),
             x_label,
             y_label,
-            series,
+            series: series
+                .into_iter()
+                .map(|(n, v)| (n.to_string(), v))
+                .collect(),
             x_bounds,
             y_bounds,
         },
@@ -791,5 +800,53 @@ mod fit_title_tests {
         assert_eq!(fit_title("no separators at all here", 2), "");
         assert_eq!(fit_title("no separators at all here", 16), "no separators…");
         assert_eq!(fit_title("roller 12 of many", 12), "");
+    }
+}
+
+#[cfg(test)]
+mod series_display_tests {
+    use super::chart_series;
+    use crate::bearings::view::{Chart, ChartAxis, Display, Series};
+    use crate::units::{Units, BTU_PER_HOUR_PER_WATT};
+
+    /// A series with its own display kind (the ball's heat on an ω_t axis) converts by
+    /// it and names its unit in the legend; the axis's series and the bounds convert by
+    /// the axis (exact arithmetic: one multiplication each).
+    #[test]
+    fn a_series_in_its_own_unit_converts_and_names_it() {
+        let c = Chart {
+            title: "t".into(),
+            title_us: None,
+            x: ChartAxis {
+                label: "x",
+                display: Display::Plain,
+                bounds: None,
+            },
+            y: ChartAxis {
+                label: "y",
+                display: Display::Plain,
+                bounds: None,
+            },
+            series: vec![
+                Series {
+                    name: "ω_t rad/s",
+                    points: vec![(1.0, 100.0)],
+                    display: None,
+                },
+                Series {
+                    name: "heat",
+                    points: vec![(1.0, 10.0)],
+                    display: Some(Display::Power),
+                },
+            ],
+            per_element: false,
+        };
+        let si = chart_series(&c, Units::Si);
+        assert_eq!(si.series[1].0, "heat W");
+        assert_eq!(si.series[1].1, vec![(1.0, 10.0)]);
+        let us = chart_series(&c, Units::Us);
+        assert_eq!(us.series[0], ("ω_t rad/s".to_string(), vec![(1.0, 100.0)]));
+        assert_eq!(us.series[1].0, "heat Btu/hr");
+        assert_eq!(us.series[1].1, vec![(1.0, 10.0 * BTU_PER_HOUR_PER_WATT)]);
     }
 }

@@ -191,6 +191,7 @@ pub fn view(a: &BallAnalysis) -> View {
         }],
         charts: vec![skid_chart(a), dynamics_chart(a), traction_chart(a)],
         element_charts: ball_charts(a),
+        element_chart_pane: 1,
         summary: vec![
             Summary {
                 label: "cage rpm",
@@ -297,6 +298,7 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
             .fold(0.0, f64::max);
         let x = n * RPM_PER_RAD_S;
         chart.series.push(Series {
+            display: None,
             name: "threshold",
             points: vec![(x, 0.0), (x, top)],
         });
@@ -336,10 +338,12 @@ fn skid_chart_of(samples: &[(f64, f64, f64)], title: String) -> Chart {
         },
         series: vec![
             Series {
+                display: None,
                 name: "gyroscopic moment",
                 points: pts(|s| s.1),
             },
             Series {
+                display: None,
                 name: "resisting torque",
                 points: pts(|s| s.2),
             },
@@ -379,11 +383,13 @@ pub fn traction_chart(a: &BallAnalysis) -> Chart {
     let points: Vec<(f64, f64)> = xs.iter().map(|&u| (u, curve.mu(u))).collect();
     let top = curve.max_mu().max(1e-3) * 1.1;
     let mut series = vec![Series {
+        display: None,
         name: "µ(u_s)",
         points,
     }];
     if let Some((lo, hi)) = band {
         series.push(Series {
+            display: None,
             name: "sliding band",
             points: vec![(lo, 0.0), (lo, top), (hi, top), (hi, 0.0)],
         });
@@ -451,6 +457,7 @@ fn heat_at_own_azimuth(bd: &super::dynamics::BallDynamics) -> f64 {
 pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
     let deg = |b: &BallResult| b.azimuth_rad.to_degrees();
     let mut series = vec![Series {
+        display: None,
         name: "race control",
         points: a
             .balls
@@ -461,6 +468,7 @@ pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
     let title = match &a.dynamics {
         Some(d) => {
             series.push(Series {
+                display: None,
                 name: match d.method {
                     super::input::Method::TimeSimulation => "time simulation",
                     _ => "quasi-static",
@@ -529,12 +537,13 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
                 bounds: None,
             },
             y: ChartAxis {
-                label: "ω_t rad/s, heat W",
+                label: "ω_t rad/s · heat",
                 display: Display::Plain,
                 bounds: None,
             },
             series: vec![
                 Series {
+                    display: None,
                     name: "ω_t rad/s",
                     points: bd
                         .history
@@ -543,7 +552,8 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
                         .collect(),
                 },
                 Series {
-                    name: "heat W",
+                    display: Some(Display::Power),
+                    name: "heat",
                     points: bd.history.iter().map(|s| (s.orbit_deg, s.heat_w)).collect(),
                 },
             ],
@@ -553,8 +563,8 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
 }
 
 /// The title of ball `j`'s chart: its heat and the heat's lateral and rolling parts in
-/// display units `u` (the curves below stay in rad/s and W, as their names say: one
-/// axis cannot hold two units).
+/// display units `u` (the heat curve below is in the display unit too, named in its
+/// legend: `Series::display`).
 fn per_ball_title(j: usize, bd: &super::dynamics::BallDynamics, u: Units) -> String {
     let p = Display::Power;
     format!(

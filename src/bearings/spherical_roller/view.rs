@@ -341,10 +341,12 @@ pub fn view(a: &Analysis) -> View {
         },
         series: vec![
             Series {
+                display: None,
                 name: "inner",
                 points: load(|r| r.inner.normal_load_n),
             },
             Series {
+                display: None,
                 name: "outer",
                 points: load(|r| r.outer.normal_load_n),
             },
@@ -368,6 +370,7 @@ pub fn view(a: &Analysis) -> View {
         ],
         charts: vec![load_chart],
         element_charts: a.load.rollers.iter().map(lamina_chart).collect(),
+        element_chart_pane: 0,
         summary: vec![
             Summary {
                 label: "axial deflection",
@@ -577,6 +580,7 @@ fn thermal(a: &Analysis) -> Option<ThermalResults> {
 /// a hard-loaded end low.
 fn lamina_chart(r: &RollerResult) -> Chart {
     let series = |name, load: fn(&LaminaResult) -> f64| Series {
+        display: None,
         name,
         points: r
             .laminae

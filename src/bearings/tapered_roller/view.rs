@@ -191,6 +191,7 @@ pub fn view(a: &Analysis) -> View {
         s.atan2(c).to_degrees().rem_euclid(360.0)
     };
     let series = |name: &'static str, f: &dyn Fn(&super::roller::RollerSolution) -> f64| Series {
+        display: None,
         name,
         points: sol
             .rollers
@@ -237,10 +238,12 @@ pub fn view(a: &Analysis) -> View {
             },
             series: vec![
                 Series {
+                    display: None,
                     name: "cup",
                     points: cup.iter().map(|s| (s.x_m, s.load_n_m)).collect(),
                 },
                 Series {
+                    display: None,
                     name: "cone",
                     points: cone.iter().map(|s| (s.x_m, s.load_n_m)).collect(),
                 },
@@ -364,6 +367,7 @@ pub fn view(a: &Analysis) -> View {
         }],
         charts: vec![load_chart],
         element_charts,
+        element_chart_pane: 0,
         summary,
         key_outputs,
         trace: None,
