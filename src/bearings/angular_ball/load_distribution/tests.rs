@@ -286,3 +286,114 @@ fn force_held_preload_lets_the_inner_angle_run_up() {
     assert!((s.axial_force_n - 1000.0).abs() < 1e-6);
     assert!(deg(b.inner.angle_rad) > 75.0, "{}", deg(b.inner.angle_rad));
 }
+
+/// The mirror symmetry of [`Layout`] is exact: solving only the balls at ψ ≤ π (each
+/// standing for its mirror at −ψ) gives every ball's contact loads, angles, centre radius
+/// and race-control speeds, and the ring's displacement and forces, as solving all Z
+/// balls does, to 1e-12 relative (the two differ only by the rounding of cos(2πj/Z)
+/// against cos(2π(Z − j)/Z) and the order of the ring sums: round-off, amplified by the
+/// fixed point's 1e-10 load criterion at most to this), with the same number of
+/// fixed-point iterations. Cases: Bearing B at 9 500 rpm with 500 N radial (preload held
+/// as displacement), Bearing A at 3 000 rpm with 1000 N axial force and 500 N radial, and
+/// Bearing A at 12 000 rpm with 3 000 N radial on 1000 N axial force, where the inner
+/// contacts of the balls opposite the load open (the outer-race-alone path).
+#[test]
+fn mirror_symmetry_equals_the_full_solve() {
+    let b = geom(&BallInput::chen_b());
+    let a = geom(&BallInput::chen_a());
+    let cases = [
+        (
+            &b,
+            conditions(
+                9_500.0,
+                Axial::Displacement(rest_displacement(&b)),
+                500.0,
+                GyroscopicFriction::Resisting,
+            ),
+        ),
+        (
+            &a,
+            conditions(
+                3_000.0,
+                Axial::Force(1000.0),
+                500.0,
+                GyroscopicFriction::Resisting,
+            ),
+        ),
+        (
+            &a,
+            conditions(
+                12_000.0,
+                Axial::Force(1000.0),
+                3000.0,
+                GyroscopicFriction::Resisting,
+            ),
+        ),
+    ];
+    let mut opened = false;
+    for (g, c) in cases {
+        let half = solve(g, &c, Cancel::NONE).unwrap();
+        let full = solve_recorded(g, &c, Cancel::NONE, &mut None, false).unwrap();
+        let rel = |x: f64, y: f64, scale: f64| (x - y).abs() / scale.max(1e-300);
+        let fscale = c.radial_load_n.max(1000.0);
+        assert!(
+            rel(
+                half.axial_deflection_m,
+                full.axial_deflection_m,
+                full.axial_deflection_m.abs()
+            ) < 1e-12
+        );
+        assert!(
+            rel(
+                half.radial_deflection_m,
+                full.radial_deflection_m,
+                full.radial_deflection_m.abs()
+            ) < 1e-12
+        );
+        assert!(rel(half.axial_force_n, full.axial_force_n, fscale) < 1e-12);
+        assert!(rel(half.radial_force_n, full.radial_force_n, fscale) < 1e-12);
+        assert_eq!(
+            half.stats.fixed_point_iterations,
+            full.stats.fixed_point_iterations
+        );
+        assert_eq!(half.balls.len(), 20);
+        let qmax = full
+            .balls
+            .iter()
+            .map(|b| b.equilibrium.inner.load_n.max(b.equilibrium.outer.load_n))
+            .fold(0.0, f64::max);
+        for (h, f) in half.balls.iter().zip(&full.balls) {
+            let (he, fe) = (h.equilibrium, f.equilibrium);
+            assert_eq!(h.azimuth_rad, f.azimuth_rad);
+            opened |= fe.inner.load_n == 0.0;
+            for (x, y) in [
+                (he.inner.load_n, fe.inner.load_n),
+                (he.outer.load_n, fe.outer.load_n),
+            ] {
+                assert!(rel(x, y, qmax) < 1e-12, "{x} vs {y}");
+            }
+            for (x, y) in [
+                (he.inner.angle_rad, fe.inner.angle_rad),
+                (he.outer.angle_rad, fe.outer.angle_rad),
+            ] {
+                assert!((x - y).abs() < 1e-12, "{x} vs {y}");
+            }
+            assert!(rel(he.centre_radius_m, fe.centre_radius_m, fe.centre_radius_m) < 1e-12);
+            assert!(
+                rel(
+                    h.kinematics.cage_rad_s,
+                    f.kinematics.cage_rad_s,
+                    f.kinematics.cage_rad_s.abs()
+                ) < 1e-12
+            );
+            assert!(
+                rel(
+                    h.gyroscopic_moment_nm,
+                    f.gyroscopic_moment_nm,
+                    f.gyroscopic_moment_nm.abs().max(1e-30)
+                ) < 1e-12
+            );
+        }
+    }
+    assert!(opened, "no case opened an inner contact");
+}
