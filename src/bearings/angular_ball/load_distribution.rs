@@ -54,7 +54,7 @@ use super::input::{GyroscopicFriction, RaceControl};
 use super::race_control::{controlling_race, race_control, KinematicsInput, RaceKinematics};
 use crate::numerics::cancel::Cancel;
 use crate::numerics::newton::{Backtracking, Newton, NewtonSystem, Termination, TrustRegion};
-use crate::physics::contact::point::Race;
+use crate::physics::contact::point::{HertzPointContact, Race};
 
 /// Per-ball quantities held fixed during one load solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -809,6 +809,9 @@ fn solve_warm(
     let mut warm: Vec<Option<Vector2<f64>>> =
         start.map_or_else(|| vec![None; z], |w| w.balls.clone());
     let mut stats = LoadStats::default();
+    // Each distinct ball's Hertz contacts of the last fixed-point iteration.
+    let mut contacts: Vec<Option<(HertzPointContact, HertzPointContact)>> =
+        vec![None; layout.len()];
     const MAX_FIXED_POINT: usize = 200;
     let mut change = f64::INFINITY;
     for it in 0..MAX_FIXED_POINT {
@@ -817,10 +820,27 @@ fn solve_warm(
         }
         let n = layout.len();
         let mut params = Vec::with_capacity(n);
+        let mut last: Option<((f64, f64), (HertzPointContact, HertzPointContact))> = None;
         for k in 0..n {
             let (ai, ao) = angles[k];
-            let ci = geom.contact(Race::Inner, ai)?;
-            let co = geom.contact(Race::Outer, ao)?;
+            // The Hertz contacts at this iteration's angles. The same angles as the last
+            // ball's (every ball of a fresh solve starts at α₀): the same contacts.
+            // Otherwise the κ iteration starts from this ball's κ of the last fixed-point
+            // iteration (or the last ball's): the same contact to round-off, in one or
+            // two Newton steps instead of five or six (`EllipseShape::solve_near`).
+            let (ci, co) = match (last, contacts[k]) {
+                (Some((a, c)), _) if a == (ai, ao) => c,
+                (_, Some((pi, po))) | (Some((_, (pi, po))), None) => (
+                    geom.contact_near(Race::Inner, ai, &pi)?,
+                    geom.contact_near(Race::Outer, ao, &po)?,
+                ),
+                (None, None) => (
+                    geom.contact(Race::Inner, ai)?,
+                    geom.contact(Race::Outer, ao)?,
+                ),
+            };
+            contacts[k] = Some((ci, co));
+            last = Some(((ai, ao), (ci, co)));
             let (qi, qo) = loads[k];
             let control = match cond.race_control {
                 RaceControl::Outer => Race::Outer,
@@ -1007,7 +1027,7 @@ fn finish(
             RaceControl::Auto => {
                 let ci = geom.contact(Race::Inner, ai)?;
                 let co = geom.contact(Race::Outer, ao)?;
-                let semi = |c: &crate::physics::contact::point::HertzPointContact, q: f64| {
+                let semi = |c: &HertzPointContact, q: f64| {
                     c.solve(q).map(|p| p.semi_major_m).unwrap_or(0.0)
                 };
                 controlling_race(
