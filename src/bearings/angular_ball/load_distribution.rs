@@ -12,6 +12,15 @@
 //! * inner: v = (I − O') − X, L_i = |v|, δ_i = L_i − (f_i − ½)D, (sin α_i, cos α_i) = v/L_i;
 //! * Q = K δ^{3/2} (3-2) with K of App. A at the current contact angle.
 //!
+//! The angles are whatever the geometry gives, 90° and beyond included: the groove is a
+//! full torus here (no shoulder). A contact angle past 90° means the ball centre lies
+//! radially beyond the groove centre of curvature; it happens for Bearing B with the
+//! preload held as a force at 9 500 rpm (α_i = 90.76°: the centrifugal force pushes the
+//! ball out until L_o cos α_o exceeds A cos α₀, which for B's grooves equals (f_o − ½)D;
+//! the numbers and why it is not the friction term are in the test
+//! `force_held_preload_lets_the_inner_angle_run_up`). A real ring's shoulder would end
+//! below such a contact; the displacement-held preload (the default) keeps α_i at 68.9°.
+//!
 //! # Ball equilibrium (2-5a, b) in vector form
 //! The inner race pushes the ball along u_i = v/L_i, the outer along −u_o. The friction
 //! that supplies the gyroscopic moment M_g = J ω_m ω_r (along the rolling direction t)
