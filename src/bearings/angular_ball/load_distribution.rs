@@ -12,6 +12,15 @@
 //! * inner: v = (I − O') − X, L_i = |v|, δ_i = L_i − (f_i − ½)D, (sin α_i, cos α_i) = v/L_i;
 //! * Q = K δ^{3/2} (3-2) with K of App. A at the current contact angle.
 //!
+//! The angles are whatever the geometry gives, 90° and beyond included: the groove is a
+//! full torus here (no shoulder). A contact angle past 90° means the ball centre lies
+//! radially beyond the groove centre of curvature; it happens for Bearing B with the
+//! preload held as a force at 9 500 rpm (α_i = 90.76°: the centrifugal force pushes the
+//! ball out until L_o cos α_o exceeds A cos α₀, which for B's grooves equals (f_o − ½)D;
+//! the numbers and why it is not the friction term are in the test
+//! `force_held_preload_lets_the_inner_angle_run_up`). A real ring's shoulder would end
+//! below such a contact; the displacement-held preload (the default) keeps α_i at 68.9°.
+//!
 //! # Ball equilibrium (2-5a, b) in vector form
 //! The inner race pushes the ball along u_i = v/L_i, the outer along −u_o. The friction
 //! that supplies the gyroscopic moment M_g = J ω_m ω_r (along the rolling direction t)
@@ -54,7 +63,7 @@ use super::input::{GyroscopicFriction, RaceControl};
 use super::race_control::{controlling_race, race_control, KinematicsInput, RaceKinematics};
 use crate::numerics::cancel::Cancel;
 use crate::numerics::newton::{Backtracking, Newton, NewtonSystem, Termination, TrustRegion};
-use crate::physics::contact::point::Race;
+use crate::physics::contact::point::{HertzPointContact, Race};
 
 /// Per-ball quantities held fixed during one load solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,6 +97,9 @@ pub struct ContactLoad {
 }
 
 impl ContactLoad {
+    /// The contact for the centre-to-centre vector `v`, its angle left NaN: the ball
+    /// Newton evaluates this many times and needs only `unit`; the angle (an atan2, a
+    /// tenth of the load solve's time) is set once on the answer by [`Self::with_angle`].
     fn new(v: Vector2<f64>, offset: f64, stiffness: f64) -> Self {
         let length = v.norm();
         let unit = v / length;
@@ -96,10 +108,18 @@ impl ContactLoad {
         ContactLoad {
             load_n: stiffness * d * d.sqrt(),
             stiffness_n_per_m: 1.5 * stiffness * d.sqrt(),
-            angle_rad: unit[0].atan2(unit[1]),
+            angle_rad: f64::NAN,
             deflection_m: deflection,
             unit,
             length,
+        }
+    }
+
+    /// This contact with its angle α = atan2(sin α, cos α) of the unit vector.
+    fn with_angle(self) -> Self {
+        ContactLoad {
+            angle_rad: self.unit[0].atan2(self.unit[1]),
+            ..self
         }
     }
 
@@ -190,12 +210,75 @@ fn reason(t: &Termination) -> &'static str {
     }
 }
 
+/// The ball resting on the outer race alone, its inner contact open: the outer contact
+/// force balances the centrifugal force through (I + µR), Q_o u_o = F_c (I + µR)⁻¹ e_r, a
+/// fixed direction, so only the approach δ_o is unknown and K δ_o^{3/2} =
+/// m·c·(R_O' + (f_o − ½)D + δ_o)·d_r is solved by substitution (its right side hardly
+/// depends on δ_o). Exact, and the only robust way: Newton sees a ball held by a nearly
+/// tangential-free contact as nearly singular. It depends on the ball's parameters alone,
+/// not on where the inner ring is, so the ring solve forms it once per fixed-point
+/// iteration rather than in every ball solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OuterAlone {
+    /// X = B − O', m.
+    position: Vector2<f64>,
+    /// δ_o, m.
+    approach_m: f64,
+}
+
+impl OuterAlone {
+    /// `None` without centrifugal force (nothing holds the ball on the outer race) or
+    /// when (I + µR) is singular.
+    pub fn new(geom: &BallGeometry, p: &BallParams) -> Option<Self> {
+        // (Written so that a NaN coefficient, too, gives None.)
+        if !matches!(
+            p.centrifugal_coeff.partial_cmp(&0.0),
+            Some(std::cmp::Ordering::Greater)
+        ) {
+            return None;
+        }
+        let inv = friction_matrix(p.friction).try_inverse()?;
+        let w = inv * Vector2::new(0.0, 1.0);
+        let (m, dir) = (w.norm(), w / w.norm());
+        let mut d_o = 0.0f64;
+        for _ in 0..60 {
+            let fc = p.centrifugal_coeff
+                * (geom.outer_centre_radius_m + (geom.outer_offset_m + d_o) * dir[1]);
+            let next = (m * fc / p.outer_stiffness).max(0.0).powf(2.0 / 3.0);
+            let done = (next - d_o).abs() <= 1e-15 * next;
+            d_o = next;
+            if done {
+                break;
+            }
+        }
+        Some(OuterAlone {
+            position: dir * (geom.outer_offset_m + d_o),
+            approach_m: d_o,
+        })
+    }
+}
+
 /// Solve one ball's equilibrium (2-5a, b) for the groove-centre vector `centres`
 /// (I − O', m), from `warm` if given. `tolerance_n` on the largest force residual.
 pub fn solve_ball(
     geom: &BallGeometry,
     centres: Vector2<f64>,
     p: BallParams,
+    warm: Option<Vector2<f64>>,
+    tolerance_n: f64,
+    ball: usize,
+) -> Result<BallEquilibrium, BallError> {
+    let alone = OuterAlone::new(geom, &p);
+    solve_ball_with(geom, centres, p, alone, warm, tolerance_n, ball)
+}
+
+/// [`solve_ball`] with the outer-race-alone state of `p` formed by the caller
+/// ([`OuterAlone::new`]).
+pub fn solve_ball_with(
+    geom: &BallGeometry,
+    centres: Vector2<f64>,
+    p: BallParams,
+    alone: Option<OuterAlone>,
     warm: Option<Vector2<f64>>,
     tolerance_n: f64,
     ball: usize,
@@ -215,8 +298,8 @@ pub fn solve_ball(
         let radius = geom.outer_centre_radius_m + x[1];
         BallEquilibrium {
             position: x,
-            inner: e.inner,
-            outer: e.outer,
+            inner: e.inner.with_angle(),
+            outer: e.outer.with_angle(),
             centrifugal_n: p.centrifugal_coeff * radius,
             centre_radius_m: radius,
             ring_force: fm * e.inner.unit * e.inner.load_n,
@@ -232,34 +315,16 @@ pub fn solve_ball(
         let e = problem.eval(&x);
         return Ok(finish(x, e, 0.0, 0));
     }
-    // A ball the inner race does not reach rests on the outer race alone, where the
-    // outer contact force balances the centrifugal force through (I + µR): Q_o u_o =
-    // F_c (I + µR)⁻¹ e_r, a fixed direction, so only the approach δ_o is unknown and
-    // K δ_o^{3/2} = m·c·(R_O' + (f_o − ½)D + δ_o)·d_r is solved by substitution (its
-    // right side hardly depends on δ_o). Exact, and the only robust way: Newton sees a
-    // ball held by a nearly tangential-free contact as nearly singular.
-    if p.centrifugal_coeff > 0.0 {
-        let fm = friction_matrix(p.friction);
-        if let Some(inv) = fm.try_inverse() {
-            let w = inv * Vector2::new(0.0, 1.0);
-            let (m, dir) = (w.norm(), w / w.norm());
-            let mut d_o = 0.0f64;
-            for _ in 0..60 {
-                let fc = p.centrifugal_coeff
-                    * (geom.outer_centre_radius_m + (geom.outer_offset_m + d_o) * dir[1]);
-                let next = (m * fc / p.outer_stiffness).max(0.0).powf(2.0 / 3.0);
-                let done = (next - d_o).abs() <= 1e-15 * next;
-                d_o = next;
-                if done {
-                    break;
-                }
-            }
-            let x = dir * (geom.outer_offset_m + d_o);
+    // A ball the inner race does not reach rests on the outer race alone (see
+    // [`OuterAlone`]): accepted when the inner contact is open there. Only the inner
+    // deflection |(I − O') − X| − (f_i − ½)D is formed for the test (as `eval` forms it),
+    // the whole evaluation only for a ball that passes.
+    if let Some(alone) = alone {
+        let x = alone.position;
+        if alone.approach_m > 0.0 && (centres - x).norm() - geom.inner_offset_m <= 0.0 {
             let e = problem.eval(&x);
-            if e.inner.deflection_m <= 0.0 && d_o > 0.0 {
-                let residual = e.f.amax();
-                return Ok(finish(x, e, residual, 0));
-            }
+            let residual = e.f.amax();
+            return Ok(finish(x, e, residual, 0));
         }
     }
     // Start on the line of centres with the overlap shared between the contacts; when the
@@ -391,11 +456,72 @@ pub struct LoadDistribution {
     pub stats: LoadStats,
 }
 
+/// Which balls a load solve computes, and which balls each of them stands for.
+///
+/// With no radial load every ball is the same: ball 0 is solved for all (weights Z,
+/// Σcos ψ, Σcos² ψ). Under a radial load towards ψ = 0 (and no tilt: the model has none)
+/// the inner groove centre of the ball at ψ sits at (A sin α₀ + δ_a, A cos α₀ + δ_r cos ψ),
+/// which depends on ψ through cos ψ alone, and so does everything else of the ball (its
+/// angles, loads, radius, hence its stiffness, kinematics and friction): the balls at ψ
+/// and −ψ (j and Z − j) are mirror images with the same answer. Balls 0 … ⌊Z/2⌋ are
+/// solved, each standing for itself and its mirror (weight 2, or 1 for ψ = 0 and, Z even,
+/// ψ = π). This is exact, not an approximation: it leaves out the rounding differences
+/// between cos(2πj/Z) and cos(2π(Z − j)/Z) only (test
+/// `mirror_symmetry_equals_the_full_solve`).
+struct Layout {
+    /// cos ψ of each distinct ball (ball index k = its place here).
+    cos: Vec<f64>,
+    /// (Σ1, Σcos ψ, Σcos² ψ) over the balls each distinct ball stands for.
+    weights: Vec<(f64, f64, f64)>,
+    /// For every ball j of the bearing, the distinct ball that stands for it.
+    of: Vec<usize>,
+}
+
+impl Layout {
+    fn new(azimuths: &[f64], axisymmetric: bool, mirror: bool) -> Self {
+        let z = azimuths.len();
+        if axisymmetric {
+            let c = azimuths.iter().map(|p| p.cos());
+            let (sc, scc) = c.fold((0.0, 0.0), |(a, b), x| (a + x, b + x * x));
+            return Layout {
+                cos: vec![azimuths[0].cos()],
+                weights: vec![(z as f64, sc, scc)],
+                of: vec![0; z],
+            };
+        }
+        let distinct = if mirror { z / 2 + 1 } else { z };
+        let (mut cos, mut weights) = (Vec::with_capacity(distinct), Vec::new());
+        for (k, psi) in azimuths.iter().take(distinct).enumerate() {
+            let cp = psi.cos();
+            let w = if !mirror || k == 0 || 2 * k == z {
+                1.0
+            } else {
+                2.0
+            };
+            cos.push(cp);
+            weights.push((w, w * cp, w * cp * cp));
+        }
+        let of = (0..z)
+            .map(|j| if mirror { j.min(z - j) } else { j })
+            .collect();
+        Layout { cos, weights, of }
+    }
+
+    fn len(&self) -> usize {
+        self.cos.len()
+    }
+
+    /// `v` (one entry per distinct ball, or more) for every ball of the bearing.
+    fn expand<T: Copy>(&self, v: &[T]) -> Vec<T> {
+        self.of.iter().map(|&k| v[k]).collect()
+    }
+}
+
 struct RingProblem<'a> {
     geom: &'a BallGeometry,
     params: &'a [BallParams],
-    azimuths: Vec<f64>,
-    axisymmetric: bool,
+    alone: &'a [Option<OuterAlone>],
+    layout: &'a Layout,
     axial: Axial,
     radial: Option<f64>,
     ball_tolerance: f64,
@@ -415,11 +541,7 @@ impl NewtonSystem<2> for RingProblem<'_> {
     fn evaluate(&mut self, x: &Vector2<f64>) -> RingEval {
         let g = self.geom;
         let a0 = g.free_contact_angle_rad;
-        let n = if self.axisymmetric {
-            1
-        } else {
-            self.azimuths.len()
-        };
+        let n = self.layout.len();
         let mut balls = Vec::with_capacity(n);
         let mut force = Vector2::zeros();
         let mut jac = Matrix2::zeros();
@@ -430,16 +552,16 @@ impl NewtonSystem<2> for RingProblem<'_> {
             force: Vector2::zeros(),
         };
         for k in 0..n {
-            let psi = self.azimuths[k];
-            let cp = psi.cos();
+            let cp = self.layout.cos[k];
             let centres = Vector2::new(
                 g.centre_distance_m * a0.sin() + x[0],
                 g.centre_distance_m * a0.cos() + x[1] * cp,
             );
-            let b = match solve_ball(
+            let b = match solve_ball_with(
                 g,
                 centres,
                 self.params[k],
+                self.alone[k],
                 self.warm[k],
                 self.ball_tolerance,
                 k,
@@ -453,14 +575,7 @@ impl NewtonSystem<2> for RingProblem<'_> {
                 }
             };
             self.warm[k] = Some(b.position);
-            // Identical balls all round: Σ1 = Z, Σcos ψ and Σcos² ψ over the set.
-            let (w, wc, wcc) = if self.axisymmetric {
-                let c = self.azimuths.iter().map(|p| p.cos());
-                let (sc, scc) = c.fold((0.0, 0.0), |(a, b), x| (a + x, b + x * x));
-                (self.azimuths.len() as f64, sc, scc)
-            } else {
-                (1.0, cp, cp * cp)
-            };
+            let (w, wc, wcc) = self.layout.weights[k];
             let kk = b.ring_stiffness;
             force += Vector2::new(b.ring_force[0] * w, b.ring_force[1] * wc);
             jac += Matrix2::new(
@@ -540,7 +655,7 @@ pub fn solve(
     cond: &Conditions,
     cancel: Cancel,
 ) -> Result<LoadDistribution, BallError> {
-    solve_recorded(geom, cond, cancel, &mut None)
+    solve_recorded(geom, cond, cancel, &mut None, true)
 }
 
 /// One fixed-point iteration of the load distribution as the workbench's stepper shows it
@@ -577,17 +692,20 @@ pub fn solve_traced(
     ball: usize,
 ) -> Result<(LoadDistribution, Vec<LoadStep>), BallError> {
     let mut trace = Some((ball, Vec::new()));
-    let l = solve_recorded(geom, cond, cancel, &mut trace)?;
+    let l = solve_recorded(geom, cond, cancel, &mut trace, true)?;
     Ok((l, trace.map(|t| t.1).unwrap_or_default()))
 }
 
+/// `mirror`: solve the balls at ψ ≤ π only under a radial load ([`Layout`]); always true
+/// but in the test that proves it exact.
 fn solve_recorded(
     geom: &BallGeometry,
     cond: &Conditions,
     cancel: Cancel,
     trace: &mut Option<(usize, Vec<LoadStep>)>,
+    mirror: bool,
 ) -> Result<LoadDistribution, BallError> {
-    let first = match solve_warm(geom, cond, cancel, None, trace) {
+    let first = match solve_warm(geom, cond, cancel, None, trace, mirror) {
         Ok((l, _)) => return Ok(l),
         Err(
             e @ (BallError::Cancelled
@@ -604,7 +722,7 @@ fn solve_recorded(
         ..*cond
     };
     // Rest, axial load only (always axisymmetric); then the way up.
-    let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None, trace) {
+    let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None, trace, mirror) {
         Ok(r) => r,
         Err(_) => return Err(first),
     };
@@ -612,7 +730,7 @@ fn solve_recorded(
     let (mut s, mut h) = (0.0f64, 0.25f64);
     while s < 1.0 {
         let next = (s + h).min(1.0);
-        match solve_warm(geom, &at(next), cancel, Some(&state), trace) {
+        match solve_warm(geom, &at(next), cancel, Some(&state), trace, mirror) {
             Ok((l, w)) => {
                 stats.fixed_point_iterations += l.stats.fixed_point_iterations;
                 stats.ring_iterations += l.stats.ring_iterations;
@@ -641,6 +759,7 @@ fn solve_warm(
     cancel: Cancel,
     start: Option<&Warm>,
     trace: &mut Option<(usize, Vec<LoadStep>)>,
+    mirror: bool,
 ) -> Result<(LoadDistribution, Warm), BallError> {
     let z = geom.ball_count;
     let a0 = geom.free_contact_angle_rad;
@@ -652,6 +771,7 @@ fn solve_warm(
         GyroscopicFriction::Resisting => 1.0,
         GyroscopicFriction::SeedSign => -1.0,
     };
+    let layout = Layout::new(&azimuths, axisymmetric, mirror);
     // Initial state: free angles, no load, kinematics at the free angle on the pitch circle.
     let mut angles = start.map_or_else(|| vec![(a0, a0); z], |w| w.angles.clone());
     let mut loads = start.map_or_else(|| vec![(0.0, 0.0); z], |w| w.loads.clone());
@@ -698,18 +818,38 @@ fn solve_warm(
     let mut warm: Vec<Option<Vector2<f64>>> =
         start.map_or_else(|| vec![None; z], |w| w.balls.clone());
     let mut stats = LoadStats::default();
+    // Each distinct ball's Hertz contacts of the last fixed-point iteration.
+    let mut contacts: Vec<Option<(HertzPointContact, HertzPointContact)>> =
+        vec![None; layout.len()];
     const MAX_FIXED_POINT: usize = 200;
     let mut change = f64::INFINITY;
     for it in 0..MAX_FIXED_POINT {
         if cancel.is_cancelled() {
             return Err(BallError::Cancelled);
         }
-        let n = if axisymmetric { 1 } else { z };
+        let n = layout.len();
         let mut params = Vec::with_capacity(n);
+        let mut last: Option<((f64, f64), (HertzPointContact, HertzPointContact))> = None;
         for k in 0..n {
             let (ai, ao) = angles[k];
-            let ci = geom.contact(Race::Inner, ai)?;
-            let co = geom.contact(Race::Outer, ao)?;
+            // The Hertz contacts at this iteration's angles. The same angles as the last
+            // ball's (every ball of a fresh solve starts at α₀): the same contacts.
+            // Otherwise the κ iteration starts from this ball's κ of the last fixed-point
+            // iteration (or the last ball's): the same contact to round-off, in one or
+            // two Newton steps instead of five or six (`EllipseShape::solve_near`).
+            let (ci, co) = match (last, contacts[k]) {
+                (Some((a, c)), _) if a == (ai, ao) => c,
+                (_, Some((pi, po))) | (Some((_, (pi, po))), None) => (
+                    geom.contact_near(Race::Inner, ai, &pi)?,
+                    geom.contact_near(Race::Outer, ao, &po)?,
+                ),
+                (None, None) => (
+                    geom.contact(Race::Inner, ai)?,
+                    geom.contact(Race::Outer, ao)?,
+                ),
+            };
+            contacts[k] = Some((ci, co));
+            last = Some(((ai, ao), (ci, co)));
             let (qi, qo) = loads[k];
             let control = match cond.race_control {
                 RaceControl::Outer => Race::Outer,
@@ -757,11 +897,13 @@ fn solve_warm(
                 outer_stiffness: co.stiffness_n_per_m1_5(),
             });
         }
+        let alone: Vec<Option<OuterAlone>> =
+            params.iter().map(|p| OuterAlone::new(geom, p)).collect();
         let mut ring = RingProblem {
             geom,
             params: &params,
-            azimuths: azimuths.clone(),
-            axisymmetric,
+            alone: &alone,
+            layout: &layout,
             axial: cond.axial,
             radial: if axisymmetric {
                 None
@@ -825,12 +967,8 @@ fn solve_warm(
         }
         stats.fixed_point_iterations = it + 1;
         if let Some((ball, steps)) = trace.as_mut() {
-            // An axisymmetric solve computes ball 0 for all.
-            let k = if axisymmetric {
-                0
-            } else {
-                (*ball).min(balls.len().saturating_sub(1))
-            };
+            // The distinct ball that stands for this one (ball 0 for all when axisymmetric).
+            let k = layout.of[(*ball).min(z.saturating_sub(1))];
             if let (Some(b), Some(p)) = (balls.get(k), params.get(k)) {
                 steps.push(LoadStep {
                     fixed_point: steps.last().map_or(1, |s: &LoadStep| s.fixed_point + 1),
@@ -850,31 +988,20 @@ fn solve_warm(
                 geom,
                 cond,
                 &azimuths,
-                axisymmetric,
+                &layout,
                 balls,
                 x,
                 r.eval.force,
                 ring_residual,
                 stats,
             )?;
-            // Warm state for every ball (an axisymmetric solve fills all from ball 0).
-            let all = |v: &[(f64, f64)]| {
-                if axisymmetric {
-                    vec![v[0]; z]
-                } else {
-                    v.to_vec()
-                }
-            };
+            // Warm state for every ball, each from the distinct ball standing for it.
             let w = Warm {
                 x,
-                balls: if axisymmetric { vec![warm[0]; z] } else { warm },
-                angles: all(&angles),
-                loads: all(&loads),
-                radii: if axisymmetric {
-                    vec![radii[0]; z]
-                } else {
-                    radii
-                },
+                balls: layout.expand(&warm),
+                angles: layout.expand(&angles),
+                loads: layout.expand(&loads),
+                radii: layout.expand(&radii),
             };
             return Ok((l, w));
         }
@@ -890,17 +1017,17 @@ fn finish(
     geom: &BallGeometry,
     cond: &Conditions,
     azimuths: &[f64],
-    axisymmetric: bool,
+    layout: &Layout,
     balls: &[BallEquilibrium],
     x: Vector2<f64>,
     force: Vector2<f64>,
     ring_residual: f64,
     stats: LoadStats,
 ) -> Result<LoadDistribution, BallError> {
-    let mut out = Vec::with_capacity(azimuths.len());
+    // Race control of each distinct ball, then every ball from the one standing for it.
+    let mut distinct = Vec::with_capacity(balls.len());
     let mut ball_residual: f64 = 0.0;
-    for (j, &psi) in azimuths.iter().enumerate() {
-        let b = if axisymmetric { balls[0] } else { balls[j] };
+    for &b in balls {
         ball_residual = ball_residual.max(b.residual_n);
         let (ai, ao) = (b.inner.angle_rad, b.outer.angle_rad);
         let control = match cond.race_control {
@@ -909,7 +1036,7 @@ fn finish(
             RaceControl::Auto => {
                 let ci = geom.contact(Race::Inner, ai)?;
                 let co = geom.contact(Race::Outer, ao)?;
-                let semi = |c: &crate::physics::contact::point::HertzPointContact, q: f64| {
+                let semi = |c: &HertzPointContact, q: f64| {
                     c.solve(q).map(|p| p.semi_major_m).unwrap_or(0.0)
                 };
                 controlling_race(
@@ -941,8 +1068,8 @@ fn finish(
         )?;
         let mg = kin.gyroscopic_moment_nm(geom.ball_inertia_kg_m2);
         let s = b.inner.load_n + b.outer.load_n;
-        out.push(BallLoad {
-            azimuth_rad: psi,
+        distinct.push(BallLoad {
+            azimuth_rad: f64::NAN,
             equilibrium: b,
             kinematics: kin,
             gyroscopic_moment_nm: mg,
@@ -953,6 +1080,14 @@ fn finish(
             },
         });
     }
+    let out = azimuths
+        .iter()
+        .zip(&layout.of)
+        .map(|(&psi, &k)| BallLoad {
+            azimuth_rad: psi,
+            ..distinct[k]
+        })
+        .collect();
     Ok(LoadDistribution {
         axial_deflection_m: x[0],
         radial_deflection_m: x[1],

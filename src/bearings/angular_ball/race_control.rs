@@ -124,9 +124,17 @@ pub fn race_control(k: &KinematicsInput, control: Race) -> Result<RaceKinematics
         return Err(singular());
     }
     let (wa, wr, wm) = (x[0], x[1], x[2]);
-    let contact = |n: [f64; 2], p: [f64; 2], w: f64| {
+    let contact = |n: [f64; 2], p: [f64; 2], w: f64, race: Race| {
         let rel = [wa - w, wr];
-        let spin = rel[0] * n[0] + rel[1] * n[1];
+        // The controlling race does not spin: (2-9a) is one of the three equations solved,
+        // so its spin is zero by construction; the LU answer meets it only to round-off
+        // (~1e-13 rad/s against spins of 10³ rad/s), which would otherwise show in the
+        // reports as noise whose sign and size depend on the last bit of the angles.
+        let spin = if race == control {
+            0.0
+        } else {
+            rel[0] * n[0] + rel[1] * n[1]
+        };
         // In-plane tangent ⟂ n: τ = (n_r, −n_a).
         let roll = (rel[0] * n[1] - rel[1] * n[0]).abs();
         let race_t = (w - wm) * (rb + p[1]);
@@ -145,8 +153,8 @@ pub fn race_control(k: &KinematicsInput, control: Race) -> Result<RaceKinematics
         ball_axial_rad_s: wa,
         ball_radial_rad_s: wr,
         ball_spin_rad_s: (wa - wm).hypot(wr),
-        inner: contact(n_i, p_i, wi),
-        outer: contact(n_o, p_o, wo),
+        inner: contact(n_i, p_i, wi, Race::Inner),
+        outer: contact(n_o, p_o, wo, Race::Outer),
     })
 }
 
@@ -246,6 +254,39 @@ mod tests {
         // Inner race control: no inner spin, outer spins.
         let k = race_control(&input(21.06, 13.96, 10_000.0), Race::Inner).unwrap();
         assert!(k.inner.spin_rad_s.abs() < 1e-9 && k.outer.spin_rad_s.abs() > 100.0);
+    }
+
+    /// The controlling race's spin is reported as exactly zero, (2-9a) being one of the
+    /// equations solved: here the solved ω meets (2-9a), (ω − Ω_c a)·n_c = 0, to 1e-13 of
+    /// |ω − Ω_c a| (round-off of the 3×3 LU), and the non-controlling race's spin equals
+    /// (ω − Ω_j a)·n_j formed from the same ω bit for bit, over angles from 0° to 80°,
+    /// both races controlling, inner and outer ring turning.
+    #[test]
+    fn controlling_race_meets_2_9a() {
+        for (ai, ao) in [(0.0, 0.0), (21.06, 13.96), (68.73, 51.7), (80.0, 30.0)] {
+            for control in [Race::Outer, Race::Inner] {
+                for (wi, wo) in [(rpm(10_000.0), 0.0), (0.0, rpm(8_000.0))] {
+                    let mut inp = input(ai, ao, 0.0);
+                    inp.inner_speed_rad_s = wi;
+                    inp.outer_speed_rad_s = wo;
+                    let k = race_control(&inp, control).unwrap();
+                    let (si, ci) = f64::to_radians(ai).sin_cos();
+                    let (so, co) = f64::to_radians(ao).sin_cos();
+                    let spin = |n: [f64; 2], w: f64| {
+                        let rel = [k.ball_axial_rad_s - w, k.ball_radial_rad_s];
+                        (rel[0] * n[0] + rel[1] * n[1], rel[0].hypot(rel[1]))
+                    };
+                    let (inner, outer) = (spin([-si, -ci], wi), spin([so, co], wo));
+                    let (c, free, got) = match control {
+                        Race::Inner => (inner, outer, (k.inner, k.outer)),
+                        Race::Outer => (outer, inner, (k.outer, k.inner)),
+                    };
+                    assert!(c.0.abs() <= 1e-13 * c.1, "{ai} {ao} {control:?}: {c:?}");
+                    assert_eq!(got.0.spin_rad_s, 0.0);
+                    assert_eq!(got.1.spin_rad_s, free.0);
+                }
+            }
+        }
     }
 
     /// The spin moment (2-13a) equals the integral of µ·p·r over the Hertz ellipse
