@@ -13,7 +13,7 @@
 //! the same equations.
 use rollbench::bearings::angular_ball::analysis::analyse;
 use rollbench::bearings::angular_ball::dynamics::{simulate_ball_with, BallModel, LoadTrack};
-use rollbench::bearings::angular_ball::input::Method;
+use rollbench::bearings::angular_ball::input::{Method, Orbit};
 use rollbench::bearings::angular_ball::BallInput;
 use rollbench::numerics::cancel::Cancel;
 use rollbench::numerics::ode;
@@ -49,6 +49,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         centre_radius_m: 0.5 * g.pitch_diameter_m,
         inertia_kg_m2: g.ball_inertia_kg_m2,
         cage_rad_s: b.cage_rad_s,
+        orbit: Orbit::Cage,
+        mass_kg: g.ball_mass_kg,
         ring_speeds_rad_s: (
             input.operating.inner_speed_rad_s,
             input.operating.outer_speed_rad_s,

@@ -22,13 +22,14 @@ const CURVES: &[&str] = &[
 const VISCOSITY: &[&str] = &["barus", "roelands"];
 const METHODS: &[&str] = &["race-control", "quasi-static", "time-simulation"];
 const INTEGRATORS: &[&str] = &["auto", "dopri5", "rodas4"];
+const ORBITS: &[&str] = &["cage", "free"];
 
 const BALL: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "ball", "Ball", |b| b.materials.ball);
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 45] = [
+static FIELDS: [FieldSpec<BallInput>; 46] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -574,6 +575,29 @@ static FIELDS: [FieldSpec<BallInput>; 45] = [
                 1 => Integrator::Dopri5,
                 2 => Integrator::Rodas4,
                 _ => Integrator::Auto,
+            }
+        },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.orbit",
+            "dynamics",
+            "Orbital speed",
+            Quantity::Dimensionless,
+            FieldKind::Choice(ORBITS),
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(0.0),
+            "the ball's orbital speed: cage (held at race control's cage speed) or free (integrated per ball, 2-14a with no cage force)",
+        ),
+        get: |b| match b.dynamics.orbit {
+            Orbit::Cage => 0.0,
+            Orbit::Free => 1.0,
+        },
+        set: |b, v| {
+            b.dynamics.orbit = match v as usize {
+                1 => Orbit::Free,
+                _ => Orbit::Cage,
             }
         },
     },
