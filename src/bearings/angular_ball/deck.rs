@@ -887,6 +887,37 @@ mod tests {
         assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
     }
 
+    /// `dynamics.orbit`: cage by default (the deck as shipped has no key), "free" read,
+    /// anything else refused with file:line, the key and the choices.
+    #[test]
+    fn orbit_key() {
+        assert_eq!(
+            load("", "curve-1").unwrap().value.dynamics.orbit,
+            Orbit::Cage
+        );
+        let with = |v: &str| {
+            DECK.replace(
+                "method = \"race-control\"",
+                &format!("method = \"race-control\"\norbit = \"{v}\""),
+            )
+        };
+        let f = Form::parse(&with("free"), "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.dynamics.orbit, Orbit::Free);
+        let f = Form::parse(&with("cage"), "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.dynamics.orbit, Orbit::Cage);
+        let line = DECK
+            .lines()
+            .position(|l| l.starts_with("method = \"race-control\""))
+            .unwrap()
+            + 2;
+        let e = Form::parse(&with("loose"), "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("dynamics.orbit"), "{e}");
+        assert!(e.contains(&format!("b.toml:{line}:")), "{e}");
+        assert!(e.contains("cage") && e.contains("free"), "{e}");
+    }
+
     /// `geometry.clearance` instead of the free contact angle: read as P_d (SI), one of
     /// the pair only, and P_d ≥ 2(f_i+f_o−1)D refused by the cross-check.
     #[test]
