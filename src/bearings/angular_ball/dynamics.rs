@@ -128,14 +128,17 @@ impl Slice {
 }
 
 impl BallModel<'_> {
-    /// The slices of one contact (module docs, "Slices"; 2-16, 2-17), in order across
-    /// the ellipse, each handed to `each`. Shared by the moments ([`Self::contact`]) and
-    /// their Jacobian, so the two cannot drift apart. Nothing for an unloaded contact.
+    /// The slices of one contact (module docs, "Slices"; 2-16, 2-17), each handed to
+    /// `each`, from the centre of the ellipse outwards in mirror pairs. Shared by the
+    /// moments ([`Self::contact_at`]) and their Jacobian, so the two cannot drift apart.
+    /// Nothing for an unloaded contact.
     ///
-    /// The strip angles φ_k = ξ_k a/R_def are equally spaced, so ν_k is turned from
-    /// ν_{k−1} by the fixed rotation (cos Δφ, sin Δφ) instead of two trigonometric calls
-    /// per strip (the right-hand side's main cost); the recurrence's rounding (≈ k·1e-16)
-    /// is far below any tolerance used.
+    /// The strip angles φ_k = ξ_k a/R_def are equally spaced and symmetric about the
+    /// contact centre, so the strips come in pairs ±φ sharing cos φ, the load q (the
+    /// Hertz weight ¾ξ − ¼ξ³ is odd) and p·ν; each pair's (cos φ, sin φ) is turned
+    /// from the previous pair's by the fixed rotation (cos Δφ, sin Δφ) instead of
+    /// trigonometric calls per strip (the right-hand side's main cost); the
+    /// recurrence's rounding (≈ k·1e-16) is far below any tolerance used.
     #[inline(always)]
     pub(super) fn for_each_slice(
         &self,
@@ -161,30 +164,54 @@ impl BallModel<'_> {
         let tau = [n[1], -n[0]];
         // 2-17: the mean of the ball's and the groove's transverse curvatures.
         let r_def = 2.0 / (2.0 / self.diameter_m + 1.0 / (f * self.diameter_m));
-        // ¾ξ − ¼ξ³ rather than ¾(ξ − ξ³/3): no division per strip (−2 % of the
-        // right-hand side); q moves by an ulp.
+        // The share of Q between −1 and ξ is ½ + ¾ξ − ¼ξ³ (¾(ξ − ξ³/3) written without
+        // a division: the strip loop's divider is its bottleneck).
         let cum = |xi: f64| 0.75 * xi - 0.25 * (xi * xi * xi);
         let nsl = self.slices.max(1);
         let width = 2.0 / nsl as f64;
-        let (ds, dc) = (width * c.semi_major_m / r_def).sin_cos();
-        let (mut sp, mut cp) = ((0.5 * width - 1.0) * c.semi_major_m / r_def).sin_cos();
+        let dphi = width * c.semi_major_m / r_def;
+        let (ds, dc) = dphi.sin_cos();
         let off = h - r_def;
-        let mut c0 = cum(-1.0);
-        for k in 0..nsl {
-            let x1 = -1.0 + width * (k + 1) as f64;
-            let c1 = cum(x1);
-            let nu = [cp * n[0] + sp * tau[0], cp * n[1] + sp * tau[1]];
-            let p = [off * n[0] + r_def * nu[0], off * n[1] + r_def * nu[1]];
+        // Pair j holds the strips centred on ξ = ±(j + ½)w (even count) or ±j w (odd,
+        // j ≥ 1; j = 0 is the centre strip alone, φ = 0).
+        let (mut cp, mut sp, first) = if nsl % 2 == 1 {
             each(&Slice {
-                q: c.load_n * (c1 - c0),
-                p,
-                nu,
-                // p·ν = (h − R_def) n·ν + R_def, n·ν = cos φ.
-                d: off * cp + r_def,
-                v_race: w_race * (self.centre_radius_m + p[1]),
+                q: c.load_n * 2.0 * cum(0.5 * width),
+                p: [h * n[0], h * n[1]],
+                nu: n,
+                d: h,
+                v_race: w_race * (self.centre_radius_m + h * n[1]),
             });
+            (dc, ds, 1)
+        } else {
+            let (s2, c2) = (0.5 * dphi).sin_cos();
+            (c2, s2, 0)
+        };
+        let mut emit = |cp: f64, sp: f64, q: f64| {
+            // p·ν = (h − R_def) n·ν + R_def, n·ν = cos φ.
+            let d = off * cp + r_def;
+            let cn = [cp * n[0], cp * n[1]];
+            let st = [sp * tau[0], sp * tau[1]];
+            for nu in [
+                [cn[0] + st[0], cn[1] + st[1]],
+                [cn[0] - st[0], cn[1] - st[1]],
+            ] {
+                let p = [off * n[0] + r_def * nu[0], off * n[1] + r_def * nu[1]];
+                each(&Slice {
+                    q,
+                    p,
+                    nu,
+                    d,
+                    v_race: w_race * (self.centre_radius_m + p[1]),
+                });
+            }
+        };
+        let centre = if nsl % 2 == 1 { 0.0 } else { 0.5 };
+        for j in first..first + nsl / 2 {
+            let xc = (j as f64 + centre) * width;
+            let q = c.load_n * (cum(xc + 0.5 * width) - cum(xc - 0.5 * width));
+            emit(cp, sp, q);
             (sp, cp) = (sp * dc + cp * ds, cp * dc - sp * ds);
-            c0 = c1;
         }
     }
 

@@ -833,3 +833,52 @@ fn free_orbit_heat_against_the_seed() {
     assert!(peak < 176.1);
     assert!((peak / 124.05 - 1.0).abs() < 0.01, "{peak}");
 }
+
+/// The strips handed out centre-first in mirror pairs are those of the direct
+/// definition (strip k between ξ = −1 + kw and −1 + (k+1)w, w = 2/N, load
+/// Q(c(ξ₁) − c(ξ₀)) with c = ¾ξ − ¼ξ³, normal at φ = ξ_c a/R_def by explicit
+/// trigonometry): every strip matched to 1e-12 (the recurrence's rounding), the loads
+/// adding up to Q to 1e-12, for odd and even N and both contacts.
+#[test]
+fn mirrored_strips_are_the_direct_ones() {
+    let input = case(9_500.0, Method::TimeSimulation);
+    let curve = input.traction.curve();
+    with_model(&input, &curve, |m0, _| {
+        for nsl in [1usize, 2, 7, 8, 41] {
+            let m = BallModel { slices: nsl, ..*m0 };
+            let l = m.track.at(0.3);
+            for (inner, c) in [(true, &l.inner), (false, &l.outer)] {
+                let mut got = Vec::new();
+                m.for_each_slice(inner, c, |s| got.push(*s));
+                assert_eq!(got.len(), nsl);
+                let total: f64 = got.iter().map(|s| s.q).sum();
+                assert!((total / c.load_n - 1.0).abs() < 1e-12);
+                let (s, co) = c.angle_rad.sin_cos();
+                let n = if inner { [-s, -co] } else { [s, co] };
+                let tau = [n[1], -n[0]];
+                let f = if inner {
+                    m.groove_curvatures.0
+                } else {
+                    m.groove_curvatures.1
+                };
+                let r_def = 2.0 / (2.0 / m.diameter_m + 1.0 / (f * m.diameter_m));
+                let w = 2.0 / nsl as f64;
+                let cum = |x: f64| 0.75 * (x - x * x * x / 3.0);
+                for k in 0..nsl {
+                    let (x0, x1) = (-1.0 + w * k as f64, -1.0 + w * (k + 1) as f64);
+                    let (sp, cp) = (0.5 * (x0 + x1) * c.semi_major_m / r_def).sin_cos();
+                    let nu = [cp * n[0] + sp * tau[0], cp * n[1] + sp * tau[1]];
+                    let q = c.load_n * (cum(x1) - cum(x0));
+                    let hit = got.iter().any(|g| {
+                        (g.nu[0] - nu[0]).abs() < 1e-12
+                            && (g.nu[1] - nu[1]).abs() < 1e-12
+                            && (g.q - q).abs() < 1e-12 * c.load_n
+                            && (g.d - ((0.5 * m.diameter_m - r_def) * cp + r_def)).abs()
+                                < 1e-12 * m.diameter_m
+                    });
+                    assert!(hit, "N = {nsl}, strip {k}");
+                }
+            }
+        }
+    });
+}
