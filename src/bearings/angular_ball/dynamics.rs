@@ -722,9 +722,17 @@ pub fn quasi_static_state(
             Ok((w.as_slice().to_vec(), it, ev))
         }
         Orbit::Free => {
+            // From the held cage's balance (ω at ω_m = the cage's speed), then ω and ω_m
+            // together: from race control directly Newton can leave the basin under
+            // radial load (Bearing B, 500 N, the most loaded ball: it stalled at a step
+            // of 3e6 rad/s).
+            let held = BallModel {
+                orbit: Orbit::Cage,
+                ..*model
+            };
+            let (w, it0, ev0) = quasi_static_state(&held, omega0, ball)?;
             let theta = model.start_azimuth_rad;
-            let x0 =
-                DVector::from_column_slice(&[omega0[0], omega0[1], omega0[2], model.cage_rad_s]);
+            let x0 = DVector::from_column_slice(&[w[0], w[1], w[2], model.cage_rad_s]);
             let (x, it, ev) = newton(
                 |x: &DVector<f64>| {
                     let r = model.free_rates(&[x[0], x[1], x[2], x[3], theta]);
@@ -733,7 +741,7 @@ pub fn quasi_static_state(
                 x0,
                 ball,
             )?;
-            Ok((vec![x[0], x[1], x[2], x[3], theta], it, ev))
+            Ok((vec![x[0], x[1], x[2], x[3], theta], it0 + it, ev0 + ev))
         }
     }
 }
