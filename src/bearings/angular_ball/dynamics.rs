@@ -12,10 +12,23 @@
 //! ```
 //! i.e. J ω̇_a = M_a, J ω̇_r = M_r + J ω_m ω_t, J ω̇_t = M_t − J ω_m ω_r: the last term is
 //! Chen's gyroscopic term of (2-3)/(2-14c,d). M is the moment of the slice tractions
-//! about the ball centre. The orbital speed ω_m (Chen's fourth unknown, 2-14a) is held at
-//! race control's cage speed (a cage-guided ball set; the ball's orbital equation is not
-//! integrated — the tangential force it would need is reported as the cage's share of
-//! the power balance, see [`ContactPower`]).
+//! about the ball centre. The orbital speed ω_m (Chen's fourth unknown, 2-14a) is found
+//! one of two ways (`dynamics.orbit`):
+//!
+//! - **cage** (the default): held at race control's cage speed (a cage-guided ball set;
+//!   the ball's orbital equation is not integrated — the tangential force it would need
+//!   is the cage's, and its power −F_t ω_m R_b enters the ball's energy balance);
+//! - **free** (2-14a with F_cage = F_drag = 0): m R_b dω_m/dt = F_t, the resultant
+//!   traction along t, and the ball's azimuth θ = ∫ω_m dt is integrated too, so the
+//!   state is (ω_a, ω_r, ω_t, ω_m, θ) and the loads are those of the track at the
+//!   ball's own θ. The frame now turns at the ball's own ω_m(t); J dω/dt = M − J ω_m a × ω
+//!   holds as written (the frame's angular velocity enters only through ω_m a × ω). The
+//!   rings' friction power then goes into heat and the ball's kinetic energy
+//!   ½J|ω|² + ½m(ω_m R_b)² alone; at a steady state F_t = 0 (the quasi-static method
+//!   solves that orbital balance with dω/dt = 0). Under Chen's 500 N radial load on
+//!   Bearing B the free orbit brings the peak heat per ball from 176 W (3.0× the axial
+//!   case) to 124 W (2.35×), against the seed's ≈ 100 W (≈ 2×): see
+//!   `free_orbit_heat_against_the_seed`.
 //!
 //! # Sliding velocities (derived here: the OCR of 2-15a…c is garbled)
 //! A point p of the contact (from the ball centre) moves with the ball at
@@ -324,7 +337,7 @@ impl BallModel<'_> {
         m / self.inertia_kg_m2 - self.cage_rad_s * a.cross(omega)
     }
 
-    /// The free orbit's right-hand side (module docs, "Free orbit") at the state
+    /// The free orbit's right-hand side (module docs, the free orbit) at the state
     /// y = (ω_a, ω_r, ω_t, ω_m, θ): (dω/dt, dω_m/dt, dθ/dt) with
     /// dω/dt = M/J − ω_m a × ω, m R_b dω_m/dt = F_t (2-14a, no cage, no drag),
     /// dθ/dt = ω_m; the loads are those of the track at the ball's own θ.
