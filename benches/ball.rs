@@ -3,7 +3,7 @@
 //! (target < 20 µs); the whole race-control analysis with the skid search on A (no
 //! target of its own); the quasi-static ball dynamics on Bearing B at 9 500 rpm (target
 //! < 2 ms); the time simulation of B under 500 N radial load, 20 balls × 5 orbits
-//! (target < 100 ms); A's load distribution under 500 N radial load (target < 0.3 ms);
+//! (target < 100 ms; also with the free orbit, no target of its own); A's load distribution under 500 N radial load (target < 0.3 ms);
 //! a 19-speed skid sweep of B with the quasi-static dynamics (target < 50 ms). The
 //! dynamics benches time `dynamics::run` alone, from a race-control analysis solved once
 //! outside the loop.
@@ -12,7 +12,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::angular_ball::analysis::{analyse, BallAnalysis};
 use rollbench::bearings::angular_ball::dynamics;
 use rollbench::bearings::angular_ball::geometry::BallGeometry;
-use rollbench::bearings::angular_ball::input::{Method, PreloadMode};
+use rollbench::bearings::angular_ball::input::{Method, Orbit, PreloadMode};
 use rollbench::bearings::angular_ball::load_distribution::{self, Axial, Conditions};
 use rollbench::bearings::angular_ball::BallInput;
 use rollbench::numerics::cancel::Cancel;
@@ -129,6 +129,20 @@ fn bearing_b_dynamics(c: &mut Criterion) {
     let mut g = c.benchmark_group("ball_b_time_simulation");
     g.sample_size(10);
     g.bench_function("radial_500_n_20_balls_5_orbits", |b| {
+        b.iter(|| {
+            dynamics::run(
+                std::hint::black_box(&input),
+                &a.geometry,
+                &a.balls,
+                Cancel::NONE,
+            )
+            .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+    // The same with the free orbit (`dynamics.orbit = "free"`, seed 2-14a per ball): one
+    // piece per ball (the load track's kinks are at azimuths, not known times).
+    input.dynamics.orbit = Orbit::Free;
+    g.bench_function("radial_500_n_20_balls_5_orbits_free_orbit", |b| {
         b.iter(|| {
             dynamics::run(
                 std::hint::black_box(&input),

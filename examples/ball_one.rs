@@ -1,7 +1,7 @@
 //! One ball of Chen's Bearing B (seed 001 ch. 6) in the time simulation, for the
 //! integrator comparison and the SciPy side by side (`benches/ball_side_by_side.sh`).
 //!
-//! `cargo run --release --example ball_one -- [radial_N] [orbits] [rtol] [auto|dopri5|rodas4] [model.json]`
+//! `cargo run --release --example ball_one -- [radial_N] [orbits] [rtol] [auto|dopri5|rodas4] [model.json|-] [cage|free]`
 //!
 //! Solves the race-control analysis of Bearing B at 9 500 rpm with curve 1 under the
 //! given radial load (default 500 N), then simulates ball 0 from race control over the
@@ -10,10 +10,12 @@
 //! mean heat over the last orbit; the final ω; steps and RHS evaluations). With a file
 //! name, writes the model's inputs there as JSON (geometry, speeds, curve points, the
 //! load track sampled at every ball, ω₀) so that another implementation can integrate
-//! the same equations.
+//! the same equations (the held cage's model only: the SciPy script integrates that).
+//! The last argument picks the orbit (`dynamics.orbit`; default cage); with `free` the
+//! line also gives the mean orbital speed over the last orbit (`omega_m`).
 use rollbench::bearings::angular_ball::analysis::analyse;
 use rollbench::bearings::angular_ball::dynamics::{simulate_ball_with, BallModel, LoadTrack};
-use rollbench::bearings::angular_ball::input::Method;
+use rollbench::bearings::angular_ball::input::{Method, Orbit};
 use rollbench::bearings::angular_ball::BallInput;
 use rollbench::numerics::cancel::Cancel;
 use rollbench::numerics::ode;
@@ -36,6 +38,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Some("rodas4") => ode::Method::Sdirk,
         Some(m) => return Err(format!("integrator {m}: auto, dopri5 or rodas4").into()),
     };
+    let orbit = match args.get(5).map(String::as_str) {
+        None | Some("cage") => Orbit::Cage,
+        Some("free") => Orbit::Free,
+        Some(o) => return Err(format!("orbit {o}: cage or free").into()),
+    };
+    let json = args.get(4).filter(|p| p.as_str() != "-");
+    if orbit == Orbit::Free && json.is_some() {
+        return Err("the model file describes the held cage's model only".into());
+    }
     let mut input = BallInput::chen_b();
     input.operating.radial_load_n = radial;
     input.dynamics.method = Method::RaceControl;
@@ -49,6 +60,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         centre_radius_m: 0.5 * g.pitch_diameter_m,
         inertia_kg_m2: g.ball_inertia_kg_m2,
         cage_rad_s: b.cage_rad_s,
+        orbit,
+        mass_kg: g.ball_mass_kg,
         ring_speeds_rad_s: (
             input.operating.inner_speed_rad_s,
             input.operating.outer_speed_rad_s,
@@ -71,10 +84,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (d, st) = last.ok_or("no run")?;
     let w = d.history.last().ok_or("empty history")?.omega_rad_s;
     println!(
-        "time_s={best:.6e} heat_w={:.10e} omega_a={:.10e} omega_r={:.10e} omega_t={:.10e} steps={} rejected={} rhs={} switched_at={:?}",
-        d.heat_w, w[0], w[1], w[2], st.steps, st.rejected, st.rhs_evaluations, st.switched_to_implicit_at
+        "time_s={best:.6e} heat_w={:.10e} omega_a={:.10e} omega_r={:.10e} omega_t={:.10e} omega_m={:.10e} steps={} rejected={} rhs={} switched_at={:?}",
+        d.heat_w, w[0], w[1], w[2], d.orbital_rad_s, st.steps, st.rejected, st.rhs_evaluations, st.switched_to_implicit_at
     );
-    if let Some(path) = args.get(4) {
+    if let Some(path) = json {
         let points = match &curve {
             TractionCurve::Table { points } => points.clone(),
             TractionCurve::Constant { mu } => vec![(0.0, *mu)],

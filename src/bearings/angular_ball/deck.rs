@@ -22,13 +22,14 @@ const CURVES: &[&str] = &[
 const VISCOSITY: &[&str] = &["barus", "roelands"];
 const METHODS: &[&str] = &["race-control", "quasi-static", "time-simulation"];
 const INTEGRATORS: &[&str] = &["auto", "dopri5", "rodas4"];
+const ORBITS: &[&str] = &["cage", "free"];
 
 const BALL: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "ball", "Ball", |b| b.materials.ball);
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 45] = [
+static FIELDS: [FieldSpec<BallInput>; 46] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -577,6 +578,29 @@ static FIELDS: [FieldSpec<BallInput>; 45] = [
             }
         },
     },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "dynamics.orbit",
+            "dynamics",
+            "Orbital speed",
+            Quantity::Dimensionless,
+            FieldKind::Choice(ORBITS),
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(0.0),
+            "the ball's orbital speed: cage (held at race control's cage speed) or free (integrated per ball, 2-14a with no cage force)",
+        ),
+        get: |b| match b.dynamics.orbit {
+            Orbit::Cage => 0.0,
+            Orbit::Free => 1.0,
+        },
+        set: |b, v| {
+            b.dynamics.orbit = match v as usize {
+                1 => Orbit::Free,
+                _ => Orbit::Cage,
+            }
+        },
+    },
 ];
 
 fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
@@ -861,6 +885,37 @@ mod tests {
         assert_eq!(r.roelands_z, Some(0.42));
         assert_eq!(r.limiting_shear_stress_pa(0.0), Some(1e6));
         assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
+    }
+
+    /// `dynamics.orbit`: cage by default (the deck as shipped has no key), "free" read,
+    /// anything else refused with file:line, the key and the choices.
+    #[test]
+    fn orbit_key() {
+        assert_eq!(
+            load("", "curve-1").unwrap().value.dynamics.orbit,
+            Orbit::Cage
+        );
+        let with = |v: &str| {
+            DECK.replace(
+                "method = \"race-control\"",
+                &format!("method = \"race-control\"\norbit = \"{v}\""),
+            )
+        };
+        let f = Form::parse(&with("free"), "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.dynamics.orbit, Orbit::Free);
+        let f = Form::parse(&with("cage"), "b.toml", &SCHEMA).unwrap();
+        assert_eq!(f.value.dynamics.orbit, Orbit::Cage);
+        let line = DECK
+            .lines()
+            .position(|l| l.starts_with("method = \"race-control\""))
+            .unwrap()
+            + 2;
+        let e = Form::parse(&with("loose"), "b.toml", &SCHEMA)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("dynamics.orbit"), "{e}");
+        assert!(e.contains(&format!("b.toml:{line}:")), "{e}");
+        assert!(e.contains("cage") && e.contains("free"), "{e}");
     }
 
     /// `geometry.clearance` instead of the free contact angle: read as P_d (SI), one of

@@ -12,10 +12,23 @@
 //! ```
 //! i.e. J ω̇_a = M_a, J ω̇_r = M_r + J ω_m ω_t, J ω̇_t = M_t − J ω_m ω_r: the last term is
 //! Chen's gyroscopic term of (2-3)/(2-14c,d). M is the moment of the slice tractions
-//! about the ball centre. The orbital speed ω_m (Chen's fourth unknown, 2-14a) is held at
-//! race control's cage speed (a cage-guided ball set; the ball's orbital equation is not
-//! integrated — the tangential force it would need is reported as the cage's share of
-//! the power balance, see [`ContactPower`]).
+//! about the ball centre. The orbital speed ω_m (Chen's fourth unknown, 2-14a) is found
+//! one of two ways (`dynamics.orbit`):
+//!
+//! - **cage** (the default): held at race control's cage speed (a cage-guided ball set;
+//!   the ball's orbital equation is not integrated — the tangential force it would need
+//!   is the cage's, and its power −F_t ω_m R_b enters the ball's energy balance);
+//! - **free** (2-14a with F_cage = F_drag = 0): m R_b dω_m/dt = F_t, the resultant
+//!   traction along t, and the ball's azimuth θ = ∫ω_m dt is integrated too, so the
+//!   state is (ω_a, ω_r, ω_t, ω_m, θ) and the loads are those of the track at the
+//!   ball's own θ. The frame now turns at the ball's own ω_m(t); J dω/dt = M − J ω_m a × ω
+//!   holds as written (the frame's angular velocity enters only through ω_m a × ω). The
+//!   rings' friction power then goes into heat and the ball's kinetic energy
+//!   ½J|ω|² + ½m(ω_m R_b)² alone; at a steady state F_t = 0 (the quasi-static method
+//!   solves that orbital balance with dω/dt = 0). Under Chen's 500 N radial load on
+//!   Bearing B the free orbit brings the peak heat per ball from 176 W (3.0× the axial
+//!   case) to 124 W (2.35×), against the seed's ≈ 100 W (≈ 2×): see
+//!   `free_orbit_heat_against_the_seed`.
 //!
 //! # Sliding velocities (derived here: the OCR of 2-15a…c is garbled)
 //! A point p of the contact (from the ball centre) moves with the ball at
@@ -42,12 +55,12 @@
 //! in the rolling part; the lateral part is the gyroscopic skid (Chen's 2-15a). This
 //! is Chen's split by sliding direction, not a split into "spin" and "rolling" causes.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{DMatrix, DVector, Vector3};
 
 use super::analysis::BallResult;
 use super::error::BallError;
 use super::geometry::BallGeometry;
-use super::input::{BallInput, Integrator, Method};
+use super::input::{BallInput, Integrator, Method, Orbit};
 pub use super::load_track::{BallLoads, ContactLoads, LoadTrack};
 use crate::numerics::cancel::Cancel;
 use crate::numerics::ode::{self, OdeError, OdeOptions, OdeSystem, Output};
@@ -77,8 +90,13 @@ pub struct BallModel<'a> {
     pub centre_radius_m: f64,
     /// J, kg·m².
     pub inertia_kg_m2: f64,
-    /// ω_m, held orbital speed, rad/s.
+    /// ω_m, rad/s: the held orbital speed ([`Orbit::Cage`]) or the start of the
+    /// integrated one ([`Orbit::Free`]).
     pub cage_rad_s: f64,
+    /// How ω_m is found.
+    pub orbit: Orbit,
+    /// m, the ball's mass, kg (the orbital equation 2-14a of [`Orbit::Free`]).
+    pub mass_kg: f64,
     /// Ω_i, Ω_o, rad/s.
     pub ring_speeds_rad_s: (f64, f64),
     /// f_i, f_o.
@@ -93,23 +111,53 @@ pub struct BallModel<'a> {
     pub start_azimuth_rad: f64,
 }
 
+/// One strip of a contact (module docs, "Slices"), in the a–r plane of the frame
+/// (every point of a contact's centre line has p_t = 0).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Slice {
+    /// q, the strip's Hertz load, N.
+    pub q: f64,
+    /// p = (p_a, p_r), the centre line's point from the ball centre, m.
+    pub p: [f64; 2],
+    /// ν = (ν_a, ν_r), the strip's surface normal.
+    pub nu: [f64; 2],
+    /// d = p·ν, m: the lever of transverse sliding (see [`BallModel::contact`]).
+    pub d: f64,
+    /// The race surface speed there, Ω_j (R_b + p_r), m/s (along t).
+    pub v_race: f64,
+}
+
+impl Slice {
+    /// The sliding velocity's rolling (s_t, along t) and transverse (s_x, along
+    /// e = t × ν) components for ball angular velocity ω and orbital speed ω_m:
+    /// s_t = ω_m R_b + ω_a p_r − ω_r p_a − v_race, s_x = ω_t d (module docs, "Sliding").
+    #[inline(always)]
+    fn sliding(&self, centre_speed: f64, omega: &Vector3<f64>) -> (f64, f64) {
+        (
+            centre_speed + omega[0] * self.p[1] - omega[1] * self.p[0] - self.v_race,
+            omega[2] * self.d,
+        )
+    }
+}
+
 impl BallModel<'_> {
-    /// The slices of one contact (module docs, "Slices"; 2-16, 2-17), in order across
-    /// the ellipse: `each(q, ν, p, v_race)` with q the strip's Hertz load (N), ν its
-    /// surface normal, p its centre line's point from the ball centre (m) and v_race the
-    /// race surface velocity there (m/s). Shared by the moments ([`Self::contact`]) and
-    /// their Jacobian, so the two cannot drift apart. Nothing for an unloaded contact.
+    /// The slices of one contact (module docs, "Slices"; 2-16, 2-17), each handed to
+    /// `each`, from the centre of the ellipse outwards in mirror pairs. Shared by the
+    /// moments ([`Self::contact_at`]) and their Jacobian, so the two cannot drift apart.
+    /// Nothing for an unloaded contact.
     ///
-    /// The strip angles φ_k = ξ_k a/R_def are equally spaced, so ν_k is turned from
-    /// ν_{k−1} by the fixed rotation (cos Δφ, sin Δφ) instead of two trigonometric calls
-    /// per strip (the right-hand side's main cost); the recurrence's rounding (≈ k·1e-16)
-    /// is far below any tolerance used.
-    #[inline]
+    /// The strip angles φ_k = ξ_k a/R_def are equally spaced and symmetric about the
+    /// contact centre, so the strips come in pairs ±φ sharing cos φ, the load q (the
+    /// Hertz weight ¾ξ − ¼ξ³ is odd) and p·ν; each pair's (cos φ, sin φ) is turned
+    /// from the previous pair's by the fixed rotation (cos Δφ, sin Δφ) instead of
+    /// trigonometric calls per strip (the right-hand side's main cost); the
+    /// recurrence's rounding (≈ k·1e-16) is far below any tolerance used.
+    #[inline(always)]
     pub(super) fn for_each_slice(
         &self,
         inner: bool,
         c: &ContactLoads,
-        mut each: impl FnMut(f64, &Vector3<f64>, &Vector3<f64>, &Vector3<f64>),
+        mut each: impl FnMut(&Slice),
     ) {
         if c.load_n <= 0.0 || c.semi_major_m <= 0.0 {
             return;
@@ -119,83 +167,151 @@ impl BallModel<'_> {
         // Outward normals: outer (sin α, cos α), inner turned by 180° (2-9b/c's α_i + 180°).
         let (n, f, w_race) = if inner {
             (
-                Vector3::new(-s, -co, 0.0),
+                [-s, -co],
                 self.groove_curvatures.0,
                 self.ring_speeds_rad_s.0,
             )
         } else {
-            (
-                Vector3::new(s, co, 0.0),
-                self.groove_curvatures.1,
-                self.ring_speeds_rad_s.1,
-            )
+            ([s, co], self.groove_curvatures.1, self.ring_speeds_rad_s.1)
         };
-        let tau = Vector3::new(n[1], -n[0], 0.0);
-        let t = Vector3::new(0.0, 0.0, 1.0);
+        let tau = [n[1], -n[0]];
         // 2-17: the mean of the ball's and the groove's transverse curvatures.
         let r_def = 2.0 / (2.0 / self.diameter_m + 1.0 / (f * self.diameter_m));
-        let cum = |xi: f64| 0.75 * (xi - xi * xi * xi / 3.0);
+        // The share of Q between −1 and ξ is ½ + ¾ξ − ¼ξ³ (¾(ξ − ξ³/3) written without
+        // a division: the strip loop's divider is its bottleneck).
+        let cum = |xi: f64| 0.75 * xi - 0.25 * (xi * xi * xi);
         let nsl = self.slices.max(1);
         let width = 2.0 / nsl as f64;
-        let (ds, dc) = (width * c.semi_major_m / r_def).sin_cos();
-        let (mut sp, mut cp) = ((0.5 * width - 1.0) * c.semi_major_m / r_def).sin_cos();
-        for k in 0..nsl {
-            let x0 = -1.0 + width * k as f64;
-            let x1 = -1.0 + width * (k + 1) as f64;
-            let q = c.load_n * (cum(x1) - cum(x0));
-            let nu = cp * n + sp * tau;
-            let p = (h - r_def) * n + r_def * nu;
-            let v_race = w_race * (self.centre_radius_m + p[1]) * t;
-            each(q, &nu, &p, &v_race);
+        let dphi = width * c.semi_major_m / r_def;
+        let (ds, dc) = dphi.sin_cos();
+        let off = h - r_def;
+        // Pair j holds the strips centred on ξ = ±(j + ½)w (even count) or ±j w (odd,
+        // j ≥ 1; j = 0 is the centre strip alone, φ = 0).
+        let (mut cp, mut sp, first) = if nsl % 2 == 1 {
+            each(&Slice {
+                q: c.load_n * 2.0 * cum(0.5 * width),
+                p: [h * n[0], h * n[1]],
+                nu: n,
+                d: h,
+                v_race: w_race * (self.centre_radius_m + h * n[1]),
+            });
+            (dc, ds, 1)
+        } else {
+            let (s2, c2) = (0.5 * dphi).sin_cos();
+            (c2, s2, 0)
+        };
+        let mut emit = |cp: f64, sp: f64, q: f64| {
+            // p·ν = (h − R_def) n·ν + R_def, n·ν = cos φ.
+            let d = off * cp + r_def;
+            let cn = [cp * n[0], cp * n[1]];
+            let st = [sp * tau[0], sp * tau[1]];
+            for nu in [
+                [cn[0] + st[0], cn[1] + st[1]],
+                [cn[0] - st[0], cn[1] - st[1]],
+            ] {
+                let p = [off * n[0] + r_def * nu[0], off * n[1] + r_def * nu[1]];
+                each(&Slice {
+                    q,
+                    p,
+                    nu,
+                    d,
+                    v_race: w_race * (self.centre_radius_m + p[1]),
+                });
+            }
+        };
+        let centre = if nsl % 2 == 1 { 0.0 } else { 0.5 };
+        for j in first..first + nsl / 2 {
+            let xc = (j as f64 + centre) * width;
+            let q = c.load_n * (cum(xc + 0.5 * width) - cum(xc - 0.5 * width));
+            emit(cp, sp, q);
             (sp, cp) = (sp * dc + cp * ds, cp * dc - sp * ds);
         }
     }
 
-    /// One contact: `inner` selects the race; ω the ball's angular velocity.
-    pub fn contact(&self, inner: bool, c: &ContactLoads, omega: &Vector3<f64>) -> ContactPower {
+    /// One contact: `inner` selects the race; ω the ball's angular velocity, ω_m the
+    /// orbital speed.
+    ///
+    /// With p and ν in the a–r plane, the sliding s = ω_m R_b t + ω × p − v_race t, its
+    /// normal part removed, has the rolling component s_t (along t) and the transverse
+    /// s_x = ω_t (p·ν) along e = t × ν (from ω × p's in-plane part ω_t(−p_r, p_a)); the
+    /// traction f = −(µq/u)(s_x e + s_t t), u = |s|, has the moment
+    /// p × f = −(µq/u)(s_t p_r, −s_t p_a, s_x (p·ν)) (p × t = (p_r, −p_a, 0),
+    /// p × e = (p·ν) a_t). The same vector algebra as before, written out per strip.
+    pub fn contact_at(
+        &self,
+        inner: bool,
+        c: &ContactLoads,
+        omega: &Vector3<f64>,
+        orbital_rad_s: f64,
+    ) -> ContactPower {
         let mut out = ContactPower::default();
-        let vc = self.cage_rad_s * self.centre_radius_m * Vector3::new(0.0, 0.0, 1.0);
-        self.for_each_slice(inner, c, |q, nu, p, v_race| {
-            let sl = vc + omega.cross(p) - v_race;
-            let sl = sl - sl.dot(nu) * nu;
-            let u = sl.norm();
-            if u == 0.0 {
+        let vc = orbital_rad_s * self.centre_radius_m;
+        self.for_each_slice(inner, c, |sl| {
+            let (s_t, s_x) = sl.sliding(vc, omega);
+            let u2 = s_t * s_t + s_x * s_x;
+            if u2 == 0.0 {
                 return;
             }
+            let u = u2.sqrt();
             let mu = self.curve.mu(u);
-            let fv = -(mu * q / u) * sl;
-            out.moment += p.cross(&fv);
-            out.force += fv;
-            let s_t = sl[2];
-            out.rolling_w += mu * q * s_t * s_t / u;
-            out.lateral_w += mu * q * (u * u - s_t * s_t) / u;
-            out.ring_power_w += fv.dot(v_race);
+            let k = mu * sl.q / u;
+            out.moment += Vector3::new(-k * s_t * sl.p[1], k * s_t * sl.p[0], -k * s_x * sl.d);
+            // f = −k (s_x e + s_t t), e = (−ν_r, ν_a, 0).
+            out.force += Vector3::new(k * s_x * sl.nu[1], -k * s_x * sl.nu[0], -k * s_t);
+            out.rolling_w += k * s_t * s_t;
+            out.lateral_w += k * s_x * s_x;
+            out.ring_power_w += -k * s_t * sl.v_race;
         });
         out
     }
 
-    /// The moment of one contact's tractions about the ball centre, N·m: what
-    /// [`Self::contact`] gives as `moment`, without the forces and powers (the
-    /// right-hand side needs only this; the integrator calls it thousands of times per
-    /// orbit, the powers are evaluated at the recorded samples only).
+    /// [`Self::contact_at`] at the held cage speed.
+    pub fn contact(&self, inner: bool, c: &ContactLoads, omega: &Vector3<f64>) -> ContactPower {
+        self.contact_at(inner, c, omega, self.cage_rad_s)
+    }
+
+    /// The moment of one contact's tractions about the ball centre and the traction
+    /// force along t, (M, F_t) in N·m and N: what [`Self::contact_at`] gives as `moment`
+    /// and `force[2]`, without the rest (the right-hand side needs only these; the
+    /// integrator calls it thousands of times per orbit, the powers are evaluated at the
+    /// recorded samples only).
+    #[inline]
+    pub fn contact_moment_force(
+        &self,
+        inner: bool,
+        c: &ContactLoads,
+        omega: &Vector3<f64>,
+        orbital_rad_s: f64,
+    ) -> (Vector3<f64>, f64) {
+        let (mut ma, mut mr, mut mt, mut ft) = (0.0, 0.0, 0.0, 0.0);
+        let vc = orbital_rad_s * self.centre_radius_m;
+        self.for_each_slice(inner, c, |sl| {
+            let (s_t, s_x) = sl.sliding(vc, omega);
+            let u2 = s_t * s_t + s_x * s_x;
+            if u2 == 0.0 {
+                return;
+            }
+            let u = u2.sqrt();
+            let k = self.curve.mu(u) * sl.q / u;
+            let ks = k * s_t;
+            ma -= ks * sl.p[1];
+            mr += ks * sl.p[0];
+            mt -= k * s_x * sl.d;
+            ft -= ks;
+        });
+        (Vector3::new(ma, mr, mt), ft)
+    }
+
+    /// The moment of one contact's tractions about the ball centre at the held cage
+    /// speed, N·m.
     pub fn contact_moment(
         &self,
         inner: bool,
         c: &ContactLoads,
         omega: &Vector3<f64>,
     ) -> Vector3<f64> {
-        let mut m = Vector3::zeros();
-        let vc = self.cage_rad_s * self.centre_radius_m * Vector3::new(0.0, 0.0, 1.0);
-        self.for_each_slice(inner, c, |q, nu, p, v_race| {
-            let sl = vc + omega.cross(p) - v_race;
-            let sl = sl - sl.dot(nu) * nu;
-            let u = sl.norm();
-            if u == 0.0 {
-                return;
-            }
-            m -= (self.curve.mu(u) * q / u) * p.cross(&sl);
-        });
-        m
+        self.contact_moment_force(inner, c, omega, self.cage_rad_s)
+            .0
     }
 
     /// Both contacts at time `t_s` with angular velocity ω.
@@ -212,7 +328,7 @@ impl BallModel<'_> {
         self.start_azimuth_rad + self.cage_rad_s * t_s
     }
 
-    /// dω/dt = M/J − ω_m a × ω (module docs).
+    /// dω/dt = M/J − ω_m a × ω (module docs), the cage's ω_m held.
     pub fn omega_dot(&self, t_s: f64, omega: &Vector3<f64>) -> Vector3<f64> {
         let l = self.track.at(self.azimuth(t_s));
         let m = self.contact_moment(true, &l.inner, omega)
@@ -220,21 +336,89 @@ impl BallModel<'_> {
         let a = Vector3::new(1.0, 0.0, 0.0);
         m / self.inertia_kg_m2 - self.cage_rad_s * a.cross(omega)
     }
+
+    /// The free orbit's right-hand side (module docs, the free orbit) at the state
+    /// y = (ω_a, ω_r, ω_t, ω_m, θ): (dω/dt, dω_m/dt, dθ/dt) with
+    /// dω/dt = M/J − ω_m a × ω, m R_b dω_m/dt = F_t (2-14a, no cage, no drag),
+    /// dθ/dt = ω_m; the loads are those of the track at the ball's own θ.
+    pub fn free_rates(&self, y: &[f64; 5]) -> [f64; 5] {
+        let omega = Vector3::new(y[0], y[1], y[2]);
+        let wm = y[3];
+        let l = self.track.at(y[4]);
+        let (mi, fi) = self.contact_moment_force(true, &l.inner, &omega, wm);
+        let (mo, fo) = self.contact_moment_force(false, &l.outer, &omega, wm);
+        let a = Vector3::new(1.0, 0.0, 0.0);
+        let d = (mi + mo) / self.inertia_kg_m2 - wm * a.cross(&omega);
+        let dwm = (fi + fo) / (self.mass_kg * self.centre_radius_m);
+        [d[0], d[1], d[2], dwm, wm]
+    }
+
+    /// The state dimension: 3 (ω) with the cage's orbit, 5 (ω, ω_m, θ) with the free one.
+    pub fn state_dim(&self) -> usize {
+        match self.orbit {
+            Orbit::Cage => 3,
+            Orbit::Free => 5,
+        }
+    }
+
+    /// The start state from ω₀ at the model's start (ω_m = `cage_rad_s`, θ = the start
+    /// azimuth for the free orbit).
+    pub fn start_state(&self, omega0: [f64; 3]) -> Vec<f64> {
+        match self.orbit {
+            Orbit::Cage => omega0.to_vec(),
+            Orbit::Free => vec![
+                omega0[0],
+                omega0[1],
+                omega0[2],
+                self.cage_rad_s,
+                self.start_azimuth_rad,
+            ],
+        }
+    }
+
+    /// (ω, ω_m, θ) of a state at time t (the cage's ω_m and θ(t) for the held orbit).
+    pub fn unpack(&self, t_s: f64, y: &[f64]) -> (Vector3<f64>, f64, f64) {
+        let omega = Vector3::new(y[0], y[1], y[2]);
+        match self.orbit {
+            Orbit::Cage => (omega, self.cage_rad_s, self.azimuth(t_s)),
+            Orbit::Free => (omega, y[3], y[4]),
+        }
+    }
 }
 
 impl OdeSystem for BallModel<'_> {
     fn dim(&self) -> usize {
-        3
+        self.state_dim()
     }
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
-        let d = self.omega_dot(t, &Vector3::new(y[0], y[1], y[2]));
-        dydt.copy_from_slice(d.as_slice());
+        match self.orbit {
+            Orbit::Cage => {
+                let d = self.omega_dot(t, &Vector3::new(y[0], y[1], y[2]));
+                dydt.copy_from_slice(d.as_slice());
+            }
+            Orbit::Free => {
+                let y5 = [y[0], y[1], y[2], y[3], y[4]];
+                dydt.copy_from_slice(&self.free_rates(&y5));
+            }
+        }
     }
     fn jacobian(&self, t: f64, y: &[f64], jac: &mut nalgebra::DMatrix<f64>) -> bool {
-        let j = self.omega_jacobian(t, &Vector3::new(y[0], y[1], y[2]));
-        for r in 0..3 {
-            for c in 0..3 {
-                jac[(r, c)] = j[(r, c)];
+        match self.orbit {
+            Orbit::Cage => {
+                let j = self.omega_jacobian(t, &Vector3::new(y[0], y[1], y[2]));
+                for r in 0..3 {
+                    for c in 0..3 {
+                        jac[(r, c)] = j[(r, c)];
+                    }
+                }
+            }
+            Orbit::Free => {
+                let j = self.free_jacobian(&[y[0], y[1], y[2], y[3], y[4]]);
+                for r in 0..5 {
+                    for c in 0..5 {
+                        jac[(r, c)] = j[(r, c)];
+                    }
+                }
             }
         }
         true
@@ -250,6 +434,8 @@ pub struct Sample {
     pub orbit_deg: f64,
     /// ω (a, r, t), rad/s.
     pub omega_rad_s: [f64; 3],
+    /// ω_m, the orbital speed, rad/s (the cage's with [`Orbit::Cage`]).
+    pub orbital_rad_s: f64,
     /// Heat of both contacts, W.
     pub heat_w: f64,
     /// Its lateral part, W.
@@ -271,6 +457,9 @@ pub struct BallDynamics {
     pub lateral_w: f64,
     /// Its rolling part, W.
     pub rolling_w: f64,
+    /// The orbital speed ω_m averaged over the last orbit (time simulation) or at the
+    /// position, rad/s (the cage's with [`Orbit::Cage`]).
+    pub orbital_rad_s: f64,
     /// Half the peak-to-peak of the largest-varying ω component over the last orbit,
     /// rad/s (0 for quasi-static).
     pub oscillation_rad_s: f64,
@@ -322,13 +511,16 @@ fn ode_error(ball: usize, e: OdeError) -> BallError {
 const SAMPLES_PER_ORBIT: usize = 90;
 
 fn sample(model: &BallModel, t: f64, w: &[f64]) -> Sample {
-    let omega = Vector3::new(w[0], w[1], w[2]);
-    let (i, o) = model.contacts(t, &omega);
+    let (omega, wm, theta) = model.unpack(t, w);
+    let l = model.track.at(theta);
+    let i = model.contact_at(true, &l.inner, &omega, wm);
+    let o = model.contact_at(false, &l.outer, &omega, wm);
     let (lat, roll) = (i.lateral_w + o.lateral_w, i.rolling_w + o.rolling_w);
     Sample {
         time_s: t,
-        orbit_deg: model.azimuth(t).to_degrees(),
+        orbit_deg: theta.to_degrees(),
         omega_rad_s: [w[0], w[1], w[2]],
+        orbital_rad_s: wm,
         heat_w: lat + roll,
         lateral_w: lat,
         rolling_w: roll,
@@ -388,8 +580,10 @@ pub fn simulate_ball_with(
     // steps (measured on Bearing B under 500 N radial load: 194 rejections in 915
     // attempts). Each piece starts with the step size the previous one ended with; the
     // automatic integrator, once switched to Rodas4, stays there.
+    // With the free orbit the kinks lie at azimuths the ball reaches at times not known
+    // beforehand: integrated in one piece (the error control pays for them).
     let mut bounds = vec![0.0];
-    if !model.track.is_uniform() {
+    if model.orbit == Orbit::Cage && !model.track.is_uniform() {
         bounds.extend(kink_times(model, t_end));
     }
     bounds.push(t_end);
@@ -398,7 +592,7 @@ pub fn simulate_ball_with(
         Vec::with_capacity(times.len()),
     );
     let mut stats = ode::OdeStats::default();
-    let mut y = omega0.to_vec();
+    let mut y = model.start_state(omega0);
     let mut seg_opts = opts.clone();
     let mut next = 0;
     for seg in bounds.windows(2) {
@@ -450,18 +644,27 @@ pub fn simulate_ball_with(
     let m = last.len().max(1) as f64;
     let mean = |f: fn(&Sample) -> f64| last.iter().map(|s| f(s)).sum::<f64>() / m;
     let mut amp: f64 = 0.0;
-    for c in 0..3 {
+    let comp = |s: &Sample, c: usize| {
+        if c < 3 {
+            s.omega_rad_s[c]
+        } else {
+            s.orbital_rad_s
+        }
+    };
+    // ω's components, and ω_m when it is integrated.
+    for c in 0..model.state_dim().min(4) {
         let (lo, hi) = last
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |a, s| {
-                (a.0.min(s.omega_rad_s[c]), a.1.max(s.omega_rad_s[c]))
+                (a.0.min(comp(s, c)), a.1.max(comp(s, c)))
             });
         amp = amp.max(0.5 * (hi - lo));
     }
-    let (heat_w, lateral_w, rolling_w) = (
+    let (heat_w, lateral_w, rolling_w, orbital_rad_s) = (
         mean(|s| s.heat_w),
         mean(|s| s.lateral_w),
         mean(|s| s.rolling_w),
+        mean(|s| s.orbital_rad_s),
     );
     Ok((
         BallDynamics {
@@ -470,6 +673,7 @@ pub fn simulate_ball_with(
             heat_w,
             lateral_w,
             rolling_w,
+            orbital_rad_s,
             oscillation_rad_s: amp,
         },
         stats,
@@ -498,41 +702,99 @@ fn kink_times(model: &BallModel, t_end: f64) -> Vec<f64> {
 }
 
 /// The quasi-static angular velocity of a ball at fixed loads: dω/dt = 0 solved by a
-/// damped Newton iteration (forward-difference Jacobian) from race control. Returns ω
-/// and the iterations.
+/// damped Newton iteration (forward-difference Jacobian) from race control. With
+/// [`Orbit::Free`] the orbital balance too (2-14a at rest: Σ rolling traction F_t = 0,
+/// solved for ω_m together with ω; the ω_m found is [`quasi_static_state`]'s). Returns
+/// ω, the iterations and the right-hand-side evaluations.
 pub fn quasi_static_ball(
     model: &BallModel,
     omega0: [f64; 3],
     ball: usize,
 ) -> Result<([f64; 3], usize, usize), BallError> {
-    let mut w = Vector3::from(omega0);
+    let (y, it, ev) = quasi_static_state(model, omega0, ball)?;
+    Ok(([y[0], y[1], y[2]], it, ev))
+}
+
+/// [`quasi_static_ball`]'s whole state: (ω_a, ω_r, ω_t) with the cage's orbit,
+/// (ω_a, ω_r, ω_t, ω_m, θ) with the free one (θ the start azimuth, where the loads are).
+pub fn quasi_static_state(
+    model: &BallModel,
+    omega0: [f64; 3],
+    ball: usize,
+) -> Result<(Vec<f64>, usize, usize), BallError> {
+    match model.orbit {
+        Orbit::Cage => {
+            let (w, it, ev) = newton(
+                |w: &DVector<f64>| {
+                    let d = model.omega_dot(0.0, &Vector3::new(w[0], w[1], w[2]));
+                    DVector::from_column_slice(d.as_slice())
+                },
+                DVector::from_column_slice(&omega0),
+                ball,
+            )?;
+            Ok((w.as_slice().to_vec(), it, ev))
+        }
+        Orbit::Free => {
+            // From the held cage's balance (ω at ω_m = the cage's speed), then ω and ω_m
+            // together: from race control directly Newton can leave the basin under
+            // radial load (Bearing B, 500 N, the most loaded ball: it stalled at a step
+            // of 3e6 rad/s).
+            let held = BallModel {
+                orbit: Orbit::Cage,
+                ..*model
+            };
+            let (w, it0, ev0) = quasi_static_state(&held, omega0, ball)?;
+            let theta = model.start_azimuth_rad;
+            let x0 = DVector::from_column_slice(&[w[0], w[1], w[2], model.cage_rad_s]);
+            let (x, it, ev) = newton(
+                |x: &DVector<f64>| {
+                    let r = model.free_rates(&[x[0], x[1], x[2], x[3], theta]);
+                    DVector::from_column_slice(&r[..4])
+                },
+                x0,
+                ball,
+            )?;
+            Ok((vec![x[0], x[1], x[2], x[3], theta], it0 + it, ev0 + ev))
+        }
+    }
+}
+
+/// Damped Newton on f(x) = 0 (every component a rate in rad/s², so one scale): forward
+/// differences of step 1e-7·|x₀|, backtracking on |f| (halving, at most 30 times), done
+/// when the step moves x by ≤ 1e-13·|x₀|.
+fn newton(
+    f: impl Fn(&DVector<f64>) -> DVector<f64>,
+    x0: DVector<f64>,
+    ball: usize,
+) -> Result<(DVector<f64>, usize, usize), BallError> {
+    let n = x0.len();
+    let mut w = x0;
     let scale = w.norm().max(1.0);
-    let mut f = model.omega_dot(0.0, &w);
+    let mut fw = f(&w);
     let mut evals = 1;
     for it in 1..=100 {
-        let mut jac = Matrix3::zeros();
-        for c in 0..3 {
+        let mut jac = DMatrix::<f64>::zeros(n, n);
+        for c in 0..n {
             let h = 1e-7 * scale;
-            let mut wp = w;
+            let mut wp = w.clone();
             wp[c] += h;
-            let fp = model.omega_dot(0.0, &wp);
+            let fp = f(&wp);
             evals += 1;
-            jac.set_column(c, &((fp - f) / h));
+            jac.set_column(c, &((fp - &fw) / h));
         }
-        let step = jac.lu().solve(&(-f)).ok_or_else(|| {
+        let step = jac.lu().solve(&(-&fw)).ok_or_else(|| {
             BallError::Dynamics(format!(
-                "ball {ball}: singular moment Jacobian at ω = ({:.6e}, {:.6e}, {:.6e}) rad/s",
-                w[0], w[1], w[2]
+                "ball {ball}: singular Jacobian of the quasi-static balance at {:?} (rad/s)",
+                w.as_slice()
             ))
         })?;
-        // Backtrack on |dω/dt| (halving, at most 30 times).
         let mut lambda = 1.0;
         let mut accepted = None;
         for _ in 0..30 {
-            let wt = w + lambda * step;
-            let ft = model.omega_dot(0.0, &wt);
+            let wt = &w + lambda * &step;
+            let ft = f(&wt);
             evals += 1;
-            if ft.norm() < f.norm() || ft.norm() == 0.0 {
+            if ft.norm() < fw.norm() || ft.norm() == 0.0 {
                 accepted = Some((wt, ft));
                 break;
             }
@@ -540,24 +802,24 @@ pub fn quasi_static_ball(
         }
         let Some((wn, fn_)) = accepted else {
             if (step.norm()) <= 1e-13 * scale {
-                return Ok((w.into(), it, evals));
+                return Ok((w, it, evals));
             }
             return Err(BallError::Dynamics(format!(
-                "ball {ball}: quasi-static moment balance stalled after {it} iterations (|dω/dt| = {:.3e} rad/s², step {:.3e} rad/s)",
-                f.norm(),
+                "ball {ball}: quasi-static balance stalled after {it} iterations (|rates| = {:.3e} rad/s², step {:.3e} rad/s)",
+                fw.norm(),
                 step.norm()
             )));
         };
-        let moved = (wn - w).norm();
+        let moved = (&wn - &w).norm();
         w = wn;
-        f = fn_;
+        fw = fn_;
         if moved <= 1e-13 * scale {
-            return Ok((w.into(), it, evals));
+            return Ok((w, it, evals));
         }
     }
     Err(BallError::Dynamics(format!(
-        "ball {ball}: quasi-static moment balance did not converge in 100 iterations (|dω/dt| = {:.3e} rad/s²)",
-        f.norm()
+        "ball {ball}: quasi-static balance did not converge in 100 iterations (|rates| = {:.3e} rad/s²)",
+        fw.norm()
     )))
 }
 
@@ -596,7 +858,10 @@ pub fn run(
             diameter_m: geom.ball_diameter_m,
             centre_radius_m: 0.5 * geom.pitch_diameter_m,
             inertia_kg_m2: geom.ball_inertia_kg_m2,
+            // The free orbit starts from the cage's speed too (released at t = 0).
             cage_rad_s: cage,
+            orbit: d.orbit,
+            mass_kg: geom.ball_mass_kg,
             ring_speeds_rad_s: (op.inner_speed_rad_s, op.outer_speed_rad_s),
             groove_curvatures: (geom.inner_groove_curvature, geom.outer_groove_curvature),
             curve: &curve,
@@ -626,7 +891,7 @@ pub fn run(
                 if cancel.is_cancelled() {
                     return Err(BallError::Cancelled);
                 }
-                let (w, it, ev) = quasi_static_ball(&model, omega0, j)?;
+                let (w, it, ev) = quasi_static_state(&model, omega0, j)?;
                 let s = sample(&model, 0.0, &w);
                 Ok((
                     BallDynamics {
@@ -635,6 +900,7 @@ pub fn run(
                         heat_w: s.heat_w,
                         lateral_w: s.lateral_w,
                         rolling_w: s.rolling_w,
+                        orbital_rad_s: s.orbital_rad_s,
                         oscillation_rad_s: 0.0,
                     },
                     it,

@@ -280,6 +280,29 @@ impl Integrator {
     }
 }
 
+/// How the ball dynamics finds each ball's orbital speed ω_m (seed 001, eq. 2-14a).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Orbit {
+    /// Held at race control's cage speed (a cage-guided ball set: the cage supplies
+    /// whatever tangential force that needs; its power enters the ball's energy).
+    #[default]
+    Cage,
+    /// Integrated per ball (2-14a, m R_b θ̈ = Σ traction in the rolling direction, with
+    /// F_cage = F_drag = 0): each ball orbits at its own speed and its loads follow its
+    /// own azimuth θ = ∫ω_m dt.
+    Free,
+}
+
+impl Orbit {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            Orbit::Cage => "cage",
+            Orbit::Free => "free",
+        }
+    }
+}
+
 /// Analysis options.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dynamics {
@@ -296,6 +319,8 @@ pub struct Dynamics {
     pub tolerance: f64,
     /// The time simulation's integrator.
     pub integrator: Integrator,
+    /// How the ball's orbital speed is found (time simulation and quasi-static).
+    pub orbit: Orbit,
 }
 
 /// A whole angular-contact ball bearing case, SI.
@@ -421,6 +446,7 @@ impl BallInput {
                 orbits: 5.0,
                 tolerance: 1e-8,
                 integrator: Integrator::Auto,
+                orbit: Orbit::Cage,
             },
         }
     }
