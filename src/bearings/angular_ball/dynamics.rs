@@ -638,9 +638,17 @@ pub fn simulate_ball_with(
         .zip(&out_y)
         .map(|(&t, y)| sample(model, t, y))
         .collect();
-    // The last orbit: mean heat, oscillation amplitude.
-    let from = t_end - period * orbits.min(1.0);
-    let last: Vec<&Sample> = history.iter().filter(|s| s.time_s >= from).collect();
+    // The last orbit: mean heat, oscillation amplitude, over its samples chosen by index,
+    // half-open (t_end − period, t_end]: the orbit's start is the same position as its
+    // end and is not counted twice. (A filter `t ≥ t_end − period` counted it or not as
+    // t_end·k/n rounded, which moved a ball's mean under radial load by 1.6 %: the
+    // equally spaced samples of one period, each once, are the rectangle rule, exact for
+    // a periodic signal up to its aliasing.)
+    let per_last = ((orbits.min(1.0) / orbits) * n as f64).round() as usize;
+    let last: Vec<&Sample> = history
+        .iter()
+        .skip(history.len().saturating_sub(per_last.clamp(1, n)))
+        .collect();
     let m = last.len().max(1) as f64;
     let mean = |f: fn(&Sample) -> f64| last.iter().map(|s| f(s)).sum::<f64>() / m;
     let mut amp: f64 = 0.0;
