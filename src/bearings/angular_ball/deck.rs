@@ -587,8 +587,8 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
             FieldKind::Choice(ORBITS),
             (0.0, false),
             (1.0, false),
-            Presence::Default(0.0),
-            "the ball's orbital speed: cage (held at race control's cage speed) or free (integrated per ball, 2-14a with no cage force)",
+            Presence::Default(1.0),
+            "the ball's orbital speed: free (integrated per ball, 2-14a with no cage force; the default) or cage (held at race control's cage speed)",
         ),
         get: |b| match b.dynamics.orbit {
             Orbit::Cage => 0.0,
@@ -887,13 +887,13 @@ mod tests {
         assert!((r.limiting_shear_stress_pa(1e9).unwrap() - 7.1e7).abs() < 1e-6);
     }
 
-    /// `dynamics.orbit`: cage by default (the deck as shipped has no key), "free" read,
+    /// `dynamics.orbit`: free by default (a deck without the key), "cage" read,
     /// anything else refused with file:line, the key and the choices.
     #[test]
     fn orbit_key() {
         assert_eq!(
             load("", "curve-1").unwrap().value.dynamics.orbit,
-            Orbit::Cage
+            Orbit::Free
         );
         let with = |v: &str| {
             DECK.replace(

@@ -5,10 +5,14 @@ use crate::bearings::angular_ball::analysis::analyse;
 use crate::bearings::angular_ball::input::rpm;
 use nalgebra::Matrix3;
 
+/// Bearing B at `rpm_` with the orbital speed held at race control's cage speed
+/// (`dynamics.orbit = "cage"`): the tests of the held-cage model. The default, the
+/// free orbit of 2-14a, has its own set below ([`free_case`]).
 fn case(rpm_: f64, method: Method) -> BallInput {
     let mut i = BallInput::chen_b();
     i.operating.inner_speed_rad_s = rpm(rpm_);
     i.dynamics.method = method;
+    i.dynamics.orbit = Orbit::Cage;
     i
 }
 
