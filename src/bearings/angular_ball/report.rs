@@ -129,7 +129,11 @@ pub fn json(a: &BallAnalysis) -> Value {
         "race_control_w": a.race_control_heat_w,
         "bulk_temperature_c": a.bulk_temperature_k - 273.15,
     });
-    let mut dynamics = json!({ "method": a.input.dynamics.method.name() });
+    let mut dynamics = json!({
+        "method": a.input.dynamics.method.name(),
+        // How each ball's orbital speed is found: "free" (2-14a integrated) or "cage".
+        "orbit": a.input.dynamics.orbit.name(),
+    });
     let mut balls = balls;
     if let Some(d) = &a.dynamics {
         if let Some(h) = heat.as_object_mut() {
@@ -153,6 +157,11 @@ pub fn json(a: &BallAnalysis) -> Value {
             );
             m.insert("slices".into(), json!(a.input.dynamics.slices));
             m.insert("orbits".into(), json!(a.input.dynamics.orbits));
+            // The balls' orbital speed (last-orbit mean, averaged over the balls): with
+            // the free orbit the speed the cage would follow; held, race control's.
+            let wm =
+                d.balls.iter().map(|b| b.orbital_rad_s).sum::<f64>() / d.balls.len().max(1) as f64;
+            m.insert("mean_orbital_rad_s".into(), json!(wm));
         }
         for (b, bd) in balls.iter_mut().zip(&d.balls) {
             let last = bd.history.last().map(|s| s.omega_rad_s);
@@ -165,6 +174,9 @@ pub fn json(a: &BallAnalysis) -> Value {
                         "rolling_w": bd.rolling_w,
                         "omega_rad_s": last,
                         "oscillation_amplitude_rad_s": bd.oscillation_rad_s,
+                        // ω_m: the last orbit's mean (time simulation) or the solved
+                        // balance (quasi-static); race control's cage speed when held.
+                        "orbital_rad_s": bd.orbital_rad_s,
                     }),
                 );
             }
@@ -308,7 +320,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
     };
     let _ = writeln!(
         s,
-        "TRACTION  {}: µm {:.4}{}; film temperature rise (4-3…4-7) up to {:.1} K inner, {:.1} K outer",
+        "TRACTION  {}: µ_max {:.4}{}; film temperature rise (4-3…4-7) up to {:.1} K inner, {:.1} K outer",
         a.input.traction.preset.name(),
         curve.max_mu(),
         match super::analysis::sliding_band(a) {
@@ -334,8 +346,9 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
     if let Some(d) = &a.dynamics {
         let _ = writeln!(
             s,
-            "\nBALL DYNAMICS ({}, {} slices per contact, {}): {} steps, {} rhs evaluations, {}",
+            "\nBALL DYNAMICS ({}, {} orbit, {} slices per contact, {}): {} steps, {} rhs evaluations, {}",
             d.method.name(),
+            a.input.dynamics.orbit.name(),
             a.input.dynamics.slices,
             d.integrator,
             d.steps,
@@ -351,13 +364,13 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         );
         let _ = writeln!(
             s,
-            "  #   ψ°    ωa rad/s   ωr rad/s   ωt rad/s   H W   lateral W rolling W  race-control W"
+            "  #   ψ°    ωa rad/s   ωr rad/s   ωt rad/s   H W   lateral W rolling W  race-control W  ωm rad/s"
         );
         for (j, (b, bd)) in a.balls.iter().zip(&d.balls).enumerate() {
             let w = bd.history.last().map(|s| s.omega_rad_s).unwrap_or([0.0; 3]);
             let _ = writeln!(
                 s,
-                "{:3} {:5.1} {:10.2} {:10.2} {:10.2} {:7.3} {:9.3} {:9.3} {:9.3}",
+                "{:3} {:5.1} {:10.2} {:10.2} {:10.2} {:7.3} {:9.3} {:9.3} {:9.3} {:15.3}",
                 j,
                 b.azimuth_rad.to_degrees(),
                 w[0],
@@ -366,7 +379,8 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
                 bd.heat_w,
                 bd.lateral_w,
                 bd.rolling_w,
-                b.inner.spin_heat_w + b.outer.spin_heat_w
+                b.inner.spin_heat_w + b.outer.spin_heat_w,
+                bd.orbital_rad_s
             );
         }
         let _ = writeln!(
@@ -402,7 +416,8 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
 /// SI with the unit in every column name — time, ball (the JSON's `balls[].index`), azimuth (wrapped to [0, 360)° and
 /// unwrapped as the orbit travelled), the ball's angular velocity in the cage frame
 /// (axial, radial, tangential: the frame of `dynamics`), and the heat of both contacts
-/// with its lateral and rolling-direction parts. Only the time simulation has a
+/// with its lateral and rolling-direction parts, then (added last, so the columns before
+/// keep their places) the ball's orbital speed ω_m. Only the time simulation has a
 /// history: any other `dynamics.method` is refused with the key to set.
 pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
     let method = a.input.dynamics.method;
@@ -416,13 +431,13 @@ pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
         }
     };
     let mut out = String::from(
-        "time_s,ball,azimuth_deg,orbit_deg,omega_axial_rad_s,omega_radial_rad_s,omega_tangential_rad_s,heat_w,lateral_heat_w,rolling_heat_w\n",
+        "time_s,ball,azimuth_deg,orbit_deg,omega_axial_rad_s,omega_radial_rad_s,omega_tangential_rad_s,heat_w,lateral_heat_w,rolling_heat_w,omega_orbital_rad_s\n",
     );
     for (j, b) in d.balls.iter().enumerate() {
         for s in &b.history {
             let w = s.omega_rad_s;
             out.push_str(&format!(
-                "{:e},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}\n",
+                "{:e},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}\n",
                 s.time_s,
                 j,
                 s.orbit_deg.rem_euclid(360.0),
@@ -432,7 +447,8 @@ pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
                 w[2],
                 s.heat_w,
                 s.lateral_w,
-                s.rolling_w
+                s.rolling_w,
+                s.orbital_rad_s
             ));
         }
     }
