@@ -113,6 +113,8 @@ pub enum Quantity {
     Mass,
     /// Kinematic viscosity given in cSt in both systems, SI value in m²/s.
     KinematicViscosityCst,
+    /// Volume flow given in litre/min in both systems, SI value in m³/s.
+    VolumeFlowLMin,
     /// Time in s in both systems (e.g. the lubricant parameter 1e11·η·α is in these units ×1e11).
     Time,
     /// Temperature: °F | °C, SI value in K (affine).
@@ -136,6 +138,7 @@ impl Quantity {
             (Speed, _) => RPM_RAD_S,
             (Angle, _) => std::f64::consts::PI / 180.0,
             (KinematicViscosityCst, _) => 1e-6,
+            (VolumeFlowLMin, _) => 1e-3 / 60.0,
             (Temperature, Units::Si) => 1.0,
             (Temperature, Units::Us) => FAHRENHEIT_DEGREE_K,
             (_, Units::Si) => match self {
@@ -190,6 +193,7 @@ impl Quantity {
             (Speed, _) => "rpm",
             (Angle, _) => "deg",
             (KinematicViscosityCst, _) => "cSt",
+            (VolumeFlowLMin, _) => "l/min",
             (Time, _) => "s",
             (Length, Units::Si) => "m",
             (Length, Units::Us) => "in",
@@ -239,7 +243,7 @@ pub fn celsius_to_fahrenheit(c: f64) -> f64 {
 mod tests {
     use super::*;
 
-    const ALL: [Quantity; 21] = [
+    const ALL: [Quantity; 22] = [
         Quantity::LinearStiffness,
         Quantity::AngularStiffness,
         Quantity::Moment,
@@ -259,6 +263,7 @@ mod tests {
         Quantity::Conductivity,
         Quantity::Mass,
         Quantity::KinematicViscosityCst,
+        Quantity::VolumeFlowLMin,
         Quantity::Time,
         Quantity::Temperature,
     ];

@@ -393,15 +393,16 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
             "lubricant.flow_rate_l_min",
             "lubricant",
             "Oil flow rate",
-            Quantity::Dimensionless,
+            Quantity::VolumeFlowLMin,
             FieldKind::Real,
             (0.0, true),
-            (1e4, false),
+            // 10 000 l/min, in m³/s.
+            (1e4 * 1e-3 / 60.0, false),
             Presence::Required,
             "oil flow through the bearing, litre/min in both unit systems (eq. 4-1)",
         ),
-        get: |b| b.lubricant.flow_rate_m3_s * 60_000.0,
-        set: |b, v| b.lubricant.flow_rate_m3_s = v / 60_000.0,
+        get: |b| b.lubricant.flow_rate_m3_s,
+        set: |b, v| b.lubricant.flow_rate_m3_s = v,
     },
     FieldSpec {
         meta: FieldMeta::new(
