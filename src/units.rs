@@ -115,6 +115,9 @@ pub enum Quantity {
     KinematicViscosityCst,
     /// Volume flow given in litre/min in both systems, SI value in m³/s.
     VolumeFlowLMin,
+    /// A coefficient per degree of temperature (viscosity–temperature β), given in 1/°C
+    /// in both systems (= 1/K, the SI value).
+    PerDegreeCelsius,
     /// Time in s in both systems (e.g. the lubricant parameter 1e11·η·α is in these units ×1e11).
     Time,
     /// Temperature: °F | °C, SI value in K (affine).
@@ -139,6 +142,7 @@ impl Quantity {
             (Angle, _) => std::f64::consts::PI / 180.0,
             (KinematicViscosityCst, _) => 1e-6,
             (VolumeFlowLMin, _) => 1e-3 / 60.0,
+            (PerDegreeCelsius, _) => 1.0,
             (Temperature, Units::Si) => 1.0,
             (Temperature, Units::Us) => FAHRENHEIT_DEGREE_K,
             (_, Units::Si) => match self {
@@ -194,6 +198,7 @@ impl Quantity {
             (Angle, _) => "deg",
             (KinematicViscosityCst, _) => "cSt",
             (VolumeFlowLMin, _) => "l/min",
+            (PerDegreeCelsius, _) => "1/°C",
             (Time, _) => "s",
             (Length, Units::Si) => "m",
             (Length, Units::Us) => "in",
@@ -243,7 +248,7 @@ pub fn celsius_to_fahrenheit(c: f64) -> f64 {
 mod tests {
     use super::*;
 
-    const ALL: [Quantity; 22] = [
+    const ALL: [Quantity; 23] = [
         Quantity::LinearStiffness,
         Quantity::AngularStiffness,
         Quantity::Moment,
@@ -264,6 +269,7 @@ mod tests {
         Quantity::Mass,
         Quantity::KinematicViscosityCst,
         Quantity::VolumeFlowLMin,
+        Quantity::PerDegreeCelsius,
         Quantity::Time,
         Quantity::Temperature,
     ];

@@ -333,7 +333,7 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
             "lubricant.temperature_viscosity",
             "lubricant",
             "Temperature–viscosity β",
-            Quantity::Dimensionless,
+            Quantity::PerDegreeCelsius,
             FieldKind::Real,
             (0.0, false),
             (1.0, false),
