@@ -79,6 +79,28 @@ impl LoadTrack {
         self.points.iter().map(|p| p.0)
     }
 
+    /// The angle (rad, > `min_gap`) from azimuth ψ to the next point of the track met
+    /// going `forward` (ψ increasing) or backward: where the ball's loads next change
+    /// slope. Points closer than `min_gap` ahead are passed over (the free orbit's
+    /// piecewise integration lands on a point only to within its prediction error and
+    /// must not aim at it again); with every point that close, the next one is a turn
+    /// further. `None` for an empty track.
+    pub fn angle_to_next_point(&self, psi: f64, forward: bool, min_gap: f64) -> Option<f64> {
+        let tau = std::f64::consts::TAU;
+        let psi = psi.rem_euclid(tau);
+        self.points
+            .iter()
+            .map(|p| {
+                let d = if forward { p.0 - psi } else { psi - p.0 }.rem_euclid(tau);
+                if d <= min_gap {
+                    d + tau
+                } else {
+                    d
+                }
+            })
+            .min_by(f64::total_cmp)
+    }
+
     /// Whether every point has the same loads (an axisymmetric load): then there is no
     /// kink to respect.
     pub fn is_uniform(&self) -> bool {
