@@ -349,33 +349,100 @@ pub fn solve_ball_with(
         line_search: Backtracking::default(),
     };
     let mut sys = problem;
-    let r = newton.solve(&mut sys, &mut x);
-    match r.termination {
-        Termination::Converged {
-            iterations,
-            residual,
-        } => Ok(finish(x, r.eval, residual, iterations)),
-        // The line search found no decrease: accepted only when the residual is at the
-        // round-off level of the forces that make it (1e-12 of Q_i + Q_o + F_c).
-        Termination::Stalled {
-            iterations,
-            residual,
-        } if residual
-            <= 1e-12
-                * (r.eval.inner.load_n
-                    + r.eval.outer.load_n
-                    + p.centrifugal_coeff * (geom.outer_centre_radius_m + x[1])) =>
-        {
-            Ok(finish(x, r.eval, residual, iterations))
+    let mut run = |x: &mut Vector2<f64>| {
+        let r = newton.solve(&mut sys, x);
+        match r.termination {
+            Termination::Converged {
+                iterations,
+                residual,
+            } => Ok(finish(*x, r.eval, residual, iterations)),
+            // The line search found no decrease: accepted only when the residual is at the
+            // round-off level of the forces that make it (1e-12 of Q_i + Q_o + F_c).
+            Termination::Stalled {
+                iterations,
+                residual,
+            } if residual
+                <= 1e-12
+                    * (r.eval.inner.load_n
+                        + r.eval.outer.load_n
+                        + p.centrifugal_coeff * (geom.outer_centre_radius_m + x[1])) =>
+            {
+                Ok(finish(*x, r.eval, residual, iterations))
+            }
+            t => Err(BallError::BallNotConverged {
+                ball,
+                reason: reason(&t),
+                iterations: t.iterations(),
+                residual_n: r.eval.f.amax(),
+                tolerance_n,
+            }),
         }
-        t => Err(BallError::BallNotConverged {
-            ball,
-            reason: reason(&t),
-            iterations: t.iterations(),
-            residual_n: r.eval.f.amax(),
-            tolerance_n,
-        }),
+    };
+    let first = match run(&mut x) {
+        Ok(b) => return Ok(b),
+        Err(e) => e,
+    };
+    // A loose ball (gap ≤ 0) held by a small centrifugal force, whose outer-race-alone
+    // position the inner race blocks: it is wedged between the two grooves with loads of
+    // the order of F_c (micronewtons at the skid search's lowest speeds). From a start a
+    // few nanometres off the wedge, Newton crawls: the inner contact is open there, the
+    // outer contact's tangential stiffness Q_o/L_o is ~0.04 N/m, and a step that closes the
+    // inner contact by more than ~1e-11 m overshoots the residual, so the trust radius
+    // stays below 1e-9 m (issue 16: ball 9 of Bearing B, force-held preload, 500 N radial,
+    // ω_i = 0.10 rad/s, 100 iterations closed 5.4 of the 8.0 nm). Retried once from the
+    // wedge itself ([`wedged_start`]); only after a failure, so that every answer the
+    // first attempt gives is unchanged.
+    match wedged_start(geom, centres, &p, gap) {
+        Some(mut x) => run(&mut x).map_err(|_| first),
+        None => Err(first),
     }
+}
+
+/// The position of a loose ball (gap ≤ 0) wedged between the grooves by its centrifugal
+/// force: the outer intersection of the circles |X| = (f_o − ½)D + δ_o and
+/// |(I − O') − X| = (f_i − ½)D + δ_i, with δ = (Q/K)^{2/3} of the loads that balance
+/// F_c at the rigid wedge through (2-5a, b), (I + µR)(Q_i u_i − Q_o u_o) = −F_c e_r (two
+/// passes: the loads at the rigid wedge, then at the wedge they deflect). `None` when the
+/// circles do not meet, the balance needs a negative (tensile) load, or there is no
+/// centrifugal force: then there is no wedged equilibrium to start from.
+fn wedged_start(
+    geom: &BallGeometry,
+    centres: Vector2<f64>,
+    p: &BallParams,
+    gap: f64,
+) -> Option<Vector2<f64>> {
+    // (Written so that a NaN gap or coefficient, too, gives None.)
+    (gap <= 0.0 && p.centrifugal_coeff > 0.0).then_some(())?;
+    let d = centres.norm();
+    let e = centres / d;
+    // The normal of the line of centres pointing outwards (radially).
+    let n = if e[0] >= 0.0 {
+        Vector2::new(-e[1], e[0])
+    } else {
+        Vector2::new(e[1], -e[0])
+    };
+    // The outer intersection of the circles about O' and I − O' of radii r_o, r_i.
+    let wedge = |d_i: f64, d_o: f64| {
+        let (r_o, r_i) = (geom.outer_offset_m + d_o, geom.inner_offset_m + d_i);
+        let a = (d * d + r_o * r_o - r_i * r_i) / (2.0 * d);
+        let h2 = r_o * r_o - a * a;
+        (h2 > 0.0).then(|| e * a + n * h2.sqrt())
+    };
+    let fm = friction_matrix(p.friction);
+    let mut x = wedge(0.0, 0.0)?;
+    for _ in 0..2 {
+        let u_o = x / x.norm();
+        let u_i = (centres - x) / (centres - x).norm();
+        let m = fm * Matrix2::from_columns(&[u_i, -u_o]);
+        let fc = p.centrifugal_coeff * (geom.outer_centre_radius_m + x[1]);
+        let q = m.try_inverse()? * Vector2::new(0.0, -fc);
+        (q[0] > 0.0 && q[1] > 0.0).then_some(())?;
+        x = wedge(
+            (q[0] / p.inner_stiffness).powf(2.0 / 3.0),
+            (q[1] / p.outer_stiffness).powf(2.0 / 3.0),
+        )?;
+    }
+    Some(x)
 }
 
 /// How the inner ring is held axially during a load solve.

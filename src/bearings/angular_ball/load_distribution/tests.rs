@@ -459,3 +459,128 @@ fn mirror_symmetry_equals_the_full_solve() {
     }
     assert!(opened, "no case opened an inner contact");
 }
+
+/// Issue 16: a loose ball (the races do not pinch it: gap −0.49 µm) held by a tiny
+/// centrifugal force (ball 9 of Bearing B, force-held preload, 500 N radial, at the skid
+/// search's ω_i = 0.10 rad/s: F_c = 0.94 µN) is wedged between the grooves with loads of
+/// ~9 µN. From the fixed point's warm start (inner contact open by 8.0 nm) Newton crawls
+/// ~55 pm a step (the inner contact's stiffness caps the trust radius) and spends its 100
+/// iterations (residual 8.0e-6 N, tolerance 5e-10 N); the wedged start converges at once.
+/// Checked independently: both contacts carry load, the force residual F of (2-5a, b)
+/// re-evaluated at the answer is within the 5e-10 N tolerance (the solver's), and the
+/// answer is the outer intersection of the two deflected groove circles (|X| = (f_o − ½)D
+/// + δ_o, |(I − O') − X| = (f_i − ½)D + δ_i) to 1e-15 m (round-off of 2.4e-4 m).
+#[test]
+fn loose_ball_wedged_by_a_small_centrifugal_force_converges() {
+    let g = geom(&BallInput::chen_b());
+    let centres = Vector2::new(4.1893146544959254e-4, 2.332927877710085e-4);
+    let p = BallParams {
+        friction: 0.0,
+        centrifugal_coeff: 1.63486071801454e-5,
+        inner_stiffness: 32198757603.963516,
+        outer_stiffness: 32676339438.850777,
+    };
+    let warm = Vector2::new(0.00020423331989505514, 0.0001260506721391007);
+    let gap = centres.norm() - g.inner_offset_m - g.outer_offset_m;
+    assert!(gap < -4e-7 && gap > -6e-7, "{gap}");
+    // The plain Newton from the warm start does not make it (what the issue saw).
+    let newton = Newton {
+        max_iterations: 100,
+        tolerance: 5e-10,
+        trust: TrustRegion::new(1e-5, 1e-15, 1e-3),
+        line_search: Backtracking::default(),
+    };
+    let mut sys = BallProblem {
+        geom: &g,
+        centres,
+        p,
+    };
+    let mut x = warm;
+    assert!(!newton.solve(&mut sys, &mut x).termination.is_converged());
+    let b = solve_ball(&g, centres, p, Some(warm), 5e-10, 9).unwrap();
+    assert!(b.residual_n <= 5e-10, "{}", b.residual_n);
+    assert!(sys.eval(&b.position).f.amax() <= 5e-10);
+    let (qi, qo) = (b.inner.load_n, b.outer.load_n);
+    assert!(qi > 5e-6 && qo > 5e-6, "{qi} {qo}");
+    let r_o = g.outer_offset_m + b.outer.deflection_m;
+    let r_i = g.inner_offset_m + b.inner.deflection_m;
+    assert!((b.position.norm() - r_o).abs() < 1e-15);
+    assert!(((centres - b.position).norm() - r_i).abs() < 1e-15);
+    // The outer of the two intersections: radially beyond the line of centres.
+    let e = centres / centres.norm();
+    assert!(e[0] * b.position[1] - e[1] * b.position[0] > 0.0);
+}
+
+/// Issue 16, the whole case: Bearing B, 1000 N preload held as a force, 500 N radial, at
+/// the deck's 9 500 rpm and at the skid search's lowest sample (ω_i = 0.1016 rad/s, where
+/// the balls opposite the load are loose and failed before). Every ball's force residual
+/// is within the solve's ball tolerance, and the ring balance (2-8) holds to its
+/// tolerance when re-summed from the balls: F_a = Σ P_a and F_r = Σ P_r cos ψ with P the
+/// inner ring's force on each ball (friction included; see the module doc), and Chen's
+/// frictionless F_r = Σ Q_i cos α_i cos ψ to the friction's share. Tolerances: the
+/// solver's own (per ball 1e-11·F_ref/Z, or a stall at 1e-12 of the ball's forces, their
+/// round-off; 1e-10·F_ref for the ring; F_ref as the solver forms it), plus 1e-9 N for
+/// re-summing.
+#[test]
+fn force_held_preload_under_radial_load_solves() {
+    let input = BallInput::chen_b();
+    let g = geom(&input);
+    for speed in [rpm(9_500.0), 0.10156012715088496] {
+        let mut c = conditions(
+            0.0,
+            Axial::Force(1000.0),
+            500.0,
+            GyroscopicFriction::Resisting,
+        );
+        c.inner_speed_rad_s = speed;
+        c.max_friction = input.traction.curve().max_mu();
+        let l = solve(&g, &c, Cancel::NONE).unwrap();
+        let z = g.ball_count as f64;
+        // The solver's force scale: the largest of the loads and Z times the centrifugal
+        // force at half the inner speed on the pitch circle (`solve_warm`).
+        let wm = 0.5 * speed;
+        let f_ref = (1000.0f64).max(z * g.ball_mass_kg * wm * wm * 0.5 * g.pitch_diameter_m);
+        assert!(l.ring_residual_n <= 1e-10 * f_ref, "{}", l.ring_residual_n);
+        let (mut fa, mut fr, mut fr_chen, mut fric) = (0.0, 0.0, 0.0, 0.0);
+        for b in &l.balls {
+            let e = b.equilibrium;
+            // The ball solve's acceptance: its tolerance, or a line-search stall at the
+            // round-off of the forces that make the residual (1e-12 of Q_i + Q_o + F_c).
+            let roundoff = 1e-12 * (e.inner.load_n + e.outer.load_n + e.centrifugal_n);
+            assert!(
+                e.residual_n <= (1e-11 * f_ref / z).max(roundoff),
+                "{} {roundoff}",
+                e.residual_n
+            );
+            fa += e.ring_force[0];
+            fr += e.ring_force[1] * b.azimuth_rad.cos();
+            fr_chen += e.inner.load_n * e.inner.angle_rad.cos() * b.azimuth_rad.cos();
+            fric += (e.ring_force[1] - e.inner.load_n * e.inner.angle_rad.cos()).abs();
+        }
+        assert!((fa - 1000.0).abs() <= 1e-10 * f_ref + 1e-9, "{fa}");
+        assert!((fr - 500.0).abs() <= 1e-10 * f_ref + 1e-9, "{fr}");
+        assert!((l.radial_force_n - 500.0).abs() <= 1e-10 * f_ref + 1e-9);
+        assert!((fr_chen - 500.0).abs() <= fric + 1e-9, "{fr_chen} {fric}");
+        eprintln!(
+            "ω_i {speed:.4} rad/s: F_a {fa:.9} N, F_r {fr:.9} N, Σ Q_i cos α_i cos ψ {fr_chen:.6} N, \
+             ball residual {:.2e} N, ball 9 Q_i {:.3} N",
+            l.ball_residual_n, l.balls[9].equilibrium.inner.load_n
+        );
+    }
+}
+
+/// Issue 16 as the CLI ran it (`run decks/chen_b.toml --set operating.radial_load=500
+/// --set operating.preload_mode=force`): the whole analysis (skid search included, whose
+/// lowest speeds made the loose balls) completes.
+#[test]
+fn force_held_preload_analysis_completes_under_radial_load() {
+    use crate::bearings::angular_ball::analysis::analyse;
+    use crate::bearings::angular_ball::input::PreloadMode;
+    let mut input = BallInput::chen_b();
+    input.operating.preload_mode = PreloadMode::Force;
+    for radial in [500.0, 800.0] {
+        input.operating.radial_load_n = radial;
+        let a = analyse(&input, Cancel::NONE).unwrap();
+        assert!((a.load.radial_force_n - radial).abs() < 1e-6);
+    }
+}
