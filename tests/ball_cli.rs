@@ -405,3 +405,30 @@ fn the_three_integrators_agree() {
         }
     }
 }
+
+/// `warnings` (added, as the roller systems have): Chen's Bearing B as shipped is within
+/// the model (an empty list); held as a force under 500 N radial load its inner contact
+/// angles pass 90° (up to 121.4°), which a real ring's shoulder would not allow: the JSON
+/// and the text report say so, and the solve still completes (it used to stall in the
+/// skid search's slowest load solve, where a loose ball is wedged by a micro-newton
+/// centrifugal force).
+#[test]
+fn warnings_name_a_contact_angle_past_90_degrees() {
+    let v = json("chen_b.toml", &[]);
+    assert_eq!(v["warnings"], serde_json::json!([]));
+    let extra = [
+        "--set",
+        "operating.preload_mode=force",
+        "--set",
+        "operating.radial_load=500",
+    ];
+    let v = json("chen_b.toml", &extra);
+    let w = v["warnings"][0].as_str().unwrap_or("");
+    assert!(w.starts_with("inner contact angle 121.4°"), "{w}");
+    let d = deck("chen_b.toml");
+    let mut args = vec!["run", d.as_str()];
+    args.extend(extra);
+    let (ok, out, err) = run(&args);
+    assert!(ok, "{err}");
+    assert!(out.contains("WARNING: inner contact angle"), "{out}");
+}

@@ -19,6 +19,7 @@ pub mod race_control;
 pub mod report;
 pub mod system;
 pub mod view;
+pub mod warnings;
 
 pub use error::BallError;
 pub use input::BallInput;

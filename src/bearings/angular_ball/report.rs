@@ -201,6 +201,8 @@ pub fn json(a: &BallAnalysis) -> Value {
         "skid": skid,
         "heat": heat,
         "dynamics": dynamics,
+        // Results beyond the validity of the model: sentences with their numbers (SI).
+        "warnings": super::warnings::warnings(a).into_iter().map(|w| w.si).collect::<Vec<_>>(),
         "residuals": {
             "ring_force_n": a.load.ring_residual_n,
             "ball_force_n": a.load.ball_residual_n,
@@ -226,6 +228,9 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
     );
     if units == Units::Us {
         let _ = writeln!(s, "(values in SI)");
+    }
+    for w in super::warnings::warnings(a) {
+        let _ = writeln!(s, "WARNING: {}", w.text(Units::Si));
     }
     let _ = writeln!(
         s,

@@ -261,7 +261,7 @@ pub fn view(a: &BallAnalysis) -> View {
             names: ["fixed-point", "ring Newton"],
             wall_time_s: 0.0,
         },
-        warnings: Vec::new(),
+        warnings: super::warnings::warnings(a),
         texts: Vec::new(),
     }
 }
