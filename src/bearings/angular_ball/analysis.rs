@@ -409,7 +409,15 @@ pub fn skid_threshold_streaming(
         let mut c = conditions(input, axial, 1.0);
         c.inner_speed_rad_s = wi * n;
         c.outer_speed_rad_s = wo * n;
-        let l = load_distribution::solve(geom, &c, cancel)?;
+        // A failed load solve says that it was the search's, and at which speed (the
+        // operating point itself solved; the user needs to know which solve did not).
+        let l = load_distribution::solve(geom, &c, cancel).map_err(|e| match e {
+            BallError::Cancelled => BallError::Cancelled,
+            e => BallError::Skid(format!(
+                "the load solve at {:.4} rpm (a speed the search sampled) failed: {e}",
+                n * 30.0 / std::f64::consts::PI
+            )),
+        })?;
         let (margin, mg, mr) = worst(mu, geom, &l);
         samples.push((n, mg, mr));
         on_sample(&sorted(samples.clone()));
