@@ -129,33 +129,26 @@ fn bearing_b_dynamics(c: &mut Criterion) {
     let mut g = c.benchmark_group("ball_b_time_simulation");
     g.sample_size(10);
     // The target (< 100 ms) on the default model, the free orbit (seed 2-14a per
-    // ball: one piece per ball, the load track's kinks are at azimuths, not known times).
+    // ball, integrated piecewise between predicted load-track kinks); beside it the
+    // orbital speed held at race control's cage speed (kinks at known times).
     assert_eq!(input.dynamics.orbit, Orbit::Free);
-    g.bench_function("radial_500_n_20_balls_5_orbits", |b| {
-        b.iter(|| {
-            dynamics::run(
-                std::hint::black_box(&input),
-                &a.geometry,
-                &a.balls,
-                Cancel::NONE,
-            )
-            .unwrap_or_else(|e| panic!("{e}"))
-        })
-    });
-    // The same with the orbital speed held at race control's cage speed
-    // (`dynamics.orbit = "cage"`): integrated piecewise between the load track's kinks.
-    input.dynamics.orbit = Orbit::Cage;
-    g.bench_function("radial_500_n_20_balls_5_orbits_held_cage", |b| {
-        b.iter(|| {
-            dynamics::run(
-                std::hint::black_box(&input),
-                &a.geometry,
-                &a.balls,
-                Cancel::NONE,
-            )
-            .unwrap_or_else(|e| panic!("{e}"))
-        })
-    });
+    for (orbit, name) in [
+        (Orbit::Free, "radial_500_n_20_balls_5_orbits"),
+        (Orbit::Cage, "radial_500_n_20_balls_5_orbits_held_cage"),
+    ] {
+        input.dynamics.orbit = orbit;
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                dynamics::run(
+                    std::hint::black_box(&input),
+                    &a.geometry,
+                    &a.balls,
+                    Cancel::NONE,
+                )
+                .unwrap_or_else(|e| panic!("{e}"))
+            })
+        });
+    }
     g.finish();
 }
 

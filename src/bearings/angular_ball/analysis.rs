@@ -328,6 +328,17 @@ fn conditions(input: &BallInput, axial: Axial, scale: f64) -> Conditions {
     }
 }
 
+impl BallAnalysis {
+    /// The largest Hertz pressure p₀ over every contact of every ball, Pa (the key
+    /// output `max_pressure_pa` and the stress warning).
+    pub fn max_pressure_pa(&self) -> f64 {
+        self.balls
+            .iter()
+            .flat_map(|b| [b.inner.hertz.max_pressure_pa, b.outer.hertz.max_pressure_pa])
+            .fold(0.0, f64::max)
+    }
+}
+
 fn resisting(mu: f64, geom: &BallGeometry, b: &BallLoad) -> f64 {
     0.5 * mu * geom.ball_diameter_m * (b.equilibrium.inner.load_n + b.equilibrium.outer.load_n)
 }
@@ -419,8 +430,11 @@ pub fn skid_threshold_streaming(
             )),
         })?;
         let (margin, mg, mr) = worst(mu, geom, &l);
-        samples.push((n, mg, mr));
-        on_sample(&sorted(samples.clone()));
+        // Kept ascending in speed as they come (the bracket's samples ascend; the root's
+        // iterates fall inside the last bracket): inserted in place, no copy or sort.
+        let at = samples.partition_point(|s: &SkidSample| s.0 <= n);
+        samples.insert(at, (n, mg, mr));
+        on_sample(&samples);
         Ok(margin)
     };
     const SAMPLES: usize = 30;
@@ -432,7 +446,7 @@ pub fn skid_threshold_streaming(
             reason: None,
             limit_rad_s: limit,
             evaluations: 1,
-            samples: sorted(samples),
+            samples,
         });
     }
     for k in 1..=SAMPLES {
@@ -478,7 +492,7 @@ pub fn skid_threshold_streaming(
                 reason: None,
                 limit_rad_s: limit,
                 evaluations,
-                samples: sorted(samples),
+                samples,
             });
         }
         lo = hi;
@@ -492,13 +506,8 @@ pub fn skid_threshold_streaming(
         )),
         limit_rad_s: limit,
         evaluations: samples.len(),
-        samples: sorted(samples),
+        samples,
     })
-}
-
-fn sorted(mut v: Vec<(f64, f64, f64)>) -> Vec<(f64, f64, f64)> {
-    v.sort_by(|a, b| a.0.total_cmp(&b.0));
-    v
 }
 
 fn contact_result(

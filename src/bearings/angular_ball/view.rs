@@ -160,16 +160,7 @@ pub fn cage_rpm(a: &BallAnalysis) -> f64 {
 /// The view of a solved case.
 pub fn view(a: &BallAnalysis) -> View {
     let rows = a.balls.iter().enumerate().map(|(j, b)| row(j, b)).collect();
-    let max_p = a
-        .balls
-        .iter()
-        .map(|b| {
-            b.inner
-                .hertz
-                .max_pressure_pa
-                .max(b.outer.hertz.max_pressure_pa)
-        })
-        .fold(0.0, f64::max);
+    let max_p = a.max_pressure_pa();
     let max_q = a
         .balls
         .iter()

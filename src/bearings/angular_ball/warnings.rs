@@ -55,11 +55,7 @@ pub fn warnings(a: &BallAnalysis) -> Vec<Warning> {
             }
         }
     }
-    let max_p = a
-        .balls
-        .iter()
-        .flat_map(|b| [b.inner.hertz.max_pressure_pa, b.outer.hertz.max_pressure_pa])
-        .fold(0.0, f64::max);
+    let max_p = a.max_pressure_pa();
     if max_p > STRESS_LIMIT_PA {
         let f = |u: Units| {
             let p = |v: f64| Display::Stress.convert(v, u);
@@ -118,16 +114,7 @@ mod tests {
         let mut i = BallInput::chen_a();
         i.operating.axial_load_n = 150_000.0;
         let a = analyse(&i, Cancel::NONE).unwrap();
-        let p = a
-            .balls
-            .iter()
-            .map(|b| {
-                b.inner
-                    .hertz
-                    .max_pressure_pa
-                    .max(b.outer.hertz.max_pressure_pa)
-            })
-            .fold(0.0, f64::max);
+        let p = a.max_pressure_pa();
         assert!(p > STRESS_LIMIT_PA, "{p}");
         let w = warnings(&a);
         assert!(w
