@@ -4,11 +4,11 @@
 //! the workbench's per-edit latency by edit kind (the stage-cached pipeline re-runs only the
 //! stages an edit touches).
 use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::bearings::spherical_roller::deck::{self as sr_deck, Deck};
 use rollbench::bearings::spherical_roller::load_distribution::{
     solve, DynamicSpeeds, SolveOptions,
 };
 use rollbench::bearings::spherical_roller::pipeline::{run, Pipeline, Request};
-use rollbench::deck::Deck;
 
 fn decks() -> Vec<(String, Deck)> {
     let mut out = Vec::new();
@@ -18,7 +18,7 @@ fn decks() -> Vec<(String, Deck)> {
     paths.sort();
     for p in paths {
         if p.extension().is_some_and(|e| e == "toml") {
-            if let Ok(d) = Deck::load(&p) {
+            if let Ok(d) = sr_deck::load(&p) {
                 let name = p
                     .file_stem()
                     .map(|s| s.to_string_lossy().into_owned())
@@ -33,7 +33,7 @@ fn decks() -> Vec<(String, Deck)> {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("load_distribution");
     for (name, deck) in decks() {
-        let b = deck.bearing.clone();
+        let b = deck.value.clone();
         let s = DynamicSpeeds::app_c_estimate(&b);
         g.bench_function(&name, |bch| {
             bch.iter(|| solve(&b, &s, &SolveOptions::default(), None))
@@ -42,14 +42,14 @@ fn bench(c: &mut Criterion) {
     g.finish();
     let mut g = c.benchmark_group("pipeline_no_transient");
     for (name, deck) in decks() {
-        let b = deck.bearing.clone();
+        let b = deck.value.clone();
         g.bench_function(&name, |bch| bch.iter(|| run(&b, &Request::default(), None)));
     }
     g.finish();
     let mut g = c.benchmark_group("cylindrical_radial");
     if let Some((_, radial)) = decks().into_iter().find(|(n, _)| n == "radial_si") {
         for laminae in [21, 61] {
-            let mut b = radial.bearing.clone();
+            let mut b = radial.value.clone();
             rollbench::verify::cases::make_cylindrical_radial(&mut b, laminae);
             let s = DynamicSpeeds::app_c_estimate(&b);
             g.bench_function(format!("gamma_{laminae}"), |bch| {
@@ -92,7 +92,7 @@ fn edit_latency(c: &mut Criterion) {
     let mut g = c.benchmark_group("edit_latency");
     for (name, edit) in edits {
         let mut p = Pipeline::new();
-        let mut b = deck.bearing.clone();
+        let mut b = deck.value.clone();
         let mut t = tm.clone();
         let _ = p.run(&b, Some(&t), &Request::default(), None);
         let mut flip = false;

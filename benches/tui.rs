@@ -39,8 +39,11 @@ fn solve_inline(app: &mut App, cmds: Vec<Command>) {
 }
 
 fn solved_app(w: u16, h: u16, pane: Pane) -> App {
-    let deck = DeckDoc::parse(rollbench::deck::DEFAULT_DECK, "aerospace.toml")
-        .unwrap_or_else(|e| panic!("{e}"));
+    let deck = DeckDoc::parse(
+        rollbench::bearings::spherical_roller::deck::DEFAULT_DECK,
+        "aerospace.toml",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let mut app = App::new(deck, None);
     app.handle(AppEvent::Resize(w, h));
     let cmds = app.start();

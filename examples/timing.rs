@@ -1,7 +1,7 @@
 //! Quick timing of the pipeline on the shipped decks: the load stage alone (with its
 //! nanoseconds per lamina evaluation) and the full pipeline without the transient.
+use rollbench::bearings::spherical_roller::deck as sr_deck;
 use rollbench::bearings::spherical_roller::pipeline::{run, Analysis, Request};
-use rollbench::deck::Deck;
 
 /// Median and minimum wall time of `n` runs (the minimum is the steadier figure on a busy
 /// machine; the median is what the README quotes).
@@ -28,9 +28,9 @@ fn main() {
         ..Request::default()
     };
     for name in ["aerospace", "radial_si", "thrust", "industrial"] {
-        let d = Deck::load(format!("decks/{name}.toml")).expect("deck");
-        let (tl, ml, a) = median(&d.bearing, &load_only, 200);
-        let (tf, mf, _) = median(&d.bearing, &Request::default(), 200);
+        let d = sr_deck::load(format!("decks/{name}.toml")).expect("deck");
+        let (tl, ml, a) = median(&d.value, &load_only, 200);
+        let (tf, mf, _) = median(&d.value, &Request::default(), 200);
         let evals = a.load.stats.lamina_evaluations;
         println!(
             "{name}: load {:.3} ms (min {:.3}, {:.0} ns/lamina eval), full {:.3} ms (min {:.3}); dyn its {}, ring its {}, roller its {}, lamina evals {evals}",

@@ -8,9 +8,9 @@
 //! rest), the same for the full pipeline, and the roller loads.
 //!
 //! `cargo run --release --example tribology_case -- [LAMINAE]` (default 21).
+use rollbench::bearings::spherical_roller::deck as sr_deck;
 use rollbench::bearings::spherical_roller::load_distribution::{self, DynamicSpeeds, SolveOptions};
 use rollbench::bearings::spherical_roller::pipeline::{run, Request};
-use rollbench::deck::Deck;
 
 fn median<F: FnMut()>(n: usize, mut f: F) -> f64 {
     let mut t: Vec<f64> = (0..n)
@@ -29,9 +29,9 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(21);
-    let mut b = Deck::load(concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml"))
+    let mut b = sr_deck::load(concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml"))
         .expect("deck")
-        .bearing;
+        .value;
     rollbench::verify::cases::make_cylindrical_radial(&mut b, laminae);
     let speeds = DynamicSpeeds::app_c_estimate(&b);
     let solve = || load_distribution::solve(&b, &speeds, &SolveOptions::default(), None);

@@ -8,10 +8,11 @@ use std::path::Path;
 use common::toml_files;
 
 use proptest::prelude::*;
+use rollbench::bearings::spherical_roller::deck::{self as sr_deck, write_bearing, Deck};
 use rollbench::bearings::spherical_roller::{
     Bearing, FilmModel, GuidingRing, LifeMethod, Material,
 };
-use rollbench::deck::{write_bearing, Deck, Units};
+use rollbench::units::Units;
 
 #[test]
 fn every_shipped_deck_parses() {
@@ -45,7 +46,7 @@ fn every_invalid_deck_fails_with_key_and_line() {
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         let text = std::fs::read_to_string(&path).unwrap_or_default();
-        let err = match Deck::parse(&text, &name) {
+        let err = match sr_deck::parse(&text, &name) {
             Ok(_) => panic!("{name} was accepted"),
             Err(e) => e,
         };
@@ -217,7 +218,7 @@ fn deck(name: &str) -> Deck {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("decks")
         .join(name);
-    match Deck::load(&path) {
+    match sr_deck::load(&path) {
         Ok(d) => d,
         Err(e) => panic!("{e}"),
     }
@@ -233,24 +234,24 @@ fn shipped_decks_have_their_stated_character() {
     };
     let radial = deck("radial_si.toml");
     assert_eq!(radial.units, Units::Si);
-    assert_eq!(radial.bearing.geometry.contact_angle_rad, 0.0);
-    assert_eq!(radial.bearing.operating.axial_load_n, 0.0);
-    assert_eq!(radial.bearing.geometry.roller_count, 18);
+    assert_eq!(radial.value.geometry.contact_angle_rad, 0.0);
+    assert_eq!(radial.value.operating.axial_load_n, 0.0);
+    assert_eq!(radial.value.geometry.roller_count, 18);
     let thrust = deck("thrust.toml");
-    assert_eq!(thrust.bearing.operating.radial_load_n, 0.0);
-    assert!(thrust.bearing.operating.axial_load_n > 0.0);
-    assert!((thrust.bearing.geometry.contact_angle_rad - 15f64.to_radians()).abs() < 1e-15);
-    let r = spherical(&thrust.bearing) / thrust.bearing.geometry.outer_crown_radius_m;
+    assert_eq!(thrust.value.operating.radial_load_n, 0.0);
+    assert!(thrust.value.operating.axial_load_n > 0.0);
+    assert!((thrust.value.geometry.contact_angle_rad - 15f64.to_radians()).abs() < 1e-15);
+    let r = spherical(&thrust.value) / thrust.value.geometry.outer_crown_radius_m;
     assert!((r - 1.0).abs() < 1e-5, "{r}");
     let ind = deck("industrial.toml");
     assert_eq!(ind.units, Units::Si);
-    assert!(ind.bearing.operating.inner_speed_rad_s < 400.0 * std::f64::consts::PI / 30.0);
-    let r = spherical(&ind.bearing) / ind.bearing.geometry.outer_crown_radius_m;
+    assert!(ind.value.operating.inner_speed_rad_s < 400.0 * std::f64::consts::PI / 30.0);
+    let r = spherical(&ind.value) / ind.value.geometry.outer_crown_radius_m;
     assert!((r - 1.0).abs() < 1e-5, "{r}");
     let aero = deck("aerospace.toml");
-    assert!(diff(&aero.bearing, &Bearing::example_aerospace(), 1e-12).is_empty());
+    assert!(diff(&aero.value, &Bearing::example_aerospace(), 1e-12).is_empty());
     let aero_si = deck("aerospace_si.toml");
-    assert!(diff(&aero_si.bearing, &aero.bearing, 1e-9).is_empty());
+    assert!(diff(&aero_si.value, &aero.value, 1e-9).is_empty());
 }
 
 proptest! {
@@ -262,22 +263,22 @@ proptest! {
     fn write_parse_round_trip(b in bearing()) {
         for units in [Units::Us, Units::Si] {
             let text = write_bearing(&b, units);
-            let d = Deck::parse(&text, "prop.toml");
+            let d = sr_deck::parse(&text, "prop.toml");
             prop_assert!(d.is_ok(), "{}\n{}", d.err().map(|e| e.to_string()).unwrap_or_default(), text);
             if let Ok(d) = d {
-                prop_assert_eq!(&d.bearing.name, &b.name);
-                prop_assert_eq!(d.bearing.lubricant.film_model, b.lubricant.film_model);
-                prop_assert_eq!(d.bearing.life.method, b.life.method);
-                prop_assert_eq!(d.bearing.cage.guided_by, b.cage.guided_by);
-                let dif = diff(&d.bearing, &b, 1e-9);
+                prop_assert_eq!(&d.value.name, &b.name);
+                prop_assert_eq!(d.value.lubricant.film_model, b.lubricant.film_model);
+                prop_assert_eq!(d.value.life.method, b.life.method);
+                prop_assert_eq!(d.value.cage.guided_by, b.cage.guided_by);
+                let dif = diff(&d.value, &b, 1e-9);
                 prop_assert!(dif.is_empty(), "{:?}", dif);
                 // and through the conversion API
                 let other = if units == Units::Us { Units::Si } else { Units::Us };
                 let c = d.converted(other);
-                let back = Deck::parse(&c.to_toml_string(), "conv.toml");
+                let back = sr_deck::parse(&c.to_toml_string(), "conv.toml");
                 prop_assert!(back.is_ok());
                 if let Ok(back) = back {
-                    prop_assert!(diff(&back.bearing, &b, 1e-9).is_empty());
+                    prop_assert!(diff(&back.value, &b, 1e-9).is_empty());
                 }
             }
         }

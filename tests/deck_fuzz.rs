@@ -13,7 +13,7 @@ mod common;
 
 use proptest::prelude::*;
 use proptest::test_runner::Config;
-use rollbench::deck::Deck;
+use rollbench::bearings::spherical_roller::deck as sr_deck;
 
 fn shipped() -> Vec<(String, String)> {
     let files = common::toml_files("decks");
@@ -145,7 +145,7 @@ fn apply(text: &str, muts: &[Mutation]) -> String {
 
 /// What `rollbench check` does, in-process: parse, then the `[thermal]` section.
 fn check_in_process(text: &str) -> Result<(), String> {
-    let deck = Deck::parse(text, "fuzz.toml").map_err(|e| e.to_string())?;
+    let deck = sr_deck::parse(text, "fuzz.toml").map_err(|e| e.to_string())?;
     deck.thermal_model().map(|_| ()).map_err(|e| e.to_string())
 }
 
@@ -265,9 +265,9 @@ fn mutation_outcome_mix() {
                 // (Ok or a typed error).
                 let text = apply(text, &muts);
                 let solved = std::panic::catch_unwind(|| {
-                    Deck::parse(&text, "fuzz.toml").map(|d| {
+                    sr_deck::parse(&text, "fuzz.toml").map(|d| {
                         rollbench::bearings::spherical_roller::pipeline::run(
-                            &d.bearing,
+                            &d.value,
                             &Default::default(),
                             None,
                         )
@@ -342,11 +342,14 @@ fn set_list() -> impl Strategy<Value = Vec<String>> {
 /// Applies `sets` to the aerospace deck, then builds its `[thermal]` model (what `run`
 /// does): the resulting bearing and thermal table, or the error text.
 fn apply_sets(sets: &[String]) -> Result<String, String> {
-    let mut deck =
-        Deck::parse(rollbench::deck::DEFAULT_DECK, "aero.toml").map_err(|e| e.to_string())?;
-    deck.apply_assignments(sets).map_err(|e| e.to_string())?;
+    let mut deck = sr_deck::parse(sr_deck::DEFAULT_DECK, "aero.toml").map_err(|e| e.to_string())?;
+    sr_deck::apply(&mut deck, sets).map_err(|e| e.to_string())?;
     deck.thermal_model().map_err(|e| e.to_string())?;
-    Ok(format!("{:?}\n{:?}", deck.bearing, deck.thermal))
+    Ok(format!(
+        "{:?}\n{:?}",
+        deck.value,
+        deck.opaque.get("thermal")
+    ))
 }
 
 proptest! {

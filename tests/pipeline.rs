@@ -1,13 +1,13 @@
 //! Pipeline-level tests against independent references (issues 2–5).
 
+use rollbench::bearings::spherical_roller::deck::{self as sr_deck, Deck};
 use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
 use rollbench::bearings::spherical_roller::report;
-use rollbench::deck::Deck;
 use rollbench::physics::contact::line;
 
 fn deck(name: &str) -> Deck {
     let path = format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"));
-    match Deck::load(&path) {
+    match sr_deck::load(&path) {
         Ok(d) => d,
         Err(e) => panic!("{e}"),
     }
@@ -112,8 +112,8 @@ fn si_and_us_decks_give_the_same_json() {
     // names and residuals (both below tolerance, otherwise arbitrary) are skipped.
     let us = deck("aerospace.toml");
     let si = deck("aerospace_si.toml");
-    let a = report::json::to_value(&run(&us.bearing));
-    let b = report::json::to_value(&run(&si.bearing));
+    let a = report::json::to_value(&run(&us.value));
+    let b = report::json::to_value(&run(&si.value));
     json_close(
         &a,
         &b,
@@ -134,14 +134,14 @@ fn lamina_hertz_matches_closed_form() {
     // carry the stress-concentration factor (§4.2) and are excluded. Tolerance 1e-9: the
     // same formula evaluated twice.
     let d = deck("aerospace.toml");
-    let a = run(&d.bearing);
+    let a = run(&d.value);
     let st = a
         .stresses
         .as_ref()
         .map(|s| &s.laminae)
         .cloned()
         .unwrap_or_default();
-    let e = &d.bearing.materials;
+    let e = &d.value.materials;
     let e_star = 1.0
         / ((1.0 - e.roller.poisson_ratio.powi(2)) / e.roller.youngs_modulus_pa
             + (1.0 - e.inner_ring.poisson_ratio.powi(2)) / e.inner_ring.youngs_modulus_pa);
@@ -174,7 +174,7 @@ fn zero_angle_uncrowned_speeds_equal_app_c() {
     // β = 0, near-cylindrical rollers (crowns 100 m), light load: the most loaded points sit
     // at the mid-plane with radii (P_t ∓ D)/2 up to the elastic approach (~1e-6 of D), so §7's
     // cage and roller speeds equal App. C's closed forms to 1e-5 relative.
-    let mut b = deck("radial_si.toml").bearing;
+    let mut b = deck("radial_si.toml").value;
     b.geometry.roller_crown_radius_m = 100.0;
     b.geometry.inner_crown_radius_m = 100.0;
     b.geometry.outer_crown_radius_m = 100.0;
@@ -210,7 +210,7 @@ fn sliding_changes_sign_across_crowned_contact() {
     // points and grows away from them. (§7's averaged spin, eq. 7.12, need not give a rolling
     // point on the outer raceway too: there the sliding keeps one sign.)
     let d = deck("aerospace.toml");
-    let a = run(&d.bearing);
+    let a = run(&d.value);
     let fr = a
         .friction
         .as_ref()
@@ -263,7 +263,7 @@ fn sliding_vanishes_at_the_rolling_point() {
     // relative error e_r/P_t ≈ 4e-4 in the cage speed): the mid lamina's sliding is below 1 %
     // of the largest, the rolling points lie within one lamina of the mid-plane, and |v| grows
     // monotonically beyond them; the profile is symmetric (1e-9).
-    let mut b = deck("radial_si.toml").bearing;
+    let mut b = deck("radial_si.toml").value;
     b.geometry.inner_crown_radius_m = b.geometry.outer_crown_radius_m;
     // "Within one lamina" is a statement about Γ = 61 laminae: the rolling points' offset
     // from the mid-plane is a length (set by e_r), so finer laminae put them further out
@@ -305,7 +305,7 @@ fn power_balance() {
         "industrial.toml",
     ] {
         let d = deck(name);
-        let a = run(&d.bearing);
+        let a = run(&d.value);
         let Some(fr) = &a.friction else {
             panic!("no heat for {name}")
         };
@@ -328,8 +328,7 @@ fn power_balance() {
         );
         let total = h.inner_contacts_w + h.outer_contacts_w + h.cage_rails_w + h.viscous_drag_w;
         assert!((h.total_w - total).abs() <= 1e-12 * total, "{name}");
-        let rel =
-            (d.bearing.operating.inner_speed_rad_s - d.bearing.operating.outer_speed_rad_s).abs();
+        let rel = (d.value.operating.inner_speed_rad_s - d.value.operating.outer_speed_rad_s).abs();
         assert!(
             (h.friction_torque_nm * rel - h.total_w).abs() <= 1e-12 * h.total_w,
             "{name}"
@@ -348,7 +347,7 @@ fn iterated_speeds_converge_near_app_c() {
         "thrust.toml",
         "industrial.toml",
     ] {
-        let a = run(&deck(name).bearing);
+        let a = run(&deck(name).value);
         assert!(
             a.speeds.iterations >= 1 && a.speeds.iterations < 30,
             "{name}: {}",
@@ -370,7 +369,7 @@ fn bearing_life_below_raceway_lives() {
         "thrust.toml",
         "industrial.toml",
     ] {
-        let a = run(&deck(name).bearing);
+        let a = run(&deck(name).value);
         let Some(l) = a.life.as_ref().map(|l| &l.result) else {
             panic!("{name}")
         };
@@ -394,7 +393,7 @@ fn solver_statistics_per_deck() {
         "thrust.toml",
         "industrial.toml",
     ] {
-        let a = run(&deck(name).bearing);
+        let a = run(&deck(name).value);
         let st = a.load.stats;
         s.push_str(&format!(
             "{name}: dynamic iterations {}, ring iterations {}, roller iterations {}, lamina evaluations {}\n",
@@ -413,7 +412,7 @@ fn stage_cache_reruns_only_what_an_edit_touches() {
         other => panic!("{other:?}"),
     };
     let mut p = Pipeline::new();
-    let mut b = d.bearing.clone();
+    let mut b = d.value.clone();
     let steady_only = Request::default();
     let first = p
         .run(&b, Some(&tm), &steady_only, None)
@@ -496,7 +495,7 @@ fn coarse_to_fine_path_gives_the_cold_answer() {
         "thrust.toml",
         "industrial.toml",
     ] {
-        let b = deck(name).bearing;
+        let b = deck(name).value;
         let fast = pipeline::run(&b, &Request::default(), None).unwrap_or_else(|e| panic!("{e}"));
         let plain = Request {
             presolve: false,
@@ -525,7 +524,7 @@ fn mirrored_rollers_are_copied_not_approximated() {
     // per-roller stages copy them. Recomputing every roller from scratch (mirror map
     // cleared) must give bit-identical contacts, stresses and heat: exact equality.
     use rollbench::bearings::spherical_roller::{contacts, load_distribution, stages};
-    let b = deck("aerospace.toml").bearing;
+    let b = deck("aerospace.toml").value;
     let speeds = load_distribution::DynamicSpeeds::app_c_estimate(&b);
     let ld = load_distribution::solve(&b, &speeds, &Default::default(), None)
         .unwrap_or_else(|e| panic!("{e}"));
@@ -565,7 +564,7 @@ fn cage_speed_and_life_converge_regularly_in_laminae() {
         let d = deck(name);
         let (mut cage, mut l10) = (vec![], vec![]);
         for &g in laminae {
-            let mut b = d.bearing.clone();
+            let mut b = d.value.clone();
             b.solver.laminae = g;
             b.solver.force_tolerance = 1e-6;
             let a = run(&b);

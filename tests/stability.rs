@@ -14,11 +14,12 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
+use rollbench::bearings::spherical_roller::deck::{self as sr_deck, write_bearing};
 use rollbench::bearings::spherical_roller::pipeline::{self, Analysis, Request};
 use rollbench::bearings::spherical_roller::report;
 use rollbench::bearings::spherical_roller::{Bearing, DynamicLoads, Material};
-use rollbench::deck::{write_bearing, Deck, Units};
 use rollbench::physics::life::{raceway_capacity, Raceway};
+use rollbench::units::Units;
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 
@@ -151,9 +152,9 @@ fn bearing(p: &Params) -> Bearing {
 /// range and cross-field rule of `deck::validate` holds. `None` if the deck is invalid
 /// (a generator defect, counted).
 fn valid(b: &Bearing) -> Option<Bearing> {
-    Deck::parse(&write_bearing(b, Units::Si), "stability case")
+    sr_deck::parse(&write_bearing(b, Units::Si), "stability case")
         .ok()
-        .map(|d| d.bearing)
+        .map(|d| d.value)
 }
 
 /// JSON keys whose value may legitimately be null (Option fields): lives of an unloaded
@@ -495,9 +496,7 @@ fn regression_roller_tipped_over_is_a_typed_error() {
         env!("CARGO_MANIFEST_DIR"),
         "/tests/regressions/roller_tipped_over.toml"
     );
-    let b = rollbench::deck::Deck::load(path)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .bearing;
+    let b = sr_deck::load(path).unwrap_or_else(|e| panic!("{e}")).value;
     match check_no_panic(&b) {
         Ok(Outcome::TypedError) => match pipeline::run(&b, &Request::default(), None) {
             Err(e) => assert!(format!("{e}").contains("pitched"), "{e}"),
@@ -551,8 +550,8 @@ fn regression_unloaded_at_speed_conforming() {
 /// radius no longer grows from the uncapped Newton length after a backtracked step.
 #[test]
 fn regression_aerospace_41_laminae() {
-    let deck = Deck::parse(rollbench::deck::DEFAULT_DECK, "aerospace.toml");
-    let mut b = deck.map(|d| d.bearing).unwrap_or_else(|e| panic!("{e}"));
+    let deck = sr_deck::parse(sr_deck::DEFAULT_DECK, "aerospace.toml");
+    let mut b = deck.map(|d| d.value).unwrap_or_else(|e| panic!("{e}"));
     b.solver.laminae = 41;
     assert_eq!(b.solver.force_tolerance, 1e-9);
     if let Err(e) = pipeline::run(&b, &Request::default(), None) {
@@ -570,8 +569,8 @@ fn regression_aerospace_41_laminae() {
 #[test]
 fn regression_industrial_21_laminae() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/industrial.toml");
-    let mut b = Deck::load(path)
-        .map(|d| d.bearing)
+    let mut b = sr_deck::load(path)
+        .map(|d| d.value)
         .unwrap_or_else(|e| panic!("{e}"));
     for laminae in [21, 5] {
         b.solver.laminae = laminae;

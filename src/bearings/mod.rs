@@ -14,18 +14,21 @@
 
 pub mod angular_ball;
 pub mod error;
+pub mod form_system;
 pub mod spherical_roller;
 pub mod tapered_roller;
 pub mod view;
 
 pub use error::SolveError;
+pub use form_system::{FormSystem, SystemCase};
 
-use crate::deck::{DeckErrors, FieldMeta, Form};
+use crate::deck::{DeckError, DeckErrors, DeckType, FieldMeta, Form, Location};
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
 
-/// The `type` of a deck that does not name one.
-pub const DEFAULT_SYSTEM: &str = "spherical-roller";
+/// The `type` of a deck that does not name one (the deck format's rule,
+/// [`crate::deck::DEFAULT_TYPE`]).
+pub const DEFAULT_SYSTEM: &str = crate::deck::DEFAULT_TYPE;
 
 /// Every bearing system rollbench knows, in the order `rollbench template --type` and
 /// error messages list them. Adding a system is one line here.
@@ -171,8 +174,8 @@ pub trait CaseDeck {
     fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors>;
 }
 
-/// A case whose deck is a [`Form`] of its system's schema (every system but the first):
-/// the [`CaseDeck`] half of the case comes with it.
+/// A case whose deck is a [`Form`] of its system's schema (every system's, through
+/// [`SystemCase`]): the [`CaseDeck`] half of the case comes with it.
 pub trait FormCase: Sized {
     /// The system's SI input.
     type Input: Clone + 'static;
@@ -259,7 +262,7 @@ pub fn load_case(
     source_name: &str,
     overrides: &[String],
 ) -> Result<Box<dyn Case>, DeckErrors> {
-    crate::deck::system_of(text, source_name)?.load(text, source_name, overrides)
+    system_of(text, source_name)?.load(text, source_name, overrides)
 }
 
 /// Reads a deck file of any system (bounded read; see [`crate::deck::read_deck_text`]).
@@ -353,3 +356,42 @@ pub fn known_types() -> String {
         .collect::<Vec<_>>()
         .join(", ")
 }
+
+/// The system deck text belongs to, by its top-level `type` (absent: [`DEFAULT_SYSTEM`]);
+/// an unknown system is refused at its line, listing the known ones, and a `type` that is
+/// not a string is a type error.
+pub fn system_of(text: &str, source_name: &str) -> Result<&'static dyn BearingSystem, DeckErrors> {
+    let (id, location, value) = match crate::deck::deck_type(text, source_name) {
+        DeckType::Absent => (
+            DEFAULT_SYSTEM.to_string(),
+            Location::start(source_name),
+            String::new(),
+        ),
+        DeckType::Named {
+            id,
+            location,
+            written,
+        } => (id, location, written),
+        DeckType::NotAString { location, written } => {
+            return Err(DeckError::WrongType {
+                location,
+                key: "type".into(),
+                value: written,
+                expected: format!("a string, one of {}", known_types()),
+            }
+            .into())
+        }
+    };
+    system(&id).ok_or_else(|| {
+        DeckError::Invalid {
+            location,
+            key: "type".into(),
+            value,
+            rule: format!("unknown bearing system (known: {})", known_types()),
+        }
+        .into()
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -4,15 +4,14 @@
 //!
 //! The machinery is generic over the bearing system ([`form`]: a [`Schema`] per system,
 //! read into a [`Form`]); this module adds what is not per system (reading a deck file,
-//! [`system_of`], errors, the `[thermal]` section's parser) and re-exports the spherical
-//! roller's deck ([`Deck`], [`fields()`], [`template`], …, defined in
-//! `bearings::spherical_roller::{deck, deck_schema}`), the default system.
+//! the deck's `type` ([`deck_type`]), errors, the `[thermal]` section's parser). It knows
+//! no bearing system: each system's schema lives in its folder under `crate::bearings`,
+//! and `crate::bearings` maps a deck's `type` to its system (input parsing does not
+//! know the registry).
 //!
-//! The spherical roller's key layout is a contract (see [`template`] for every key, its
-//! unit and range): top-level `type` (optional, `"spherical-roller"`), `units` ("us" |
-//! "si") and `name`, then the tables `[geometry]`, `[materials]`, `[operating]`,
-//! `[lubricant]`, `[surfaces]`, `[life]`, `[cage]`, optional `[solver]`, and an optional
-//! `[thermal]` table kept opaque for the thermal module.
+//! Every deck starts with the top-level keys `type` (the bearing system; optional only
+//! for [`DEFAULT_TYPE`] decks, written before there was a choice), `units` ("us" | "si")
+//! and `name`, then the tables of its system's schema.
 #![warn(missing_docs)]
 #![cfg_attr(
     not(test),
@@ -23,13 +22,6 @@ mod error;
 pub mod form;
 pub mod thermal;
 
-pub use crate::bearings::spherical_roller::deck::{
-    close_keys, editable_keys, field, fields, keys_table, template, write_bearing, Deck,
-    DEFAULT_DECK,
-};
-pub use crate::bearings::spherical_roller::deck_schema::{
-    FILM_MODELS, GROUPS, GUIDING_RINGS, LIFE_METHODS, MATERIAL_BODIES,
-};
 pub use crate::units::Units;
 pub use error::{DeckError, DeckErrors, Location};
 pub use form::{
@@ -89,27 +81,41 @@ pub fn read_deck_text(path: &Path) -> Result<String, DeckErrors> {
     })
 }
 
-/// The bearing system a deck's top-level `type` names; a deck without `type` is a
-/// [`crate::bearings::DEFAULT_SYSTEM`] deck. A deck that is not valid TOML is handed to
-/// the default system's parser, whose message locates the syntax error.
-pub fn system_of(
-    text: &str,
-    source_name: &str,
-) -> Result<&'static dyn crate::bearings::BearingSystem, DeckErrors> {
-    use crate::bearings::{known_types, system, DEFAULT_SYSTEM};
-    let default = || {
-        system(DEFAULT_SYSTEM).ok_or_else(|| {
-            DeckErrors::from(DeckError::NotEditable {
-                key: "type".into(),
-                reason: "no default bearing system registered".into(),
-            })
-        })
-    };
+/// The `type` of a deck that does not name one: decks written before there was a choice
+/// of bearing system are spherical roller decks.
+pub const DEFAULT_TYPE: &str = "spherical-roller";
+
+/// A deck's top-level `type` key as written (the registry in `crate::bearings` maps it to
+/// a system and names the known ones when it is not).
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeckType {
+    /// No `type` key, or text that is not TOML (the system's reader reports that).
+    Absent,
+    /// A string: the system's id, where it stands, and the value as written.
+    Named {
+        /// The string.
+        id: String,
+        /// Where the value stands.
+        location: Location,
+        /// The value as written (quoted).
+        written: String,
+    },
+    /// Not a string (a number, a table): where, and what was written.
+    NotAString {
+        /// Where the value stands.
+        location: Location,
+        /// The value as written (`(a table)` for a table).
+        written: String,
+    },
+}
+
+/// Reads the top-level `type` of deck text; nothing else is checked here.
+pub fn deck_type(text: &str, source_name: &str) -> DeckType {
     let Ok(doc) = toml_edit::Document::parse(text) else {
-        return default();
+        return DeckType::Absent;
     };
     let Some(item) = doc.as_table().get("type") else {
-        return default();
+        return DeckType::Absent;
     };
     let location = item
         .as_value()
@@ -118,29 +124,16 @@ pub fn system_of(
             || Location::start(source_name),
             |sp| Location::at(source_name, text, sp.start),
         );
-    let value = item.as_value().map_or_else(
+    let written = item.as_value().map_or_else(
         || "(a table)".to_string(),
         |v| v.to_string().trim().to_string(),
     );
     match item.as_str() {
-        None => Err(DeckError::WrongType {
+        Some(id) => DeckType::Named {
+            id: id.to_string(),
             location,
-            key: "type".into(),
-            value,
-            expected: format!("a string, one of {}", known_types()),
-        }
-        .into()),
-        Some(id) => system(id).ok_or_else(|| {
-            DeckError::Invalid {
-                location,
-                key: "type".into(),
-                value,
-                rule: format!("unknown bearing system (known: {})", known_types()),
-            }
-            .into()
-        }),
+            written,
+        },
+        None => DeckType::NotAString { location, written },
     }
 }
-
-#[cfg(test)]
-mod tests;

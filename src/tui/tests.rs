@@ -91,7 +91,11 @@ fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
 }
 
 fn deck_app() -> App {
-    let deck = DeckDoc::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml").expect("deck");
+    let deck = DeckDoc::parse(
+        crate::bearings::spherical_roller::deck::DEFAULT_DECK,
+        "decks/aerospace.toml",
+    )
+    .expect("deck");
     App::new(deck, Some(PathBuf::from("decks/aerospace.toml")))
 }
 
@@ -402,7 +406,7 @@ fn tui_thermal_pane_requests_transient_only_when_visible() {
 fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("deck.toml");
-    std::fs::write(&path, crate::deck::DEFAULT_DECK).expect("write");
+    std::fs::write(&path, crate::bearings::spherical_roller::deck::DEFAULT_DECK).expect("write");
     let deck = DeckDoc::load(&path).expect("load");
     let mut app = App::new(deck, Some(path.clone()));
     let (tx, _rx) = mpsc::channel();
@@ -446,7 +450,7 @@ fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
 fn tui_open_and_revert() {
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("a.toml");
-    std::fs::write(&path, crate::deck::DEFAULT_DECK).expect("write");
+    std::fs::write(&path, crate::bearings::spherical_roller::deck::DEFAULT_DECK).expect("write");
     let mut app = deck_app();
     app.handle(ch('o'));
     for c in path.display().to_string().chars() {
@@ -809,7 +813,7 @@ fn tui_choice_field_cycles_with_arrows() {
     );
     // the case behind the deck took it: the choice's index in the film model list
     let film = app.deck.case().field_si("lubricant.film_model");
-    let dh = crate::deck::FILM_MODELS
+    let dh = crate::bearings::spherical_roller::deck_schema::FILM_MODELS
         .iter()
         .position(|m| *m == "dowson-higginson");
     assert_eq!(film.map(|f| f as usize), dh);
@@ -819,9 +823,17 @@ fn tui_choice_field_cycles_with_arrows() {
 fn tui_parsed_deck_text_round_trips_unchanged() {
     // run_workbench_case compares the file text with the deck's text to decide
     // "unsaved": an unmodified deck must give back its file byte for byte.
-    let case = crate::bearings::load_case(crate::deck::DEFAULT_DECK, "x", &[]).expect("deck");
+    let case = crate::bearings::load_case(
+        crate::bearings::spherical_roller::deck::DEFAULT_DECK,
+        "x",
+        &[],
+    )
+    .expect("deck");
     let doc = DeckDoc::from_case(case);
-    assert_eq!(doc.text(), crate::deck::DEFAULT_DECK);
+    assert_eq!(
+        doc.text(),
+        crate::bearings::spherical_roller::deck::DEFAULT_DECK
+    );
 }
 
 /// The thermal pane's drawing, with a made-up view (the thermal stage is wired by the

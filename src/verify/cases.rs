@@ -13,6 +13,7 @@
 
 use serde::Serialize;
 
+use crate::bearings::spherical_roller::deck as sr_deck;
 use crate::bearings::spherical_roller::load_distribution::{self, DynamicSpeeds, SolveOptions};
 use crate::bearings::spherical_roller::pipeline::{self, Request};
 use crate::bearings::spherical_roller::{Bearing, Material};
@@ -681,11 +682,11 @@ fn thermal_cases(out: &mut Vec<Case>) {
         "backward Euler, Δt = 0.1 s: global error ≤ 7.4e-3 K of 55 °C",
     ));
     // Shipped rig, heat from the aerospace deck's own pipeline.
-    let balance = match crate::deck::Deck::parse(crate::deck::DEFAULT_DECK, "decks/aerospace.toml")
+    let balance = match sr_deck::parse(sr_deck::DEFAULT_DECK, "decks/aerospace.toml")
         .ok()
         .and_then(|d| {
             let tm = d.thermal_model().ok().flatten()?;
-            pipeline::run_with_thermal(&d.bearing, Some(&tm), &Request::default(), None).ok()
+            pipeline::run_with_thermal(&d.value, Some(&tm), &Request::default(), None).ok()
         }) {
         Some(a) => a.thermal.map_or((f64::NAN, f64::NAN), |t| {
             (t.steady.heat_in_w, t.steady.heat_out_w)

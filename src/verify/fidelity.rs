@@ -638,7 +638,7 @@ mod tests {
 
     /// The aerospace deck (no thermal network), as a case.
     fn aerospace() -> Box<dyn Case> {
-        let text = crate::deck::write_bearing(
+        let text = crate::bearings::spherical_roller::deck::write_bearing(
             &crate::bearings::spherical_roller::Bearing::example_aerospace(),
             crate::units::Units::Us,
         );

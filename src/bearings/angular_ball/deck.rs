@@ -665,6 +665,7 @@ pub static SCHEMA: Schema<BallInput> = Schema {
     defaults: BallInput::chen_a,
     cross_checks,
     template_header: "rollbench deck: angular-contact ball bearing (seed 001, S.-H. Chen 1989)\nLoad distribution with centrifugal force and gyroscopic moment, race-control\nkinematics, spin heat, EHD film and the skidding threshold.",
+    template_notes: crate::deck::form::TemplateNotes::NONE,
 };
 
 /// Reads the deck's `[traction_table] points = [[u_s, µ], …]` (sliding speed m/s and

@@ -8,10 +8,10 @@ use super::deck::SCHEMA;
 use super::input::BallInput;
 use crate::bearings::view::{Chart, PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, Detail, Fidelity, FidelityGrid, FormCase, RunOptions, Session, Solution,
-    SolveError,
+    Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
+    SystemCase,
 };
-use crate::deck::form::Form;
+use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
@@ -52,9 +52,16 @@ pub static SYSTEM: AngularBall = AngularBall;
 /// The shipped example deck (Chen's Bearing A).
 pub const EXAMPLE_DECK: &str = include_str!("../../../decks/chen_a.toml");
 
-impl BearingSystem for AngularBall {
-    fn id(&self) -> &'static str {
-        SYSTEM_ID
+impl FormSystem for AngularBall {
+    type Input = BallInput;
+    type Derived = ();
+
+    fn registered() -> &'static Self {
+        &SYSTEM
+    }
+
+    fn schema(&self) -> &'static Schema<BallInput> {
+        &SCHEMA
     }
 
     fn title(&self) -> &'static str {
@@ -108,84 +115,41 @@ impl BearingSystem for AngularBall {
         &PANES
     }
 
-    fn keys_table(&self) -> String {
-        crate::deck::form::keys_table(&SCHEMA)
-    }
-
-    fn template(&self, units: Units) -> String {
-        crate::deck::form::template(&SCHEMA, units)
-    }
-
     fn example_deck(&self) -> &'static str {
         EXAMPLE_DECK
     }
 
-    fn load(
-        &self,
-        text: &str,
-        source_name: &str,
-        overrides: &[String],
-    ) -> Result<Box<dyn Case>, DeckErrors> {
-        let mut form = Form::parse(text, source_name, &SCHEMA)?;
-        form.apply_assignments(overrides)?;
-        super::deck::traction_table(&mut form)?;
-        Ok(Box::new(BallCase { form }))
+    /// The `[traction]` table's measured curve into the input.
+    fn prepare(form: &mut Form<BallInput>) -> Result<(), DeckErrors> {
+        super::deck::traction_table(form)
+    }
+
+    fn solve(
+        case: &BallCase,
+        _options: RunOptions,
+        cancel: Cancel,
+    ) -> Result<Box<dyn Solution>, String> {
+        analyse(&case.form.value, cancel)
+            .map(|a| Box::new(BallSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| e.to_string())
+    }
+
+    fn fidelity(input: &BallInput) -> Option<Fidelity> {
+        Some(Fidelity {
+            resolution: input.dynamics.slices,
+            tolerance: input.dynamics.tolerance,
+        })
+    }
+
+    fn set_fidelity(input: &mut BallInput, f: Fidelity) -> bool {
+        input.dynamics.slices = f.resolution;
+        input.dynamics.tolerance = f.tolerance;
+        true
     }
 }
 
 /// A validated ball bearing deck.
-pub struct BallCase {
-    /// The deck (SI input inside).
-    pub form: Form<BallInput>,
-}
-
-impl FormCase for BallCase {
-    type Input = BallInput;
-
-    fn form(&self) -> &Form<BallInput> {
-        &self.form
-    }
-
-    fn with_form(&self, mut form: Form<BallInput>) -> Result<Box<dyn Case>, DeckErrors> {
-        super::deck::traction_table(&mut form)?;
-        Ok(Box::new(BallCase { form }))
-    }
-}
-
-impl Case for BallCase {
-    fn system(&self) -> &'static dyn BearingSystem {
-        &SYSTEM
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
-
-    fn fidelity(&self) -> Option<Fidelity> {
-        let d = &self.form.value.dynamics;
-        Some(Fidelity {
-            resolution: d.slices,
-            tolerance: d.tolerance,
-        })
-    }
-
-    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
-        let mut form = self.form.clone();
-        form.value.dynamics.slices = f.resolution;
-        form.value.dynamics.tolerance = f.tolerance;
-        Some(Box::new(BallCase { form }))
-    }
-
-    fn units(&self) -> Units {
-        self.form.units
-    }
-
-    fn solve(&self, _options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String> {
-        analyse(&self.form.value, cancel)
-            .map(|a| Box::new(BallSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| e.to_string())
-    }
-}
+pub type BallCase = SystemCase<AngularBall>;
 
 /// The workbench's solver of ball cases: a whole solve, with the load distribution's
 /// iterations of the ball the Stepper pane shows recorded when it is on screen.
@@ -211,12 +175,7 @@ impl Session for BallSession {
         cancel: &Cancel,
         on_chart: &mut dyn FnMut(usize, Chart),
     ) -> Result<Box<dyn Solution>, SolveError> {
-        let Some(ball) = case.as_any().downcast_ref::<BallCase>() else {
-            return Err(SolveError::Stage {
-                stage: SYSTEM_ID,
-                message: format!("not a ball bearing case: {}", case.system().id()),
-            });
-        };
+        let ball = BallCase::of(case)?;
         let stream = detail.stream_chart == Some(SKID_CHART);
         analyse_streaming(
             &ball.form.value,
@@ -272,6 +231,7 @@ impl Solution for BallSolution {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bearings::BearingSystem;
 
     /// The stepper's trace of the load distribution (issue 16: "stepper (the
     /// load-distribution Newton)"): recording only reads, so the traced analysis's report

@@ -458,6 +458,7 @@ pub static SCHEMA: Schema<Bearing> = Schema {
     defaults,
     cross_checks,
     template_header: "rollbench deck template: every key, its unit and allowed range.\nValues are the aerospace example bearing (decks/aerospace.toml).",
+    template_notes: TEMPLATE_NOTES,
 };
 
 /// The template's name and its comment lines beyond the fields'.
@@ -525,7 +526,7 @@ mod tests {
     /// its network builds (issue 15: the template's thermal section was a stub).
     #[test]
     fn template_thermal_example_is_a_working_network() {
-        let t = crate::deck::template(crate::units::Units::Si);
+        let t = crate::bearings::spherical_roller::deck::template(crate::units::Units::Si);
         let start = t.find("# [thermal]\n").expect("the example");
         let (head, tail) = t.split_at(start);
         let example: String = tail
@@ -537,8 +538,9 @@ mod tests {
             })
             .map(|l| format!("{l}\n"))
             .collect();
-        let deck = crate::deck::Deck::parse(&format!("{head}{example}"), "t.toml")
-            .unwrap_or_else(|e| panic!("{e}"));
+        let deck =
+            crate::bearings::spherical_roller::deck::parse(&format!("{head}{example}"), "t.toml")
+                .unwrap_or_else(|e| panic!("{e}"));
         let model = deck.thermal_model().unwrap_or_else(|e| panic!("{e}"));
         assert!(model.is_some());
     }

@@ -1,14 +1,18 @@
 //! The spherical roller bearing's registration: how its decks are read, solved and shown
 //! through the system-independent [`BearingSystem`] interface.
 
+use super::deck::{name_bearing, DEFAULT_DECK};
+use super::deck_schema::SCHEMA;
 use super::pipeline::{self, Analysis, Request};
 use super::report;
+use super::Bearing;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, CaseDeck, Detail, Fidelity, FidelityGrid, RunOptions, Session, Solution,
-    SolveError,
+    Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
+    SystemCase,
 };
-use crate::deck::{Deck, DeckErrors, FieldMeta};
+use crate::deck::form::{Form, Schema};
+use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
 use crate::units::Units;
@@ -36,9 +40,17 @@ pub struct SphericalRoller;
 /// The registry entry.
 pub static SYSTEM: SphericalRoller = SphericalRoller;
 
-impl BearingSystem for SphericalRoller {
-    fn id(&self) -> &'static str {
-        SYSTEM_ID
+impl FormSystem for SphericalRoller {
+    type Input = Bearing;
+    /// The deck's `[thermal]` network, if any.
+    type Derived = Option<ThermalModel>;
+
+    fn registered() -> &'static Self {
+        &SYSTEM
+    }
+
+    fn schema(&self) -> &'static Schema<Bearing> {
+        &SCHEMA
     }
 
     fn title(&self) -> &'static str {
@@ -87,127 +99,56 @@ impl BearingSystem for SphericalRoller {
         Some(FIDELITY_GRID)
     }
 
-    fn keys_table(&self) -> String {
-        crate::deck::keys_table()
-    }
-
-    fn template(&self, units: Units) -> String {
-        crate::deck::template(units)
-    }
-
     fn example_deck(&self) -> &'static str {
-        crate::deck::DEFAULT_DECK
+        DEFAULT_DECK
     }
 
-    fn load(
-        &self,
-        text: &str,
-        source_name: &str,
-        overrides: &[String],
-    ) -> Result<Box<dyn Case>, DeckErrors> {
-        let mut deck = Deck::parse(text, source_name)?;
-        // All overrides first, then one validation: their order never matters.
-        deck.apply_assignments(overrides)?;
-        let thermal = deck.thermal_model()?;
-        Ok(Box::new(SphericalCase { deck, thermal }))
-    }
-}
-
-/// A validated spherical roller deck with its thermal network.
-pub struct SphericalCase {
-    /// The deck (SI bearing inside).
-    pub deck: Deck,
-    /// Its `[thermal]` network, if any.
-    pub thermal: Option<ThermalModel>,
-}
-
-impl Case for SphericalCase {
-    fn system(&self) -> &'static dyn BearingSystem {
-        &SYSTEM
+    /// The deck's name into the bearing (the reports print it) and its `[thermal]`
+    /// network built (errors name node, link and field).
+    fn prepare(form: &mut Form<Bearing>) -> Result<Option<ThermalModel>, DeckErrors> {
+        name_bearing(form);
+        form.thermal_model()
     }
 
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
-
-    fn units(&self) -> Units {
-        self.deck.units
-    }
-
-    fn solve(&self, options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String> {
+    fn solve(
+        case: &SphericalCase,
+        options: RunOptions,
+        cancel: Cancel,
+    ) -> Result<Box<dyn Solution>, String> {
         let request = Request {
             thermal_transient: !options.skip_transient,
             ..Request::default()
         };
         pipeline::run_with_thermal(
-            &self.deck.bearing,
-            self.thermal.as_ref(),
+            &case.form.value,
+            case.derived.as_ref(),
             &request,
             cancel.flag(),
         )
         .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
-        .map_err(|e| e.in_units(self.deck.units).to_string())
+        .map_err(|e| e.in_units(case.form.units).to_string())
     }
 
-    fn has_transient(&self) -> bool {
-        self.thermal.is_some()
+    fn has_transient(case: &SphericalCase) -> bool {
+        case.derived.is_some()
     }
 
-    fn fidelity(&self) -> Option<Fidelity> {
-        let s = &self.deck.bearing.solver;
+    fn fidelity(input: &Bearing) -> Option<Fidelity> {
         Some(Fidelity {
-            resolution: s.laminae,
-            tolerance: s.force_tolerance,
+            resolution: input.solver.laminae,
+            tolerance: input.solver.force_tolerance,
         })
     }
 
-    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
-        let mut deck = self.deck.clone();
-        deck.bearing.solver.laminae = f.resolution;
-        deck.bearing.solver.force_tolerance = f.tolerance;
-        Some(Box::new(SphericalCase {
-            deck,
-            thermal: self.thermal.clone(),
-        }))
+    fn set_fidelity(input: &mut Bearing, f: Fidelity) -> bool {
+        input.solver.laminae = f.resolution;
+        input.solver.force_tolerance = f.tolerance;
+        true
     }
 }
 
-impl CaseDeck for SphericalCase {
-    fn name(&self) -> &str {
-        &self.deck.bearing.name
-    }
-
-    fn source_name(&self) -> &str {
-        self.deck.source_name()
-    }
-
-    fn fields(&self) -> Vec<&'static FieldMeta> {
-        crate::deck::fields().iter().map(|f| &f.meta).collect()
-    }
-
-    fn field_si(&self, key: &str) -> Option<f64> {
-        crate::deck::field(key).map(|f| f.get_si(&self.deck.bearing))
-    }
-
-    fn get(&self, key: &str) -> Option<String> {
-        self.deck.get(key)
-    }
-
-    fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors> {
-        let mut deck = self.deck.clone();
-        deck.set(key, value)?;
-        let thermal = deck.thermal_model()?;
-        Ok(Box::new(SphericalCase { deck, thermal }))
-    }
-
-    fn text(&self) -> String {
-        self.deck.to_toml_string()
-    }
-
-    fn save(&self, path: &std::path::Path) -> Result<crate::files::Written, DeckErrors> {
-        self.deck.save(path)
-    }
-}
+/// A validated spherical roller deck; `derived` is its thermal network.
+pub type SphericalCase = SystemCase<SphericalRoller>;
 
 /// A solved spherical roller bearing.
 pub struct SphericalSolution(pub Analysis);
@@ -247,30 +188,21 @@ impl Session for SphericalSession {
         detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError> {
-        let Some(case) = case.as_any().downcast_ref::<SphericalCase>() else {
-            return Err(SolveError::Stage {
-                stage: "session",
-                message: format!(
-                    "a {} deck was given to the {} solver",
-                    case.system().id(),
-                    SYSTEM_ID
-                ),
-            });
-        };
+        let case = SphericalCase::of(case)?;
         let request = Request {
             trace_roller: detail.trace_element,
-            thermal_transient: detail.transient && case.thermal.is_some(),
-            thermal: case.thermal.clone(),
+            thermal_transient: detail.transient && case.derived.is_some(),
+            thermal: case.derived.clone(),
             ..Request::default()
         };
         self.pipeline
             .run(
-                &case.deck.bearing,
-                case.thermal.as_ref(),
+                &case.form.value,
+                case.derived.as_ref(),
                 &request,
                 cancel.flag(),
             )
             .map(|a| Box::new(SphericalSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| e.in_units(case.deck.units))
+            .map_err(|e| e.in_units(case.form.units))
     }
 }

@@ -300,6 +300,7 @@ pub static SCHEMA: Schema<TaperedInput> = Schema {
     defaults: TaperedInput::afapl_sample,
     cross_checks: cross,
     template_header: "rollbench tapered roller bearing deck (seed 004: AFAPL-TR-78-6 Part III, tapered roller bearing stiffness with centrifugal effects)",
+    template_notes: crate::deck::form::TemplateNotes::NONE,
 };
 
 #[cfg(test)]

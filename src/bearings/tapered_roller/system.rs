@@ -7,10 +7,10 @@ use super::deck::{SCHEMA, SYSTEM_ID};
 use super::input::TaperedInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
-    BearingSystem, Case, Detail, Fidelity, FidelityGrid, FormCase, RunOptions, Session, Solution,
-    SolveError, SweepPlan,
+    Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
+    SweepPlan, SystemCase,
 };
-use crate::deck::form::{template, Form};
+use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
@@ -37,9 +37,16 @@ pub struct TaperedRoller;
 /// The registry entry.
 pub static SYSTEM: TaperedRoller = TaperedRoller;
 
-impl BearingSystem for TaperedRoller {
-    fn id(&self) -> &'static str {
-        SYSTEM_ID
+impl FormSystem for TaperedRoller {
+    type Input = TaperedInput;
+    type Derived = ();
+
+    fn registered() -> &'static Self {
+        &SYSTEM
+    }
+
+    fn schema(&self) -> &'static Schema<TaperedInput> {
+        &SCHEMA
     }
 
     fn title(&self) -> &'static str {
@@ -121,85 +128,43 @@ impl BearingSystem for TaperedRoller {
         &PANES
     }
 
-    fn keys_table(&self) -> String {
-        crate::deck::form::keys_table(&SCHEMA)
-    }
-
-    fn template(&self, units: Units) -> String {
-        template(&SCHEMA, units)
-    }
-
     fn example_deck(&self) -> &'static str {
         EXAMPLE_DECK
     }
 
-    fn load(
-        &self,
-        text: &str,
-        source_name: &str,
-        overrides: &[String],
-    ) -> Result<Box<dyn Case>, DeckErrors> {
-        let mut form = Form::parse(text, source_name, &SCHEMA)?;
-        form.apply_assignments(overrides)?;
-        Ok(Box::new(TaperedCase { form }))
+    fn prepare(_form: &mut Form<TaperedInput>) -> Result<(), DeckErrors> {
+        Ok(())
+    }
+
+    fn solve(
+        case: &TaperedCase,
+        _options: RunOptions,
+        cancel: Cancel,
+    ) -> Result<Box<dyn Solution>, String> {
+        if cancel.is_cancelled() {
+            return Err("cancelled".to_string());
+        }
+        analyse(&case.form.value, &case.form.name)
+            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| e.to_string())
+    }
+
+    fn fidelity(input: &TaperedInput) -> Option<Fidelity> {
+        Some(Fidelity {
+            resolution: input.solver.slices,
+            tolerance: input.solver.force_tolerance,
+        })
+    }
+
+    fn set_fidelity(input: &mut TaperedInput, f: Fidelity) -> bool {
+        input.solver.slices = f.resolution;
+        input.solver.force_tolerance = f.tolerance;
+        true
     }
 }
 
 /// A validated tapered roller deck.
-pub struct TaperedCase {
-    /// The deck (SI input inside).
-    pub form: Form<TaperedInput>,
-}
-
-impl FormCase for TaperedCase {
-    type Input = TaperedInput;
-
-    fn form(&self) -> &Form<TaperedInput> {
-        &self.form
-    }
-
-    fn with_form(&self, form: Form<TaperedInput>) -> Result<Box<dyn Case>, DeckErrors> {
-        Ok(Box::new(TaperedCase { form }))
-    }
-}
-
-impl Case for TaperedCase {
-    fn system(&self) -> &'static dyn BearingSystem {
-        &SYSTEM
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
-
-    fn fidelity(&self) -> Option<Fidelity> {
-        let s = &self.form.value.solver;
-        Some(Fidelity {
-            resolution: s.slices,
-            tolerance: s.force_tolerance,
-        })
-    }
-
-    fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
-        let mut form = self.form.clone();
-        form.value.solver.slices = f.resolution;
-        form.value.solver.force_tolerance = f.tolerance;
-        Some(Box::new(TaperedCase { form }))
-    }
-
-    fn units(&self) -> Units {
-        self.form.units
-    }
-
-    fn solve(&self, _options: RunOptions, cancel: Cancel) -> Result<Box<dyn Solution>, String> {
-        if cancel.is_cancelled() {
-            return Err("cancelled".to_string());
-        }
-        analyse(&self.form.value, &self.form.name)
-            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| e.to_string())
-    }
-}
+pub type TaperedCase = SystemCase<TaperedRoller>;
 
 /// A solved tapered roller bearing.
 pub struct TaperedSolution(pub Analysis);
@@ -254,16 +219,7 @@ impl Session for TaperedSession {
         _detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError> {
-        let Some(case) = case.as_any().downcast_ref::<TaperedCase>() else {
-            return Err(SolveError::Stage {
-                stage: "session",
-                message: format!(
-                    "a {} deck was given to the {} solver",
-                    case.system().id(),
-                    SYSTEM_ID
-                ),
-            });
-        };
+        let case = TaperedCase::of(case)?;
         if cancel.is_cancelled() {
             return Err(SolveError::Cancelled);
         }
@@ -280,6 +236,7 @@ impl Session for TaperedSession {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bearings::BearingSystem;
     use crate::units::{LBF_N, RPM_RAD_S};
 
     fn lc(rpm: f64, radial_lbf: f64) -> TaperedInput {
@@ -346,7 +303,7 @@ mod tests {
                 ],
             )
             .unwrap();
-        let mut session = SYSTEM.session();
+        let mut session = BearingSystem::session(&SYSTEM);
         let sol = session
             .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
             .unwrap();

@@ -135,7 +135,7 @@ pub fn close_keys<T>(schema: &Schema<T>, key: &str) -> Vec<&'static str> {
 pub(super) fn unknown_key_hint<T>(schema: &Schema<T>, key: &str) -> String {
     let close = close_keys(schema, key);
     // The default system's list is `rollbench keys`; another system's needs its type.
-    let command = if schema.system == crate::bearings::DEFAULT_SYSTEM {
+    let command = if schema.system == crate::deck::DEFAULT_TYPE {
         "rollbench keys".to_string()
     } else {
         format!("rollbench keys --type {}", schema.system)

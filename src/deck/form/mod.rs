@@ -12,7 +12,7 @@
 //! `rollbench keys` table and close-key suggestions.
 //!
 //! Top-level keys every deck may have: `type` (must equal [`Schema::system`]; only a
-//! [`crate::bearings::DEFAULT_SYSTEM`] deck may omit it), `units` (`"us"` | `"si"`,
+//! [`crate::deck::DEFAULT_TYPE`] deck may omit it), `units` (`"us"` | `"si"`,
 //! required) and `name` (a string, default `"unnamed"`).
 //!
 //! Cross-field rules ([`Schema::cross_checks`]) run on the value built from the valid
@@ -265,7 +265,7 @@ pub fn preset_name(m: &Material) -> Option<&'static str> {
 
 /// What one bearing system's deck looks like.
 pub struct Schema<T: 'static> {
-    /// The deck's `type`. Only [`crate::bearings::DEFAULT_SYSTEM`] decks may omit it.
+    /// The deck's `type`. Only [`crate::deck::DEFAULT_TYPE`] decks may omit it.
     pub system: &'static str,
     /// Allowed top-level tables, in template order (may include the opaque ones).
     pub groups: &'static [&'static str],
@@ -289,6 +289,10 @@ pub struct Schema<T: 'static> {
     pub cross_checks: fn(&T, Units) -> Vec<(&'static str, String)>,
     /// The first comment lines of [`template`] (without `# `).
     pub template_header: &'static str,
+    /// Comment lines of the template (and of a unit-converted deck) beyond the field
+    /// lines: the template's `name`, notes under table headers, the stand-ins for absent
+    /// opaque tables.
+    pub template_notes: TemplateNotes,
 }
 
 impl<T> Schema<T> {
@@ -694,7 +698,7 @@ impl<T: Clone> Form<T> {
                 opaque: &self.opaque,
                 header: &header,
                 commented: false,
-                notes: &TemplateNotes::default(),
+                notes: &self.schema.template_notes,
             },
         );
         let doc = text.parse::<DocumentMut>().unwrap_or_default();

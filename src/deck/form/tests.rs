@@ -140,6 +140,7 @@ static TOY: Schema<Toy> = Schema {
     defaults: toy_defaults,
     cross_checks: toy_cross,
     template_header: "toy deck template",
+    template_notes: crate::deck::form::TemplateNotes::NONE,
 };
 
 const DECK: &str = r#"# a toy deck
@@ -344,7 +345,8 @@ fn type_is_required_and_must_match() {
     );
     let e = err(&DECK.replace("type = \"toy-bearing\"", "type = \"nope\""));
     assert!(
-        e.contains("type = \"nope\": unknown bearing system (known: "),
+        // The registry, not the reader, lists the known systems (`bearings::system_of`).
+        e.contains("type = \"nope\": this deck reader reads \"toy-bearing\" decks"),
         "{e}"
     );
 }
@@ -606,6 +608,7 @@ fn thermal_table_is_read_by_the_thermal_parser() {
         defaults: toy_defaults,
         cross_checks: toy_cross,
         template_header: "warm toy",
+        template_notes: crate::deck::form::TemplateNotes::NONE,
     };
     let base = DECK.replace("[extra]\nanything = [1, 2]\n", "").replace(
         "ball = \"steel\"",

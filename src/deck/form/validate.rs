@@ -154,33 +154,28 @@ pub(crate) fn validate<T>(
     top.extend_from_slice(&all_groups);
     check_keys(&mut ctx, root, "", &top);
 
-    // `type`: this schema's decks only; another system's deck (or an unknown system) is
-    // refused at its line, naming the known systems.
+    // `type`: this schema's decks only; another system's deck is refused at its line.
+    // (Which systems exist is the registry's business, `crate::bearings`: a deck read
+    // through it reaches this reader only when its `type` names this schema's system,
+    // and an unknown `type` is refused there, naming the known ones.)
     let id = schema.system;
     match root.get("type") {
         Some(item) if item.as_str() != Some(id) => {
             let (location, value) = ctx.at(item);
-            let rule = match item.as_str().and_then(crate::bearings::system) {
-                Some(_) => format!("this deck reader reads \"{id}\" decks"),
-                None => format!(
-                    "unknown bearing system (known: {})",
-                    crate::bearings::known_types()
-                ),
-            };
             ctx.errors.push(DeckError::Invalid {
                 location,
                 key: "type".into(),
                 value,
-                rule,
+                rule: format!("this deck reader reads \"{id}\" decks"),
             });
         }
-        None if id != crate::bearings::DEFAULT_SYSTEM => {
+        None if id != crate::deck::DEFAULT_TYPE => {
             ctx.errors.push(DeckError::Missing {
                 location: Location::start(source),
                 key: "type".into(),
                 hint: format!(
                     " (a deck without `type` is a \"{}\" deck; write type = \"{id}\")",
-                    crate::bearings::DEFAULT_SYSTEM
+                    crate::deck::DEFAULT_TYPE
                 ),
             });
         }

@@ -17,6 +17,15 @@ pub struct TemplateNotes {
     pub opaque_notes: &'static [(&'static str, &'static str)],
 }
 
+impl TemplateNotes {
+    /// No notes (a `const` [`Default`]).
+    pub const NONE: TemplateNotes = TemplateNotes {
+        name: "",
+        group_notes: &[],
+        opaque_notes: &[],
+    };
+}
+
 pub(super) fn fmt_field<T>(spec: &FieldSpec<T>, v: &T, units: Units) -> String {
     let si = spec.get_si(v);
     match spec.kind {
@@ -64,7 +73,7 @@ pub(crate) struct DeckText<'a, T> {
 /// Writes a deck of `schema`. With `commented`, every key gets a comment line with its
 /// meaning, unit and allowed range (the template); otherwise only unit comments. The
 /// `type` line is written in the template and in every deck of a system other than
-/// [`crate::bearings::DEFAULT_SYSTEM`].
+/// [`crate::deck::DEFAULT_TYPE`].
 pub(crate) fn write_deck<T>(schema: &Schema<T>, d: &DeckText<'_, T>) -> String {
     use std::fmt::Write as _;
     let (b, units, commented) = (d.value, d.units, d.commented);
@@ -78,7 +87,7 @@ pub(crate) fn write_deck<T>(schema: &Schema<T>, d: &DeckText<'_, T>) -> String {
             "type = \"{}\"  # the bearing system this deck describes",
             schema.system
         );
-    } else if schema.system != crate::bearings::DEFAULT_SYSTEM {
+    } else if schema.system != crate::deck::DEFAULT_TYPE {
         let _ = writeln!(out, "type = \"{}\"", schema.system);
     }
     let _ = writeln!(
@@ -221,7 +230,7 @@ pub(crate) fn write_deck<T>(schema: &Schema<T>, d: &DeckText<'_, T>) -> String {
 /// A fully commented deck of `schema` in `units`: every key with its meaning, unit and
 /// allowed range, filled with [`Schema::defaults`]. It parses back as it is.
 pub fn template<T>(schema: &'static Schema<T>, units: Units) -> String {
-    template_with(schema, units, &TemplateNotes::default())
+    template_with(schema, units, &schema.template_notes)
 }
 
 /// [`template`] with extra comment lines and the template's `name`.

@@ -122,7 +122,9 @@ fn straight_rollers_converge_in_the_first_sweep() {
     // stops being exact for straight rollers.
     for laminae in [5, 21, 61] {
         let deck = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/radial_si.toml");
-        let mut b = crate::deck::Deck::load(deck).expect("shipped deck").bearing;
+        let mut b = crate::bearings::spherical_roller::deck::load(deck)
+            .expect("shipped deck")
+            .value;
         crate::verify::cases::make_cylindrical_radial(&mut b, laminae);
         let r = run(&b);
         assert_eq!(r.stats.iterations, 0, "Γ = {laminae}");
