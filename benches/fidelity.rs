@@ -1,10 +1,10 @@
 //! Full solve (no transient) of each shipped deck whose bearing system has a fidelity study,
 //! at the deck's default fidelity and at the recommended one (cheapest grid cell with the
 //! target key outputs within 0.1 % and the other key outputs within 1 %, from
-//! `rollbench::verify::fidelity::measure_grid`, measured once in the set-up).
+//! `rollbench::studies::fidelity::measure_grid`, measured once in the set-up).
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::{self, Case};
-use rollbench::verify::fidelity;
+use rollbench::studies::fidelity;
 
 fn decks() -> Vec<(String, Box<dyn Case>)> {
     let mut paths: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/decks"))

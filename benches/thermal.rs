@@ -5,9 +5,9 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::deck::thermal::parse_thermal;
 use rollbench::thermal::{
-    parse_thermal, run_transient, solve_steady, HeatInput, HeatSource, Integrator, ThermalModel,
-    TransientSettings,
+    run_transient, solve_steady, HeatInput, HeatSource, Integrator, ThermalModel, TransientSettings,
 };
 use rollbench::units::Units;
 

@@ -3,7 +3,7 @@
 //! Layers, bottom up: `units`, `numerics` and `files` (the one atomic file writer);
 //! `physics` (shared by every bearing system); `bearings` (one folder per bearing system,
 //! behind one trait); `thermal` (the lumped network); `deck` (all input), `report` (text,
-//! JSON, CSV), `verify` (`validate` and `bench`). None of these depend on the terminal UI;
+//! JSON, CSV), `verify` (`validate`), `studies` (`sweep`, `bench`). None of these depend on the terminal UI;
 //! `cli` and `tui` are thin layers on top. See `docs/architecture.md`.
 #![forbid(unsafe_code)]
 
@@ -15,6 +15,7 @@ pub mod numerics;
 pub mod physics;
 pub mod pipeline;
 pub mod report;
+pub mod studies;
 pub mod thermal;
 pub mod tui;
 pub mod units;

@@ -316,7 +316,7 @@ fn main() -> ExitCode {
             output,
         }) => sweep(&deck, &cli.set, &set_range, cold, format, output.as_deref()),
         Some(Command::Bench { deck, format }) => {
-            match rollbench::verify::fidelity::bench_command(
+            match rollbench::studies::fidelity::bench_command(
                 deck.as_deref(),
                 &cli.set,
                 format == TableFormat::Json,
@@ -330,7 +330,7 @@ fn main() -> ExitCode {
                     // A deck that cannot be read or parsed is invalid input; a reference
                     // run that fails is a solver failure, as for `run`.
                     ExitCode::from(
-                        if e.contains(rollbench::verify::fidelity::REFERENCE_RUN_FAILED) {
+                        if e.contains(rollbench::studies::fidelity::REFERENCE_RUN_FAILED) {
                             exit::SOLVE_FAILED
                         } else {
                             exit::INVALID_INPUT
@@ -343,7 +343,7 @@ fn main() -> ExitCode {
 }
 
 /// `rollbench sweep`: the deck with `--set` applied, then `--set-range` swept (see
-/// [`rollbench::verify::sweep`]). A bad range, key or value exits with
+/// [`rollbench::studies::sweep`]). A bad range, key or value exits with
 /// [`exit::INVALID_INPUT`] before anything is solved; points that fail to solve are rows
 /// with their reason, and only a sweep in which every point failed exits with
 /// [`exit::SOLVE_FAILED`].
@@ -355,7 +355,7 @@ fn sweep(
     format: Format,
     output: Option<&Path>,
 ) -> ExitCode {
-    use rollbench::verify::sweep;
+    use rollbench::studies::sweep;
     use std::io::IsTerminal;
     if let Err(code) = refuse_output_over_deck(output, deck) {
         return code;

@@ -244,6 +244,52 @@ pub fn celsius_to_fahrenheit(c: f64) -> f64 {
     c / FAHRENHEIT_DEGREE_K + 32.0
 }
 
+/// The display units of a text report: (factor from SI, label) per quantity (SI: mm,
+/// µm, N, MPa, N·m, W, kg; US: in, µin, lbf, ksi, in·lbf, Btu/hr, lbm).
+#[derive(Debug, Clone, Copy)]
+pub struct Disp {
+    /// Lengths (mm, in).
+    pub len: (f64, &'static str),
+    /// Small lengths: films, deflections (µm, µin).
+    pub small_len: (f64, &'static str),
+    /// Forces (N, lbf).
+    pub force: (f64, &'static str),
+    /// Stresses (MPa, ksi).
+    pub stress: (f64, &'static str),
+    /// Moments (N·m, in·lbf).
+    pub moment: (f64, &'static str),
+    /// Powers (W, Btu/hr).
+    pub power: (f64, &'static str),
+    /// Masses (kg, lbm).
+    pub mass: (f64, &'static str),
+}
+
+impl Disp {
+    /// The conversion set of `units`.
+    pub fn of(units: Units) -> Disp {
+        match units {
+            Units::Si => Disp {
+                len: (1e3, "mm"),
+                small_len: (1e6, "µm"),
+                force: (1.0, "N"),
+                stress: (1e-6, "MPa"),
+                moment: (1.0, "N·m"),
+                power: (1.0, "W"),
+                mass: (1.0, "kg"),
+            },
+            Units::Us => Disp {
+                len: (1.0 / INCH_M, "in"),
+                small_len: (1e6 / INCH_M, "µin"),
+                force: (1.0 / LBF_N, "lbf"),
+                stress: (1.0 / PSI_PA * 1e-3, "ksi"),
+                moment: (1.0 / INCH_LBF_N_M, "in·lbf"),
+                power: (BTU_PER_HOUR_PER_WATT, "Btu/hr"),
+                mass: (1.0 / LBM_KG, "lbm"),
+            },
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

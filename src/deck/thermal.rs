@@ -47,6 +47,7 @@ use crate::thermal::network::{
     DEFAULT_ROLLER_HEAT_FRACTION,
 };
 use crate::thermal::transient::{Integrator, Scenario, TransientSettings};
+pub use crate::thermal::ThermalModel;
 use crate::units::{Units, BTU_J, FAHRENHEIT_PER_KELVIN, FOOT_M, HOUR_S, INCH_M, LBM_KG};
 
 /// The conversions of a `[thermal]` section's values to SI, in the section's
@@ -232,15 +233,6 @@ pub struct ThermalDeck {
     pub links: Vec<LinkDeck>,
     /// Transient settings.
     pub transient: Option<TransientDeck>,
-}
-
-/// A parsed, validated thermal model in SI.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ThermalModel {
-    /// The network (validated, including grounding).
-    pub network: Network,
-    /// Transient settings.
-    pub transient: TransientSettings,
 }
 
 /// Longest transient duration (and step) a deck may ask for, s: 10⁷ s, about 116 days.

@@ -7,7 +7,7 @@ pub mod stiffness;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;
-use crate::units::{Units, BTU_PER_HOUR_PER_WATT, INCH_LBF_N_M, INCH_M, LBF_N, LBM_KG, PSI_PA};
+use crate::units::Units;
 
 /// Report formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -38,40 +38,4 @@ pub fn csv_of(view: &View) -> String {
     csv::to_string(view)
 }
 
-/// Display conversions for reports: (factor from SI, label).
-#[derive(Debug, Clone, Copy)]
-pub struct Disp {
-    pub len: (f64, &'static str),
-    pub small_len: (f64, &'static str),
-    pub force: (f64, &'static str),
-    pub stress: (f64, &'static str),
-    pub moment: (f64, &'static str),
-    pub power: (f64, &'static str),
-    pub mass: (f64, &'static str),
-}
-
-impl Disp {
-    /// The conversion set of `units`.
-    pub fn of(units: Units) -> Disp {
-        match units {
-            Units::Si => Disp {
-                len: (1e3, "mm"),
-                small_len: (1e6, "µm"),
-                force: (1.0, "N"),
-                stress: (1e-6, "MPa"),
-                moment: (1.0, "N·m"),
-                power: (1.0, "W"),
-                mass: (1.0, "kg"),
-            },
-            Units::Us => Disp {
-                len: (1.0 / INCH_M, "in"),
-                small_len: (1e6 / INCH_M, "µin"),
-                force: (1.0 / LBF_N, "lbf"),
-                stress: (1.0 / PSI_PA * 1e-3, "ksi"),
-                moment: (1.0 / INCH_LBF_N_M, "in·lbf"),
-                power: (BTU_PER_HOUR_PER_WATT, "Btu/hr"),
-                mass: (1.0 / LBM_KG, "lbm"),
-            },
-        }
-    }
-}
+pub use crate::units::Disp;

@@ -1,5 +1,6 @@
 //! Lumped-capacity thermal network (seed 000 §10): steady state (eq. 10.1–10.3), the
-//! loss-of-oil transient (eq. 10.4–10.7) and the `[thermal]` deck section.
+//! loss-of-oil transient (eq. 10.4–10.7). The `[thermal]` deck section's parser is
+//! input, in `crate::deck::thermal` (it builds a [`ThermalModel`]).
 //!
 //! Independent of the rest of the pipeline: it consumes a [`HeatInput`] (W by mechanism)
 //! and returns JSON-ready [`SteadyResult`] / [`TransientResult`].
@@ -12,7 +13,6 @@ pub mod network;
 pub mod steady;
 pub mod transient;
 
-pub use crate::deck::thermal::{parse_thermal, ThermalModel};
 pub use error::ThermalError;
 pub use network::{
     capacity_from_material, HeatInput, HeatMechanism, HeatSource, Link, LinkKind, Network, Node,
@@ -24,6 +24,15 @@ pub use transient::{
     scenario_network, HeatSchedule, Integrator, OilCoupled, Scenario, TransientNode,
     TransientResult, TransientSettings, TransientStats,
 };
+
+/// A parsed, validated thermal model in SI.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ThermalModel {
+    /// The network (validated, including grounding).
+    pub network: Network,
+    /// Transient settings.
+    pub transient: TransientSettings,
+}
 
 #[cfg(test)]
 mod tests;

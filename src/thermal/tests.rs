@@ -2,6 +2,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use super::*;
+use crate::deck::thermal::parse_thermal;
 use crate::units::Units;
 
 const RIG: &str = include_str!("../../decks/aerospace.toml");

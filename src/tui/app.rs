@@ -12,8 +12,8 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use crate::bearings::view::{PaneKind, View};
 use crate::bearings::{Case, Detail};
+use crate::studies::sweep::PlanProgress;
 use crate::units::Units;
-use crate::verify::sweep::PlanProgress;
 
 use super::deck_io::{self, DeckDoc, FieldInfo};
 

@@ -57,14 +57,14 @@ fn sweep_sync(app: &mut App, job: &app::SolveJob) {
             .map(|s| s.view())
     };
     let mut events = Vec::new();
-    let mut report = |p: &crate::verify::sweep::PlanProgress| {
+    let mut report = |p: &crate::studies::sweep::PlanProgress| {
         events.push(AppEvent::SweepProgress {
             generation: job.generation,
             pane: n,
             progress: Arc::new(p.clone()),
         })
     };
-    crate::verify::sweep::run_plan(&*job.case, plan, &mut solve, &|| false, &mut report);
+    crate::studies::sweep::run_plan(&*job.case, plan, &mut solve, &|| false, &mut report);
     for e in events {
         app.handle(e);
     }
@@ -1474,7 +1474,7 @@ fn tui_sweep_is_solved_only_while_its_pane_is_on_screen() {
 #[test]
 fn tui_sweep_points_are_the_cli_sweep_normalised() {
     // The pane draws each stiffness divided by its zero-speed value: the same numbers as
-    // `rollbench sweep` (verify::sweep, cold) over the plan's values, to 1e-7 (warm
+    // `rollbench sweep` (studies::sweep, cold) over the plan's values, to 1e-7 (warm
     // against cold starts, the solver tolerance).
     let mut app = tapered_app(80, 24);
     let cmds = app.start();
@@ -1503,7 +1503,7 @@ fn tui_sweep_points_are_the_cli_sweep_normalised() {
             .zip(series)
         {
             let cold = case
-                .with_value(p.plan.key, &crate::verify::sweep::value_text(pt.value))
+                .with_value(p.plan.key, &crate::studies::sweep::value_text(pt.value))
                 .expect("valid")
                 .solve(
                     crate::bearings::RunOptions {
@@ -1557,8 +1557,9 @@ fn tui_sweep_marks_the_first_speed_with_a_roller_off_the_cone() {
             .solve(c, Detail::default(), &Cancel::NONE)
             .map(|s| s.view())
     };
-    let p = crate::verify::sweep::run_plan(case.as_ref(), plan, &mut solve, &|| false, &mut |_| {})
-        .expect("not cancelled");
+    let p =
+        crate::studies::sweep::run_plan(case.as_ref(), plan, &mut solve, &|| false, &mut |_| {})
+            .expect("not cancelled");
     let off = |v: f64| {
         p.points
             .iter()

@@ -5,8 +5,8 @@
 
 use crate::bearings::view::{Chart, Display, Screen, ThermalResults, Trace, TraceFormat, View};
 
+use crate::studies::sweep::{PlanPoint, PlanProgress};
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
-use crate::verify::sweep::{PlanPoint, PlanProgress};
 
 /// Placeholder for a value that the current pipeline does not compute yet.
 pub const DASH: &str = "—";

@@ -14,7 +14,7 @@ use std::thread::{self, JoinHandle};
 use crate::bearings::view::{Chart, View};
 use crate::bearings::{Case, Detail, Session, SolveError};
 use crate::numerics::cancel::Cancel;
-use crate::verify::sweep::run_plan;
+use crate::studies::sweep::run_plan;
 
 use super::app::{AppEvent, SolveJob};
 
@@ -197,7 +197,7 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             // Every submit raises the previous job's flag: a newer edit stops the sweep.
             let cancelled = || job.cancel.load(Ordering::Acquire);
             let mut gone = false;
-            let mut report = |p: &crate::verify::sweep::PlanProgress| {
+            let mut report = |p: &crate::studies::sweep::PlanProgress| {
                 let msg = AppEvent::SweepProgress {
                     generation: *generation,
                     pane: n,

@@ -1,8 +1,5 @@
-//! Verification: `rollbench validate`'s reference cases (`cases`), `rollbench bench`'s
-//! run-time-against-error study (`fidelity`) and `rollbench sweep`'s parameter sweep
-//! (`sweep`).
+//! Verification: `rollbench validate`'s reference cases (`cases`, with each system's own
+//! in `system_cases`), every model against an independent reference with its tolerance.
 
 pub mod cases;
-pub mod fidelity;
-pub mod sweep;
 mod system_cases;

@@ -22,7 +22,7 @@ pub const SYSTEM_ID: &str = "spherical-roller";
 
 /// The fidelity study (issue 7): laminae Γ × force tolerance against Γ = 400 at 10⁻¹⁰ (the
 /// round-off floor of the equilibria). Odd Γ: a lamina on the roller mid-plane samples the
-/// crown apex (see `crate::verify::fidelity`); 400, the reference, is the exception.
+/// crown apex (see `crate::studies::fidelity`); 400, the reference, is the exception.
 pub const FIDELITY_GRID: FidelityGrid = FidelityGrid {
     resolution_key: "laminae",
     resolution_symbol: "Γ",

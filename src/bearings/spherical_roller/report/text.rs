@@ -4,7 +4,7 @@ use std::fmt::Write;
 
 use crate::bearings::spherical_roller::pipeline::Analysis;
 use crate::bearings::spherical_roller::view;
-use crate::report::Disp;
+use crate::units::Disp;
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
 /// Human-readable report in `units`.
