@@ -57,11 +57,11 @@
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
-use super::analysis::BallResult;
 use super::error::BallError;
 use super::geometry::BallGeometry;
 use super::input::{BallInput, Integrator, Method, Orbit};
 pub use super::load_track::{BallLoads, ContactLoads, LoadTrack};
+use super::results::BallResult;
 use crate::numerics::cancel::Cancel;
 use crate::numerics::ode::{self, OdeError, OdeOptions, OdeSystem, Output};
 use crate::physics::lubrication::traction_curve::TractionCurve;

@@ -4,7 +4,7 @@
 //! the load distribution (the seed gives no rule between balls; linear keeps every
 //! ball's own loads exactly).
 
-use super::analysis::BallResult;
+use super::results::BallResult;
 
 /// The loads of one contact that the slices need.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -8,15 +8,19 @@
 )]
 
 pub mod analysis;
+mod contacts;
 pub mod deck;
 pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod input;
+mod load_conditions;
 pub mod load_distribution;
 pub mod load_track;
 pub mod race_control;
 pub mod report;
+pub mod results;
+mod skid;
 pub mod system;
 pub mod view;
 pub mod warnings;
