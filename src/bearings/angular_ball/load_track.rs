@@ -52,7 +52,7 @@ pub struct LoadTrack {
 impl LoadTrack {
     /// From the race-control analysis' balls.
     pub fn new(balls: &[BallResult]) -> Self {
-        let c = |r: &super::analysis::ContactResult| ContactLoads {
+        let c = |r: &super::results::ContactResult| ContactLoads {
             load_n: r.load_n,
             angle_rad: r.angle_rad,
             semi_major_m: r.hertz.semi_major_m,
