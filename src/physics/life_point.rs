@@ -30,6 +30,11 @@
 //!
 //! Everything is taken as an argument (no bearing system is known here); every
 //! failure is a typed [`LifePointError`], never a panic.
+//!
+//! **Not dead code.** No bearing system calls this module yet: it is the ball bearing
+//! life model waiting for the life issue (issue 28: life for every system), which will
+//! wire it into the angular-contact ball system (`bearings::angular_ball`). Keep it,
+//! with its tests, until then.
 
 #![cfg_attr(
     not(test),

@@ -4,7 +4,7 @@
 //! the load distribution (the seed gives no rule between balls; linear keeps every
 //! ball's own loads exactly).
 
-use super::analysis::BallResult;
+use super::results::BallResult;
 
 /// The loads of one contact that the slices need.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +52,7 @@ pub struct LoadTrack {
 impl LoadTrack {
     /// From the race-control analysis' balls.
     pub fn new(balls: &[BallResult]) -> Self {
-        let c = |r: &super::analysis::ContactResult| ContactLoads {
+        let c = |r: &super::results::ContactResult| ContactLoads {
             load_n: r.load_n,
             angle_rad: r.angle_rad,
             semi_major_m: r.hertz.semi_major_m,

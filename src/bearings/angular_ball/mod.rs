@@ -2,21 +2,31 @@
 //! and Traction within Elastohydrodynamic Films*, 1989): quasi-static load distribution
 //! with centrifugal force and gyroscopic moment, Jones's race-control kinematics, spin
 //! heat, the skidding threshold, and the EHD film of each contact.
+//!
+//! Imports run one way, top down: `system` → `analysis` (the driver) → `contacts` and
+//! `skid` (→ `load_conditions` → `load_distribution`) and `dynamics` (→ `load_track`) →
+//! `results` → `race_control`, `geometry`, `input`, `error`. The result types that the
+//! stages below the driver read (`BallResult`, `ContactResult`) live in `results`, not in
+//! `analysis`, so that no stage imports its driver.
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
 pub mod analysis;
+mod contacts;
 pub mod deck;
 pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod input;
+mod load_conditions;
 pub mod load_distribution;
 pub mod load_track;
 pub mod race_control;
 pub mod report;
+pub mod results;
+mod skid;
 pub mod system;
 pub mod view;
 pub mod warnings;

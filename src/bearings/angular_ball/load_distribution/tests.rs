@@ -1,5 +1,10 @@
+use super::ball::BallProblem;
+use super::driver::solve_recorded;
 use super::*;
 use crate::bearings::angular_ball::input::{rpm, BallInput};
+use crate::numerics::newton::{Backtracking, Newton, TrustRegion};
+use crate::physics::contact::point::Race;
+use nalgebra::Vector2;
 
 fn geom(input: &BallInput) -> BallGeometry {
     BallGeometry::new(input).unwrap()

@@ -2,7 +2,9 @@
 
 use super::*;
 use crate::bearings::angular_ball::analysis::analyse;
-use crate::bearings::angular_ball::input::rpm;
+use crate::bearings::angular_ball::input::{rpm, Orbit};
+use crate::numerics::ode::{OdeOptions, Output};
+use crate::physics::lubrication::traction_curve::TractionCurve;
 use nalgebra::Matrix3;
 
 /// Bearing B at `rpm_` with the orbital speed held at race control's cage speed
