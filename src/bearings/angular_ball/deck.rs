@@ -631,7 +631,7 @@ fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
 
 /// The deck schema of the angular-contact ball bearing.
 pub static SCHEMA: Schema<BallInput> = Schema {
-    system: super::system::SYSTEM_ID,
+    system: super::SYSTEM_ID,
     groups: &[
         "geometry",
         "materials",

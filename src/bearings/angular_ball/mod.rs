@@ -31,5 +31,9 @@ pub mod system;
 pub mod view;
 pub mod warnings;
 
+/// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the
+/// folder's root so that every file below reads it downward.
+pub const SYSTEM_ID: &str = "angular-contact-ball";
+
 pub use error::BallError;
 pub use input::BallInput;

@@ -183,7 +183,7 @@ pub fn json(a: &BallAnalysis) -> Value {
         }
     }
     json!({
-        "type": super::system::SYSTEM_ID,
+        "type": super::SYSTEM_ID,
         "rings": {
             "axial_deflection_m": a.load.axial_deflection_m,
             "radial_deflection_m": a.load.radial_deflection_m,

@@ -16,8 +16,7 @@ use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
 use crate::units::Units;
 
-/// The deck `type` of this system.
-pub const SYSTEM_ID: &str = "angular-contact-ball";
+use super::SYSTEM_ID;
 
 /// The fidelity study of `rollbench bench` (issue 16: "error against time over slices ×
 /// tolerance, against 161 slices at 1e-10").

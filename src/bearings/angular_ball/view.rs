@@ -174,7 +174,7 @@ pub fn view(a: &BallAnalysis) -> View {
         role,
     };
     View {
-        system: super::system::SYSTEM_ID,
+        system: super::SYSTEM_ID,
         tables: vec![Table {
             id: "balls",
             columns: COLUMNS.to_vec(),

@@ -18,4 +18,8 @@ pub mod view;
 pub mod warnings;
 
 pub use input::*;
-pub use system::{SYSTEM, SYSTEM_ID};
+/// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the
+/// folder's root so that every file below reads it downward.
+pub const SYSTEM_ID: &str = "spherical-roller";
+
+pub use system::SYSTEM;

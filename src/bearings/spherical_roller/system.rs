@@ -17,8 +17,6 @@ use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
 use crate::units::Units;
 
-/// The deck `type` of this system.
-pub const SYSTEM_ID: &str = "spherical-roller";
 
 /// The fidelity study (issue 7): laminae Γ × force tolerance against Γ = 400 at 10⁻¹⁰ (the
 /// round-off floor of the equilibria). Odd Γ: a lamina on the roller mid-plane samples the

@@ -8,8 +8,7 @@ use crate::deck::form::{
 };
 use crate::units::{Quantity, Units, INCH_M};
 
-/// The deck `type` of this system.
-pub const SYSTEM_ID: &str = "tapered-roller";
+use super::SYSTEM_ID;
 
 const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
 const GYRO: &[&str] = &["polar", "transverse"];

@@ -26,4 +26,8 @@ pub mod roller;
 pub mod system;
 pub mod view;
 
+/// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the
+/// folder's root so that every file below reads it downward.
+pub const SYSTEM_ID: &str = "tapered-roller";
+
 pub use system::SYSTEM;

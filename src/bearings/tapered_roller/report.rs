@@ -131,7 +131,7 @@ pub fn json(a: &Analysis) -> Value {
         .max()
         .unwrap_or(0);
     json!({
-        "type": super::deck::SYSTEM_ID,
+        "type": super::SYSTEM_ID,
         "name": a.name,
         "method": "AFAPL-TR-78-6 Part III (seed 004): flange-guided tapered rollers, Lundberg line-contact slices, centrifugal and gyroscopic loads, 5×5 stiffness",
         "geometry": {

@@ -3,7 +3,8 @@
 
 use super::analysis::{analyse, analyse_from, Analysis};
 use super::bearing::BearingSolution;
-use super::deck::{SCHEMA, SYSTEM_ID};
+use super::deck::SCHEMA;
+use super::SYSTEM_ID;
 use super::input::TaperedInput;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{

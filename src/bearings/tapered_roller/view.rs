@@ -359,7 +359,7 @@ pub fn view(a: &Analysis) -> View {
         ),
     ];
     View {
-        system: super::deck::SYSTEM_ID,
+        system: super::SYSTEM_ID,
         tables: vec![Table {
             id: "rollers",
             columns: ROLLER_COLUMNS.to_vec(),
