@@ -1,7 +1,7 @@
 //! What to ask the solver and when: the detail and sweep the visible panes need, a new
 //! solve job ([`App::submit`]'s generation bump), re-solving when a pane comes into view
 //! that needs more than the last job gave, and the chart the running job streams. Apart
-//! because it is the one place that decides a solve.
+//! because it is the one place that builds a solve job and decides what it asks for.
 
 use super::{App, Command, Pane, SolveJob, SolveState};
 use crate::bearings::Detail;

@@ -1,7 +1,7 @@
 //! The two bottom lines: the status line (solver state, warnings, unsaved mark, edits not
 //! yet solved, the last message) and the key hints for the mode and focused pane. Apart
 //! because both shrink to the width by their own rules, and the hints change with the key
-//! map ([`super::super::app`]'s `KEYS`).
+//! map (`app::KEYS`).
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;

@@ -1,6 +1,6 @@
 //! The Thermal pane: the selected node's account, its transient against time with the
-//! limit, and the node table. Apart because it reads the thermal network only, and its
-//! contents are drawn by [`render_thermal_view`] alone for the tests.
+//! limit, and the node table. Apart because it reads the thermal network only; the tests
+//! draw its contents ([`render_thermal_view`]) on their own.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
