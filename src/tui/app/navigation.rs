@@ -1,0 +1,102 @@
+//! Moving around: focus between panes, the selection in the focused pane (field, element,
+//! thermal node), the stepper's steps, and Enter (edit a field, open the stepper). Apart
+//! because it changes what is on screen, never the deck.
+
+use super::{App, Command, Mode, Pane};
+
+impl App {
+    /// The pane `by` places after (before, if negative) the focused one, cyclically.
+    pub(super) fn pane_offset(&self, by: isize) -> Pane {
+        let panes = self.panes();
+        let n = panes.len().max(1) as isize;
+        let here = panes.iter().position(|p| *p == self.focus).unwrap_or(0) as isize;
+        let i = (here + by).rem_euclid(n) as usize;
+        panes.get(i).copied().unwrap_or(Pane::Inputs)
+    }
+
+    pub(super) fn focus_to(&mut self, pane: Pane) -> Vec<Command> {
+        self.focus = pane;
+        self.resolve_if_needed()
+    }
+
+    pub(super) fn move_sel(&mut self, by: isize) -> Vec<Command> {
+        let step = |cur: usize, len: usize| -> usize {
+            if len == 0 {
+                return 0;
+            }
+            (cur as isize).saturating_add(by).clamp(0, len as isize - 1) as usize
+        };
+        match self.focus {
+            Pane::Text(_) | Pane::Sweep(_) => Vec::new(),
+            Pane::Inputs => {
+                self.input_sel = step(self.input_sel, self.fields.len());
+                Vec::new()
+            }
+            Pane::Elements | Pane::Chart(_) | Pane::Stepper => {
+                let before = self.roller_sel;
+                self.roller_sel = step(self.roller_sel, self.roller_count());
+                if before != self.roller_sel {
+                    self.step = 0;
+                }
+                self.resolve_if_needed()
+            }
+            Pane::Thermal => {
+                // The plotted node: from the one shown (the hottest until one is
+                // picked), within the list.
+                let th = self.view.as_deref().and_then(|v| v.thermal.as_ref());
+                if let Some(th) = th {
+                    let hottest = crate::tui::view_model::hottest_node(th).unwrap_or(0);
+                    let cur = self.thermal_node.unwrap_or(hottest);
+                    self.thermal_node = Some(step(cur, th.steady.len()));
+                }
+                Vec::new()
+            }
+        }
+    }
+
+    /// Left/right: stepper steps; load chart rollers.
+    pub(super) fn sideways(&mut self, by: isize) -> Vec<Command> {
+        match self.focus {
+            Pane::Stepper => {
+                let n = self.trace_len();
+                if n > 0 {
+                    self.step = (self.step as isize)
+                        .saturating_add(by)
+                        .clamp(0, n as isize - 1) as usize;
+                }
+                Vec::new()
+            }
+            Pane::Chart(_) | Pane::Elements => {
+                let n = self.roller_count();
+                if n > 0 {
+                    self.roller_sel =
+                        (self.roller_sel as isize + by).rem_euclid(n as isize) as usize;
+                    self.step = 0;
+                }
+                self.resolve_if_needed()
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    pub(super) fn enter(&mut self) -> Vec<Command> {
+        match self.focus {
+            Pane::Inputs => {
+                if let Some(f) = self.fields.get(self.input_sel) {
+                    let buffer = self.deck.value(f.key, self.display_units);
+                    self.mode = Mode::Editing {
+                        cursor: buffer.chars().count(),
+                        buffer,
+                        error: None,
+                    };
+                }
+                Vec::new()
+            }
+            Pane::Elements | Pane::Chart(_) if self.panes().contains(&Pane::Stepper) => {
+                self.step = 0;
+                self.focus_to(Pane::Stepper)
+            }
+            _ => Vec::new(),
+        }
+    }
+}

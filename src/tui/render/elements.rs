@@ -1,0 +1,83 @@
+//! The element table (the Rollers or Balls pane): the view's screen table with the
+//! selected element highlighted and the first summary values below. Apart because its
+//! columns come from the view's table and change with it.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::Line;
+use ratatui::widgets::{Cell, Paragraph, Row, StatefulWidget, Table, TableState, Widget};
+
+use super::{no_solution_text, pane_block, stale_note, ACCENT, DIM};
+use crate::tui::app::{App, Pane};
+use crate::tui::view_model::{self, DASH};
+
+/// The element table (Rollers pane): the view's screen table, each column in its display
+/// unit and precision; `—` where a stage was not run.
+pub(super) fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
+    let u = app.display_units;
+    // The table is laid out for the pane's inner width (2 border cells).
+    let cells = app
+        .view
+        .as_deref()
+        .map(|v| view_model::table_cells(v, u, area.width.saturating_sub(2) as usize));
+    let hidden = match &cells {
+        Some(c) if c.hidden > 0 => format!(" · {} more columns on a wider terminal", c.hidden),
+        _ => String::new(),
+    };
+    let block = pane_block(app, Pane::Elements, &format!("{}{hidden}", stale_note(app)));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let (Some(view), Some(cells)) = (app.view.as_deref(), cells) else {
+        Paragraph::new(no_solution_text(app)).render(inner, buf);
+        return;
+    };
+    let [table_area, foot] =
+        Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(inner);
+    // Numbers are right-aligned, and so are their headers.
+    let header = Row::new(
+        cells
+            .columns
+            .iter()
+            .map(|c| Cell::from(Line::from(c.header.clone()).right_aligned())),
+    )
+    .style(Style::default().fg(ACCENT).add_modifier(Modifier::BOLD));
+    let gap = cells.gap;
+    let rows = cells.rows.into_iter().map(|r| {
+        Row::new(r.into_iter().map(|c| {
+            let style = if c == DASH {
+                Style::default().fg(DIM)
+            } else {
+                Style::default()
+            };
+            Cell::from(Line::from(c).right_aligned()).style(style)
+        }))
+    });
+    let widths: Vec<Constraint> = cells
+        .columns
+        .iter()
+        .map(|c| Constraint::Length(c.width))
+        .collect();
+    let table = Table::new(rows, widths)
+        .header(header)
+        .column_spacing(gap)
+        .flex(ratatui::layout::Flex::Start)
+        .row_highlight_style(Style::default().fg(Color::Black).bg(Color::Yellow));
+    let mut state = TableState::default().with_selected(Some(app.roller_sel));
+    StatefulWidget::render(table, table_area, buf, &mut state);
+    let text: Vec<String> = view
+        .summary
+        .iter()
+        .take(2)
+        .map(|s| {
+            format!(
+                "{} {}",
+                s.display.header(s.label, u),
+                view_model::fixed(s.display.convert(s.value, u), s.precision)
+            )
+        })
+        .collect();
+    Paragraph::new(text.join("  "))
+        .style(Style::default().fg(DIM))
+        .render(foot, buf);
+}
