@@ -17,7 +17,6 @@ use crate::numerics::cancel::Cancel;
 use crate::thermal::ThermalModel;
 use crate::units::Units;
 
-
 /// The fidelity study (issue 7): laminae Γ × force tolerance against Γ = 400 at 10⁻¹⁰ (the
 /// round-off floor of the equilibria). Odd Γ: a lamina on the roller mid-plane samples the
 /// crown apex (see `crate::studies::fidelity`); 400, the reference, is the exception.

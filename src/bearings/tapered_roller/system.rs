@@ -4,8 +4,8 @@
 use super::analysis::{analyse, analyse_from, Analysis};
 use super::bearing::BearingSolution;
 use super::deck::SCHEMA;
-use super::SYSTEM_ID;
 use super::input::TaperedInput;
+use super::SYSTEM_ID;
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{
     Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,

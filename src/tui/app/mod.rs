@@ -26,8 +26,8 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use crate::bearings::view::{PaneKind, View};
 use crate::bearings::{Case, Detail};
-use crate::units::Units;
 use crate::studies::sweep::PlanProgress;
+use crate::units::Units;
 
 use super::deck_io::{DeckDoc, FieldInfo};
 
