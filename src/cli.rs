@@ -29,7 +29,9 @@ pub enum Command {
         format: Format,
         /// Write the report to FILE instead of standard output (`-`: standard output).
         /// A regular file is replaced atomically (through a symbolic link); a read-only
-        /// file and the deck itself are refused; devices and FIFOs are written in place.
+        /// file and the deck itself are refused; standard streams (`/dev/stdout`), devices
+        /// and FIFOs are written in place (a FIFO's reader is waited for at most 10 s).
+        /// Every output is checked before solving, and none is written unless all can be.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
         /// Skip the loss-of-oil thermal transient (the steady state is still solved).
@@ -37,7 +39,8 @@ pub enum Command {
         no_transient: bool,
         /// Also write the time history of a time-domain solution (the ball system's
         /// `dynamics.method = "time-simulation"`) to FILE as CSV, SI, units in the header;
-        /// written as `--output` is (atomically; the deck and the `--output` file are refused).
+        /// written as `--output` is (atomically, together with it; the deck and a file that
+        /// is the `--output` file are refused).
         #[arg(long, value_name = "FILE")]
         series: Option<PathBuf>,
     },
@@ -107,7 +110,7 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
         /// Write the table to FILE instead of standard output (`-`: standard output), as
-        /// `run --output` does.
+        /// `run --output` does; not written when no point solved.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
@@ -133,7 +136,7 @@ pub mod exit {
     /// Success.
     pub const OK: u8 = 0;
     /// Invalid input: deck, `--set`, a file that cannot be read or written, or a refused
-    /// `--output`.
+    /// output (`--output`, `--series`).
     pub const INVALID_INPUT: u8 = 1;
     /// The solver failed (run, bench): the message names the stage and the numbers.
     pub const SOLVE_FAILED: u8 = 2;

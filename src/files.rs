@@ -1,26 +1,63 @@
-//! Writing files so that a crash or a failure never leaves a truncated one, and nothing
-//! is lost or silently replaced: the one writer of the crate, used by the CLI
-//! (`run --output`) and the deck save.
+//! Writing files so that a crash, a failure or a signal never leaves a truncated one, and
+//! a user's data is never lost or silently replaced: the one writer of the crate, used by
+//! the CLI (`run --output`, `run --series`, `stiffness --output`, `sweep --output`) and the
+//! deck save.
 //!
-//! The rules (issue 14), applied by [`write_atomic`] and [`save_with_backup`]:
+//! The rules (issues 14 and 24), applied by [`plan`] and [`Plan::commit`] (and through
+//! them by [`write_atomic`] and [`save_with_backup`]):
 //!
-//! * a regular file (or a new one) is written as `.<name>.tmp-<pid>` in its directory,
-//!   fsynced and renamed over the destination; on any failure the temporary file is
-//!   removed and the destination is untouched; the file keeps its permissions;
-//! * a symbolic link is written *through*: the rename replaces the file the link
-//!   resolves to, and the link stays a link (a dangling link is refused);
-//! * a read-only file is refused with a clear message, never replaced;
-//! * anything that is not a regular file (a device such as `/dev/null`, a FIFO, a
-//!   terminal) is written directly, without a temporary file or a rename;
-//! * `-` means standard output ([`write_atomic`] only).
+//! * **Checked first.** Every output is checked before anything is computed or written
+//!   ([`plan`]): its directory exists and takes a new file, it is not a directory, not a
+//!   read-only file, not a dangling link, not the deck being read, and it is not the same
+//!   file as another output. Outputs are compared by what they resolve to: device and
+//!   inode when the file exists, else the canonical directory and the name (following
+//!   links), so `new.json`, `./new.json`, its absolute path and a link to it are one file
+//!   whether or not it exists yet. Outputs written in place (standard streams, devices,
+//!   FIFOs) may share a file: they are written one after the other, in order.
+//! * **Temporary, then rename.** A regular file (or a new one) is written to a temporary
+//!   file `.<name>.<random>.tmp` in its directory, created exclusively (`O_CREAT|O_EXCL`,
+//!   by the `tempfile` crate: a file or link planted at a guessable name is never opened,
+//!   let alone followed), fsynced and renamed over the destination. The file keeps its
+//!   permissions; a new one gets 0666 less the umask, as any new file.
+//! * **All or nothing.** [`Plan::commit`] writes every temporary file first, then what is
+//!   written in place, and renames the temporaries only when all of that succeeded; on
+//!   any failure the temporaries are removed and every destination that would have been
+//!   replaced is untouched. The temporaries are removed on every exit path: a failure or a
+//!   panic drops them, and a SIGINT, SIGTERM, SIGHUP or SIGQUIT removes them before the
+//!   process ends by that signal (once [`remove_temporaries_on_signals`] is installed, as
+//!   the CLI does).
+//! * **Links.** A symbolic link is written *through*: the rename replaces the file the
+//!   link resolves to, and the link stays a link (a dangling link is refused).
+//! * **Read-only.** A read-only file is refused with a clear message, never replaced.
+//! * **Standard streams.** A path that names one of this process's standard streams
+//!   (`/dev/stdout`, `/dev/stderr`, `/dev/stdin`, `/dev/fd/N`, `/proc/self/fd/N`, a link
+//!   to one of them), or that resolves to the file descriptor 1 or 2 is open on (the file
+//!   a shell appends standard output to), is written to that descriptor in place,
+//!   never replaced: `--output /dev/stdout >> log.txt` appends to `log.txt`. A path naming
+//!   another open descriptor (`/dev/fd/N`, N > 2) is reopened to append.
+//! * **In place.** Anything else that is not a regular file is written in place, without
+//!   a temporary file or a rename: a device such as `/dev/null`, or a FIFO. A FIFO is
+//!   opened without blocking; with no reader yet the CLI waits for one, saying so on
+//!   standard error, at most [`FIFO_WAIT`], then gives up with nothing written to any
+//!   output; the deck save does not wait.
+//! * `-` (or no file at all) means standard output.
 //!
-//! [`save_with_backup`] also keeps the previous file as `<name>.bak` and fsyncs the
-//! directory after the rename. [`same_file`] lets the CLI refuse to write over the deck
-//! it reads.
+//! [`save_with_backup`] also keeps the previous file as `<name>.bak`, written as a
+//! temporary file and renamed like the file itself (a link planted at `<name>.bak` is
+//! replaced by the backup, its target never written), and fsyncs the directory after the
+//! renames. [`same_file`] compares two existing files.
 
+use std::ffi::{OsStr, OsString};
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
+use std::sync::{Mutex, MutexGuard, OnceLock};
+use std::time::{Duration, Instant};
+
+/// How long the CLI waits for a reader to open a FIFO named as an output before giving
+/// up (nothing written to any output). Long enough for `rollbench … --output p & cat p`
+/// started by hand; short enough that a forgotten reader does not hang a script.
+pub const FIFO_WAIT: Duration = Duration::from_secs(10);
 
 /// A failed save: the file concerned, what was being done and the OS error.
 #[derive(Debug, thiserror::Error)]
@@ -35,11 +72,31 @@ pub struct FileError {
     pub source: io::Error,
 }
 
+/// An output refused or not written, named as the user named it.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{what}: {reason}")]
+pub struct OutputError {
+    /// The output: its flag and path (`--series out.csv`), or "standard output".
+    pub what: String,
+    /// Why, for a person: what is wrong and what to do.
+    pub reason: String,
+    /// The kind of the OS error behind it (`Other` when the rules refused it).
+    pub kind: io::ErrorKind,
+}
+
 /// How a write reached its destination.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Written {
-    /// Standard output (`-`).
+    /// Standard output (`-`, or no file named).
     Stdout,
+    /// A path naming one of this process's open descriptors (`/dev/stdout`, the file
+    /// standard output is redirected to, `/dev/fd/N`), written in place.
+    Descriptor {
+        /// The path as named.
+        path: PathBuf,
+        /// The descriptor it names.
+        fd: u32,
+    },
     /// Written in place to something that is not a regular file (device, FIFO).
     Direct(PathBuf),
     /// Replaced atomically; `via` is the symbolic link written through, if any.
@@ -55,6 +112,9 @@ impl std::fmt::Display for Written {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Written::Stdout => write!(f, "standard output"),
+            Written::Descriptor { path, fd } => {
+                write!(f, "{} (descriptor {fd}, written in place)", path.display())
+            }
             Written::Direct(p) => {
                 write!(f, "{} (written in place: not a regular file)", p.display())
             }
@@ -72,65 +132,531 @@ impl std::fmt::Display for Written {
     }
 }
 
-/// Where and how `path` is written, by the rules of the module documentation.
-#[derive(Debug)]
-enum Target {
+/// Where and how an output is written, by the rules of the module documentation.
+#[derive(Debug, Clone)]
+enum Dest {
+    /// Standard output (`-` or no file).
     Stdout,
-    Direct(PathBuf),
+    /// One of this process's descriptors, named by `path`: 0, 1, 2 written through the
+    /// process's own descriptor (at its offset, or appending if it was opened so); a
+    /// higher one reopened to append.
+    Fd { path: PathBuf, fd: u32 },
+    /// A device or FIFO, written in place.
+    InPlace(PathBuf),
+    /// A regular file (or a new one): temporary file, then rename over `file`.
     Replace { file: PathBuf, via: Option<PathBuf> },
 }
 
-fn refused(msg: String) -> io::Error {
-    io::Error::new(io::ErrorKind::PermissionDenied, msg)
+impl Dest {
+    fn in_place(&self) -> bool {
+        !matches!(self, Dest::Replace { .. })
+    }
 }
 
-/// Classifies `path` (`allow_stdout`: `-` is standard output).
-fn target(path: &Path, allow_stdout: bool) -> io::Result<Target> {
-    if allow_stdout && path.as_os_str() == "-" {
-        return Ok(Target::Stdout);
-    }
-    let link = fs::symlink_metadata(path).ok();
-    let is_link = link.as_ref().is_some_and(|m| m.file_type().is_symlink());
-    match fs::metadata(path) {
-        Ok(m) if !m.is_file() => {
-            if m.is_dir() {
-                return Err(io::Error::new(
-                    io::ErrorKind::InvalidInput,
-                    "is a directory, not a file",
+/// One checked output.
+#[derive(Debug, Clone)]
+struct Item {
+    what: String,
+    dest: Dest,
+}
+
+/// Outputs checked by [`plan`], to be written together by [`Plan::commit`].
+#[derive(Debug, Clone)]
+pub struct Plan {
+    items: Vec<Item>,
+    fifo_wait: Duration,
+}
+
+/// What a file is, to tell two outputs (or an output and the deck) apart.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Identity {
+    /// An existing file: its device and inode (its canonical path off unix).
+    #[cfg(unix)]
+    Inode(u64, u64),
+    #[cfg(not(unix))]
+    Canonical(PathBuf),
+    /// A file not created yet: the canonical directory it will be in, joined with its name.
+    Name(PathBuf),
+}
+
+/// Checks every output before anything is computed or written, by the rules of the
+/// module documentation. `outputs` are `(flag, path)`: `None` or `-` is standard output;
+/// `inputs` are `(what, path)` of the files being read (`"the deck being read"`), which
+/// no output may be. The first refusal is returned, naming the output and why.
+pub fn plan(
+    outputs: &[(&str, Option<&Path>)],
+    inputs: &[(&str, &Path)],
+) -> Result<Plan, OutputError> {
+    let named: Vec<(String, Option<&Path>)> = outputs
+        .iter()
+        .map(|&(flag, path)| match path {
+            Some(p) if p.as_os_str() != "-" => (format!("{flag} {}", p.display()), Some(p)),
+            _ => ("standard output".to_string(), None),
+        })
+        .collect();
+    let refuse = |what: &str, reason: String| OutputError {
+        what: what.to_string(),
+        reason,
+        kind: io::ErrorKind::Other,
+    };
+    // Identities first, so that a clash is named as such even where the output would be
+    // refused for another reason too (a link to a file the other output creates).
+    let ids: Vec<Option<Identity>> = named.iter().map(|(_, p)| p.and_then(identity)).collect();
+    for ((what, path), id) in named.iter().zip(&ids) {
+        let (Some(_), Some(id)) = (path, id) else {
+            continue;
+        };
+        for &(desc, input) in inputs {
+            if identity(input).as_ref() == Some(id) {
+                return Err(refuse(
+                    what,
+                    format!("is {desc} ({}); refusing to overwrite it", input.display()),
                 ));
             }
-            Ok(Target::Direct(path.to_path_buf()))
         }
+    }
+    let dests: Vec<io::Result<Dest>> = named
+        .iter()
+        .map(|(_, path)| path.map_or(Ok(Dest::Stdout), classify))
+        .collect();
+    let in_place = |d: &io::Result<Dest>| d.as_ref().is_ok_and(Dest::in_place);
+    for j in 0..named.len() {
+        for i in 0..j {
+            let both_in_place = in_place(&dests[i]) && in_place(&dests[j]);
+            if !both_in_place && ids[i].is_some() && ids[i] == ids[j] {
+                return Err(refuse(
+                    &named[j].0,
+                    format!(
+                        "is the same file as {}; refusing to write either (name two \
+                         different files)",
+                        named[i].0
+                    ),
+                ));
+            }
+        }
+    }
+    let mut items = Vec::with_capacity(named.len());
+    for ((what, _), dest) in named.into_iter().zip(dests) {
+        let dest = dest.map_err(|e| OutputError {
+            what: what.clone(),
+            reason: e.to_string(),
+            kind: e.kind(),
+        })?;
+        items.push(Item { what, dest });
+    }
+    Ok(Plan {
+        items,
+        fifo_wait: FIFO_WAIT,
+    })
+}
+
+impl Plan {
+    /// How long to wait for a reader on a FIFO output (default [`FIFO_WAIT`]; zero: do
+    /// not wait, refuse at once).
+    pub fn fifo_wait(mut self, wait: Duration) -> Plan {
+        self.fifo_wait = wait;
+        self
+    }
+
+    /// Writes `contents[i]` to the `i`-th output of the plan, all or nothing: every
+    /// temporary file first, then the outputs written in place, then the renames. On a
+    /// failure before the renames no replaced destination is touched and no temporary file
+    /// remains. (A rename failing after others succeeded, which needs the directory to
+    /// change under the write, leaves the earlier outputs written: the message says so.)
+    pub fn commit(&self, contents: &[&[u8]]) -> Result<Vec<Written>, OutputError> {
+        if contents.len() != self.items.len() {
+            return Err(OutputError {
+                what: "outputs".into(),
+                reason: format!(
+                    "{} contents for {} outputs (a bug: please report it)",
+                    contents.len(),
+                    self.items.len()
+                ),
+                kind: io::ErrorKind::InvalidInput,
+            });
+        }
+        let fail = |item: &Item, e: io::Error| OutputError {
+            what: item.what.clone(),
+            reason: format!("{e}; nothing was written"),
+            kind: e.kind(),
+        };
+        let mut staged = Vec::with_capacity(self.items.len());
+        for (item, bytes) in self.items.iter().zip(contents) {
+            staged.push(match &item.dest {
+                Dest::Replace { file, .. } => {
+                    Some(Staged::write(file, bytes).map_err(|e| fail(item, e))?)
+                }
+                _ => None,
+            });
+        }
+        for (item, bytes) in self.items.iter().zip(contents) {
+            match &item.dest {
+                Dest::Stdout => write_fd(1, bytes),
+                Dest::Fd { path, fd } => write_descriptor(path, *fd, bytes),
+                Dest::InPlace(p) => write_in_place(p, bytes, self.fifo_wait),
+                Dest::Replace { .. } => Ok(()),
+            }
+            .map_err(|e| fail(item, e))?;
+        }
+        let mut written = Vec::with_capacity(self.items.len());
+        let mut renamed = 0;
+        for (item, st) in self.items.iter().zip(staged) {
+            written.push(match (&item.dest, st) {
+                (Dest::Replace { file, via }, Some(st)) => {
+                    st.rename_to(file).map_err(|e| OutputError {
+                        what: item.what.clone(),
+                        reason: if renamed == 0 {
+                            format!("{e}; nothing was replaced")
+                        } else {
+                            format!("{e}; the outputs before it were written")
+                        },
+                        kind: e.kind(),
+                    })?;
+                    renamed += 1;
+                    sync_dir(file);
+                    Written::Replaced {
+                        file: file.clone(),
+                        via: via.clone(),
+                    }
+                }
+                (Dest::Stdout, _) => Written::Stdout,
+                (Dest::Fd { path, fd }, _) => Written::Descriptor {
+                    path: path.clone(),
+                    fd: *fd,
+                },
+                (Dest::InPlace(p), _) | (Dest::Replace { file: p, .. }, None) => {
+                    Written::Direct(p.clone())
+                }
+            });
+        }
+        Ok(written)
+    }
+}
+
+/// Classifies `path` (not `-`) by the rules of the module documentation, refusing what
+/// cannot or must not be written.
+fn classify(path: &Path) -> io::Result<Dest> {
+    if let Some(fd) = descriptor_named(path).or_else(|| std_stream_of(path)) {
+        if fs::metadata(path).is_err() {
+            return Err(io::Error::new(
+                io::ErrorKind::NotFound,
+                format!("names descriptor {fd}, which is not open"),
+            ));
+        }
+        return Ok(Dest::Fd {
+            path: path.to_path_buf(),
+            fd,
+        });
+    }
+    let is_link = fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
+    match fs::metadata(path) {
+        Ok(m) if m.is_dir() => Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "is a directory, not a file",
+        )),
+        Ok(m) if !m.is_file() => Ok(Dest::InPlace(path.to_path_buf())),
         Ok(m) => {
             if m.permissions().readonly() {
                 return Err(refused(
                     "the file is read-only; it is not replaced (make it writable or \
-                     choose another file)"
-                        .into(),
+                     choose another file)",
                 ));
             }
-            if is_link {
-                let file = fs::canonicalize(path)?;
-                Ok(Target::Replace {
-                    file,
-                    via: Some(path.to_path_buf()),
-                })
+            let (file, via) = if is_link {
+                (fs::canonicalize(path)?, Some(path.to_path_buf()))
             } else {
-                Ok(Target::Replace {
-                    file: path.to_path_buf(),
-                    via: None,
-                })
-            }
+                (path.to_path_buf(), None)
+            };
+            probe_dir(&file)?;
+            Ok(Dest::Replace { file, via })
         }
         Err(_) if is_link => Err(io::Error::new(
             io::ErrorKind::NotFound,
             "is a symbolic link to a missing file; not written (create the target or \
              choose another file)",
         )),
-        Err(_) => Ok(Target::Replace {
-            file: path.to_path_buf(),
-            via: None,
-        }),
+        Err(e) if e.kind() != io::ErrorKind::NotFound => Err(e),
+        Err(_) => {
+            probe_dir(path)?;
+            Ok(Dest::Replace {
+                file: path.to_path_buf(),
+                via: None,
+            })
+        }
+    }
+}
+
+fn refused(msg: &str) -> io::Error {
+    io::Error::new(io::ErrorKind::PermissionDenied, msg.to_string())
+}
+
+/// Checks that the directory of `file` exists and takes a new file, by creating (and at
+/// once removing) a temporary file there, exactly as the write will.
+fn probe_dir(file: &Path) -> io::Result<()> {
+    let (dir, name) = split(file)?;
+    match fs::metadata(&dir) {
+        Ok(m) if m.is_dir() => {}
+        Ok(_) => {
+            return Err(io::Error::new(
+                io::ErrorKind::NotFound,
+                format!("{} is not a directory", dir.display()),
+            ))
+        }
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Err(io::Error::new(
+                io::ErrorKind::NotFound,
+                format!("the directory {} does not exist", dir.display()),
+            ))
+        }
+        Err(e) => return Err(e),
+    }
+    Staged::create(&dir, &name, None).map(drop).map_err(|e| {
+        io::Error::new(
+            e.kind(),
+            format!("cannot create a file in {}: {e}", dir.display()),
+        )
+    })
+}
+
+/// What `path` resolves to (see [`Identity`]); `None` when its directory does not exist.
+fn identity(path: &Path) -> Option<Identity> {
+    if let Ok(m) = fs::metadata(path) {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            return Some(Identity::Inode(m.dev(), m.ino()));
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = m;
+            return fs::canonicalize(path).ok().map(Identity::Canonical);
+        }
+    }
+    // Not there (yet): follow links to the name that a write would create.
+    let mut p = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        match fs::read_link(&p) {
+            Ok(target) => p = resolve_link(&p, target),
+            Err(_) => break,
+        }
+    }
+    let (dir, name) = split(&p).ok()?;
+    Some(Identity::Name(fs::canonicalize(dir).ok()?.join(name)))
+}
+
+/// Links followed at most, as the kernel's own limit (Linux ELOOP after 40).
+const MAX_LINKS: usize = 40;
+
+/// The path a link at `link` pointing to `target` names.
+fn resolve_link(link: &Path, target: PathBuf) -> PathBuf {
+    if target.is_absolute() {
+        target
+    } else {
+        link.parent().unwrap_or(Path::new("")).join(target)
+    }
+}
+
+/// The descriptor `path` names by its name (`/dev/stdout`, `/dev/fd/N`,
+/// `/proc/self/fd/N`, `/proc/<this pid>/fd/N`, …), following links to such a name and
+/// seeing through a directory that is `/proc/self/fd` by another name.
+fn descriptor_named(path: &Path) -> Option<u32> {
+    let mut p = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        if let Some(fd) = lexical_descriptor(&p) {
+            return Some(fd);
+        }
+        if let Ok((dir, name)) = split(&p) {
+            if let Ok(dir) = fs::canonicalize(dir) {
+                if let Some(fd) = lexical_descriptor(&dir.join(name)) {
+                    return Some(fd);
+                }
+            }
+        }
+        match fs::read_link(&p) {
+            Ok(target) => p = resolve_link(&p, target),
+            Err(_) => return None,
+        }
+    }
+    None
+}
+
+/// The descriptor an absolute path names by its spelling alone.
+fn lexical_descriptor(path: &Path) -> Option<u32> {
+    let parts: Vec<&OsStr> = path
+        .components()
+        .filter(|c| !matches!(c, Component::CurDir))
+        .map(|c| match c {
+            Component::RootDir => OsStr::new("/"),
+            c => c.as_os_str(),
+        })
+        .collect();
+    let s: Vec<&str> = parts.iter().map(|p| p.to_str()).collect::<Option<_>>()?;
+    let pid = std::process::id().to_string();
+    let own = |x: &str| x == "self" || x == "thread-self" || x == pid;
+    let num = |x: &str| x.parse::<u32>().ok();
+    match s.as_slice() {
+        ["/", "dev", "stdin"] => Some(0),
+        ["/", "dev", "stdout"] => Some(1),
+        ["/", "dev", "stderr"] => Some(2),
+        ["/", "dev", "fd", n] => num(n),
+        ["/", "proc", who, "fd", n] if own(who) => num(n),
+        ["/", "proc", who, "task", _, "fd", n] if own(who) => num(n),
+        _ => None,
+    }
+}
+
+/// The standard output stream (1, then 2) whose open file `path` resolves to, if any: the
+/// file a shell redirected it to, its terminal, or `/dev/null`. Standard input is not
+/// matched so: it is read, not written (a path naming it, `/dev/stdin`, still is).
+#[cfg(unix)]
+fn std_stream_of(path: &Path) -> Option<u32> {
+    use std::os::fd::AsFd;
+    use std::os::unix::fs::MetadataExt;
+    let m = fs::metadata(path).ok()?;
+    let id = (m.dev(), m.ino());
+    let of = |fd: io::Result<std::os::fd::OwnedFd>| {
+        fd.and_then(|fd| File::from(fd).metadata())
+            .ok()
+            .map(|m| (m.dev(), m.ino()))
+    };
+    if of(io::stdout().as_fd().try_clone_to_owned()) == Some(id) {
+        Some(1)
+    } else if of(io::stderr().as_fd().try_clone_to_owned()) == Some(id) {
+        Some(2)
+    } else {
+        None
+    }
+}
+
+#[cfg(not(unix))]
+fn std_stream_of(_path: &Path) -> Option<u32> {
+    None
+}
+
+/// Writes to standard output (1) or standard error (2) through the process's stream.
+fn write_fd(fd: u32, bytes: &[u8]) -> io::Result<()> {
+    if fd == 2 {
+        let mut e = io::stderr().lock();
+        e.write_all(bytes)?;
+        e.flush()
+    } else {
+        let mut o = io::stdout().lock();
+        o.write_all(bytes)?;
+        o.flush()
+    }
+}
+
+/// Writes to the descriptor `fd` that `path` names: 1 and 2 through the process's streams,
+/// 0 through a duplicate of it, a higher one by reopening `path` to append.
+fn write_descriptor(path: &Path, fd: u32, bytes: &[u8]) -> io::Result<()> {
+    match fd {
+        1 | 2 => write_fd(fd, bytes),
+        #[cfg(unix)]
+        0 => {
+            use std::os::fd::AsFd;
+            let mut f = File::from(io::stdin().as_fd().try_clone_to_owned()?);
+            f.write_all(bytes).map_err(|e| match e.raw_os_error() {
+                Some(n) if n == rustix::io::Errno::BADF.raw_os_error() => io::Error::new(
+                    e.kind(),
+                    "names standard input, which is not open for writing",
+                ),
+                _ => e,
+            })?;
+            f.flush()
+        }
+        _ => {
+            let mut f = OpenOptions::new().append(true).open(path)?;
+            f.write_all(bytes)?;
+            f.flush()
+        }
+    }
+}
+
+/// Writes to a device or FIFO in place (no create, no rename). A FIFO is opened without
+/// blocking: with no reader yet, waits up to `wait` for one (saying so on standard error)
+/// and then refuses.
+fn write_in_place(path: &Path, bytes: &[u8], wait: Duration) -> io::Result<()> {
+    let is_fifo = {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            fs::metadata(path).is_ok_and(|m| m.file_type().is_fifo())
+        }
+        #[cfg(not(unix))]
+        false
+    };
+    let mut f = if is_fifo {
+        open_fifo(path, wait)?
+    } else {
+        OpenOptions::new().write(true).open(path)?
+    };
+    f.write_all(bytes)?;
+    f.flush()
+}
+
+/// Opens a FIFO for writing without blocking forever: `O_NONBLOCK` fails with ENXIO while
+/// no process has it open for reading; retried every 50 ms up to `wait`, then refused.
+/// Once open, the descriptor is made blocking again so that the write waits for the reader
+/// to drain the pipe.
+#[cfg(unix)]
+fn open_fifo(path: &Path, wait: Duration) -> io::Result<File> {
+    use rustix::fs::OFlags;
+    use std::os::unix::fs::OpenOptionsExt;
+    let start = Instant::now();
+    let mut said = false;
+    loop {
+        let opened = OpenOptions::new()
+            .write(true)
+            .custom_flags(OFlags::NONBLOCK.bits() as i32)
+            .open(path);
+        match opened {
+            Ok(f) => {
+                let flags = rustix::fs::fcntl_getfl(&f)?;
+                rustix::fs::fcntl_setfl(&f, flags - OFlags::NONBLOCK)?;
+                return Ok(f);
+            }
+            Err(e) if e.raw_os_error() == Some(rustix::io::Errno::NXIO.raw_os_error()) => {
+                if start.elapsed() >= wait {
+                    return Err(io::Error::new(
+                        io::ErrorKind::WouldBlock,
+                        format!(
+                            "is a FIFO that no process opened for reading{}; not written \
+                             (start its reader first)",
+                            if wait.is_zero() {
+                                String::new()
+                            } else {
+                                format!(" within {} s", wait.as_secs_f64())
+                            }
+                        ),
+                    ));
+                }
+                if !said {
+                    eprintln!(
+                        "waiting for a reader on FIFO {} (at most {} s)…",
+                        path.display(),
+                        wait.as_secs_f64()
+                    );
+                    said = true;
+                }
+                std::thread::sleep(Duration::from_millis(50));
+            }
+            Err(e) => return Err(e),
+        }
+    }
+}
+
+#[cfg(not(unix))]
+fn open_fifo(path: &Path, _wait: Duration) -> io::Result<File> {
+    OpenOptions::new().write(true).open(path)
+}
+
+/// Best effort: makes a rename in the directory of `file` durable (not every platform can
+/// fsync a directory).
+fn sync_dir(file: &Path) {
+    if let Ok((dir, _)) = split(file) {
+        if let Ok(d) = File::open(dir) {
+            let _ = d.sync_all();
+        }
     }
 }
 
@@ -152,43 +678,25 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
     false
 }
 
-/// Writes `bytes` to `path` by the rules of the module documentation (atomic replace of
-/// a regular file, through links, refusing read-only files, directly to devices and
-/// FIFOs, `-` to standard output). On failure a regular destination is untouched.
+/// Writes `bytes` to `path` by the rules of the module documentation (one output: see
+/// [`plan`] for several written together). On failure a regular destination is untouched.
 pub fn write_atomic(path: impl AsRef<Path>, bytes: impl AsRef<[u8]>) -> io::Result<Written> {
-    let path = path.as_ref();
-    let bytes = bytes.as_ref();
-    match target(path, true)? {
-        Target::Stdout => {
-            let mut out = io::stdout().lock();
-            out.write_all(bytes)?;
-            out.flush()?;
-            Ok(Written::Stdout)
-        }
-        Target::Direct(p) => {
-            write_direct(&p, bytes)?;
-            Ok(Written::Direct(p))
-        }
-        Target::Replace { file, via } => {
-            let tmp = TempFile::write(&file, bytes)?;
-            tmp.rename_to(&file)?;
-            Ok(Written::Replaced { file, via })
-        }
-    }
-}
-
-/// Writes to a device or FIFO in place (no create, no rename).
-fn write_direct(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    let mut f = OpenOptions::new().write(true).open(path)?;
-    f.write_all(bytes)?;
-    f.flush()
+    let err = |e: OutputError| io::Error::new(e.kind, e.reason);
+    let mut w = plan(&[("", Some(path.as_ref()))], &[])
+        .map_err(err)?
+        .commit(&[bytes.as_ref()])
+        .map_err(err)?;
+    w.pop()
+        .ok_or_else(|| io::Error::other("nothing was written"))
 }
 
 /// Saves `text` to `path` by the rules of the module documentation, keeping the previous
-/// file: write `.<name>.tmp-<pid>` beside it, fsync, copy the previous file (if any) to
-/// `<name>.bak`, rename the temporary file over `path`, then fsync the directory (best
-/// effort). A link is saved through (backup beside the file it points to); a read-only
-/// deck is refused. On any failure the temporary file is removed and `path` is
+/// file: the new text and (if there is a previous file) a copy of it are written as
+/// temporary files beside it and fsynced, the copy is renamed to `<name>.bak` (replacing
+/// whatever is there, a link included, never writing through it), the new text renamed
+/// over `path`, then the directory is fsynced (best effort). A link is saved through
+/// (backup beside the file it points to); a read-only deck is refused; a FIFO with no
+/// reader is refused at once. On any failure no temporary file remains and `path` is
 /// untouched; the error names the file concerned.
 pub fn save_with_backup(path: &Path, text: &str) -> Result<Written, FileError> {
     let err = |path: PathBuf, action: &'static str| {
@@ -198,36 +706,48 @@ pub fn save_with_backup(path: &Path, text: &str) -> Result<Written, FileError> {
             source,
         }
     };
-    let (file, via) = match target(path, false).map_err(err(path.to_path_buf(), "cannot save"))? {
-        Target::Direct(p) => {
-            write_direct(&p, text.as_bytes()).map_err(err(p.clone(), "cannot save"))?;
+    let dest = if path.as_os_str() == "-" {
+        // A deck named `-` is a file of that name, not standard output.
+        classify(&Path::new(".").join(path))
+    } else {
+        classify(path)
+    }
+    .map_err(err(path.to_path_buf(), "cannot save"))?;
+    let (file, via) = match dest {
+        Dest::Replace { file, via } => (file, via),
+        Dest::InPlace(p) => {
+            write_in_place(&p, text.as_bytes(), Duration::ZERO)
+                .map_err(err(p.clone(), "cannot save"))?;
             return Ok(Written::Direct(p));
         }
-        Target::Replace { file, via } => (file, via),
-        Target::Stdout => (path.to_path_buf(), None),
+        Dest::Fd { path: p, fd } => {
+            write_descriptor(&p, fd, text.as_bytes()).map_err(err(p.clone(), "cannot save"))?;
+            return Ok(Written::Descriptor { path: p, fd });
+        }
+        Dest::Stdout => (path.to_path_buf(), None),
     };
     let path = file.as_path();
     let (dir, file_name) = split(path).map_err(err(path.to_path_buf(), "cannot save"))?;
-    let tmp = TempFile::write(path, text.as_bytes()).map_err(err(
-        temp_path(&dir, &file_name),
-        "cannot write temporary file",
-    ))?;
+    let tmp = Staged::write(path, text.as_bytes())
+        .map_err(err(dir.clone(), "cannot write temporary file"))?;
+    let bak = dir.join({
+        let mut n = file_name.clone();
+        n.push(".bak");
+        n
+    });
     if path.exists() {
-        let bak = dir.join(format!("{file_name}.bak"));
-        // An old read-only backup would make the copy fail: it is replaced.
-        if fs::symlink_metadata(&bak).is_ok_and(|m| m.is_file() && m.permissions().readonly()) {
-            let _ = fs::remove_file(&bak);
-        }
-        if let Err(e) = fs::copy(path, &bak) {
-            return Err(err(bak, "cannot keep the previous deck as backup")(e));
-        }
+        let keep = (|| -> io::Result<()> {
+            let mut old = File::open(path)?;
+            let mut copy = Staged::create(&dir, bak.file_name().unwrap_or_default(), Some(path))?;
+            io::copy(&mut old, copy.file()?)?;
+            copy.file()?.sync_all()?;
+            copy.rename_to(&bak)
+        })();
+        keep.map_err(err(bak.clone(), "cannot keep the previous deck as backup"))?;
     }
     tmp.rename_to(path)
         .map_err(err(path.to_path_buf(), "cannot replace the deck"))?;
-    // Make the rename durable; best effort (not all platforms can fsync a directory).
-    if let Ok(d) = File::open(&dir) {
-        let _ = d.sync_all();
-    }
+    sync_dir(path);
     Ok(Written::Replaced {
         file: path.to_path_buf(),
         via,
@@ -235,10 +755,10 @@ pub fn save_with_backup(path: &Path, text: &str) -> Result<Written, FileError> {
 }
 
 /// The directory `path` is in (`.` for a bare name) and its file name.
-fn split(path: &Path) -> io::Result<(PathBuf, String)> {
+fn split(path: &Path) -> io::Result<(PathBuf, OsString)> {
     let file_name = path
         .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
+        .map(OsStr::to_os_string)
         .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "path has no file name"))?;
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
@@ -247,52 +767,137 @@ fn split(path: &Path) -> io::Result<(PathBuf, String)> {
     Ok((dir, file_name))
 }
 
-/// `.<name>.tmp-<pid>` in `dir`.
-fn temp_path(dir: &Path, file_name: &str) -> PathBuf {
-    dir.join(format!(".{file_name}.tmp-{}", std::process::id()))
+/// The temporary files that exist now, for the signal handler to remove
+/// ([`remove_temporaries_on_signals`]): a signal runs no destructors.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The list of temporary files, even if a thread panicked while holding it (the list
+/// itself is always whole: pushes and removals only).
+fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
+    TEMPORARIES.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// A written and fsynced temporary file beside its destination, removed when dropped
-/// unless renamed into place.
-struct TempFile {
+/// Installs (once) a thread that, on SIGINT, SIGTERM, SIGHUP or SIGQUIT, removes every
+/// temporary file of this module and then ends the process by that signal, as it would
+/// have ended without the handler (exit status 128 + n in a shell; `exit(128 + n)` if
+/// the default action cannot be re-raised). For the CLI; the workbench has its own
+/// handling (it restores the terminal) and saves without it.
+pub fn remove_temporaries_on_signals() -> io::Result<()> {
+    static INSTALLED: OnceLock<()> = OnceLock::new();
+    if INSTALLED.get().is_some() {
+        return Ok(());
+    }
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM};
+        let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP, SIGQUIT])?;
+        std::thread::Builder::new()
+            .name("remove-temporaries".into())
+            .spawn(move || {
+                if let Some(sig) = signals.forever().next() {
+                    // Held to the end: no new temporary file is created meanwhile.
+                    let mut list = temporaries();
+                    for p in list.drain(..) {
+                        let _ = fs::remove_file(&p);
+                    }
+                    let _ = signal_hook::low_level::emulate_default_handler(sig);
+                    std::process::exit(128 + sig);
+                }
+            })?;
+    }
+    let _ = INSTALLED.set(());
+    Ok(())
+}
+
+/// A temporary file beside its destination, created exclusively under a random name and
+/// listed in [`TEMPORARIES`]; removed when dropped unless renamed into place.
+struct Staged {
+    tmp: Option<tempfile::NamedTempFile>,
     path: PathBuf,
-    renamed: bool,
 }
 
-impl TempFile {
-    /// Creates (or truncates) the temporary file for `dest`, writes `bytes` and fsyncs.
-    fn write(dest: &Path, bytes: &[u8]) -> io::Result<TempFile> {
-        let (dir, file_name) = split(dest)?;
-        let tmp = TempFile {
-            path: temp_path(&dir, &file_name),
-            renamed: false,
-        };
-        let mut f = OpenOptions::new()
-            .write(true)
-            .create(true)
-            .truncate(true)
-            .open(&tmp.path)?;
-        f.write_all(bytes)?;
-        // The replaced file keeps its permissions (a 0600 deck stays private).
-        if let Ok(m) = fs::metadata(dest) {
-            f.set_permissions(m.permissions())?;
+impl Staged {
+    /// Creates `.<name>.<random>.tmp` in `dir` (`O_CREAT|O_EXCL`: never an existing file or
+    /// link), with the permissions of `like` if given (else 0666 less the umask, as any new
+    /// file), and lists it for the signal handler.
+    fn create(dir: &Path, name: &OsStr, like: Option<&Path>) -> io::Result<Staged> {
+        let mut prefix = OsString::from(".");
+        prefix.push(name);
+        prefix.push(".");
+        let mut b = tempfile::Builder::new();
+        b.prefix(&prefix).suffix(".tmp");
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            b.permissions(fs::Permissions::from_mode(0o666));
         }
-        f.sync_all()?;
-        Ok(tmp)
+        // Created and listed under the lock, so that a signal never misses it.
+        let mut list = temporaries();
+        let tmp = b.tempfile_in(dir)?;
+        let path = tmp.path().to_path_buf();
+        list.push(path.clone());
+        drop(list);
+        let staged = Staged {
+            tmp: Some(tmp),
+            path,
+        };
+        // The replaced file keeps its permissions (a 0600 deck stays private).
+        if let Some(m) = like.and_then(|p| fs::metadata(p).ok()) {
+            staged.path_file()?.set_permissions(m.permissions())?;
+        }
+        Ok(staged)
     }
 
-    /// Renames the temporary file over `dest` (removed instead if that fails).
+    /// The temporary file for `dest` holding `bytes`, fsynced.
+    fn write(dest: &Path, bytes: &[u8]) -> io::Result<Staged> {
+        let (dir, name) = split(dest)?;
+        let mut st = Staged::create(&dir, &name, Some(dest))?;
+        let f = st.file()?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        Ok(st)
+    }
+
+    fn path_file(&self) -> io::Result<&File> {
+        self.tmp
+            .as_ref()
+            .map(tempfile::NamedTempFile::as_file)
+            .ok_or_else(|| io::Error::other("temporary file already renamed"))
+    }
+
+    fn file(&mut self) -> io::Result<&mut File> {
+        self.tmp
+            .as_mut()
+            .map(tempfile::NamedTempFile::as_file_mut)
+            .ok_or_else(|| io::Error::other("temporary file already renamed"))
+    }
+
+    /// Renames the temporary file over `dest` (a link at `dest` is replaced, never
+    /// followed); on failure it is removed.
     fn rename_to(mut self, dest: &Path) -> io::Result<()> {
-        fs::rename(&self.path, dest)?;
-        self.renamed = true;
-        Ok(())
+        let tmp = self
+            .tmp
+            .take()
+            .ok_or_else(|| io::Error::other("temporary file already renamed"))?;
+        let r = tmp.persist(dest).map(drop).map_err(|e| {
+            let _ = fs::remove_file(&self.path);
+            e.error
+        });
+        unlist(&self.path);
+        r
     }
 }
 
-impl Drop for TempFile {
+fn unlist(path: &Path) {
+    temporaries().retain(|p| p != path);
+}
+
+impl Drop for Staged {
     fn drop(&mut self) {
-        if !self.renamed {
-            let _ = fs::remove_file(&self.path);
+        if let Some(tmp) = self.tmp.take() {
+            // Removed before it leaves the list, so that a signal in between still finds it.
+            let _ = tmp.close();
+            unlist(&self.path);
         }
     }
 }
@@ -315,9 +920,9 @@ mod tests {
         fs::read_to_string(path).unwrap_or_default()
     }
 
-    /// Writes a new file and replaces an existing one, leaving no temporary file; a
-    /// failed write (the temporary file's place is taken by a directory) leaves the
-    /// destination as it was; a missing directory is an error.
+    /// Writes a new file and replaces an existing one, leaving no temporary file nor
+    /// backup; a directory planted at a guessable temporary name is no obstacle (the name
+    /// is random); a missing directory is an error naming it, with nothing created.
     #[test]
     fn write_atomic_replaces_or_leaves_untouched() {
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
@@ -328,14 +933,220 @@ mod tests {
         assert_eq!(temp_files(dir.path()), 0);
         assert!(!dir.path().join("r.csv.bak").exists(), "no backup");
 
-        let blocker = temp_path(dir.path(), "r.csv");
+        let blocker = dir
+            .path()
+            .join(format!(".r.csv.tmp-{}", std::process::id()));
         fs::create_dir(&blocker).unwrap_or_else(|e| panic!("{e}"));
-        assert!(write_atomic(&path, "three").is_err());
-        assert_eq!(read(&path), "two");
+        assert!(write_atomic(&path, "three").is_ok());
+        assert_eq!(read(&path), "three");
         fs::remove_dir(&blocker).unwrap_or_else(|e| panic!("{e}"));
 
-        assert!(write_atomic(dir.path().join("no/such/dir/r.csv"), "x").is_err());
+        let e = write_atomic(dir.path().join("no/such/dir/r.csv"), "x").map_err(|e| e.to_string());
+        assert!(
+            matches!(&e, Err(m) if m.contains("no/such/dir") && m.contains("does not exist")),
+            "{e:?}"
+        );
         assert_eq!(temp_files(dir.path()), 0);
+    }
+
+    /// All or nothing (issue 24, item 4): with a second output that cannot be written
+    /// (`/dev/full`: ENOSPC on the write), the first, a regular file, is left exactly as
+    /// it was and no temporary file remains; an output in a missing directory is refused
+    /// by the plan, before anything is written, naming the output.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn commit_is_all_or_nothing() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let rep = dir.path().join("rep.json");
+        fs::write(&rep, "old").unwrap_or_else(|e| panic!("{e}"));
+        let p = plan(
+            &[
+                ("--output", Some(rep.as_path())),
+                ("--series", Some(Path::new("/dev/full"))),
+            ],
+            &[],
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let e = p.commit(&[b"new", b"series"]).map_err(|e| e.to_string());
+        assert!(
+            matches!(&e, Err(m) if m.starts_with("--series /dev/full:")
+                && m.contains("nothing was written")),
+            "{e:?}"
+        );
+        assert_eq!(read(&rep), "old");
+        assert_eq!(temp_files(dir.path()), 0);
+
+        let missing = dir.path().join("nonexistent/s.csv");
+        let e = plan(
+            &[
+                ("--output", Some(rep.as_path())),
+                ("--series", Some(&missing)),
+            ],
+            &[],
+        )
+        .map(drop)
+        .map_err(|e| e.to_string());
+        assert!(
+            matches!(&e, Err(m) if m.starts_with("--series ") && m.contains("does not exist")),
+            "{e:?}"
+        );
+        let e = plan(&[("--output", Some(dir.path()))], &[]).map(drop);
+        assert!(
+            matches!(&e, Err(e) if e.reason.contains("is a directory")),
+            "{e:?}"
+        );
+        assert_eq!(read(&rep), "old");
+        assert_eq!(temp_files(dir.path()), 0);
+    }
+
+    /// Outputs are compared by what they resolve to, existing or not (issue 24, item 2):
+    /// `new.json` and `./new.json`, its absolute path, a link to the not-yet-created file,
+    /// a hard link; and no output may be the deck. Outputs written in place may share a
+    /// file (`/dev/null` twice). Nothing is created by a refused plan.
+    #[cfg(unix)]
+    #[test]
+    fn plan_refuses_two_outputs_that_are_one_file() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let new = dir.path().join("new.json");
+        let dot = dir.path().join(".").join("new.json");
+        let link = dir.path().join("link.json");
+        std::os::unix::fs::symlink("new.json", &link).unwrap_or_else(|e| panic!("{e}"));
+        let sub = dir.path().join("sub");
+        fs::create_dir(&sub).unwrap_or_else(|e| panic!("{e}"));
+        let up = sub.join("..").join("new.json");
+        for other in [&dot, &link, &up] {
+            let e = plan(
+                &[("--output", Some(new.as_path())), ("--series", Some(other))],
+                &[],
+            )
+            .map(drop)
+            .map_err(|e| e.to_string());
+            assert!(
+                matches!(&e, Err(m) if m.contains("is the same file as --output")),
+                "{other:?}: {e:?}"
+            );
+            assert!(!new.exists());
+        }
+        let deck = dir.path().join("deck.toml");
+        fs::write(&deck, "d").unwrap_or_else(|e| panic!("{e}"));
+        let hard = dir.path().join("hard.toml");
+        fs::hard_link(&deck, &hard).unwrap_or_else(|e| panic!("{e}"));
+        let e = plan(
+            &[("--output", Some(&hard))],
+            &[("the deck being read", &deck)],
+        )
+        .map(drop)
+        .map_err(|e| e.to_string());
+        assert!(
+            matches!(&e, Err(m) if m.contains("deck being read")),
+            "{e:?}"
+        );
+        let null = Path::new("/dev/null");
+        assert!(plan(&[("--output", Some(null)), ("--series", Some(null))], &[]).is_ok());
+        assert!(plan(&[("--output", Some(&new)), ("--series", None)], &[]).is_ok());
+        assert_eq!(temp_files(dir.path()), 0);
+    }
+
+    /// Paths that name a descriptor by their spelling, through a link, or through a
+    /// directory that is `/proc/self/fd` by another name (issue 24, item 1).
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn names_of_descriptors() {
+        let pid = std::process::id();
+        for (p, fd) in [
+            ("/dev/stdout", Some(1)),
+            ("/dev/stderr", Some(2)),
+            ("/dev/stdin", Some(0)),
+            ("/dev/./fd/1", Some(1)),
+            ("/proc/self/fd/7", Some(7)),
+            ("/proc/thread-self/fd/2", Some(2)),
+            (&format!("/proc/{pid}/fd/1"), Some(1)),
+            (&format!("/proc/{pid}/task/{pid}/fd/1"), Some(1)),
+            ("/proc/1/fd/1", None),
+            ("/dev/null", None),
+            ("/dev/fd/x", None),
+            ("out.json", None),
+        ] {
+            assert_eq!(lexical_descriptor(Path::new(p)), fd, "{p}");
+        }
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let link = dir.path().join("out");
+        std::os::unix::fs::symlink("/dev/stdout", &link).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(descriptor_named(&link), Some(1));
+        let fds = dir.path().join("fds");
+        std::os::unix::fs::symlink("/proc/self/fd", &fds).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(descriptor_named(&fds.join("2")), Some(2));
+        assert_eq!(descriptor_named(&dir.path().join("plain")), None);
+    }
+
+    /// Links planted where a write goes (issue 24, item 3): at the old predictable
+    /// temporary name `.NAME.tmp-PID` (now random and created exclusively: never opened)
+    /// and at `NAME.bak` (replaced by the backup, a regular file: its target is never
+    /// written). The victims keep their text.
+    #[cfg(unix)]
+    #[test]
+    fn planted_links_are_never_written_through() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let victim = dir.path().join("victim.txt");
+        fs::write(&victim, "victim").unwrap_or_else(|e| panic!("{e}"));
+        let deck = dir.path().join("deck.toml");
+        fs::write(&deck, "first").unwrap_or_else(|e| panic!("{e}"));
+        let pid = std::process::id();
+        for name in [
+            format!(".deck.toml.tmp-{pid}"),
+            format!(".out.json.tmp-{pid}"),
+        ] {
+            std::os::unix::fs::symlink(&victim, dir.path().join(name))
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        let bak = dir.path().join("deck.toml.bak");
+        std::os::unix::fs::symlink(&victim, &bak).unwrap_or_else(|e| panic!("{e}"));
+
+        let w = save_with_backup(&deck, "second").map_err(|e| e.to_string());
+        assert!(w.is_ok(), "{w:?}");
+        assert!(write_atomic(dir.path().join("out.json"), "report").is_ok());
+        assert_eq!(read(&victim), "victim");
+        assert_eq!(read(&deck), "second");
+        assert_eq!(read(&dir.path().join("out.json")), "report");
+        assert!(fs::symlink_metadata(&bak).is_ok_and(|m| m.file_type().is_file()));
+        assert_eq!(read(&bak), "first");
+    }
+
+    /// A FIFO with no reader (issue 24, item 5): refused at once with no wait, refused
+    /// after the wait (100 ms here; measured within 100–400 ms, the poll is 50 ms), and
+    /// written when a reader comes during the wait. Never blocks forever.
+    #[cfg(unix)]
+    #[test]
+    fn fifo_without_a_reader_is_waited_for_then_refused() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let fifo = dir.path().join("pipe");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if !made.is_ok_and(|s| s.success()) {
+            return; // no mkfifo on this system
+        }
+        let e = write_in_place(&fifo, b"x", Duration::ZERO).map_err(|e| e.to_string());
+        assert!(
+            matches!(&e, Err(m) if m.contains("no process opened")),
+            "{e:?}"
+        );
+        let t = Instant::now();
+        let e = write_in_place(&fifo, b"x", Duration::from_millis(100)).map_err(|e| e.kind());
+        assert_eq!(e, Err(io::ErrorKind::WouldBlock));
+        let took = t.elapsed();
+        assert!(
+            (Duration::from_millis(100)..Duration::from_millis(400)).contains(&took),
+            "{took:?}"
+        );
+        let reader = {
+            let fifo = fifo.clone();
+            std::thread::spawn(move || {
+                std::thread::sleep(Duration::from_millis(150));
+                fs::read_to_string(fifo).unwrap_or_default()
+            })
+        };
+        let w = write_in_place(&fifo, b"late reader", Duration::from_secs(5));
+        assert!(w.is_ok(), "{w:?}");
+        assert_eq!(reader.join().unwrap_or_default(), "late reader");
     }
 
     /// The previous file is kept as `<name>.bak` (none on the first save); a failing
@@ -368,8 +1179,8 @@ mod tests {
         let missing = dir.path().join("no/such/dir/deck.toml");
         let e = save_with_backup(&missing, "x").map_err(|e| e.to_string());
         assert!(
-            matches!(&e, Err(m) if m.contains("cannot write temporary file")
-                && m.contains(".deck.toml.tmp-")),
+            matches!(&e, Err(m) if m.contains("cannot save")
+                && m.contains("no/such/dir does not exist")),
             "{e:?}"
         );
         let e = save_with_backup(Path::new(".."), "x").map_err(|e| e.action);

@@ -9,7 +9,7 @@ use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
 use rollbench::cli::{exit, Cli, Command, Format, TableFormat, UnitsArg};
 use rollbench::deck::Units;
-use rollbench::files::{same_file, write_atomic};
+use rollbench::files::{self, Plan};
 use rollbench::numerics::cancel::Cancel;
 use rollbench::report;
 
@@ -19,46 +19,28 @@ fn load_case(path: &Path, overrides: &[String]) -> Result<Box<dyn Case>, String>
     bearings::load_file(path, overrides).map_err(|e| e.to_string())
 }
 
-/// Refuses an `--output` that is the deck being read (checked before anything is solved):
-/// the exit code to leave with.
-fn refuse_output_over_deck(output: Option<&Path>, deck: &Path) -> Result<(), ExitCode> {
-    match output {
-        Some(out) if same_file(out, deck) => {
-            eprintln!(
-                "--output {}: is the deck being read ({}); refusing to overwrite it",
-                out.display(),
-                deck.display()
-            );
-            Err(ExitCode::from(exit::INVALID_INPUT))
-        }
-        _ => Ok(()),
+/// Checks every output (`(flag, path)`, `None`: standard output) before anything is
+/// solved, by the rules of [`rollbench::files`]: none is the deck, no two are the same
+/// file, each can be written. The exit code to leave with on a refusal (invalid input).
+fn plan_outputs(outputs: &[(&str, Option<&Path>)], deck: &Path) -> Result<Plan, ExitCode> {
+    // A SIGINT or SIGTERM while the outputs are written leaves no temporary file.
+    if let Err(e) = files::remove_temporaries_on_signals() {
+        eprintln!("warning: a signal may leave a temporary file beside the outputs: {e}");
     }
+    files::plan(outputs, &[("the deck being read", deck)]).map_err(|e| {
+        eprintln!("{e}");
+        ExitCode::from(exit::INVALID_INPUT)
+    })
 }
 
-/// Refuses a `--series` file that is the deck or the `--output` file (checked before
-/// anything is solved): the exit code to leave with.
-fn refuse_series_file(
-    series: Option<&Path>,
-    output: Option<&Path>,
-    deck: &Path,
-) -> Result<(), ExitCode> {
-    let Some(s) = series else { return Ok(()) };
-    let clash = if same_file(s, deck) {
-        Some(format!("the deck being read ({})", deck.display()))
-    } else {
-        output
-            .filter(|o| same_file(s, o) || s == *o)
-            .map(|o| format!("the --output file ({})", o.display()))
-    };
-    match clash {
-        Some(what) => {
-            eprintln!(
-                "--series {}: is {what}; refusing to overwrite it",
-                s.display()
-            );
-            Err(ExitCode::from(exit::INVALID_INPUT))
+/// Writes the outputs of `plan`, all or nothing (see [`rollbench::files::Plan::commit`]).
+fn commit(plan: &Plan, contents: &[&[u8]]) -> ExitCode {
+    match plan.commit(contents) {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("cannot write {e}");
+            ExitCode::from(exit::INVALID_INPUT)
         }
-        None => Ok(()),
     }
 }
 
@@ -89,23 +71,6 @@ fn report_format(format: Format) -> report::Format {
         Format::Text => report::Format::Text,
         Format::Json => report::Format::Json,
         Format::Csv => report::Format::Csv,
-    }
-}
-
-/// Writes `text` to `--output` (atomically, see `rollbench::files`) or standard output.
-fn emit(output: Option<&Path>, text: &str) -> ExitCode {
-    match output {
-        Some(path) => match write_atomic(path, text) {
-            Ok(_) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("cannot write {}: {e}", path.display());
-                ExitCode::from(exit::INVALID_INPUT)
-            }
-        },
-        None => {
-            print!("{text}");
-            ExitCode::SUCCESS
-        }
     }
 }
 
@@ -190,12 +155,14 @@ fn main() -> ExitCode {
             no_transient,
             series,
         }) => {
-            if let Err(code) = refuse_output_over_deck(output.as_deref(), &deck) {
-                return code;
+            let mut outputs = vec![("--output", output.as_deref())];
+            if series.is_some() {
+                outputs.push(("--series", series.as_deref()));
             }
-            if let Err(code) = refuse_series_file(series.as_deref(), output.as_deref(), &deck) {
-                return code;
-            }
+            let plan = match plan_outputs(&outputs, &deck) {
+                Ok(p) => p,
+                Err(code) => return code,
+            };
             let options = RunOptions {
                 skip_transient: no_transient,
             };
@@ -213,10 +180,9 @@ fn main() -> ExitCode {
                 None => None,
             };
             let text = report::render(solution.as_ref(), report_format(format), case.units());
-            let code = emit(output.as_deref(), &text);
-            match (series.as_deref(), series_csv) {
-                (Some(path), Some(csv)) if code == ExitCode::SUCCESS => emit(Some(path), &csv),
-                _ => code,
+            match &series_csv {
+                Some(csv) => commit(&plan, &[text.as_bytes(), csv.as_bytes()]),
+                None => commit(&plan, &[text.as_bytes()]),
             }
         }
         Some(Command::Stiffness {
@@ -225,9 +191,10 @@ fn main() -> ExitCode {
             format,
             output,
         }) => {
-            if let Err(code) = refuse_output_over_deck(output.as_deref(), &deck) {
-                return code;
-            }
+            let plan = match plan_outputs(&[("--output", output.as_deref())], &deck) {
+                Ok(p) => p,
+                Err(code) => return code,
+            };
             let mut sets = cli.set.clone();
             if check_fd {
                 sets.push("solver.stiffness=both".into());
@@ -250,7 +217,7 @@ fn main() -> ExitCode {
                 );
                 return ExitCode::from(exit::INVALID_INPUT);
             };
-            emit(output.as_deref(), &text)
+            commit(&plan, &[text.as_bytes()])
         }
         Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
             Ok(_) => {
@@ -357,9 +324,10 @@ fn sweep(
 ) -> ExitCode {
     use rollbench::studies::sweep;
     use std::io::IsTerminal;
-    if let Err(code) = refuse_output_over_deck(output, deck) {
-        return code;
-    }
+    let plan = match plan_outputs(&[("--output", output)], deck) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
     let case = match load_case(deck, overrides) {
         Ok(c) => c,
         Err(e) => {
@@ -392,11 +360,27 @@ fn sweep(
         }
         Format::Csv => sweep::to_csv(&result),
     };
-    let written = emit(output, &text);
+    let failed = result.failures();
+    if failed == result.points.len() {
+        if let Some(path) = output {
+            // As `run`: a sweep that solved nothing replaces no file.
+            eprintln!(
+                "sweep: none of the {failed} points solved; --output {} is not written \
+                 (first failure: {})",
+                path.display(),
+                result
+                    .points
+                    .iter()
+                    .find_map(|p| p.failure.as_deref())
+                    .unwrap_or("unknown")
+            );
+            return ExitCode::from(exit::SOLVE_FAILED);
+        }
+    }
+    let written = commit(&plan, &[text.as_bytes()]);
     if written != ExitCode::SUCCESS {
         return written;
     }
-    let failed = result.failures();
     if failed > 0 {
         eprintln!(
             "sweep: {failed} of {} points failed to solve (their rows give the reason)",

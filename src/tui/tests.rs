@@ -426,14 +426,14 @@ fn tui_saved_deck_loads_back_equal_and_failed_save_keeps_file() {
     assert_eq!(back, app.deck);
     assert!(dir.path().join("deck.toml.bak").exists());
 
-    // A failed save (temporary file cannot be created) leaves the file intact and the
-    // quit that followed it is cancelled.
+    // A failed save (the backup cannot be renamed into place: a non-empty directory
+    // holds its name; temporary files have random names now, so none can be blocked)
+    // leaves the file intact and the quit that followed it is cancelled.
     let before = std::fs::read_to_string(&path).expect("read");
-    std::fs::create_dir(
-        dir.path()
-            .join(format!(".deck.toml.tmp-{}", std::process::id())),
-    )
-    .expect("block tmp");
+    let bak = dir.path().join("deck.toml.bak");
+    std::fs::remove_file(&bak).expect("remove bak");
+    std::fs::create_dir(&bak).expect("block bak");
+    std::fs::write(bak.join("x"), "x").expect("fill bak");
     let cmds = type_value(&mut app, "3600");
     perform(&mut app, cmds, &mut worker);
     app.handle(ch('q'));
