@@ -122,7 +122,17 @@ pub fn close_keys<T>(schema: &Schema<T>, key: &str) -> Vec<&'static str> {
         .into_iter()
         .filter_map(|k| {
             let k_leaf = k.rsplit('.').next().unwrap_or(k);
-            let d = edit_distance(key, k).min(edit_distance(leaf, k_leaf) + 1);
+            // The distance is at least the difference in length, and only distances up to
+            // 6 are kept: far lengths are not compared (a 100 000-character key took
+            // seconds, issue 24 item 15).
+            let dist = |a: &str, b: &str| {
+                if a.chars().count().abs_diff(b.chars().count()) > 6 {
+                    usize::MAX
+                } else {
+                    edit_distance(a, b)
+                }
+            };
+            let d = dist(key, k).min(dist(leaf, k_leaf).saturating_add(1));
             let limit = (key.len() / 3).clamp(2, 6);
             (d <= limit || (leaf.len() >= 4 && k_leaf.contains(leaf))).then_some((d, k))
         })
