@@ -58,7 +58,7 @@ pub enum Command {
         #[arg(long = "type", value_name = "TYPE", default_value = crate::bearings::DEFAULT_SYSTEM)]
         r#type: String,
     },
-    /// Run every reference case through the library and print the validation table; exit 1 if any fails.
+    /// Run every reference case through the library and print the validation table; exit 3 if any fails.
     Validate {
         /// Table format.
         #[arg(long, value_enum, default_value_t = TableFormat::Text)]
@@ -86,7 +86,8 @@ pub enum Command {
         /// largest gap (solver.stiffness = "both").
         #[arg(long)]
         check_fd: bool,
-        /// Format: text (deck units), json or csv (SI).
+        /// Format: text or csv in the deck's units (csv names them in its unit columns),
+        /// json in SI.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
         /// Write to FILE instead of standard output, as `run --output` does.
@@ -138,7 +139,8 @@ pub mod exit {
     /// Invalid input: deck, `--set`, a file that cannot be read or written, or a refused
     /// output (`--output`, `--series`).
     pub const INVALID_INPUT: u8 = 1;
-    /// The solver failed (run, bench): the message names the stage and the numbers.
+    /// The solver failed (run, bench, stiffness; a sweep where no point solved): the
+    /// message names the stage and the numbers.
     pub const SOLVE_FAILED: u8 = 2;
     /// `validate`: a reference case is outside its tolerance.
     pub const VALIDATION_FAILED: u8 = 3;

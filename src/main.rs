@@ -245,7 +245,8 @@ fn main() -> ExitCode {
                         r#type,
                         bearings::known_types()
                     );
-                    ExitCode::from(exit::INVALID_INPUT)
+                    // An unknown option value is a usage error (README), like --format xml.
+                    ExitCode::from(exit::USAGE)
                 }
             }
         }
@@ -272,7 +273,7 @@ fn main() -> ExitCode {
                     r#type,
                     bearings::known_types()
                 );
-                ExitCode::from(exit::INVALID_INPUT)
+                ExitCode::from(exit::USAGE)
             }
         },
         Some(Command::Sweep {

@@ -100,7 +100,8 @@ fn template_type_selects_the_bearing_system() {
         .args(["template", "--type", "ball"])
         .output()
         .unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(bad.status.code(), Some(1));
+    // An unknown option value is a usage error (64, README's exit codes; issue 24 item 16).
+    assert_eq!(bad.status.code(), Some(64));
     let msg = String::from_utf8_lossy(&bad.stderr);
     assert!(
         msg.contains("unknown bearing system (known: \"spherical-roller\"")

@@ -518,6 +518,16 @@ impl Newton {
             trust.update(lambda, len, capped);
         }
         let residual = system.residual_norm(system.residual(&ev));
+        // The last step's iterate is tested like every other: one that meets the
+        // tolerance is converged (before, it was reported as a failure whose residual was
+        // below its own tolerance).
+        if residual <= self.tolerance {
+            let t = Termination::Converged {
+                iterations: self.max_iterations,
+                residual,
+            };
+            return done(t, ev, stats);
+        }
         let t = Termination::NotConverged {
             iterations: self.max_iterations,
             residual,

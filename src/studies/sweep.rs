@@ -158,7 +158,9 @@ impl Range {
                 if n == 1 {
                     if a != b {
                         return Err(format!(
-                            "--set-range {key}: x1 gives one point, so A and B must be equal (got {a} and {b})"
+                            "--set-range {key}: x1 gives one point, so A and B must be equal (got {} and {})",
+                            value_text(a),
+                            value_text(b)
                         ));
                     }
                     vec![a]
@@ -171,8 +173,13 @@ impl Range {
                         .map(|i| {
                             if i == n - 1 {
                                 b
-                            } else {
+                            } else if span.is_finite() {
                                 clean(a + span * (i as f64 / last))
+                            } else {
+                                // B − A overflows (−1.797e308:1.797e308): interpolate
+                                // without it, else every inner point is NaN.
+                                let t = i as f64 / last;
+                                clean(a * (1.0 - t) + b * t)
                             }
                         })
                         .collect()
@@ -182,7 +189,10 @@ impl Range {
                 let q = span.abs() / step;
                 if !q.is_finite() || q >= MAX_POINTS as f64 {
                     return Err(format!(
-                        "--set-range {key}: {a} to {b} in steps of {step} is more than {MAX_POINTS} points"
+                        "--set-range {key}: {} to {} in steps of {} is more than {MAX_POINTS} points",
+                        value_text(a),
+                        value_text(b),
+                        value_text(step)
                     ));
                 }
                 let exact = (q - q.round()).abs() <= END_SLACK * q.max(1.0);
@@ -222,10 +232,13 @@ impl Range {
 }
 
 /// The text a point's value is written into the deck with (shortest round-trip decimal;
-/// `-0` written as `0`).
+/// `-0` written as `0`; in exponent form from 1e16 and below 1e-100, so that 1.797e308 is
+/// not written with 309 digits, which the deck would read as an integer too large).
 pub fn value_text(v: f64) -> String {
     if v == 0.0 {
         "0".to_string()
+    } else if v.is_finite() && (v.abs() >= 1e16 || v.abs() < 1e-100) {
+        format!("{v:e}")
     } else {
         format!("{v}")
     }

@@ -598,7 +598,7 @@ mod tests {
         let f = SCHEMA
             .field("geometry.roller_diameter")
             .map(|f| f.allowed(Units::Us));
-        assert_eq!(f.as_deref(), Some("0 < value ≤ 39.3701 in"));
+        assert_eq!(f.as_deref(), Some("0 < value ≤ 39.37 in"));
         assert_eq!(crate::deck::format_short(1.0e-6), "1e-6");
         assert_eq!(crate::deck::format_short(6894.757), "6894.76");
     }

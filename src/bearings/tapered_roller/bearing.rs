@@ -52,6 +52,16 @@ pub enum BearingError {
         /// F_z, N.
         axial_load_n: f64,
     },
+    /// Thrust so small that every roller's approach is below what the slices resolve.
+    #[error("axial load {axial_load_n:.4e} N is below the smallest this model resolves, {minimum_n:.4e} N: each roller's approach would be under 1e-10 of its diameter ({approach_m:.1e} m), where the slices' loads are round-off of the geometry and the equilibrium has no usable stiffness (raise operating.axial_load)")]
+    BelowMinimumLoad {
+        /// F_z, N.
+        axial_load_n: f64,
+        /// The smallest thrust solved, N.
+        minimum_n: f64,
+        /// The approach 1e-10·d, m.
+        approach_m: f64,
+    },
     /// Radial load too large for the thrust: no roller set can balance it.
     #[error("radial load {radial_load_n:.4e} N needs a thrust above F_r·tan β plus the flanges' centrifugal thrust, {needed_n:.4e} N (axial load {axial_load_n:.4e} N): with less, even one roller carrying all of it on the cone cannot balance it and the bearing unseats")]
     RadialExceedsThrust {
@@ -91,7 +101,7 @@ pub enum BearingError {
     },
     /// The bearing Newton iteration did not converge.
     #[error(
-        "bearing equilibrium did not converge: {termination:?} (tolerance {tolerance_n:.3e} N)"
+        "bearing equilibrium did not converge: {} (tolerance {tolerance_n:.3e} N)", super::roller::stopped(.termination)
     )]
     NotConverged {
         /// How it stopped.
@@ -303,6 +313,18 @@ impl Bearing {
         if !(op.axial_load_n > 0.0) {
             return Err(BearingError::Unseated {
                 axial_load_n: op.axial_load_n,
+            });
+        }
+        // The smallest thrust: every roller at an approach of 1e-10 of its diameter, 1e5
+        // times the force floor (1e-15 of the diameter). Below it the slices' loads are
+        // round-off and the ring Newton stalled with its residual equal to the load (1e-6
+        // lbf on the sample, issue 24 item 11); 0.0182 N (4.1e-3 lbf) on the sample.
+        let minimum = z * beta.sin() * 1e5 * self.model.force_floor_n;
+        if op.axial_load_n < minimum {
+            return Err(BearingError::BelowMinimumLoad {
+                axial_load_n: op.axial_load_n,
+                minimum_n: minimum,
+                approach_m: 1e-10 * self.input.geometry.roller_diameter_m,
             });
         }
         // The cup-and-flange roller's thrust (zero without speed).

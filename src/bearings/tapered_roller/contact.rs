@@ -288,6 +288,13 @@ impl RaceContact {
         })
     }
 
+    /// The order of magnitude of the force (N) that an approach `approach_m` along
+    /// `length_m` of line contact carries: length·approach/c, c the contact's compliance
+    /// (the line contact's stiffness per length is of order 1/c, to a logarithm).
+    pub fn line_force_scale(&self, length_m: f64, approach_m: f64) -> f64 {
+        length_m * approach_m / self.compliance
+    }
+
     /// Whether the roller touches the race at all at approach `delta` and misalignment
     /// `theta` (a contact extent exists: the slices inside it then have positive
     /// intrusion); no slice is evaluated.

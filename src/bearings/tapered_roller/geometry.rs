@@ -196,6 +196,18 @@ impl RollerGeometry {
         let transverse = cone_t(m2, r2, h2) + m2 * (h2 / 4.0 - x_prime).powi(2)
             - cone_t(m1, r1, h1)
             - m1 * (h2 - 0.75 * h1 - x_prime).powi(2); // eq. 29
+
+        // Mass and inertia are differences of two cones whose height is the apex distance:
+        // the inertia's relative round-off grows as ε·(H₀/l_e)³, and a nearly cylindrical
+        // roller (a cup angle of a few thousandths of a degree and below on the sample)
+        // loses every digit (a negative inertia and NaN forces at geometry.cup_angle =
+        // 1e-15, issue 24 item 15). H₀ ≤ 1e4·l_e keeps it to ~2e-4.
+        if !(h0 <= 1e4 * le) || !(transverse > 0.0) || !(mass > 0.0) {
+            return bad(format!(
+                "the cone apex lies {h0:.3e} m from the roller, {:.3e} effective lengths (at most 10 000): the roller is nearly cylindrical and its mass and inertia, differences of two cones (eqs. 24–29), are lost to round-off; a larger geometry.cup_angle (or a roller less nearly cylindrical) is needed",
+                h0 / le
+            ));
+        }
         let polar = 0.3 * (m2 * r2 * r2 - m1 * r1 * r1);
         let x_bar = h2 - x_prime - h0; // eq. 30
         let ls = r2 / st; // eq. 31

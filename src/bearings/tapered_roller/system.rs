@@ -14,7 +14,7 @@ use crate::bearings::{
 use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
-use crate::units::Units;
+use crate::units::{restate_si, Units};
 
 /// The shipped example deck: the seed's §3.1 sample.
 pub const EXAMPLE_DECK: &str = include_str!("../../../decks/trb_afapl.toml");
@@ -145,9 +145,11 @@ impl FormSystem for TaperedRoller {
         if cancel.is_cancelled() {
             return Err("cancelled".to_string());
         }
+        // The errors are worded in SI deep in the solver; a US deck's user reads them in
+        // lbf and inches like the other systems' (issue 24 item 15).
         analyse(&case.form.value, &case.form.name)
             .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| e.to_string())
+            .map_err(|e| restate_si(&e.to_string(), case.form.units))
     }
 
     fn fidelity(input: &TaperedInput) -> Option<Fidelity> {
@@ -229,7 +231,7 @@ impl Session for TaperedSession {
             .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
             .map_err(|e| SolveError::Stage {
                 stage: SYSTEM_ID,
-                message: e.to_string(),
+                message: restate_si(&e.to_string(), case.form.units),
             })
     }
 }

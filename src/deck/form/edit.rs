@@ -19,13 +19,13 @@ pub(crate) fn edit<T>(
 ) -> Result<(), DeckErrors> {
     let not_editable = |reason: &str| {
         DeckErrors::from(DeckError::NotEditable {
-            key: key_path.to_string(),
+            key: super::validate::clip(key_path),
             reason: reason.to_string(),
         })
     };
     if key_path == "units" {
         return Err(not_editable(
-            "the unit system changes the meaning of every number; use Deck::converted",
+            "the unit system changes the meaning of every number, so it cannot be overridden: edit `units` and every value in the deck file (`rollbench template --units si|us` shows a deck in either system)",
         ));
     }
     let parts: Vec<&str> = key_path.split('.').collect();
@@ -138,6 +138,7 @@ pub(crate) fn write_assignments<T>(
     example: &str,
 ) -> Result<DocumentMut, DeckErrors> {
     let mut doc = doc.clone();
+    let mut pairs = Vec::with_capacity(assignments.len());
     for a in assignments {
         let Some((k, v)) = a.split_once('=') else {
             return Err(DeckError::NotEditable {
@@ -146,7 +147,26 @@ pub(crate) fn write_assignments<T>(
             }
             .into());
         };
-        edit(schema, &mut doc, value, units, k.trim(), v.trim())?;
+        pairs.push((k.trim(), v.trim()));
+    }
+    // Writing one key of a one-of pair removes the other (the editor's behaviour), so two
+    // overrides naming both keys would let the last one win silently, and their order
+    // would decide the deck: refuse them, as a deck holding both is refused.
+    for (k, _) in &pairs {
+        if let Some(Presence::OneOf(other)) = schema.field(k).map(|s| s.presence) {
+            if pairs.iter().any(|(k2, _)| *k2 == other) {
+                return Err(DeckError::NotEditable {
+                    key: (*k).to_string(),
+                    reason: format!(
+                        "`{k}` and `{other}` are two ways of giving the same value (give one OR the other), and both are given by --set: keep only one of them"
+                    ),
+                }
+                .into());
+            }
+        }
+    }
+    for (k, v) in pairs {
+        edit(schema, &mut doc, value, units, k, v)?;
     }
     Ok(doc)
 }

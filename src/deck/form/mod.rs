@@ -154,12 +154,13 @@ impl FieldMeta {
         lo && hi
     }
 
-    /// The allowed range in deck units, e.g. `0 < value ≤ 39.3701 in`.
+    /// The allowed range in deck units, e.g. `0 < value ≤ 39.37 in`. Each printed bound
+    /// is itself accepted: a bound that does not convert to a short number exactly is
+    /// rounded inward (39.370078… in is shown as 39.37, not as 39.3701, which the check
+    /// refuses) and then shown with `≤`, since the printed value lies inside the range.
     pub fn allowed(&self, units: Units) -> String {
-        let lo = format_short(self.from_si(self.min, units));
-        let hi = format_short(self.from_si(self.max, units));
-        let lo_op = if self.min_exclusive { "<" } else { "≤" };
-        let hi_op = if self.max_exclusive { "<" } else { "≤" };
+        let (lo, lo_op) = self.bound_text(self.min, self.min_exclusive, false, units);
+        let (hi, hi_op) = self.bound_text(self.max, self.max_exclusive, true, units);
         let unit = self.unit(units);
         let unit = if unit.is_empty() {
             String::new()
@@ -167,6 +168,56 @@ impl FieldMeta {
             format!(" {unit}")
         };
         format!("{lo} {lo_op} value {hi_op} {hi}{unit}")
+    }
+
+    /// One bound in deck units and its operator: the short form when it is the bound
+    /// exactly (or, for an inclusive bound, when it is accepted), else the bound rounded
+    /// toward the inside of the range at 6, 7, … significant digits until the printed
+    /// number is accepted, with `≤`.
+    fn bound_text(
+        &self,
+        si: f64,
+        exclusive: bool,
+        upper: bool,
+        units: Units,
+    ) -> (String, &'static str) {
+        let op = if exclusive { "<" } else { "≤" };
+        let x = self.from_si(si, units);
+        let short = format_short(x);
+        let back = |t: &str| t.parse::<f64>().ok().map(|v| self.to_si(v, units));
+        match back(&short) {
+            Some(v) if v == si => return (short, op),
+            Some(v) if !exclusive && self.in_range(v) => return (short, op),
+            _ => {}
+        }
+        if !x.is_finite() || x == 0.0 {
+            return (short, op);
+        }
+        for digits in 6..=17 {
+            // x·10^e rounded to an integer, then divided back by the exact power of ten
+            // (or multiplied, for e < 0): the quotient is the double nearest the decimal.
+            let e = digits - 1 - x.abs().log10().floor() as i32;
+            let round = |m: f64| if upper { m.floor() } else { m.ceil() };
+            let inward = if e >= 0 {
+                let p = 10f64.powi(e);
+                round(x * p) / p
+            } else {
+                let p = 10f64.powi(-e);
+                round(x / p) * p
+            };
+            let short = format_short(inward);
+            let text = if short.parse::<f64>().ok() == Some(inward) {
+                short
+            } else if (1e-4..1e7).contains(&inward.abs()) {
+                format!("{inward}")
+            } else {
+                format!("{inward:e}")
+            };
+            if back(&text).is_some_and(|v| self.in_range(v)) {
+                return (text, "≤");
+            }
+        }
+        (short, op)
     }
 
     /// The last path segment (the key inside its table).

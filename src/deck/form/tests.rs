@@ -269,7 +269,9 @@ fn wrong_types_are_named() {
     );
 }
 
-/// The range is shown in the deck's units: 1 m is 39.3701 in.
+/// The range is shown in the deck's units: 1 m is 39.370078… in, shown rounded inward
+/// as 39.37 so that the printed bound is itself accepted (issue 24 item 15: "39.3701"
+/// was refused by the range it printed).
 #[test]
 fn out_of_range_shows_deck_units() {
     let e = err(&DECK.replace("length = 0.02", "length = 2.0"));
@@ -282,7 +284,7 @@ fn out_of_range_shows_deck_units() {
         .replace("mode = \"fast\"", "mode = \"slow\"");
     let e = err(&us.replace("length = 0.02", "length = 40"));
     assert!(
-        e.contains("shape.length = 40 is out of range (allowed 0 < value ≤ 39.3701 in)"),
+        e.contains("shape.length = 40 is out of range (allowed 0 < value ≤ 39.37 in)"),
         "{e}"
     );
     // 0.02 in is valid in a US deck: 0.02·0.0254 m exactly (1e-15, one multiply)
@@ -538,7 +540,7 @@ fn keys_table_and_close_keys() {
     let t = keys_table(&TOY);
     assert!(t.contains("shape.length"), "{t}");
     assert!(t.contains("0 < value ≤ 1 m"), "{t}");
-    assert!(t.contains("0 < value ≤ 39.3701 in"), "{t}");
+    assert!(t.contains("0 < value ≤ 39.37 in"), "{t}");
     assert!(t.contains("slow | fast"), "{t}");
     assert!(t.contains("materials.ball"), "{t}");
     assert!(t.contains("steel, silicon-nitride"), "{t}");
@@ -662,4 +664,43 @@ fn location_in_an_opaque_table() {
         .location_in("absent", &[])
         .to_string()
         .starts_with("toy.toml:1"));
+}
+
+/// Issue 24 item 15: every printed bound is accepted by the range it is printed for
+/// (an inclusive bound, or one rounded inward and shown with ≤), in both unit systems,
+/// for the toy schema and every registered system's keys.
+#[test]
+fn printed_bounds_are_accepted() {
+    let mut metas: Vec<FieldMeta> = TOY.fields.iter().map(|f| f.meta).collect();
+    for sys in crate::bearings::SYSTEMS {
+        let case = sys
+            .load(sys.example_deck(), "example.toml", &[])
+            .unwrap_or_else(|e| panic!("{e}"));
+        metas.extend(case.fields().into_iter().copied());
+    }
+    let mut checked = 0;
+    for m in metas {
+        if m.kind != FieldKind::Real {
+            continue;
+        }
+        for units in [Units::Si, Units::Us] {
+            let a = m.allowed(units);
+            let words: Vec<&str> = a.split(' ').collect();
+            // "LO OP value OP HI [unit]"
+            let (lo, lo_op, hi_op, hi) = (words[0], words[1], words[3], words[4]);
+            for (text, op) in [(lo, lo_op), (hi, hi_op)] {
+                if op != "≤" {
+                    continue;
+                }
+                let v: f64 = text.parse().unwrap_or_else(|e| panic!("{a}: {e}"));
+                assert!(
+                    m.in_range(m.to_si(v, units)),
+                    "{}: {a}: {text} refused",
+                    m.key
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 50, "{checked}");
 }

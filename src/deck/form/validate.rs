@@ -32,7 +32,7 @@ impl Ctx<'_> {
     }
     fn raw(&self, span: Option<Range<usize>>) -> String {
         span.and_then(|s| self.text.get(s))
-            .map(|s| s.trim().to_string())
+            .map(|s| clip(s.trim()))
             .unwrap_or_default()
     }
     /// Where `item` stands in the file and its text as written.
@@ -51,16 +51,48 @@ pub(super) fn item_span(item: &Item) -> Option<Range<usize>> {
     }
 }
 
+/// Longest value echoed whole in a message, in characters.
+const MAX_ECHO: usize = 120;
+
+/// `text` as a message echoes it: whole up to [`MAX_ECHO`] characters, else its start, an
+/// ellipsis and its length (a 200 KB value is not printed back whole).
+pub(crate) fn clip(text: &str) -> String {
+    let n = text.chars().count();
+    if n <= MAX_ECHO {
+        return text.to_string();
+    }
+    let head: String = text.chars().take(MAX_ECHO - 40).collect();
+    format!("{head}… ({n} characters)")
+}
+
 /// Converts a toml_edit syntax error into a [`DeckError::Syntax`].
 pub(crate) fn syntax_error(e: &toml_edit::TomlError, text: &str, source: &str) -> DeckError {
     let offset = e.span().map_or(0, |s| s.start);
     let location = Location::at(source, text, offset);
     let line_text = text.lines().nth(location.line - 1).unwrap_or("");
+    // A long line is shown as a window around the column (a 200 KB line is not echoed).
+    let chars: Vec<char> = line_text.chars().collect();
+    let col = location.column.saturating_sub(1).min(chars.len());
+    let (from, to) = if chars.len() <= MAX_ECHO {
+        (0, chars.len())
+    } else {
+        let from = col.saturating_sub(MAX_ECHO / 2);
+        (from, (from + MAX_ECHO).min(chars.len()))
+    };
+    let mut shown: String = chars[from..to].iter().collect();
+    let mut caret = col - from;
+    if from > 0 {
+        shown.insert(0, '…');
+        caret += 1;
+    }
+    if to < chars.len() {
+        shown.push_str(&format!("… (line of {} characters)", chars.len()));
+    }
     let snippet = format!(
         "{:>5} | {}\n      | {}^",
         location.line,
-        line_text,
-        " ".repeat(location.column.saturating_sub(1))
+        shown,
+        " ".repeat(caret)
     );
     DeckError::Syntax {
         location,

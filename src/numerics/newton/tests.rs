@@ -360,3 +360,37 @@ fn factor3_solves_spd_to_round_off_and_shifts_indefinite() {
     let s = newton_step2(&k, &g2);
     assert!(g2.dot(&s) < 0.0, "{s}");
 }
+
+/// An iterate reached by the budget's last step that meets the tolerance is converged
+/// (issue 24 item 11: the tapered solver reported "did not converge" with a residual
+/// 3.56e-10 below its own tolerance 3.62e-10, because the loop ended before testing the
+/// last iterate). The circle needs k steps; with a budget of exactly k the verdict must
+/// be `Converged` after k steps, and with k − 1 `NotConverged` with a residual above the
+/// tolerance.
+#[test]
+fn the_last_iterate_is_tested_against_the_tolerance() {
+    let run = |budget: usize| {
+        let mut sys = Circle {
+            residuals: Vec::new(),
+        };
+        let mut x = Vector2::new(2.0, 0.3);
+        solver(1e-12, budget).solve(&mut sys, &mut x).termination
+    };
+    let k = run(50).iterations();
+    assert!(k >= 2, "{k}");
+    match run(k) {
+        Termination::Converged {
+            iterations,
+            residual,
+        } => assert!(iterations == k && residual <= 1e-12),
+        t => panic!("{t:?}"),
+    }
+    match run(k - 1) {
+        Termination::NotConverged {
+            residual,
+            tolerance,
+            ..
+        } => assert!(residual > tolerance),
+        t => panic!("{t:?}"),
+    }
+}
