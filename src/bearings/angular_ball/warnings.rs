@@ -167,7 +167,8 @@ fn cage(a: &BallAnalysis, w: &mut Vec<Warning>) {
 /// the oil flow carries away at that bound.
 fn bulk(a: &BallAnalysis, w: &mut Vec<Warning>) {
     let t_c = a.bulk_temperature_k - 273.15;
-    if !(t_c > BULK_TEMPERATURE_LIMIT_C) {
+    // (Finite: a non-finite bulk temperature is an error of the analysis.)
+    if t_c <= BULK_TEMPERATURE_LIMIT_C {
         return;
     }
     let l = &a.input.lubricant;
