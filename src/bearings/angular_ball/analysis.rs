@@ -93,6 +93,34 @@ pub fn bulk_temperature_k(
     supply_k + heat_w / (density_kg_m3 * specific_heat_j_kg_k * flow_m3_s)
 }
 
+/// The error of a bulk temperature (4-1) that is not finite, naming the inputs that made
+/// it: the heat, when it is itself not finite, or else the lubricant's heat capacity flow
+/// ρ·c_p·Q̇, which in-range but extreme inputs (`lubricant.density = 5e-324`) can make
+/// zero or so small that H/(ρ·c_p·Q̇) overflows. A JSON `null` and "inf °C" with exit 0
+/// reported it as a result (issue 24, item 8).
+fn not_finite_bulk(input: &BallInput, heat_w: f64) -> BallError {
+    let l = &input.lubricant;
+    let capacity = l.density_kg_m3 * l.specific_heat_j_kg_k * l.flow_rate_m3_s;
+    let inputs = format!(
+        "lubricant.density = {:e} kg/m³, lubricant.specific_heat = {:e} J/(kg·K), lubricant.flow_rate_l_min = {:e} l/min",
+        l.density_kg_m3,
+        l.specific_heat_j_kg_k,
+        l.flow_rate_m3_s * 60_000.0
+    );
+    if heat_w.is_finite() {
+        BallError::NotFinite(format!(
+            "bulk temperature (4-1) is not finite: the lubricant's heat capacity flow ρ·c_p·Q = {capacity:e} W/K is too small to carry the heat {heat_w:.4e} W ({inputs})"
+        ))
+    } else {
+        BallError::NotFinite(format!(
+            "the bearing's heat is not finite ({heat_w} W), so neither is the bulk temperature (4-1); the heat follows from the speeds, loads and traction (operating.inner_speed = {} rpm, operating.outer_speed = {} rpm, traction.curve = \"{}\"); lubricant: {inputs}",
+            input.operating.inner_speed_rad_s * 30.0 / std::f64::consts::PI,
+            input.operating.outer_speed_rad_s * 30.0 / std::f64::consts::PI,
+            input.traction.preset.name()
+        ))
+    }
+}
+
 impl BallAnalysis {
     /// The largest Hertz pressure p₀ over every contact of every ball, Pa (the key
     /// output `max_pressure_pa` and the stress warning).
@@ -218,6 +246,16 @@ pub fn analyse_streaming(
     };
     let total: f64 = balls.iter().map(|b| b.heat_w).sum();
     let lub = &input.lubricant;
+    let bulk = bulk_temperature_k(
+        total,
+        lub.density_kg_m3,
+        lub.specific_heat_j_kg_k,
+        lub.flow_rate_m3_s,
+        lub.supply_temperature_k,
+    );
+    if !bulk.is_finite() {
+        return Err(not_finite_bulk(input, total));
+    }
     Ok(BallAnalysis {
         input: input.clone(),
         geometry: geom,
@@ -228,13 +266,7 @@ pub fn analyse_streaming(
         total_heat_w: total,
         race_control_heat_w: race_control_heat,
         dynamics,
-        bulk_temperature_k: bulk_temperature_k(
-            total,
-            lub.density_kg_m3,
-            lub.specific_heat_j_kg_k,
-            lub.flow_rate_m3_s,
-            lub.supply_temperature_k,
-        ),
+        bulk_temperature_k: bulk,
         rheology_contact,
         load_trace,
     })

@@ -71,6 +71,9 @@ pub enum BallError {
     /// The ball dynamics (time simulation or quasi-static moment balance) failed.
     #[error("ball dynamics: {0}")]
     Dynamics(String),
+    /// A result came out infinite or NaN (the inputs that made it are named).
+    #[error("{0}")]
+    NotFinite(String),
     /// Cancelled by the caller.
     #[error("cancelled")]
     Cancelled,

@@ -408,7 +408,12 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         None => {
             let _ = writeln!(
                 s,
-                "SKIDDING THRESHOLD  none: {}",
+                "SKIDDING THRESHOLD  {}: {}",
+                if a.skid.search_failed {
+                    "not found"
+                } else {
+                    "none"
+                },
                 a.skid.reason.as_deref().unwrap_or("")
             );
         }

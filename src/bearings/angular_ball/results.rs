@@ -88,8 +88,11 @@ pub struct SkidThreshold {
     /// Relative ring speed at which |M_g| first reaches 0.5·µ_m·D·(Q_i + Q_o) on some
     /// ball, rad/s; `None` below the search limit.
     pub speed_rad_s: Option<f64>,
-    /// Why there is none.
+    /// Why there is none: no crossing below the limit, or the search failed.
     pub reason: Option<String>,
+    /// Whether the search itself failed (a load solve at a sampled speed, or a root it
+    /// could not isolate): `reason` says which; the run's other results stand.
+    pub search_failed: bool,
     /// The search limit, rad/s.
     pub limit_rad_s: f64,
     /// Load solves spent.

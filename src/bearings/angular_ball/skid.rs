@@ -86,8 +86,68 @@ pub fn skid_threshold_streaming(
 ) -> Result<SkidThreshold, BallError> {
     let mu = input.traction.curve().max_mu();
     let limit = input.dynamics.skid_search_limit_rad_s;
-    let (_, wi, wo) = speed_basis(input);
     let mut samples = Vec::new();
+    // A search that fails (a load solve at a sampled speed, or a root it cannot isolate)
+    // is said in `reason`, never fails the run: the operating point itself solved, and
+    // its answer does not depend on the threshold (issue 24, item 13; e.g. a token
+    // force-held preload at rest, whose load solve at 500 rpm has no equilibrium).
+    // Cancelling still stops the run.
+    match search(input, geom, axial, cancel, on_sample, mu, &mut samples) {
+        Ok(Found::At(root)) => Ok(SkidThreshold {
+            speed_rad_s: Some(root),
+            reason: None,
+            search_failed: false,
+            limit_rad_s: limit,
+            evaluations: samples.len(),
+            samples,
+        }),
+        Ok(Found::None) => Ok(SkidThreshold {
+            speed_rad_s: None,
+            reason: Some(format!(
+                "the gyroscopic moment stays below the resisting torque 0.5·µ·D·(Qi+Qo) (µ = {mu}) up to the search limit {:.0} rpm",
+                limit * 30.0 / std::f64::consts::PI
+            )),
+            search_failed: false,
+            limit_rad_s: limit,
+            evaluations: samples.len(),
+            samples,
+        }),
+        Err(BallError::Cancelled) => Err(BallError::Cancelled),
+        Err(e) => Ok(SkidThreshold {
+            speed_rad_s: None,
+            reason: Some(format!(
+                "the search failed, so no threshold is known ({} speeds solved up to the failure; the operating point's results stand): {e}",
+                samples.len()
+            )),
+            search_failed: true,
+            limit_rad_s: limit,
+            evaluations: samples.len(),
+            samples,
+        }),
+    }
+}
+
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+/// What the search found: a crossing, or none below the limit.
+enum Found {
+    At(f64),
+    None,
+}
+
+/// The search of [`skid_threshold_streaming`], pushing every speed it solves into
+/// `samples` (ascending) so that they survive a failure.
+fn search(
+    input: &BallInput,
+    geom: &BallGeometry,
+    axial: Axial,
+    cancel: Cancel,
+    on_sample: &mut dyn FnMut(&[SkidSample]),
+    mu: f64,
+    samples: &mut Vec<SkidSample>,
+) -> Result<Found, BallError> {
+    let limit = input.dynamics.skid_search_limit_rad_s;
+    let (_, wi, wo) = speed_basis(input);
     let mut g = |n: f64| -> Result<f64, BallError> {
         let mut c = conditions(input, axial, 1.0);
         c.inner_speed_rad_s = wi * n;
@@ -106,20 +166,14 @@ pub fn skid_threshold_streaming(
         // iterates fall inside the last bracket): inserted in place, no copy or sort.
         let at = samples.partition_point(|s: &SkidSample| s.0 <= n);
         samples.insert(at, (n, mg, mr));
-        on_sample(&samples);
+        on_sample(samples);
         Ok(margin)
     };
     const SAMPLES: usize = 30;
     let mut lo = 0.0;
     let mut g_lo = g(lo)?;
     if g_lo >= 0.0 {
-        return Ok(SkidThreshold {
-            speed_rad_s: Some(0.0),
-            reason: None,
-            limit_rad_s: limit,
-            evaluations: 1,
-            samples,
-        });
+        return Ok(Found::At(0.0));
     }
     for k in 1..=SAMPLES {
         let hi = limit * k as f64 / SAMPLES as f64;
@@ -155,29 +209,15 @@ pub fn skid_threshold_streaming(
             let root = 0.5 * (a + b);
             if (b - a).abs() > 1e-6 * root.abs().max(1.0) {
                 return Err(BallError::Skid(format!(
-                    "root not isolated: bracket [{a:.6e}, {b:.6e}] rad/s after 100 steps"
+                    "root not isolated: bracket [{:.3}, {:.3}] rpm after 100 steps",
+                    a * RPM_PER_RAD_S,
+                    b * RPM_PER_RAD_S
                 )));
             }
-            let evaluations = samples.len();
-            return Ok(SkidThreshold {
-                speed_rad_s: Some(root),
-                reason: None,
-                limit_rad_s: limit,
-                evaluations,
-                samples,
-            });
+            return Ok(Found::At(root));
         }
         lo = hi;
         g_lo = g_hi;
     }
-    Ok(SkidThreshold {
-        speed_rad_s: None,
-        reason: Some(format!(
-            "the gyroscopic moment stays below the resisting torque 0.5·µ·D·(Qi+Qo) (µ = {mu}) up to the search limit {:.0} rpm",
-            limit * 30.0 / std::f64::consts::PI
-        )),
-        limit_rad_s: limit,
-        evaluations: samples.len(),
-        samples,
-    })
+    Ok(Found::None)
 }

@@ -275,6 +275,12 @@ fn short_label(name: &str) -> &'static str {
 pub fn skid_chart(a: &BallAnalysis) -> Chart {
     let title = match a.skid.speed_rad_s {
         Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
+        // A failed search is not "no skidding": the pane says so and why (the reason
+        // names the speed whose load solve failed).
+        None if a.skid.search_failed => format!(
+            "skidding search failed: {}",
+            a.skid.reason.as_deref().unwrap_or("")
+        ),
         None => "no skidding below the search limit".to_string(),
     };
     let mut chart = skid_chart_of(&a.skid.samples, title);

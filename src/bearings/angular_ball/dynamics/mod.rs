@@ -74,6 +74,7 @@ use crate::numerics::ode;
 
 pub use model::{BallModel, ContactPower};
 pub use quasi_static::{quasi_static_ball, quasi_static_state};
+pub use settle::{settling, Settling};
 pub use simulate::{simulate_ball, simulate_ball_with};
 use summary::sample;
 pub use summary::{BallDynamics, DynamicsResult, Sample};
@@ -81,6 +82,7 @@ pub use summary::{BallDynamics, DynamicsResult, Sample};
 mod jacobian;
 mod model;
 mod quasi_static;
+mod settle;
 mod simulate;
 mod summary;
 
