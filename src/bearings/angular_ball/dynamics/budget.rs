@@ -218,7 +218,7 @@ impl Decimation {
 
     /// Whether sample `k` is kept.
     pub fn keeps(&self, k: usize) -> bool {
-        k >= self.last_from || k % self.every == 0
+        k >= self.last_from || k.is_multiple_of(self.every)
     }
 }
 
