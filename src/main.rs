@@ -371,6 +371,7 @@ fn main() -> ExitCode {
                 deck.as_deref(),
                 &cli.set,
                 format == TableFormat::Json,
+                std::io::IsTerminal::is_terminal(&std::io::stderr()),
             ) {
                 Ok(text) => {
                     print!("{text}");
