@@ -58,11 +58,62 @@ fn load_and_solve(
         eprintln!("{e}");
         ExitCode::from(exit::INVALID_INPUT)
     })?;
-    let solution = case.solve(options, Cancel::NONE).map_err(|e| {
+    let bar = progress_bar();
+    let progress = |f: f64| bar.report(f);
+    let solved = case.solve(options, Cancel::NONE.with_progress(&progress));
+    bar.finish();
+    let solution = solved.map_err(|e| {
         eprintln!("solve failed: {e}");
         ExitCode::from(exit::SOLVE_FAILED)
     })?;
     Ok((case, solution))
+}
+
+/// The progress of a long solve (issue 24 item 7) on standard error when it is a
+/// terminal: drawn once the solve has run a second (a quick one shows nothing), never
+/// in a pipe or a file (tests, scripts).
+struct Bar {
+    bar: Option<indicatif::ProgressBar>,
+    start: std::time::Instant,
+}
+
+impl Bar {
+    /// Report `fraction` done (the library's progress callback).
+    fn report(&self, fraction: f64) {
+        let Some(bar) = &self.bar else { return };
+        if bar.is_hidden() && self.start.elapsed() >= std::time::Duration::from_secs(1) {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+        bar.set_position((fraction * 1000.0) as u64);
+    }
+
+    /// Clear the bar (the report follows on standard output).
+    fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+/// A [`Bar`], drawing only when standard error is a terminal.
+fn progress_bar() -> Bar {
+    use std::io::IsTerminal;
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let bar = indicatif::ProgressBar::with_draw_target(
+            Some(1000),
+            indicatif::ProgressDrawTarget::hidden(),
+        );
+        if let Ok(style) =
+            indicatif::ProgressStyle::with_template("solving {bar:40} {percent:>3}% (eta {eta})")
+        {
+            bar.set_style(style);
+        }
+        bar
+    });
+    Bar {
+        bar,
+        start: std::time::Instant::now(),
+    }
 }
 
 /// The report format of a CLI format.
@@ -288,6 +339,7 @@ fn main() -> ExitCode {
                 deck.as_deref(),
                 &cli.set,
                 format == TableFormat::Json,
+                std::io::IsTerminal::is_terminal(&std::io::stderr()),
             ) {
                 Ok(text) => {
                     print!("{text}");

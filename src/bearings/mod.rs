@@ -359,8 +359,11 @@ pub fn known_types() -> String {
 
 /// The system deck text belongs to, by its top-level `type` (absent: [`DEFAULT_SYSTEM`]);
 /// an unknown system is refused at its line, listing the known ones, and a `type` that is
-/// not a string is a type error.
+/// not a string is a type error. A deck whose arrays exceed their bound
+/// ([`crate::deck::bounds`]) is refused first.
 pub fn system_of(text: &str, source_name: &str) -> Result<&'static dyn BearingSystem, DeckErrors> {
+    // Before any document is built: a deck's arrays are bounded (issue 24).
+    crate::deck::bounds::check_arrays(text, source_name)?;
     let (id, location, value) = match crate::deck::deck_type(text, source_name) {
         DeckType::Absent => (
             DEFAULT_SYSTEM.to_string(),

@@ -265,6 +265,18 @@ pub fn measure(
     resolutions: &[usize],
     tolerances: &[f64],
 ) -> Result<FidelityTable, String> {
+    measure_with(deck, case, resolutions, tolerances, &|| {})
+}
+
+/// [`measure`], calling `cell_done` after the reference and after each cell (the
+/// progress bar of `bench`).
+pub fn measure_with(
+    deck: &str,
+    case: &dyn Case,
+    resolutions: &[usize],
+    tolerances: &[f64],
+    cell_done: &dyn Fn(),
+) -> Result<FidelityTable, String> {
     let system = case.system();
     let grid = system
         .fidelity_grid()
@@ -273,6 +285,7 @@ pub fn measure(
         .fidelity()
         .ok_or_else(|| format!("the {} has no fidelity settings", system.title()))?;
     let (reference_median_s, reference) = timed(&*at(case, grid.reference)?);
+    cell_done();
     // Informational outputs (counts) are not judged: no column, no error.
     let reference_outputs: Vec<KeyOutput> = reference?
         .key_outputs
@@ -287,6 +300,7 @@ pub fn measure(
                 tolerance,
             };
             let (median_s, result) = timed(&*at(case, f)?);
+            cell_done();
             rows.push(match result {
                 Ok(v) => Row {
                     fidelity: f,
@@ -594,12 +608,35 @@ pub const REFERENCE_RUN_FAILED: &str = "reference run failed";
 /// `rollbench bench`: the tables of every deck as text, or JSON (one object for one deck,
 /// an array for several). A deck whose system has no fidelity study is named in the text
 /// and left out of the JSON.
+/// With `progress` (standard error is a terminal) a bar of the grid cells solved is
+/// drawn on standard error (issue 24: `bench` of a 20-orbit time simulation took 21 s).
 pub fn bench_command(
     path: Option<&std::path::Path>,
     sets: &[String],
     json: bool,
+    progress: bool,
 ) -> Result<String, String> {
     let decks = bench_decks(path, sets)?;
+    // Cells: the reference and the grid, per deck with a study.
+    let cells: usize = decks
+        .iter()
+        .filter_map(|(_, c)| c.system().fidelity_grid())
+        .map(|g| 1 + g.resolutions.len() * g.tolerances.len())
+        .sum();
+    let bar = progress.then(|| {
+        let bar = indicatif::ProgressBar::new(cells as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "bench {msg} {wide_bar} {pos}/{len} cells, {elapsed} (eta {eta})",
+        ) {
+            bar.set_style(style);
+        }
+        bar
+    });
+    let cell_done = || {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
     let mut tables = Vec::with_capacity(decks.len());
     let mut skipped = Vec::new();
     for (name, case) in &decks {
@@ -610,9 +647,27 @@ pub fn bench_command(
             ));
             continue;
         }
-        let t = measure_grid(name, &**case)
-            .map_err(|e| format!("{name}: {REFERENCE_RUN_FAILED}: {e}"))?;
+        if let Some(b) = &bar {
+            b.set_message(name.clone());
+        }
+        let grid = case.system().fidelity_grid();
+        let t = grid
+            .ok_or_else(|| format!("the {} has no fidelity study", case.system().title()))
+            .and_then(|g| measure_with(name, &**case, g.resolutions, g.tolerances, &cell_done))
+            .map_err(|e| format!("{name}: {REFERENCE_RUN_FAILED}: {e}"));
+        let t = match t {
+            Ok(t) => t,
+            Err(e) => {
+                if let Some(b) = &bar {
+                    b.finish_and_clear();
+                }
+                return Err(e);
+            }
+        };
         tables.push(t);
+    }
+    if let Some(b) = &bar {
+        b.finish_and_clear();
     }
     if json {
         let v = if tables.len() == 1 && decks.len() == 1 {

@@ -157,6 +157,19 @@ pub fn json(a: &BallAnalysis) -> Value {
             );
             m.insert("slices".into(), json!(a.input.dynamics.slices));
             m.insert("orbits".into(), json!(a.input.dynamics.orbits));
+            if a.input.dynamics.method == Method::TimeSimulation {
+                // The history (`run --series`) is bounded (issue 24): before each ball's
+                // last orbit one sample in `sample_every` is kept (1: all of them).
+                m.insert(
+                    "series_decimation".into(),
+                    json!({
+                        "sample_every": d.series_sample_every,
+                        "samples_per_orbit": super::dynamics::budget::SAMPLES_PER_ORBIT,
+                        "last_orbit_whole": true,
+                        "max_rows": super::dynamics::budget::MAX_SERIES_ROWS,
+                    }),
+                );
+            }
             // The balls' orbital speed (last-orbit mean, averaged over the balls): with
             // the free orbit the speed the cage would follow; held, race control's.
             let wm =
@@ -428,7 +441,9 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
 /// (axial, radial, tangential: the frame of `dynamics`), and the heat of both contacts
 /// with its lateral and rolling-direction parts, then (added last, so the columns before
 /// keep their places) the ball's orbital speed ω_m. Only the time simulation has a
-/// history: any other `dynamics.method` is refused with the key to set.
+/// history: any other `dynamics.method` is refused with the key to set. A history
+/// decimated to its bound (`dynamics.series_decimation` in the JSON) starts with a `#`
+/// comment line saying so; an undecimated one has none.
 pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
     let method = a.input.dynamics.method;
     let d = match (&a.dynamics, method) {
@@ -440,7 +455,16 @@ pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
             ))
         }
     };
-    let mut out = String::from(
+    let mut out = String::new();
+    if d.series_sample_every > 1 {
+        out.push_str(&format!(
+            "# decimated: 1 sample in {} (of {} per orbit) kept before each ball's last orbit (whole), to keep at most {} rows; dynamics.series_decimation in the JSON report\n",
+            d.series_sample_every,
+            super::dynamics::budget::SAMPLES_PER_ORBIT,
+            super::dynamics::budget::MAX_SERIES_ROWS
+        ));
+    }
+    out.push_str(
         "time_s,ball,azimuth_deg,orbit_deg,omega_axial_rad_s,omega_radial_rad_s,omega_tangential_rad_s,heat_w,lateral_heat_w,rolling_heat_w,omega_orbital_rad_s\n",
     );
     for (j, b) in d.balls.iter().enumerate() {

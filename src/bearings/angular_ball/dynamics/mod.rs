@@ -75,10 +75,11 @@ use crate::numerics::ode;
 pub use model::{BallModel, ContactPower};
 pub use quasi_static::{quasi_static_ball, quasi_static_state};
 pub use settle::{settling, Settling};
-pub use simulate::{simulate_ball, simulate_ball_with};
+pub use simulate::{simulate_ball, simulate_ball_limited, simulate_ball_with, Limits};
 use summary::sample;
 pub use summary::{BallDynamics, DynamicsResult, Sample};
 
+pub mod budget;
 mod jacobian;
 mod model;
 mod quasi_static;
@@ -113,66 +114,103 @@ pub fn run(
     let cage = balls.iter().map(|b| b.cage_rad_s).sum::<f64>() / balls.len().max(1) as f64;
     let op = &input.operating;
     let axisymmetric = op.radial_load_n == 0.0;
-    // One ball: its dynamics, steps, RHS evaluations and whether Rodas4 took over.
-    let solve_one = |j: usize,
-                     b: &BallResult|
-     -> Result<(BallDynamics, usize, usize, bool), BallError> {
-        let model = BallModel {
-            diameter_m: geom.ball_diameter_m,
-            centre_radius_m: 0.5 * geom.pitch_diameter_m,
-            inertia_kg_m2: geom.ball_inertia_kg_m2,
-            // The free orbit starts from the cage's speed too (released at t = 0).
-            cage_rad_s: cage,
-            orbit: d.orbit,
-            mass_kg: geom.ball_mass_kg,
-            ring_speeds_rad_s: (op.inner_speed_rad_s, op.outer_speed_rad_s),
-            groove_curvatures: (geom.inner_groove_curvature, geom.outer_groove_curvature),
-            curve: &curve,
-            slices: d.slices,
-            track: &track,
-            start_azimuth_rad: b.azimuth_rad,
-        };
-        // Race control: ω = (ω_a, ω_r, 0) (no gyroscopic pivoting).
-        let omega0 = [b.ball_axial_rad_s, b.ball_radial_rad_s, 0.0];
-        match d.method {
-            Method::TimeSimulation => {
-                let method = match d.integrator {
-                    Integrator::Auto => ode::Method::Auto,
-                    Integrator::Dopri5 => ode::Method::DormandPrince45,
-                    Integrator::Rodas4 => ode::Method::Sdirk,
-                };
-                let (bd, st) =
-                    simulate_ball_with(&model, omega0, d.orbits, d.tolerance, method, j, cancel)?;
-                Ok((
-                    bd,
-                    st.steps,
-                    st.rhs_evaluations,
-                    st.switched_to_implicit_at.is_some(),
-                ))
-            }
-            _ => {
-                if cancel.is_cancelled() {
-                    return Err(BallError::Cancelled);
-                }
-                let (w, it, ev) = quasi_static_state(&model, omega0, j)?;
-                let s = sample(&model, 0.0, &w);
-                Ok((
-                    BallDynamics {
-                        start_azimuth_rad: b.azimuth_rad,
-                        history: vec![s],
-                        heat_w: s.heat_w,
-                        lateral_w: s.lateral_w,
-                        rolling_w: s.rolling_w,
-                        orbital_rad_s: s.orbital_rad_s,
-                        oscillation_rad_s: 0.0,
-                    },
-                    it,
-                    ev,
-                    false,
-                ))
-            }
-        }
+    // The estimate before anything is integrated: a run past the bound is refused with
+    // the keys to change (issue 24 item 7).
+    let estimate = budget::estimate(input, balls.len(), axisymmetric);
+    if d.method == Method::TimeSimulation {
+        budget::check(input, &estimate)?;
+    }
+    let limits = Limits {
+        max_step_attempts: estimate.max_step_attempts,
+        max_samples: estimate.samples_per_ball,
     };
+    // Progress over every ball simulated: each ball reports its own fraction, which the
+    // shared sum (in millionths of a ball, so that parallel balls add without a lock)
+    // turns into the whole run's.
+    let done_ppm = std::sync::atomic::AtomicU64::new(0);
+    let simulated = if axisymmetric || balls.len() < 2 {
+        1
+    } else {
+        balls.len()
+    };
+    // One ball: its dynamics, steps, RHS evaluations and whether Rodas4 took over.
+    let solve_one =
+        |j: usize, b: &BallResult| -> Result<(BallDynamics, usize, usize, bool), BallError> {
+            let model = BallModel {
+                diameter_m: geom.ball_diameter_m,
+                centre_radius_m: 0.5 * geom.pitch_diameter_m,
+                inertia_kg_m2: geom.ball_inertia_kg_m2,
+                // The free orbit starts from the cage's speed too (released at t = 0).
+                cage_rad_s: cage,
+                orbit: d.orbit,
+                mass_kg: geom.ball_mass_kg,
+                ring_speeds_rad_s: (op.inner_speed_rad_s, op.outer_speed_rad_s),
+                groove_curvatures: (geom.inner_groove_curvature, geom.outer_groove_curvature),
+                curve: &curve,
+                slices: d.slices,
+                track: &track,
+                start_azimuth_rad: b.azimuth_rad,
+            };
+            // Race control: ω = (ω_a, ω_r, 0) (no gyroscopic pivoting).
+            let omega0 = [b.ball_axial_rad_s, b.ball_radial_rad_s, 0.0];
+            match d.method {
+                Method::TimeSimulation => {
+                    let method = match d.integrator {
+                        Integrator::Auto => ode::Method::Auto,
+                        Integrator::Dopri5 => ode::Method::DormandPrince45,
+                        Integrator::Rodas4 => ode::Method::Sdirk,
+                    };
+                    // This ball's fraction, reported as the increment since its last report.
+                    let mine = std::sync::atomic::AtomicU64::new(0);
+                    let report = |f: f64| {
+                        use std::sync::atomic::Ordering::Relaxed;
+                        let ppm = (f * 1e6) as u64;
+                        let before = mine.swap(ppm, Relaxed);
+                        let total = done_ppm.fetch_add(ppm.saturating_sub(before), Relaxed)
+                            + ppm.saturating_sub(before);
+                        cancel.report(total as f64 / (1e6 * simulated as f64));
+                    };
+                    let ball_cancel = Cancel::from_option(cancel.flag()).with_progress(&report);
+                    let (bd, st) = simulate_ball_limited(
+                        &model,
+                        omega0,
+                        d.orbits,
+                        d.tolerance,
+                        method,
+                        j,
+                        ball_cancel,
+                        limits,
+                    )?;
+                    Ok((
+                        bd,
+                        st.steps,
+                        st.rhs_evaluations,
+                        st.switched_to_implicit_at.is_some(),
+                    ))
+                }
+                _ => {
+                    if cancel.is_cancelled() {
+                        return Err(BallError::Cancelled);
+                    }
+                    let (w, it, ev) = quasi_static_state(&model, omega0, j)?;
+                    let s = sample(&model, 0.0, &w);
+                    Ok((
+                        BallDynamics {
+                            start_azimuth_rad: b.azimuth_rad,
+                            history: vec![s],
+                            heat_w: s.heat_w,
+                            lateral_w: s.lateral_w,
+                            rolling_w: s.rolling_w,
+                            orbital_rad_s: s.orbital_rad_s,
+                            oscillation_rad_s: 0.0,
+                        },
+                        it,
+                        ev,
+                        false,
+                    ))
+                }
+            }
+        };
     let solved: Vec<(BallDynamics, usize, usize, bool)> = if axisymmetric || balls.len() < 2 {
         // Every ball sees the same loads at every position: solve the first, shift its
         // copies to the others' start azimuths.
@@ -232,6 +270,12 @@ pub fn run(
         steady: amp <= 1e-6 * scale,
         oscillation_amplitude_rad_s: amp,
         balls: out,
+        series_sample_every: match d.method {
+            Method::TimeSimulation => {
+                budget::Decimation::of_orbits(d.orbits, limits.max_samples).every
+            }
+            _ => 1,
+        },
     })
 }
 

@@ -248,6 +248,7 @@ mod tests {
             rhs_evaluations: 0,
             steady,
             oscillation_amplitude_rad_s: b.oscillation_rad_s,
+            series_sample_every: 1,
             balls: vec![b],
         }
     }

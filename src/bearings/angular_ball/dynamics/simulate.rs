@@ -6,6 +6,7 @@
 
 use nalgebra::Vector3;
 
+use super::budget::Decimation;
 use super::model::BallModel;
 use super::summary::{sample, BallDynamics, Sample};
 use crate::bearings::angular_ball::error::BallError;
@@ -20,8 +21,23 @@ fn ode_error(ball: usize, e: OdeError) -> BallError {
     }
 }
 
-/// Samples recorded per orbit.
-const SAMPLES_PER_ORBIT: usize = 90;
+/// The bounds of one ball's simulation ([`super::budget`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Step attempts allowed over the whole simulation (accepted plus rejected).
+    pub max_step_attempts: usize,
+    /// The most samples kept in the history (the last orbit always whole).
+    pub max_samples: usize,
+}
+
+impl Limits {
+    /// No bound beyond the integrator's former 2 000 000 attempts per piece, every
+    /// sample kept (the benches and tests that call [`simulate_ball`] directly).
+    pub const UNBOUNDED: Limits = Limits {
+        max_step_attempts: usize::MAX,
+        max_samples: usize::MAX,
+    };
+}
 
 /// Simulate one ball over `orbits` orbits from ω₀ with the automatic integrator
 /// (DOPRI5, switching to Rodas4 when the stiffness test fires); returns the dynamics and
@@ -48,6 +64,34 @@ pub fn simulate_ball_with(
     ball: usize,
     cancel: Cancel,
 ) -> Result<(BallDynamics, ode::OdeStats), BallError> {
+    simulate_ball_limited(
+        model,
+        omega0,
+        orbits,
+        rtol,
+        method,
+        ball,
+        cancel,
+        Limits::UNBOUNDED,
+    )
+}
+
+/// [`simulate_ball_with`] within `limits`: fails once the step attempts exceed
+/// `limits.max_step_attempts` (naming the likely cause and the keys), keeps at most
+/// `limits.max_samples` samples (decimating the history before the last orbit, see
+/// [`Decimation`]), and reports its progress (the fraction of the orbits done) through
+/// `cancel`.
+#[allow(clippy::too_many_arguments)] // simulate_ball_with's, plus the limits
+pub fn simulate_ball_limited(
+    model: &BallModel,
+    omega0: [f64; 3],
+    orbits: f64,
+    rtol: f64,
+    method: ode::Method,
+    ball: usize,
+    cancel: Cancel,
+    limits: Limits,
+) -> Result<(BallDynamics, ode::OdeStats), BallError> {
     let wm = model.cage_rad_s.abs();
     if wm.is_nan() || wm <= 0.0 {
         return Err(BallError::Dynamics(format!(
@@ -57,11 +101,15 @@ pub fn simulate_ball_with(
     }
     let period = std::f64::consts::TAU / wm;
     let t_end = orbits * period;
-    let n = ((orbits * SAMPLES_PER_ORBIT as f64).ceil() as usize).max(2);
-    // Clamped: t_end·k/n can round above t_end, which the ODE solver refuses.
-    let times: Vec<f64> = (0..=n)
-        .map(|k| (t_end * k as f64 / n as f64).min(t_end))
-        .collect();
+    // The samples of the last orbit (see the summary below), kept whole; the ones before
+    // decimated to fit `limits.max_samples` (issue 24: 1 000 orbits of 20 balls kept
+    // 1.8 M samples, 515 MB with the CSV). The sample times are generated as the pieces
+    // need them, never all at once. Clamped: t_end·k/n can round above t_end, which the
+    // ODE solver refuses.
+    let decimation = Decimation::of_orbits(orbits, limits.max_samples);
+    let (n, per_last) = (decimation.n, decimation.per_last());
+    let time_of = |k: usize| (t_end * k as f64 / n as f64).min(t_end);
+    let kept = (0..=n).filter(|&k| decimation.keeps(k)).count();
     let scale = Vector3::from(omega0).norm().max(1.0);
     let opts = OdeOptions {
         rtol,
@@ -70,21 +118,6 @@ pub fn simulate_ball_with(
         method,
         ..OdeOptions::default()
     };
-    // Integrated piecewise between the times the ball passes a point of the load track:
-    // the loads are linear in azimuth between those points, so the right-hand side has
-    // a kink there, which an error-controlled step straddling it pays for with rejected
-    // steps (measured on Bearing B under 500 N radial load: 194 rejections in 915
-    // attempts). Each piece starts with the step size the previous one ended with; the
-    // automatic integrator, once switched to Rodas4, stays there.
-    // With the held cage the kink times are known beforehand ([`kink_times`]). With the
-    // free orbit the kinks lie at azimuths θ_k the ball reaches at times not known
-    // beforehand: each piece ends at the time predicted from its start state
-    // ([`FreeKinks`]); the prediction misses θ_k by a tiny angle, which leaves the
-    // kink next to a piece's end or start, where a step pays for it with an error of
-    // the order of the miss squared (Bearing B, 500 N radial, 5 orbits, rtol 1e-8:
-    // rejected steps 178 → 18.5 per ball, RHS evaluations 5 000 → 4 206; every ball's
-    // heat within 4e-7 of an rtol-1e-11 solution, where the one piece was off by up to
-    // 1e-5: `free_orbit_pieces_between_kinks_are_accurate_and_cheap`).
     let kinky = !model.track.is_uniform();
     let mut cage_bounds = Vec::new();
     if model.orbit == Orbit::Cage && kinky {
@@ -93,28 +126,34 @@ pub fn simulate_ball_with(
     cage_bounds.push(t_end);
     let mut cage_bounds = cage_bounds.into_iter();
     let mut free_kinks = FreeKinks::new(model, period, t_end);
-    let (mut out_t, mut out_y) = (
-        Vec::with_capacity(times.len()),
-        Vec::with_capacity(times.len()),
-    );
+    let (mut out_t, mut out_y) = (Vec::with_capacity(kept), Vec::with_capacity(kept));
     let mut stats = ode::OdeStats::default();
     let mut y = model.start_state(omega0);
     let mut seg_opts = opts.clone();
     let mut next = 0;
     let mut a = 0.0;
+    // Step attempts so far (accepted and rejected), against `limits.max_step_attempts`.
+    let mut attempts = 0usize;
+    // The progress reported last, in hundredths (reported when it moves by one).
+    let mut reported = 0usize;
     while a < t_end {
         let b = match model.orbit {
             Orbit::Free if kinky => free_kinks.next_end(a, &y),
             _ => cage_bounds.next().unwrap_or(t_end),
         };
         let mut seg_times = Vec::new();
-        while let Some(&tr) = times.get(next) {
+        while next <= n {
+            let tr = time_of(next);
             if tr > b {
                 break;
             }
-            seg_times.push(tr.max(a));
+            if decimation.keeps(next) {
+                seg_times.push(tr.max(a));
+            }
             next += 1;
         }
+        let left = limits.max_step_attempts.saturating_sub(attempts);
+        seg_opts.max_steps = opts.max_steps.min(left.max(1));
         let sol = ode::solve(
             model,
             a,
@@ -125,8 +164,14 @@ pub fn simulate_ball_with(
             Output::Times(seg_times),
             cancel,
         )
-        .map_err(|e| ode_error(ball, e))?;
+        .map_err(|e| match e {
+            OdeError::MaxSteps { t, .. } if seg_opts.max_steps < opts.max_steps => {
+                too_many_steps(ball, limits.max_step_attempts, t / period, orbits)
+            }
+            e => ode_error(ball, e),
+        })?;
         let st = sol.stats;
+        attempts += st.steps + st.rejected;
         stats.steps += st.steps;
         stats.rejected += st.rejected;
         stats.rhs_evaluations += st.rhs_evaluations;
@@ -148,6 +193,11 @@ pub fn simulate_ball_with(
         free_kinks.piece_done(a, &y, b, &sol.y_final);
         y = sol.y_final;
         a = b;
+        let done = (100.0 * a / t_end) as usize;
+        if done > reported {
+            reported = done;
+            cancel.report(a / t_end);
+        }
     }
     let history: Vec<Sample> = out_t
         .iter()
@@ -160,10 +210,9 @@ pub fn simulate_ball_with(
     // t_end·k/n rounded, which moved a ball's mean under radial load by 1.6 %: the
     // equally spaced samples of one period, each once, are the rectangle rule, exact for
     // a periodic signal up to its aliasing.)
-    let per_last = ((orbits.min(1.0) / orbits) * n as f64).round() as usize;
     let last: Vec<&Sample> = history
         .iter()
-        .skip(history.len().saturating_sub(per_last.clamp(1, n)))
+        .skip(history.len().saturating_sub(per_last))
         .collect();
     let m = last.len().max(1) as f64;
     let mean = |f: fn(&Sample) -> f64| last.iter().map(|s| f(s)).sum::<f64>() / m;
@@ -201,6 +250,15 @@ pub fn simulate_ball_with(
             oscillation_rad_s: amp,
         },
         stats,
+    ))
+}
+
+/// The failure of a ball whose integration took more than `max` step attempts, at
+/// `reached` of `orbits` orbits: the cause (a stiff ball: a steep traction curve, e.g. a
+/// constant µ near 1) and the keys that change it.
+fn too_many_steps(ball: usize, max: usize, reached: f64, orbits: f64) -> BallError {
+    BallError::Dynamics(format!(
+        "ball {ball}: the integration took more than {max} step attempts (20× what the shipped decks need per orbit) and reached only {reached:.3} of {orbits} orbits: the ball's motion is too stiff for the integrator (a steep traction curve, e.g. traction.curve = \"constant\" with a large traction.mu); use a gentler traction curve, a looser dynamics.tolerance, fewer dynamics.orbits or dynamics.method = \"race-control\""
     ))
 }
 

@@ -67,6 +67,11 @@ pub struct DynamicsResult {
     pub oscillation_amplitude_rad_s: f64,
     /// Per ball (in the analysis' ball order).
     pub balls: Vec<BallDynamics>,
+    /// Every how many samples one is kept in each ball's history before its last orbit
+    /// (1: every sample; more when the history would exceed
+    /// [`super::budget::MAX_SERIES_ROWS`] rows over the balls; the last orbit is always
+    /// whole).
+    pub series_sample_every: usize,
 }
 
 impl DynamicsResult {
