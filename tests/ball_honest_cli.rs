@@ -222,3 +222,34 @@ fn failed_skid_search_is_a_reason_not_a_failure() {
         "{text}"
     );
 }
+
+/// A lubricant without a pressure–viscosity coefficient has no Hamrock–Dowson film: the
+/// run says so in `warnings` instead of leaving `film_temperature_rise_c: null` unexplained
+/// (found by benches/hostile.py on chen_b).
+#[test]
+fn zero_pressure_viscosity_is_warned() {
+    let (code, out, err) = run(
+        "chen_b.toml",
+        &[
+            "--format",
+            "json",
+            "--set",
+            "lubricant.pressure_viscosity=0",
+        ],
+    );
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap_or_default();
+    assert!(
+        j["balls"][0]["inner"]["film_temperature_rise_c"].is_null(),
+        "{out}"
+    );
+    let w = j["warnings"].to_string();
+    assert!(
+        w.contains("no EHD film") && w.contains("lubricant.pressure_viscosity"),
+        "{w}"
+    );
+    // The shipped deck's α gives a film and no such warning.
+    let (code, out, err) = run("chen_b.toml", &["--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("no EHD film"));
+}

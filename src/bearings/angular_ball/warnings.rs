@@ -39,7 +39,29 @@ pub fn warnings(a: &BallAnalysis) -> Vec<Warning> {
     bulk(a, &mut w);
     stress(a, &mut w);
     settling(a, &mut w);
+    film(a, &mut w);
     w
+}
+
+/// A loaded contact with no EHD film because the lubricant has no pressure–viscosity
+/// coefficient: the Hamrock–Dowson films (seed 001 eqs. 4-10, 4-11) scale as G^0.49 and
+/// G^0.53 with G = α·E′, so `lubricant.pressure_viscosity = 0` gives a zero film, outside
+/// the regression behind the formulas, and the spinning contact's film temperature
+/// (ch. 6) is not computed (`film_temperature_rise_c: null`). An isoviscous lubricant
+/// needs an isoviscous-elastic film law the seed does not give.
+fn film(a: &BallAnalysis, w: &mut Vec<Warning>) {
+    let loaded_without_film = a.balls.iter().any(|b| {
+        [&b.inner, &b.outer]
+            .iter()
+            .any(|c| c.load_n > 0.0 && c.central_film_m == Some(0.0))
+    });
+    if loaded_without_film && a.input.lubricant.pressure_viscosity_pa_inv == 0.0 {
+        let text = "no EHD film: lubricant.pressure_viscosity = 0 makes the Hamrock–Dowson film (seed eqs. 4-10, 4-11, ∝ (αE′)^0.53) zero, outside the formulas' range; the films are 0 and the contacts' film temperatures are not computed (null): give the oil's pressure–viscosity coefficient".to_string();
+        w.push(Warning {
+            si: text.clone(),
+            us: text,
+        });
+    }
 }
 
 /// A contact angle past 90° (off the shoulder) or below 0° (the contact has crossed the
