@@ -114,7 +114,11 @@ MUST_BE_FINITE = re.compile(
 def finite_numbers(value, path="", bad=None):
     bad = [] if bad is None else bad
     if isinstance(value, dict):
+        # A contact without a film (unloaded, or no EHD film) has no film temperature.
+        no_film = not value.get("central_film_m") or not value.get("normal_load_n", 1.0)
         for k, v in value.items():
+            if k.endswith("temperature_rise_c") and no_film:
+                continue
             if v is None and MUST_BE_FINITE.search(k) and "laminae" not in path:
                 bad.append(f"{path}.{k}")
             finite_numbers(v, f"{path}.{k}", bad)
