@@ -3,30 +3,15 @@
 //! warning that names it, a failed skid search a `skid.reason`, and the quasi-static
 //! method solves constant traction.
 
-use assert_cmd::Command;
-
-fn deck(name: &str) -> String {
-    format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"))
-}
+mod common;
+use common::deck;
 
 /// `rollbench run DECK ARGS…`: (exit code, stdout, stderr).
 fn run(name: &str, extra: &[&str]) -> (i32, String, String) {
     let d = deck(name);
     let mut args = vec!["run", d.as_str()];
     args.extend_from_slice(extra);
-    let mut cmd = match Command::cargo_bin("rollbench") {
-        Ok(c) => c,
-        Err(e) => panic!("{e}"),
-    };
-    let out = match cmd.args(&args).output() {
-        Ok(o) => o,
-        Err(e) => panic!("{e}"),
-    };
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    common::run(&args)
 }
 
 fn json(name: &str, extra: &[&str]) -> serde_json::Value {

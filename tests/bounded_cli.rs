@@ -4,31 +4,8 @@
 //! bar is drawn when standard error is not a terminal, and a deck's arrays are bounded
 //! in length. Every case here is refused or short (< 2 s in a debug build).
 
-use assert_cmd::Command;
-
-fn bin() -> Command {
-    match Command::cargo_bin("rollbench") {
-        Ok(c) => c,
-        Err(e) => panic!("{e}"),
-    }
-}
-
-fn deck(name: &str) -> String {
-    format!("{}/decks/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Exit code, stdout, stderr.
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = match bin().args(args).output() {
-        Ok(o) => o,
-        Err(e) => panic!("{e}"),
-    };
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::{deck, run};
 
 /// The 43-s run (chen_b, 500 N radial, 1 000 orbits) and 45-s run (50 orbits ×
 /// 2 001 slices) are refused before any ball is integrated, with the estimate, the bound
