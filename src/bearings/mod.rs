@@ -13,6 +13,7 @@
 )]
 
 pub mod angular_ball;
+pub mod cylindrical_roller;
 pub mod error;
 pub mod form_system;
 pub mod spherical_roller;

@@ -1,0 +1,18 @@
+//! The cylindrical roller bearing (seed 003, Rahnejat et al., tribodynamics of cylindrical
+//! roller bearings in a heavy-duty truck transmission): the quasi-static lamina load
+//! distribution, the 2-DOF dynamics with variable compliance and film in the deflection,
+//! spectra, and mixed-regime (Greenwood–Tripp + viscous) friction per roller.
+//!
+//! Layout: `quasi_static` (lamina load distribution and ring stiffness). More files join
+//! as the system is built (issue 25).
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+// `!(x > 0.0)` is used on purpose: it rejects NaN along with the out-of-range values.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod quasi_static;
+
+/// The deck `type` of this system (its schema's `system`, the JSON's `type`).
+pub const SYSTEM_ID: &str = "cylindrical-roller";
