@@ -336,7 +336,8 @@ pub fn fit_title(title: &str, room: usize) -> String {
 }
 
 /// A view's chart in display units `u`: fixed bounds where the chart gives them, else y
-/// from 0 to a round ceiling of the data and x symmetric about 0.
+/// from 0 (or a round floor of data below 0) to a round ceiling of the data, and x from 0
+/// (data on one side of 0) or symmetric about 0.
 pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
     let series: Vec<(String, Vec<(f64, f64)>)> = c
         .series
@@ -360,6 +361,23 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
         .iter()
         .flat_map(|s| s.1.iter().map(|p| p.1))
         .fold(0.0, f64::max);
+    // Data below zero (a velocity in a phase plane, a torque that changes sign) gets a
+    // round floor too: the axis fits what is drawn (issue 30 item 1's rule).
+    let ymin = series
+        .iter()
+        .flat_map(|s| s.1.iter().map(|p| p.1))
+        .filter(|y| y.is_finite())
+        .fold(0.0, f64::min);
+    let y_floor = if ymin < 0.0 {
+        -nice_ceiling(-ymin)
+    } else {
+        0.0
+    };
+    let y_top = if ymax > 0.0 || ymin >= 0.0 {
+        nice_ceiling(ymax)
+    } else {
+        0.0
+    };
     let xs = || series.iter().flat_map(|s| s.1.iter().map(|p| p.0));
     let xmax = xs().map(f64::abs).fold(0.0, f64::max);
     let xmax = if xmax > 0.0 { xmax } else { 1.0 };
@@ -379,9 +397,10 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
             .x
             .bounds
             .map_or(x_auto, |b| b.map(|v| c.x.display.convert(v, u))),
-        y_bounds: c.y.bounds.map_or([0.0, nice_ceiling(ymax)], |b| {
-            b.map(|v| c.y.display.convert(v, u))
-        }),
+        y_bounds: c
+            .y
+            .bounds
+            .map_or([y_floor, y_top], |b| b.map(|v| c.y.display.convert(v, u))),
     }
 }
 
@@ -808,6 +827,38 @@ mod series_display_tests {
     use super::chart_series;
     use crate::bearings::view::{Chart, ChartAxis, Display, Series};
     use crate::units::{Units, BTU_PER_HOUR_PER_WATT};
+
+    /// The y axis fits data below zero: a round floor under the lowest value, a round
+    /// ceiling over the highest (0 when every value is negative); data at or above zero
+    /// keeps the axis from 0 (every existing chart's look).
+    #[test]
+    fn the_y_axis_fits_data_below_zero() {
+        let chart = |ys: &[f64]| Chart {
+            title: "t".into(),
+            title_us: None,
+            x: ChartAxis {
+                label: "x",
+                display: Display::Plain,
+                bounds: None,
+            },
+            y: ChartAxis {
+                label: "y",
+                display: Display::Plain,
+                bounds: None,
+            },
+            series: vec![Series {
+                name: "s",
+                points: ys.iter().map(|&y| (1.0, y)).collect(),
+                display: None,
+            }],
+            per_element: false,
+        };
+        let b = |ys: &[f64]| chart_series(&chart(ys), Units::Si).y_bounds;
+        assert_eq!(b(&[-354.0, 0.0]), [-500.0, 0.0]);
+        assert_eq!(b(&[-3.0, 7.0]), [-5.0, 10.0]);
+        assert_eq!(b(&[0.0, 7.0]), [0.0, 10.0]);
+        assert_eq!(b(&[1.0, 7.0]), [0.0, 10.0]);
+    }
 
     /// A series with its own display kind (the ball's heat on an ω_t axis) converts by
     /// it and names its unit in the legend; the axis's series and the bounds convert by
