@@ -6,6 +6,9 @@ use serde::{Deserialize, Serialize};
 
 pub mod film;
 pub mod film_point;
+pub mod greenwood_tripp;
+pub mod houpert;
+pub mod mixed_friction;
 pub mod rheology;
 pub mod traction;
 pub mod traction_curve;
