@@ -62,6 +62,7 @@ pub fn keys_table<T>(schema: &'static Schema<T>) -> String {
     for f in schema.fields {
         let allowed = |u: Units| match f.kind {
             FieldKind::Choice(list) => list.join(" | "),
+            FieldKind::RealOr(word) => format!("{} | \"{word}\"", f.allowed(u)),
             _ => f.allowed(u),
         };
         let _ = writeln!(
