@@ -37,6 +37,7 @@ pub static SYSTEMS: &[&dyn BearingSystem] = &[
     &spherical_roller::SYSTEM,
     &angular_ball::system::SYSTEM,
     &tapered_roller::SYSTEM,
+    &cylindrical_roller::SYSTEM,
 ];
 
 /// What a run is asked to compute beyond the bearing itself.

@@ -181,7 +181,7 @@ impl DeckDoc {
     /// Unit label of `key` in `units` (empty for dimensionless and choices).
     pub fn unit(&self, key: &str, units: Units) -> &'static str {
         match self.field(key) {
-            Some(s) if matches!(s.kind, FieldKind::Real) => s.unit(units),
+            Some(s) if matches!(s.kind, FieldKind::Real | FieldKind::RealOr(_)) => s.unit(units),
             _ => "",
         }
     }
@@ -199,6 +199,7 @@ impl DeckDoc {
         match self.field(key) {
             Some(s) => match s.kind {
                 FieldKind::Choice(list) => format!("one of {}", list.join(", ")),
+                FieldKind::RealOr(word) => format!("{} or \"{word}\"", s.allowed(units)),
                 _ => s.allowed(units),
             },
             None => String::new(),
@@ -258,7 +259,8 @@ impl DeckDoc {
                 }
                 text.to_string()
             }
-            FieldKind::Integer | FieldKind::Real => {
+            FieldKind::RealOr(word) if text == word => word.to_string(),
+            FieldKind::Integer | FieldKind::Real | FieldKind::RealOr(_) => {
                 let v: f64 = text
                     .parse()
                     .map_err(|_| format!("not a number: {text:?}"))?;

@@ -44,7 +44,7 @@ pub(crate) fn edit<T>(
     }
     let wants_string = key_path == "name"
         || is_body
-        || spec.is_some_and(|s| matches!(s.kind, FieldKind::Choice(_)));
+        || spec.is_some_and(|s| matches!(s.kind, FieldKind::Choice(l) if !is_bool(l)));
     // The two ways of giving a one-of value are exclusive: setting one removes the other.
     let exclusive_other = match spec.map(|s| s.presence) {
         Some(Presence::OneOf(other)) => Some(other),
@@ -208,7 +208,8 @@ pub(crate) fn get<T>(
     Some(match spec.kind {
         FieldKind::Choice(list) => list.get(si as usize).copied().unwrap_or("").to_string(),
         FieldKind::Integer => format!("{}", si.round() as i64),
-        FieldKind::Real => fmt_real(spec.from_si(si, units)),
+        FieldKind::RealOr(word) if si.is_nan() => word.to_string(),
+        FieldKind::Real | FieldKind::RealOr(_) => fmt_real(spec.from_si(si, units)),
     })
 }
 

@@ -12,6 +12,9 @@ pub(super) fn opaque_keys(table: &str) -> &'static [&'static str] {
         // The angular-contact ball bearing's traction table (its own parser:
         // `bearings::angular_ball::deck::traction_table`).
         "traction_table" => &["points"],
+        // The cylindrical roller's contact report (`bearings::cylindrical_roller::deck::
+        // contact_table`).
+        "contact" => &["sliding_speed", "positions"],
         _ => &[],
     }
 }
@@ -62,6 +65,7 @@ pub fn keys_table<T>(schema: &'static Schema<T>) -> String {
     for f in schema.fields {
         let allowed = |u: Units| match f.kind {
             FieldKind::Choice(list) => list.join(" | "),
+            FieldKind::RealOr(word) => format!("{} | \"{word}\"", f.allowed(u)),
             _ => f.allowed(u),
         };
         let _ = writeln!(

@@ -39,6 +39,22 @@ pub enum FieldKind {
     Integer,
     /// A string from a fixed list; the "SI value" is the index in the list.
     Choice(&'static [&'static str]),
+    /// A real number (as [`FieldKind::Real`], range-checked), or this one word, which
+    /// stands for "computed instead" (the cylindrical roller's `contact_stiffness =
+    /// "lamina"`, `cage_speed = "kinematic"`); the word's SI value is NaN (outside every
+    /// range, so no number can be mistaken for it), and a `Presence::Default(f64::NAN)`
+    /// makes the word the default.
+    RealOr(&'static str),
+}
+
+/// The choice list of a yes/no key: `FieldKind::Choice(BOOL)` reads a TOML boolean
+/// (`gravity = true`; the strings "true"/"false" too) and writes a bare boolean; the SI
+/// value is 0 for false, 1 for true.
+pub const BOOL: &[&str] = &["false", "true"];
+
+/// True for the yes/no choice list [`BOOL`].
+pub fn is_bool(list: &[&str]) -> bool {
+    list == BOOL
 }
 
 /// Whether a key must be given.
@@ -511,7 +527,11 @@ pub(crate) fn fmt_real(v: f64) -> String {
 /// e.g. `geometry.roller_diameter = 0.5 in`. Empty for an unknown key.
 pub fn show<T>(schema: &Schema<T>, value: &T, key: &str, units: Units) -> String {
     schema.field(key).map_or_else(String::new, |f| {
-        let v = f.from_si(f.get_si(value), units);
+        let si = f.get_si(value);
+        if let (FieldKind::RealOr(word), true) = (f.kind, si.is_nan()) {
+            return format!("{key} = \"{word}\"");
+        }
+        let v = f.from_si(si, units);
         let unit = f.unit(units);
         if unit.is_empty() {
             format!("{key} = {}", format_short(v))
@@ -562,6 +582,7 @@ pub fn schema_problems<T>(schema: &Schema<T>) -> Vec<String> {
             }
         }
         match f.presence {
+            Presence::Default(v) if v.is_nan() && matches!(f.kind, FieldKind::RealOr(_)) => {}
             Presence::Default(v) if !f.in_range(v) => {
                 p.push(format!("{}: default {v} out of range", f.key));
             }

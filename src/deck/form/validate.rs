@@ -565,6 +565,15 @@ pub(super) fn read_value(
                 return None;
             }
         },
+        FieldKind::RealOr(word) => match value {
+            Some(Value::Float(f)) => spec.to_si(*f.value(), units),
+            Some(Value::Integer(i)) => spec.to_si(*i.value() as f64, units),
+            Some(Value::String(s)) if s.value() == word => return Some(f64::NAN),
+            _ => {
+                ctx.errors.push(wrong(&format!("a number or \"{word}\"")));
+                return None;
+            }
+        },
         FieldKind::Integer => match value {
             Some(Value::Integer(i)) => *i.value() as f64,
             _ => {
@@ -572,6 +581,13 @@ pub(super) fn read_value(
                 return None;
             }
         },
+        FieldKind::Choice(list) if is_bool(list) && value.is_some_and(Value::is_bool) => {
+            return Some(if value.and_then(Value::as_bool) == Some(true) {
+                1.0
+            } else {
+                0.0
+            });
+        }
         FieldKind::Choice(list) => match value.and_then(Value::as_str) {
             Some(s) => match list.iter().position(|c| *c == s) {
                 Some(i) => return Some(i as f64),

@@ -30,7 +30,14 @@ pub(super) fn fmt_field<T>(spec: &FieldSpec<T>, v: &T, units: Units) -> String {
     let si = spec.get_si(v);
     match spec.kind {
         FieldKind::Real => fmt_real(spec.from_si(si, units)),
+        FieldKind::RealOr(word) if si.is_nan() => format!("\"{word}\""),
+        FieldKind::RealOr(_) => fmt_real(spec.from_si(si, units)),
         FieldKind::Integer => format!("{}", si.round() as i64),
+        FieldKind::Choice(list) if is_bool(list) => list
+            .get(si as usize)
+            .copied()
+            .unwrap_or("false")
+            .to_string(),
         FieldKind::Choice(list) => {
             format!("\"{}\"", list.get(si as usize).copied().unwrap_or(""))
         }
@@ -189,6 +196,7 @@ pub(crate) fn write_deck<T>(schema: &Schema<T>, d: &DeckText<'_, T>) -> String {
                 };
                 let range = match spec.kind {
                     FieldKind::Choice(list) => format!("one of {}", choice_list(list)),
+                    FieldKind::RealOr(word) => format!("{} or \"{word}\"", spec.allowed(units)),
                     _ => spec.allowed(units),
                 };
                 let _ = writeln!(

@@ -1,0 +1,217 @@
+//! The JSON report (SI, units in key names; issue 25 "Outputs", a contract: fields are
+//! added, never renamed) and the text report in the deck's units.
+
+use std::fmt::Write;
+
+use serde_json::{json, Value};
+
+use super::analysis::CylindricalAnalysis;
+use crate::units::{Quantity, Units};
+
+/// Azimuth of a roller in [0, 360) deg.
+pub fn azimuth_deg(rad: f64) -> f64 {
+    rad.to_degrees().rem_euclid(360.0)
+}
+
+/// The JSON report.
+pub fn json(a: &CylindricalAnalysis) -> Value {
+    let d = &a.derived;
+    let q = &a.statics;
+    let rollers: Vec<Value> = q
+        .rollers
+        .iter()
+        .zip(&a.films)
+        .enumerate()
+        .map(|(i, (r, f))| {
+            let slices: Vec<Value> = r
+                .slices
+                .iter()
+                .zip(&f.slices)
+                .map(|(s, h)| {
+                    json!({
+                        "axial_m": s.axial_m,
+                        "profile_drop_m": s.profile_drop_m,
+                        "inner_load_n": s.inner_load_n,
+                        "outer_load_n": s.outer_load_n,
+                        "inner_half_width_m": s.inner_half_width_m,
+                        "outer_half_width_m": s.outer_half_width_m,
+                        "inner_max_pressure_pa": s.inner_max_pressure_pa,
+                        "outer_max_pressure_pa": s.outer_max_pressure_pa,
+                        "inner_film_m": h.inner_m,
+                        "outer_film_m": h.outer_m,
+                    })
+                })
+                .collect();
+            json!({
+                "index": i + 1,
+                "azimuth_deg": azimuth_deg(r.azimuth_rad),
+                "inner_load_n": r.inner_load_n,
+                "outer_load_n": r.outer_load_n,
+                "inner_approach_m": r.inner_approach_m,
+                "outer_approach_m": r.outer_approach_m,
+                // No ribs and no moments yet: the rollers do not tilt, nothing loads a rib.
+                "tilt_rad": 0.0,
+                "rib_load_n": 0.0,
+                "film_m": f.min_film_m,
+                "lambda": f.lambda,
+                "max_pressure_pa": f.max_pressure_pa,
+                "slices": slices,
+            })
+        })
+        .collect();
+    let k = q.stiffness_n_m;
+    json!({
+        "type": super::SYSTEM_ID,
+        "name": a.name,
+        "method": "seed 003 (tribodynamics of cylindrical roller bearings): quasi-static lamina load distribution (slice law, inner and outer contacts in series), Pan–Hamrock films per slice",
+        "geometry": {
+            "pitch_radius_m": d.pitch_radius_m,
+            "effective_length_m": d.effective_length_m,
+            "inner_reduced_radius_m": d.inner_reduced_radius_m,
+            "outer_reduced_radius_m": d.outer_reduced_radius_m,
+            "roller_mass_kg": d.roller_mass_kg,
+        },
+        "speeds": {
+            "cage_rad_s": d.cage_speed_rad_s,
+            "kinematic_cage_rad_s": d.kinematic_cage_speed_rad_s,
+            "entrainment_m_s": d.entrainment_speed_m_s,
+            "cage_frequency_hz": d.cage_frequency_hz,
+            "roller_pass_frequency_hz": d.roller_pass_frequency_hz,
+        },
+        "centrifugal_force_n": d.centrifugal_n,
+        "load_n": a.model.load_n,
+        "rollers": rollers,
+        "rings": {
+            "displacement_m": q.displacement_m,
+            "stiffness_n_per_m": [k[0], k[1]],
+        },
+        "contact": {
+            "sliding_speed_m_s": a.input.contact.sliding_speed_m_s,
+            "positions_deg": a.input.contact.positions_rad.iter().map(|p| p.to_degrees()).collect::<Vec<_>>(),
+        },
+        "min_film_m": a.min_film_m(),
+        "max_roller_load_n": a.max_roller_load_n(),
+        "max_pressure_pa": a.max_pressure_pa(),
+        "warnings": a.warnings,
+        "stats": {
+            "iterations": q.iterations,
+            "residual_n": q.residual_n,
+            "slices": a.input.solver.slices,
+            "wall_time_s": a.wall_time_s,
+        },
+    })
+}
+
+/// The 2×2 ring stiffness and the static offset in `units`: the text report's section
+/// and the workbench's Stiffness pane.
+pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
+    let q = &a.statics;
+    let ks = Quantity::LinearStiffness;
+    let len = Quantity::Length;
+    let k = q.stiffness_n_m;
+    let mut v = vec![format!(
+        "Ring stiffness (rows F_x F_y; columns x y), {}",
+        ks.unit(units)
+    )];
+    for (name, row) in ["F_x", "F_y"].iter().zip(k) {
+        v.push(format!(
+            "  {name:<4} {:>12.4e} {:>12.4e}",
+            ks.from_si(row[0], units),
+            ks.from_si(row[1], units)
+        ));
+    }
+    v.push(format!(
+        "Static offset of the inner ring  x = {:.4e}  y = {:.4e} {}",
+        len.from_si(q.displacement_m[0], units),
+        len.from_si(q.displacement_m[1], units),
+        len.unit(units)
+    ));
+    v
+}
+
+/// The text report in `units`.
+pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
+    let g = &a.input.geometry;
+    let d = &a.derived;
+    let len = |v: f64| Quantity::Length.from_si(v, units);
+    let force = |v: f64| Quantity::Force.from_si(v, units);
+    let pres = |v: f64| Quantity::Pressure.from_si(v, units);
+    let (lu, fu, pu) = (
+        Quantity::Length.unit(units),
+        Quantity::Force.unit(units),
+        Quantity::Pressure.unit(units),
+    );
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "ROLLBENCH — cylindrical roller bearing (seed 003, lamina quasi-statics): {}",
+        a.name
+    );
+    let _ = writeln!(
+        s,
+        "m = {}  d = {:.5} {lu}  l = {:.5} {lu}  l_e = {:.5} {lu}  r_m = {:.5} {lu}  rho = {:.4e} {lu}  slices = {}",
+        g.roller_count,
+        len(g.roller_diameter_m),
+        len(g.roller_length_m),
+        len(d.effective_length_m),
+        len(d.pitch_radius_m),
+        len(g.radial_interference_m),
+        a.input.solver.slices
+    );
+    let _ = writeln!(
+        s,
+        "cage {:.3} rad/s (kinematic {:.3})  f_c = {:.3} Hz  roller pass {:.3} Hz  U = {:.4} m/s  F_c = {:.4} {fu}",
+        d.cage_speed_rad_s,
+        d.kinematic_cage_speed_rad_s,
+        d.cage_frequency_hz,
+        d.roller_pass_frequency_hz,
+        d.entrainment_speed_m_s,
+        force(d.centrifugal_n)
+    );
+    let _ = writeln!(
+        s,
+        "load on the inner ring  F_x = {:.2}  F_y = {:.2} {fu}",
+        force(a.model.load_n[0]),
+        force(a.model.load_n[1])
+    );
+    let _ = writeln!(s, "\nRollers");
+    let _ = writeln!(
+        s,
+        "  {:>3} {:>7} {:>11} {:>11} {:>11} {:>7} {:>11}",
+        "#", "phi deg", "W_i", "W_o", "h_min um", "Lambda", "p_max"
+    );
+    for (i, (r, f)) in a.statics.rollers.iter().zip(&a.films).enumerate() {
+        let h = f
+            .min_film_m
+            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", h * 1e6));
+        let l = f
+            .lambda
+            .map_or_else(|| "-".to_string(), |l| format!("{l:.3}"));
+        let _ = writeln!(
+            s,
+            "  {:>3} {:>7.2} {:>11.3} {:>11.3} {:>11} {:>7} {:>11.4e}",
+            i + 1,
+            azimuth_deg(r.azimuth_rad),
+            force(r.inner_load_n),
+            force(r.outer_load_n),
+            h,
+            l,
+            pres(f.max_pressure_pa)
+        );
+    }
+    let _ = writeln!(s, "  (loads in {fu}, pressure in {pu})\n");
+    for line in stiffness_lines(a, units) {
+        let _ = writeln!(s, "{line}");
+    }
+    for w in &a.warnings {
+        let _ = writeln!(s, "\nWarning: {w}");
+    }
+    let _ = writeln!(
+        s,
+        "\nEquilibrium residual {:.3e} {fu} after {} iterations; {:.3} ms",
+        force(a.statics.residual_n),
+        a.statics.iterations,
+        a.wall_time_s * 1e3
+    );
+    s
+}

@@ -1,0 +1,212 @@
+//! The cylindrical roller bearing's registration: how its decks are read, solved and
+//! shown through the system-independent [`crate::bearings::BearingSystem`] interface.
+
+use super::analysis::{analyse_from, CylindricalAnalysis};
+use super::deck::SCHEMA;
+use super::input::CylindricalInput;
+use super::quasi_static::{QuasiStatic, QuasiStaticError};
+use super::SYSTEM_ID;
+use crate::bearings::view::{PaneKind, PaneSpec, View};
+use crate::bearings::{
+    Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
+    SweepPlan, SystemCase,
+};
+use crate::deck::form::{Form, Schema};
+use crate::deck::DeckErrors;
+use crate::numerics::cancel::Cancel;
+use crate::units::{restate_si, Units};
+
+/// The shipped example deck: the seed's truck-transmission bearing.
+pub const EXAMPLE_DECK: &str = include_str!("../../../decks/crb_truck.toml");
+
+/// The fidelity study (`rollbench bench`): slices per roller × force tolerance against
+/// 321 slices at 10⁻¹⁰.
+pub const FIDELITY_GRID: FidelityGrid = FidelityGrid {
+    resolution_key: "slices",
+    resolution_symbol: "n",
+    resolutions: &[5, 7, 11, 15, 21, 31, 41, 61, 81, 121, 161],
+    tolerances: &[1e-6, 1e-9],
+    reference: Fidelity {
+        resolution: 321,
+        tolerance: 1e-10,
+    },
+};
+
+/// The cylindrical roller bearing system (registered in `crate::bearings::SYSTEMS`).
+pub struct CylindricalRoller;
+
+/// The registry entry.
+pub static SYSTEM: CylindricalRoller = CylindricalRoller;
+
+/// A validated cylindrical roller deck.
+pub type CylindricalCase = SystemCase<CylindricalRoller>;
+
+impl FormSystem for CylindricalRoller {
+    type Input = CylindricalInput;
+    type Derived = ();
+
+    fn registered() -> &'static Self {
+        &SYSTEM
+    }
+
+    fn schema(&self) -> &'static Schema<CylindricalInput> {
+        &SCHEMA
+    }
+
+    fn title(&self) -> &'static str {
+        "cylindrical roller bearing (lamina load distribution, tribodynamics)"
+    }
+
+    fn method(&self) -> &'static str {
+        "lamina (slice) load distribution of radially loaded rollers with dub-off or logarithmic profiles, 2×2 ring stiffness (seed 003: tribodynamics of cylindrical roller bearings in a truck transmission)"
+    }
+
+    fn element_name(&self) -> &'static str {
+        "roller"
+    }
+
+    fn session(&self) -> Box<dyn Session> {
+        Box::new(CylindricalSession::default())
+    }
+
+    fn fidelity_grid(&self) -> Option<FidelityGrid> {
+        Some(FIDELITY_GRID)
+    }
+
+    /// The Sweep pane: the largest roller load and K_xx against the radial load, from 0
+    /// to 2.5 × the deck's (at least 1 000 N) in 21 points, each divided by its value at
+    /// the first point (gravity and interference keep it loaded).
+    fn sweep_plan(&self, n: usize, case: &dyn Case) -> Option<SweepPlan> {
+        if n != 0 {
+            return None;
+        }
+        let here = case
+            .get("operating.radial_load")
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or(0.0)
+            .abs();
+        let top = (2.5 * here).max(1000.0);
+        let points = 21;
+        Some(SweepPlan {
+            title: "W_max and K_xx ÷ value at zero radial load".to_string(),
+            key: "operating.radial_load",
+            values: (0..points)
+                .map(|i| top * i as f64 / (points - 1) as f64)
+                .collect(),
+            outputs: vec!["max_roller_load_n", "stiffness_xx_n_m"],
+            normalise: true,
+            marker: None,
+        })
+    }
+
+    fn panes(&self) -> &'static [PaneSpec] {
+        const PANES: [PaneSpec; 5] = [
+            PaneSpec {
+                kind: PaneKind::Inputs,
+                title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Elements,
+                title: "Rollers",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(0),
+                title: "Load",
+            },
+            PaneSpec {
+                kind: PaneKind::Text(0),
+                title: "Stiffness",
+            },
+            PaneSpec {
+                kind: PaneKind::Sweep(0),
+                title: "Sweep",
+            },
+        ];
+        &PANES
+    }
+
+    fn example_deck(&self) -> &'static str {
+        EXAMPLE_DECK
+    }
+
+    /// The `[contact]` table (sliding speed, cage angles) into the input.
+    fn prepare(form: &mut Form<CylindricalInput>) -> Result<(), DeckErrors> {
+        super::deck::contact_table(form)
+    }
+
+    fn solve(
+        case: &CylindricalCase,
+        _options: RunOptions,
+        cancel: Cancel,
+    ) -> Result<Box<dyn Solution>, String> {
+        // The errors are worded in SI deep in the solver; a US deck's user reads them in
+        // lbf and inches like the other systems'.
+        analyse_from(&case.form.value, &case.form.name, None, &cancel)
+            .map(|a| Box::new(CylindricalSolution(a)) as Box<dyn Solution>)
+            .map_err(|e| restate_si(&e.to_string(), case.form.units))
+    }
+
+    fn fidelity(input: &CylindricalInput) -> Option<Fidelity> {
+        Some(Fidelity {
+            resolution: input.solver.slices,
+            tolerance: input.solver.force_tolerance,
+        })
+    }
+
+    fn set_fidelity(input: &mut CylindricalInput, f: Fidelity) -> bool {
+        input.solver.slices = f.resolution;
+        input.solver.force_tolerance = f.tolerance;
+        true
+    }
+}
+
+/// A solved cylindrical roller bearing.
+pub struct CylindricalSolution(pub CylindricalAnalysis);
+
+impl Solution for CylindricalSolution {
+    fn view(&self) -> View {
+        super::view::view(&self.0)
+    }
+
+    fn json(&self) -> serde_json::Value {
+        super::report::json(&self.0)
+    }
+
+    fn text(&self, units: Units) -> String {
+        super::report::text(&self.0, units)
+    }
+}
+
+/// The session: it keeps the last converged equilibrium and starts the next solve from
+/// it (a sweep through one session is a continuation), falling back to rest.
+#[derive(Default)]
+pub struct CylindricalSession {
+    last: Option<QuasiStatic>,
+}
+
+impl Session for CylindricalSession {
+    fn solve(
+        &mut self,
+        case: &dyn Case,
+        _detail: Detail,
+        cancel: &Cancel,
+    ) -> Result<Box<dyn Solution>, SolveError> {
+        let case = CylindricalCase::of(case)?;
+        match analyse_from(
+            &case.form.value,
+            &case.form.name,
+            self.last.as_ref(),
+            cancel,
+        ) {
+            Ok(a) => {
+                self.last = Some(a.statics.clone());
+                Ok(Box::new(CylindricalSolution(a)))
+            }
+            Err(QuasiStaticError::Cancelled) => Err(SolveError::Cancelled),
+            Err(e) => Err(SolveError::Stage {
+                stage: SYSTEM_ID,
+                message: restate_si(&e.to_string(), case.form.units),
+            }),
+        }
+    }
+}

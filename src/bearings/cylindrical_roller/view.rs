@@ -1,0 +1,343 @@
+//! What a solved cylindrical roller bearing shows: the `rollers` table (CSV and the
+//! Rollers pane), roller loads against azimuth, each roller's slice loads with its
+//! dub-off marked, summary lines and the key outputs.
+
+use super::analysis::CylindricalAnalysis;
+use super::report::azimuth_deg;
+use crate::bearings::view::{
+    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Screen, Series, SolveStats,
+    Summary, Table, TextBlock, View, Warning,
+};
+use crate::units::{Quantity, Units};
+
+/// A column in the CSV and the pane.
+const fn col(
+    key: &'static str,
+    q: Quantity,
+    csv: CsvStyle,
+    label: &'static str,
+    d: Display,
+    p: usize,
+    w: u16,
+) -> Column {
+    Column {
+        key,
+        quantity: q,
+        csv: Some(csv),
+        screen: Some(Screen {
+            label,
+            display: d,
+            precision: p,
+            width: w,
+        }),
+    }
+}
+
+/// Columns of the `rollers` table (issue 25's per-roller fields).
+pub const ROLLER_COLUMNS: [Column; 7] = [
+    col(
+        "index",
+        Quantity::Count,
+        CsvStyle::Integer,
+        "#",
+        Display::Plain,
+        0,
+        3,
+    ),
+    col(
+        "azimuth_deg",
+        Quantity::Angle,
+        CsvStyle::Plain,
+        "θ deg",
+        Display::Plain,
+        1,
+        6,
+    ),
+    col(
+        "inner_load_n",
+        Quantity::Force,
+        CsvStyle::Scientific,
+        "W_i",
+        Display::Force,
+        1,
+        9,
+    ),
+    col(
+        "outer_load_n",
+        Quantity::Force,
+        CsvStyle::Scientific,
+        "W_o",
+        Display::Force,
+        1,
+        9,
+    ),
+    col(
+        "film_m",
+        Quantity::Length,
+        CsvStyle::Scientific,
+        "h_min",
+        Display::Film,
+        3,
+        8,
+    ),
+    col(
+        "lambda",
+        Quantity::Dimensionless,
+        CsvStyle::Plain,
+        "Λ",
+        Display::Plain,
+        2,
+        6,
+    ),
+    col(
+        "max_pressure_pa",
+        Quantity::Pressure,
+        CsvStyle::Scientific,
+        "p_max",
+        Display::Stress,
+        0,
+        8,
+    ),
+];
+
+/// The view of a solved case.
+pub fn view(a: &CylindricalAnalysis) -> View {
+    let q = &a.statics;
+    let rows: Vec<Vec<Option<f64>>> = q
+        .rollers
+        .iter()
+        .zip(&a.films)
+        .enumerate()
+        .map(|(i, (r, f))| {
+            vec![
+                Some((i + 1) as f64),
+                Some(azimuth_deg(r.azimuth_rad)),
+                Some(r.inner_load_n),
+                Some(r.outer_load_n),
+                f.min_film_m,
+                f.lambda,
+                Some(f.max_pressure_pa),
+            ]
+        })
+        .collect();
+    let series =
+        |name: &'static str, f: &dyn Fn(&super::quasi_static::RollerState) -> f64| Series {
+            display: None,
+            name,
+            points: q
+                .rollers
+                .iter()
+                .map(|r| (azimuth_deg(r.azimuth_rad), f(r)))
+                .collect(),
+        };
+    let load_chart = Chart {
+        title: "Roller loads against azimuth (load zone: W > 0)".to_string(),
+        title_us: None,
+        x: ChartAxis {
+            label: "θ deg",
+            display: Display::Plain,
+            bounds: Some([0.0, 360.0]),
+        },
+        y: ChartAxis {
+            label: "load",
+            display: Display::Force,
+            bounds: None,
+        },
+        series: vec![
+            series("inner W_i", &|r| r.inner_load_n),
+            series("outer W_o", &|r| r.outer_load_n),
+        ],
+        per_element: true,
+    };
+    // The flat ends where the dub-off starts, ±(l/2 − l_d) from the roller's middle.
+    let g = &a.input.geometry;
+    let flat_half = 0.5 * a.derived.effective_length_m;
+    let dub_off = g.profile == super::input::ProfileKind::DubOff && g.dub_off_length_m > 0.0;
+    let element_charts = q
+        .rollers
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let top = r
+                .slices
+                .iter()
+                .map(|s| s.inner_load_n.max(s.outer_load_n))
+                .fold(0.0, f64::max);
+            let mut series = vec![
+                Series {
+                    display: None,
+                    name: "inner",
+                    points: r
+                        .slices
+                        .iter()
+                        .map(|s| (s.axial_m, s.inner_load_n))
+                        .collect(),
+                },
+                Series {
+                    display: None,
+                    name: "outer",
+                    points: r
+                        .slices
+                        .iter()
+                        .map(|s| (s.axial_m, s.outer_load_n))
+                        .collect(),
+                },
+            ];
+            if dub_off {
+                series.push(Series {
+                    display: None,
+                    name: "dub-off starts",
+                    points: vec![
+                        (-flat_half, 0.0),
+                        (-flat_half, top),
+                        (flat_half, top),
+                        (flat_half, 0.0),
+                    ],
+                });
+            }
+            Chart {
+                title: format!("Roller {} slice loads along its length", i + 1),
+                title_us: None,
+                x: ChartAxis {
+                    label: "axial",
+                    display: Display::SmallLength,
+                    bounds: None,
+                },
+                y: ChartAxis {
+                    label: "slice load",
+                    display: Display::Force,
+                    bounds: None,
+                },
+                series,
+                per_element: false,
+            }
+        })
+        .collect();
+    let k = q.stiffness_n_m;
+    let min_film = a.min_film_m();
+    let min_lambda = a.films.iter().filter_map(|f| f.lambda).reduce(f64::min);
+    let summary = vec![
+        Summary {
+            label: "x",
+            value: q.displacement_m[0],
+            display: Display::SmallLength,
+            precision: 4,
+        },
+        Summary {
+            label: "y",
+            value: q.displacement_m[1],
+            display: Display::SmallLength,
+            precision: 4,
+        },
+        Summary {
+            label: "W_max",
+            value: a.max_roller_load_n(),
+            display: Display::Force,
+            precision: 1,
+        },
+        Summary {
+            label: "F_c",
+            value: a.derived.centrifugal_n,
+            display: Display::Force,
+            precision: 3,
+        },
+        Summary {
+            label: "h_min",
+            value: min_film.unwrap_or(0.0),
+            display: Display::Film,
+            precision: 3,
+        },
+    ];
+    let key = |name, label, value: Option<f64>, quantity, role| KeyOutput {
+        name,
+        label,
+        value,
+        quantity,
+        role,
+    };
+    let key_outputs = vec![
+        key(
+            "max_roller_load_n",
+            "W_max",
+            Some(a.max_roller_load_n()),
+            Quantity::Force,
+            KeyRole::Target,
+        ),
+        key(
+            "stiffness_xx_n_m",
+            "Kxx",
+            Some(k[0][0]),
+            Quantity::LinearStiffness,
+            KeyRole::Target,
+        ),
+        key(
+            "stiffness_yy_n_m",
+            "Kyy",
+            Some(k[1][1]),
+            Quantity::LinearStiffness,
+            KeyRole::Target,
+        ),
+        key(
+            "displacement_x_m",
+            "x",
+            Some(q.displacement_m[0]),
+            Quantity::Length,
+            KeyRole::Target,
+        ),
+        key(
+            "min_film_m",
+            "h_min",
+            min_film,
+            Quantity::Length,
+            KeyRole::Info,
+        ),
+        key(
+            "min_lambda",
+            "Λmin",
+            min_lambda,
+            Quantity::Dimensionless,
+            KeyRole::Info,
+        ),
+        key(
+            "max_pressure_pa",
+            "p_max",
+            Some(a.max_pressure_pa()),
+            Quantity::Pressure,
+            KeyRole::Guard,
+        ),
+    ];
+    View {
+        system: super::SYSTEM_ID,
+        tables: vec![Table {
+            id: "rollers",
+            columns: ROLLER_COLUMNS.to_vec(),
+            rows,
+        }],
+        charts: vec![load_chart],
+        element_charts,
+        element_chart_pane: 0,
+        summary,
+        key_outputs,
+        trace: None,
+        thermal: None,
+        stats: SolveStats {
+            iterations: q.iterations,
+            inner_iterations: 0,
+            names: ["ring Newton", "-"],
+            wall_time_s: a.wall_time_s,
+        },
+        warnings: a
+            .warnings
+            .iter()
+            .map(|w| Warning {
+                si: w.clone(),
+                us: w.clone(),
+            })
+            .collect(),
+        texts: vec![TextBlock {
+            title: "stiffness",
+            si: super::report::stiffness_lines(a, Units::Si),
+            us: super::report::stiffness_lines(a, Units::Us),
+        }],
+    }
+}

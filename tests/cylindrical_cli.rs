@@ -1,0 +1,242 @@
+//! The cylindrical roller system through the real binary (assert_cmd): `check` on the
+//! shipped decks and the templates, `keys`, bad values named with file:line and range,
+//! and `run` in JSON/text/CSV with `--set` and a US-customary deck (issue 25).
+
+mod common;
+
+use common::{deck, run};
+
+fn num(v: &serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or(f64::NAN)
+}
+
+fn run_json(deck_path: &str, extra: &[&str]) -> serde_json::Value {
+    let mut args = vec!["run", deck_path, "--format", "json"];
+    args.extend_from_slice(extra);
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"))
+}
+
+fn temp(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rollbench-crb-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap_or_else(|e| panic!("{e}"));
+    p
+}
+
+/// Both shipped decks and both templates check clean.
+#[test]
+fn decks_and_templates_check_clean() {
+    for d in ["crb_truck.toml", "crb_nasa210.toml"] {
+        let (code, _, err) = run(&["check", &deck(d)]);
+        assert_eq!(code, 0, "{d}: {err}");
+    }
+    for units in ["si", "us"] {
+        let (code, t, err) = run(&["template", "--type", "cylindrical-roller", "--units", units]);
+        assert_eq!(code, 0, "{err}");
+        assert!(t.contains("type = \"cylindrical-roller\""), "{t}");
+        assert!(t.contains("contact_stiffness = \"lamina\""), "{t}");
+        let p = temp(&format!("template_{units}.toml"), &t);
+        let (code, _, err) = run(&["check", &p.display().to_string()]);
+        assert_eq!(code, 0, "{units}: {err}\n{t}");
+    }
+}
+
+/// `keys` lists every key of the issue's deck contract, the words and the `[contact]`
+/// keys.
+#[test]
+fn keys_list_the_contract() {
+    let (code, out, err) = run(&["keys", "--type", "cylindrical-roller"]);
+    assert_eq!(code, 0, "{err}");
+    for k in [
+        "geometry.roller_count",
+        "geometry.roller_diameter",
+        "geometry.roller_length",
+        "geometry.inner_raceway_diameter",
+        "geometry.outer_raceway_diameter",
+        "geometry.dub_off_radius",
+        "geometry.dub_off_length",
+        "geometry.radial_interference",
+        "geometry.profile",
+        "geometry.ribs",
+        "operating.inner_speed",
+        "operating.cage_speed",
+        "operating.radial_load",
+        "operating.load_angle",
+        "operating.axial_load",
+        "operating.gravity",
+        "dynamics.system_mass",
+        "dynamics.contact_stiffness",
+        "dynamics.load_exponent",
+        "dynamics.film_in_deflection",
+        "dynamics.squeeze",
+        "dynamics.damping_ratio",
+        "dynamics.revolutions",
+        "dynamics.settle_revolutions",
+        "dynamics.tolerance",
+        "lubricant.viscosity",
+        "lubricant.pressure_viscosity",
+        "lubricant.temperature_viscosity",
+        "lubricant.density",
+        "lubricant.conductivity",
+        "lubricant.specific_heat",
+        "lubricant.limiting_shear",
+        "lubricant.limiting_shear_slope",
+        "lubricant.inlet_temperature",
+        "surfaces.composite_rms",
+        "surfaces.roughness_parameter",
+        "surfaces.asperity_slope",
+        "contact.sliding_speed",
+        "contact.positions",
+        "solver.slices",
+        "solver.force_tolerance",
+    ] {
+        assert!(out.contains(k), "{k} missing:\n{out}");
+    }
+    assert!(
+        out.contains("\"lamina\"") && out.contains("\"kinematic\""),
+        "{out}"
+    );
+}
+
+/// Bad values are refused naming the key, the value's place and the rule or range, in
+/// the deck's units; `--set` goes through the same checks.
+#[test]
+fn bad_values_are_named() {
+    let truck = deck("crb_truck.toml");
+    for (set, want) in [
+        ("geometry.roller_count=2", "3 ≤ value ≤ 500"),
+        ("geometry.ribs=inner", "later work"),
+        ("operating.axial_load=100", "no axial load"),
+        ("dynamics.contact_stiffness=slices", "\"lamina\""),
+        ("dynamics.squeeze=pan-hamrock", "\"normalised\""),
+        ("operating.gravity=maybe", "\"true\""),
+        ("contact.sliding_speed=-1", "0 ≤ value ≤ 1000 m/s"),
+        (
+            "geometry.outer_raceway_diameter=0.09",
+            "two roller diameters",
+        ),
+    ] {
+        let (code, _, err) = run(&["check", &truck, "--set", set]);
+        let key = set.split('=').next().unwrap_or("");
+        assert_ne!(code, 0, "{set} accepted");
+        assert!(err.contains(key) && err.contains(want), "{set}: {err}");
+        assert!(!err.contains("Some(") && !err.contains("Err("), "{err}");
+    }
+    let text = std::fs::read_to_string(&truck).unwrap_or_default();
+    let bad = text.replace("roller_length = 0.022", "roller_length = -0.022");
+    let p = temp("bad.toml", &bad);
+    let (code, _, err) = run(&["check", &p.display().to_string()]);
+    assert_ne!(code, 0);
+    let line = bad
+        .lines()
+        .position(|l| l.starts_with("roller_length"))
+        .map_or(0, |i| i + 1);
+    assert!(
+        err.contains(&format!("bad.toml:{line}:")) && err.contains("geometry.roller_length"),
+        "{err}"
+    );
+    // The words and booleans are accepted through --set.
+    for set in [
+        "dynamics.contact_stiffness=5e8",
+        "dynamics.contact_stiffness=lamina",
+        "operating.cage_speed=kinematic",
+        "operating.gravity=false",
+        "contact.positions=[0, 45]",
+    ] {
+        let (code, _, err) = run(&["check", &truck, "--set", set]);
+        assert_eq!(code, 0, "{set}: {err}");
+    }
+}
+
+/// The JSON report carries issue 25's contract fields: 12 rollers with their loads,
+/// slices, film and Λ, the ring displacement and the 2×2 stiffness; the loads balance
+/// the seed's 1 990.5 N (1e-6 relative: the solve's force tolerance is 1e-9).
+#[test]
+fn run_json_has_the_contract_fields() {
+    let v = run_json(&deck("crb_truck.toml"), &[]);
+    assert_eq!(v["type"], "cylindrical-roller");
+    let rollers = v["rollers"].as_array().cloned().unwrap_or_default();
+    assert_eq!(rollers.len(), 12);
+    let mut fx = 0.0;
+    for r in &rollers {
+        for k in [
+            "azimuth_deg",
+            "inner_load_n",
+            "outer_load_n",
+            "tilt_rad",
+            "rib_load_n",
+            "max_pressure_pa",
+        ] {
+            assert!(num(&r[k]).is_finite(), "{k}: {r}");
+        }
+        for k in ["film_m", "lambda"] {
+            assert!(r[k].is_null() || num(&r[k]) >= 0.0, "{k}");
+        }
+        assert_eq!(r["slices"].as_array().map(Vec::len), Some(21));
+        fx += num(&r["inner_load_n"]) * num(&r["azimuth_deg"]).to_radians().cos();
+    }
+    assert!((fx + 1990.5).abs() < 1e-6 * 1990.5, "{fx}");
+    assert_eq!(
+        v["rings"]["displacement_m"].as_array().map(Vec::len),
+        Some(2)
+    );
+    let k = &v["rings"]["stiffness_n_per_m"];
+    assert!(num(&k[0][0]) > 0.0 && num(&k[1][1]) > 0.0, "{k}");
+    assert!(v["warnings"].is_array());
+    // Gravity off: only the 1 500 N.
+    let v = run_json(
+        &deck("crb_truck.toml"),
+        &["--set", "operating.gravity=false"],
+    );
+    assert!(
+        (num(&v["load_n"][0]) + 1500.0).abs() < 1e-9,
+        "{}",
+        v["load_n"]
+    );
+}
+
+/// A US-customary deck (the SI template's values written in inches, lbf, …, by the US
+/// template) solves to the same bearing: the largest roller load and K_xx within 1e-6
+/// (conversion round-off and the solve's tolerance).
+#[test]
+fn us_deck_solves_like_si() {
+    let mut out = Vec::new();
+    for units in ["si", "us"] {
+        let (code, t, err) = run(&["template", "--type", "cylindrical-roller", "--units", units]);
+        assert_eq!(code, 0, "{err}");
+        let p = temp(&format!("run_{units}.toml"), &t);
+        out.push(run_json(&p.display().to_string(), &[]));
+    }
+    for k in ["max_roller_load_n"] {
+        let (a, b) = (num(&out[0][k]), num(&out[1][k]));
+        assert!((a / b - 1.0).abs() < 1e-6, "{k}: {a} vs {b}");
+    }
+    let (a, b) = (
+        num(&out[0]["rings"]["stiffness_n_per_m"][0][0]),
+        num(&out[1]["rings"]["stiffness_n_per_m"][0][0]),
+    );
+    assert!((a / b - 1.0).abs() < 1e-6, "{a} vs {b}");
+    // The text report of the US deck is in lbf and inches.
+    let (code, t, _) = run(&["template", "--type", "cylindrical-roller", "--units", "us"]);
+    assert_eq!(code, 0);
+    let p = temp("text_us.toml", &t);
+    let (code, text, err) = run(&["run", &p.display().to_string()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("lbf") && text.contains(" in "), "{text}");
+}
+
+/// The CSV report is the rollers table, one row per roller.
+#[test]
+fn run_csv_rollers_table() {
+    let (code, out, err) = run(&["run", &deck("crb_truck.toml"), "--format", "csv"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
+    assert!(
+        lines.first().is_some_and(|h| h.contains("inner_load_n")),
+        "{out}"
+    );
+    assert_eq!(lines.len(), 13, "{out}");
+}
