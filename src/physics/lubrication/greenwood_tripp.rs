@@ -87,7 +87,7 @@ pub fn f_2(lambda: f64) -> f64 {
 /// Tricomi start; converged to 1e-15), computed once.
 fn rule() -> &'static [(f64, f64); NODES] {
     static RULE: OnceLock<[(f64, f64); NODES]> = OnceLock::new();
-    RULE.get_or_init(|| gauss_legendre_unit::<NODES>())
+    RULE.get_or_init(gauss_legendre_unit::<NODES>)
 }
 
 /// The n-point Gauss–Legendre rule mapped to [0, 1]: (node, weight) pairs.

@@ -261,7 +261,7 @@ pub fn mixed_friction(c: &MixedContact) -> Result<MixedFriction, MixedFrictionEr
     let l = c.effective_length_m;
     let hertz = line_contact_reduced(c.load_n / l, c.reduced_radius_m, c.reduced_modulus_pa);
     let b = hertz.half_width_m;
-    if !(b > 0.0) {
+    if b.is_nan() || b <= 0.0 {
         // Unloaded: no strip, no friction.
         return Ok(MixedFriction {
             film_parameter: lambda,
