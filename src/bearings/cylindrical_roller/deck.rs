@@ -98,7 +98,7 @@ static FIELDS: [FieldSpec<CylindricalInput>; 54] = [
         set: |t, v| t.geometry.dub_off_length_m = v,
     },
     FieldSpec {
-        meta: meta("geometry.radial_interference", "geometry", "Radial interference ρ", Quantity::Length, REAL, (-0.001, false), (0.001, false), def(0.0), "radial interference of the rollers between the raceways; negative is a radial clearance (C = −ρ in eq. 3)"),
+        meta: meta("geometry.radial_interference", "geometry", "Radial interference ρ", Quantity::Length, REAL, (-0.001, false), (0.001, false), def(0.0), "interference per contact (seed 003 eq. 3: 2δ = 2ρ + x·cos θ + y·sin θ, so a roller's two contacts take 2ρ); negative is a clearance, C = −ρ; a diametral clearance P_d is ρ = −P_d/4"),
         get: |t| t.geometry.radial_interference_m,
         set: |t, v| t.geometry.radial_interference_m = v,
     },
