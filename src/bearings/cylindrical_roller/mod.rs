@@ -12,6 +12,7 @@
 // `!(x > 0.0)` is used on purpose: it rejects NaN along with the out-of-range values.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod dynamics;
 pub mod quasi_static;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`).
