@@ -1,7 +1,7 @@
 //! Shared numerics, independent of any bearing, in the problem / solver / result style:
 //! cooperative cancellation ([`cancel`]), Newton's method for small dense systems
-//! ([`newton`]), ODE integrators with dense output and events ([`ode`]), and monotone
-//! interpolation ([`pchip`]).
+//! ([`newton`]), ODE integrators with dense output and events ([`ode`]), monotone
+//! interpolation ([`pchip`]) and amplitude spectra ([`spectrum`]).
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
@@ -11,3 +11,4 @@ pub mod cancel;
 pub mod newton;
 pub mod ode;
 pub mod pchip;
+pub mod spectrum;

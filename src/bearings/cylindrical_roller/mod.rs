@@ -16,6 +16,7 @@
 
 pub mod analysis;
 pub mod deck;
+pub mod dynamics;
 pub mod geometry;
 pub mod input;
 pub mod quasi_static;

@@ -1,0 +1,63 @@
+//! Criterion benchmarks of the cylindrical roller bearing's 2-DOF dynamics (issue 25,
+//! Speed): 100 shaft revolutions of the truck bearing (seed 003, ρ = 5 µm, rtol 1e-8)
+//! with the film off (target ≤ 30 ms) and in the deflection (≤ 100 ms), ρ = 0 with the
+//! film off (contact loss events), and the Hann-windowed FFT of 2^16 points (≤ 0.2 ms).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rollbench::bearings::cylindrical_roller::dynamics::{
+    simulate, DynamicsModel, FilmLaw, Squeeze,
+};
+use rollbench::numerics::cancel::Cancel;
+use rollbench::numerics::spectrum::SpectrumPlan;
+
+fn film() -> FilmLaw {
+    FilmLaw {
+        viscosity_pa_s: 0.0499,
+        pressure_viscosity_pa_inv: 1.39e-8,
+        reduced_modulus_pa: 210e9 / (1.0 - 0.09),
+        reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
+        length_m: 0.022,
+        entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
+        squeeze: Squeeze::Normalised,
+    }
+}
+
+fn dynamics(c: &mut Criterion) {
+    let mut g = c.benchmark_group("crb_dynamics");
+    g.sample_size(10);
+    let cases = [
+        ("100_rev_rho5_film_off", DynamicsModel::truck(5e-6)),
+        (
+            "100_rev_rho5_film_on",
+            DynamicsModel {
+                film: Some(film()),
+                ..DynamicsModel::truck(5e-6)
+            },
+        ),
+        ("100_rev_rho0_film_off", DynamicsModel::truck(0.0)),
+    ];
+    for (name, model) in cases {
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                simulate(std::hint::black_box(&model), Cancel::NONE)
+                    .unwrap_or_else(|e| panic!("{e}"))
+            })
+        });
+    }
+    g.finish();
+}
+
+fn fft(c: &mut Criterion) {
+    let n = 1 << 16;
+    let x: Vec<f64> = (0..n).map(|k| (0.1 * k as f64).sin()).collect();
+    let mut plan = SpectrumPlan::new(n).unwrap_or_else(|e| panic!("{e}"));
+    c.bench_function("spectrum_hann_fft_65536", |b| {
+        b.iter(|| {
+            plan.amplitude(std::hint::black_box(&x), 1e-3)
+                .unwrap_or_else(|e| panic!("{e}"))
+        })
+    });
+}
+
+criterion_group!(benches, dynamics, fft);
+criterion_main!(benches);

@@ -1,0 +1,780 @@
+//! The cylindrical roller bearing's 2-DOF tribodynamics and spectra (seed 003 eqs. 1–5,
+//! Figs. 2–5; issue 25 Model items 2–3).
+//!
+//! State (x, y, ẋ, ẏ) of the shaft centre; roller i at θ_i = ω_c t + θ₁ + 2π(i−1)/m;
+//! W_i = k_n δ_i^n (eq. 2) with 2δ_i = 2(h_i − C) + x cos θ_i + y sin θ_i (eq. 3), W = 0
+//! for δ ≤ 0; the film h_i of eq. (4) (read as documented in [`film`]) with the squeeze
+//! velocity w_i = −½ d/dt(x cos θ_i + y sin θ_i), solved per roller by safeguarded
+//! Newton. Integrated by the shared DOPRI5 from x = y = 0 at rest (the seed's start),
+//! with a terminal event at every contact loss and regain (δ^(10/9) is not smooth there)
+//! after which the integration restarts, so no step straddles a kink.
+//!
+//! No damping in the seed: the oscillation after release never decays, and
+//! `settle_revolutions` is a count of shaft revolutions skipped before sampling, not a
+//! convergence test (the result's `note` says so).
+
+pub mod film;
+mod model;
+mod spectra;
+#[cfg(test)]
+mod tests;
+
+pub use film::{FilmLaw, Squeeze, LOAD_FLOOR_N};
+pub use spectra::{LabelledPeak, LabelledSpectrum};
+
+use crate::numerics::cancel::Cancel;
+use crate::numerics::ode::{solve, Event, Method, OdeError, OdeOptions, Output, Termination};
+use crate::numerics::spectrum::{amplitude_at, SpectrumError};
+use film::ContactLaw;
+use model::{static_equilibrium, ContactEvent, Rhs};
+use std::cell::Cell;
+use std::f64::consts::TAU;
+
+/// How long to integrate and where sampling starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Span {
+    /// Shaft revolutions at the shaft speed (the deck's `dynamics.revolutions` and
+    /// `dynamics.settle_revolutions`).
+    Revolutions {
+        /// Shaft speed, rad/s.
+        shaft_speed_rad_s: f64,
+        /// Revolutions integrated in all.
+        revolutions: f64,
+        /// Revolutions skipped before sampling (a count, not a convergence test).
+        settle_revolutions: f64,
+    },
+    /// A duration (validation runs with the cage frozen).
+    Duration {
+        /// Integrated time, s.
+        duration_s: f64,
+        /// Time skipped before sampling, s.
+        settle_s: f64,
+    },
+}
+
+/// The 2-DOF model's inputs, SI (the lead maps the deck onto it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsModel {
+    /// M, the supported mass, kg.
+    pub mass_kg: f64,
+    /// m, the number of rollers.
+    pub roller_count: usize,
+    /// k_n, N/m^n (eq. 2).
+    pub contact_stiffness: f64,
+    /// n (10/9).
+    pub load_exponent: f64,
+    /// C, the radial clearance, m; C = −ρ for an interference ρ (eq. 3).
+    pub clearance_m: f64,
+    /// ω_c, rad/s (0 freezes the cage).
+    pub cage_speed_rad_s: f64,
+    /// θ₁ at t = 0, rad.
+    pub first_azimuth_rad: f64,
+    /// (F_x, F_y), applied plus gravity, N (the seed: −(1 500 + 50·9.81) N along x).
+    pub force_n: [f64; 2],
+    /// The film in the deflection (eq. 4); `None`: dry, h = 0.
+    pub film: Option<FilmLaw>,
+    /// ζ of a viscous damper c = 2ζ√(K_xx M) on both axes (0: the seed has none).
+    pub damping_ratio: f64,
+    /// Duration and settling.
+    pub span: Span,
+    /// Relative tolerance of the integrator (absolute: rtol × the static offset scale).
+    pub rtol: f64,
+    /// Sampling rate, Hz; rounded so that each cage cycle holds a whole number of samples.
+    pub sample_rate_hz: f64,
+    /// (x, y, ẋ, ẏ) at t = 0, SI; the seed's start is zeros.
+    pub initial_state: [f64; 4],
+}
+
+impl DynamicsModel {
+    /// The seed's truck bearing (Tables A1/A2): m = 12, M = 50 kg, k_n = 2.0e9
+    /// N/m^(10/9) (the slice-law value, trap 3), n = 10/9, ρ = `interference_m`,
+    /// ω_c = 83.26 rad/s, shaft 209 rad/s, F = 1 500 N + 50·9.81 N along −x, film off,
+    /// 100 revolutions with 20 to settle, rtol 1e-8.
+    pub fn truck(interference_m: f64) -> Self {
+        DynamicsModel {
+            mass_kg: 50.0,
+            roller_count: 12,
+            contact_stiffness: 2.0e9,
+            load_exponent: 10.0 / 9.0,
+            clearance_m: -interference_m,
+            cage_speed_rad_s: 83.26,
+            first_azimuth_rad: 0.0,
+            force_n: [-(1500.0 + 50.0 * 9.81), 0.0],
+            film: None,
+            damping_ratio: 0.0,
+            span: Span::Revolutions {
+                shaft_speed_rad_s: 209.0,
+                revolutions: 100.0,
+                settle_revolutions: 20.0,
+            },
+            rtol: 1e-8,
+            sample_rate_hz: 4096.0,
+            initial_state: [0.0; 4],
+        }
+    }
+}
+
+/// Uniformly sampled series after settling, over whole cage cycles.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Series {
+    /// Sampling step, s.
+    pub dt_s: f64,
+    /// Times, s.
+    pub t_s: Vec<f64>,
+    /// x, m.
+    pub x_m: Vec<f64>,
+    /// y, m.
+    pub y_m: Vec<f64>,
+    /// ẋ, m/s.
+    pub vx_m_s: Vec<f64>,
+    /// ẏ, m/s.
+    pub vy_m_s: Vec<f64>,
+    /// W_i per roller (outer index: roller), N.
+    pub roller_load_n: Vec<Vec<f64>>,
+    /// h_i per roller, m.
+    pub film_m: Vec<Vec<f64>>,
+    /// w_i per roller, m/s.
+    pub squeeze_velocity_m_s: Vec<Vec<f64>>,
+}
+
+/// Roller 1 over the last whole cage cycle.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Cycle {
+    /// θ₁ mod 360°, deg.
+    pub cage_angle_deg: Vec<f64>,
+    /// W₁, N.
+    pub roller_load_n: Vec<f64>,
+    /// h₁, m.
+    pub film_m: Vec<f64>,
+    /// w₁, m/s.
+    pub squeeze_velocity_m_s: Vec<f64>,
+}
+
+/// One harmonic of roller 1's load, by projection over whole cage cycles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Harmonic {
+    /// k in k·f_c.
+    pub order: usize,
+    /// k·f_c, Hz.
+    pub frequency_hz: f64,
+    /// Amplitude, N.
+    pub amplitude_n: f64,
+}
+
+/// Work counters.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DynamicsStats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected step attempts.
+    pub rejected: usize,
+    /// Right-hand-side evaluations.
+    pub rhs_evaluations: usize,
+    /// Contact losses and regains located (each a restart).
+    pub events: usize,
+    /// Contact losses after settling.
+    pub contact_losses_after_settle: usize,
+    /// Film clamps at h = 0 (printed reading, or normalised at w/U < −0.22).
+    pub film_clamps: usize,
+}
+
+/// What [`simulate`] returns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsResult {
+    /// Static offset (x, y) with the cage frozen at t = 0, m.
+    pub static_offset_m: [f64; 2],
+    /// Stiffness ∂(ΣW)/∂(x, y) there, N/m.
+    pub stiffness_n_per_m: [[f64; 2]; 2],
+    /// √(λ/M)/2π for the eigenvalue of K whose eigenvector is closest to x, Hz.
+    pub linearised_frequency_hz: f64,
+    /// The x spectrum's dominant peak away from the cage harmonics, Hz.
+    pub base_natural_frequency_hz: Option<f64>,
+    /// f_c = ω_c/2π, Hz.
+    pub cage_frequency_hz: f64,
+    /// m·f_c, Hz.
+    pub roller_pass_frequency_hz: f64,
+    /// The smallest sampled roller load after settling, N.
+    pub min_roller_load_n: f64,
+    /// Whether any contact was lost after settling (event or a zero sample).
+    pub loss_of_contact: bool,
+    /// max |E(t) − E(0) − ∫∂V/∂t dt| / (|F·r_s| + V(r_s)) over the samples (film off
+    /// and no damping only).
+    pub energy_drift_rel: Option<f64>,
+    /// The sampled series.
+    pub series: Series,
+    /// Spectrum of x.
+    pub spectrum_x: LabelledSpectrum,
+    /// Spectrum of roller 1's load.
+    pub spectrum_roller_load: LabelledSpectrum,
+    /// Roller 1's load harmonics k·f_c, k = 1..=8, by projection (empty with the cage
+    /// frozen).
+    pub roller_load_harmonics: Vec<Harmonic>,
+    /// Roller 1 over the last cage cycle.
+    pub cycle: Cycle,
+    /// Work.
+    pub stats: DynamicsStats,
+    /// What the numbers mean.
+    pub note: String,
+}
+
+/// Why a simulation was refused or failed. Messages name the deck key.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DynamicsError {
+    /// An input is out of range.
+    #[error("{key} = {value} is out of range: {allowed}")]
+    Input {
+        /// Deck key.
+        key: &'static str,
+        /// Its value.
+        value: f64,
+        /// The allowed range.
+        allowed: &'static str,
+    },
+    /// The work bound was reached.
+    #[error(
+        "the dynamics took more than {steps} integration steps by t = {t_s:.4} s; lower \
+         dynamics.revolutions or loosen dynamics.tolerance"
+    )]
+    TooMuchWork {
+        /// Steps attempted.
+        steps: usize,
+        /// Time reached, s.
+        t_s: f64,
+    },
+    /// No static equilibrium with the cage frozen.
+    #[error(
+        "no static equilibrium: the rollers leave {residual_n:.3e} N of the {load_n:.1} N \
+         load unbalanced (check dynamics.contact_stiffness and the load)"
+    )]
+    NoEquilibrium {
+        /// Residual force, N.
+        residual_n: f64,
+        /// Load, N.
+        load_n: f64,
+    },
+    /// The integrator failed.
+    #[error("the dynamics integration failed at t = {t_s:.6} s: {reason}")]
+    Integration {
+        /// Time reached, s.
+        t_s: f64,
+        /// Why.
+        reason: String,
+    },
+    /// Cancelled by a newer request.
+    #[error("cancelled")]
+    Cancelled,
+    /// The spectrum could not be formed.
+    #[error("spectrum: {0}")]
+    Spectrum(#[from] SpectrumError),
+}
+
+/// Step attempts allowed in one simulation (about 50× what 100 revolutions at
+/// rtol 1e-10 with ρ = 0 take): past it the run is refused, naming the key.
+const MAX_STEPS: usize = 5_000_000;
+/// Samples kept at most (memory: 40 floats each).
+const MAX_SAMPLES: usize = 4_000_000;
+/// Progress reports (and restarts) per simulation.
+const CHUNKS: usize = 50;
+
+fn input(
+    key: &'static str,
+    value: f64,
+    ok: bool,
+    allowed: &'static str,
+) -> Result<(), DynamicsError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(DynamicsError::Input {
+            key,
+            value,
+            allowed,
+        })
+    }
+}
+
+/// (duration, settle) in seconds.
+fn span_seconds(model: &DynamicsModel) -> Result<(f64, f64), DynamicsError> {
+    match model.span {
+        Span::Revolutions {
+            shaft_speed_rad_s,
+            revolutions,
+            settle_revolutions,
+        } => {
+            input(
+                "operating.inner_speed",
+                shaft_speed_rad_s,
+                shaft_speed_rad_s.is_finite() && shaft_speed_rad_s > 0.0,
+                "a finite speed > 0",
+            )?;
+            input(
+                "dynamics.revolutions",
+                revolutions,
+                revolutions.is_finite() && revolutions > 0.0 && revolutions <= 10_000.0,
+                "0 < revolutions ≤ 10000",
+            )?;
+            input(
+                "dynamics.settle_revolutions",
+                settle_revolutions,
+                settle_revolutions.is_finite()
+                    && settle_revolutions >= 0.0
+                    && settle_revolutions < revolutions,
+                "0 ≤ settle_revolutions < revolutions",
+            )?;
+            let rev = TAU / shaft_speed_rad_s;
+            Ok((revolutions * rev, settle_revolutions * rev))
+        }
+        Span::Duration {
+            duration_s,
+            settle_s,
+        } => {
+            input(
+                "dynamics.revolutions",
+                duration_s,
+                duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1000.0,
+                "a duration 0 < T ≤ 1000 s",
+            )?;
+            input(
+                "dynamics.settle_revolutions",
+                settle_s,
+                settle_s.is_finite() && settle_s >= 0.0 && settle_s < duration_s,
+                "0 ≤ settle < duration",
+            )?;
+            Ok((duration_s, settle_s))
+        }
+    }
+}
+
+fn validate(model: &DynamicsModel) -> Result<(), DynamicsError> {
+    input(
+        "dynamics.system_mass",
+        model.mass_kg,
+        model.mass_kg.is_finite() && model.mass_kg > 0.0,
+        "a finite mass > 0 kg",
+    )?;
+    input(
+        "geometry.roller_count",
+        model.roller_count as f64,
+        (1..=1000).contains(&model.roller_count),
+        "1 to 1000 rollers",
+    )?;
+    input(
+        "dynamics.contact_stiffness",
+        model.contact_stiffness,
+        model.contact_stiffness.is_finite() && model.contact_stiffness > 0.0,
+        "a finite k_n > 0 N/m^n",
+    )?;
+    input(
+        "dynamics.load_exponent",
+        model.load_exponent,
+        (1.0..=3.0).contains(&model.load_exponent),
+        "1 ≤ n ≤ 3",
+    )?;
+    input(
+        "geometry.radial_interference",
+        -model.clearance_m,
+        model.clearance_m.is_finite() && model.clearance_m.abs() < 1e-3,
+        "|ρ| < 1 mm",
+    )?;
+    input(
+        "operating.cage_speed",
+        model.cage_speed_rad_s,
+        model.cage_speed_rad_s.is_finite() && model.cage_speed_rad_s >= 0.0,
+        "a finite speed ≥ 0",
+    )?;
+    input(
+        "operating.load_angle",
+        model.first_azimuth_rad,
+        model.first_azimuth_rad.is_finite(),
+        "a finite angle",
+    )?;
+    for f in model.force_n {
+        input(
+            "operating.radial_load",
+            f,
+            f.is_finite() && f.abs() < 1e9,
+            "a finite load below 1e9 N",
+        )?;
+    }
+    input(
+        "dynamics.damping_ratio",
+        model.damping_ratio,
+        (0.0..=10.0).contains(&model.damping_ratio),
+        "0 ≤ ζ ≤ 10",
+    )?;
+    input(
+        "dynamics.tolerance",
+        model.rtol,
+        (1e-13..=1e-2).contains(&model.rtol),
+        "1e-13 ≤ tolerance ≤ 1e-2",
+    )?;
+    input(
+        "dynamics.sample_rate",
+        model.sample_rate_hz,
+        model.sample_rate_hz.is_finite() && model.sample_rate_hz >= 16.0,
+        "a rate ≥ 16 Hz",
+    )?;
+    for v in model.initial_state {
+        input("dynamics.initial_state", v, v.is_finite(), "finite numbers")?;
+    }
+    if let Some(f) = &model.film {
+        for (key, v) in [
+            ("lubricant.viscosity", f.viscosity_pa_s),
+            ("lubricant.pressure_viscosity", f.pressure_viscosity_pa_inv),
+            ("materials.modulus", f.reduced_modulus_pa),
+            ("geometry.roller_diameter", f.reduced_radius_m),
+            ("geometry.roller_length", f.length_m),
+            ("operating.inner_speed", f.entrainment_speed_m_s),
+        ] {
+            input(key, v, v.is_finite() && v > 0.0, "a finite value > 0")?;
+        }
+    }
+    Ok(())
+}
+
+/// Run the 2-DOF dynamics (see the module docs). Cancellation is polled before every
+/// step; progress goes to `cancel.report` as the fraction of simulated time.
+pub fn simulate(
+    model: &DynamicsModel,
+    cancel: Cancel<'_>,
+) -> Result<DynamicsResult, DynamicsError> {
+    validate(model)?;
+    let (duration, settle) = span_seconds(model)?;
+    let film = match &model.film {
+        Some(f) => Some(f.coefficients().ok_or(DynamicsError::Input {
+            key: "lubricant.viscosity",
+            value: f.viscosity_pa_s,
+            allowed: "inputs that give a positive Pan–Hamrock film",
+        })?),
+        None => None,
+    };
+    let m = model.roller_count;
+    let mut rhs = Rhs {
+        law: ContactLaw {
+            stiffness: model.contact_stiffness,
+            exponent: model.load_exponent,
+            clearance_m: model.clearance_m,
+            film,
+        },
+        mass_kg: model.mass_kg,
+        cage_speed_rad_s: model.cage_speed_rad_s,
+        phases: (0..m)
+            .map(|i| model.first_azimuth_rad + TAU * i as f64 / m as f64)
+            .collect(),
+        phase_sin_cos: (0..m)
+            .map(|i| (model.first_azimuth_rad + TAU * i as f64 / m as f64).sin_cos())
+            .collect(),
+        force_n: model.force_n,
+        damping_n_s_m: 0.0,
+        energy_integral: film.is_none(),
+        omega_ref: 1.0,
+        energy_ref: 1.0,
+        clamps: Cell::new(0),
+    };
+
+    // Statics with the cage frozen at t = 0, and the linearised frequency.
+    let (offset, k) = static_equilibrium(&rhs)?;
+    let (lambda_x, _) = x_eigen(&k);
+    let linearised_frequency_hz = (lambda_x.max(0.0) / model.mass_kg).sqrt() / TAU;
+    rhs.damping_n_s_m = 2.0 * model.damping_ratio * (lambda_x.max(0.0) * model.mass_kg).sqrt();
+    let omega = TAU * linearised_frequency_hz;
+    rhs.omega_ref = if omega.is_finite() && omega > 0.0 {
+        omega
+    } else {
+        1.0
+    };
+    let energy_scale = (model.force_n[0] * offset[0] + model.force_n[1] * offset[1]).abs()
+        + rhs.potential(0.0, offset[0], offset[1]);
+    rhs.energy_ref = if energy_scale > 0.0 {
+        energy_scale
+    } else {
+        1.0
+    };
+
+    // Sampling grid: whole cage cycles after settling, a whole number of samples each.
+    let fc = model.cage_speed_rad_s / TAU;
+    let (dt, count, per_cycle) = if fc > 0.0 {
+        let per_cycle = (model.sample_rate_hz / fc).round().max(8.0);
+        let cycles = ((duration - settle) * fc + 1e-9).floor();
+        input(
+            "dynamics.revolutions",
+            duration / (TAU / model.cage_speed_rad_s.max(1e-300)),
+            cycles >= 1.0,
+            "enough revolutions after settling for one whole cage cycle",
+        )?;
+        (
+            1.0 / (fc * per_cycle),
+            (cycles * per_cycle) as usize,
+            per_cycle as usize,
+        )
+    } else {
+        let dt = 1.0 / model.sample_rate_hz;
+        (dt, ((duration - settle) / dt).floor() as usize, 0)
+    };
+    input(
+        "dynamics.revolutions",
+        count as f64,
+        (16..=MAX_SAMPLES).contains(&count),
+        "enough revolutions after settling for 16 samples and at most 4e6",
+    )?;
+    // The last sample may fall a rounding past `duration`: integrate to it.
+    let t_end = (settle + (count - 1) as f64 * dt).max(duration);
+    let times: Vec<f64> = (0..count).map(|j| settle + j as f64 * dt).collect();
+
+    let r_scale = offset[0].hypot(offset[1]).max(1e-9);
+    let opts_base = OdeOptions {
+        rtol: model.rtol,
+        atol: model.rtol * r_scale,
+        method: Method::DormandPrince45,
+        ..OdeOptions::default()
+    };
+
+    let s0 = model.initial_state;
+    let mut y: Vec<f64> = vec![s0[0], s0[1], s0[2] / rhs.omega_ref, s0[3] / rhs.omega_ref];
+    if rhs.energy_integral {
+        y.push(0.0);
+    }
+    let e0 = rhs.energy_integral.then(|| rhs.energy(0.0, &y));
+    let mut t = 0.0;
+    let mut stats = DynamicsStats::default();
+    let mut samples: Vec<(f64, Vec<f64>)> = Vec::with_capacity(count);
+    // Rollers whose event fired at `forced_t`, with the side each crossed to (several
+    // cross at one instant when the load is symmetric about a roller pair).
+    let mut forced: Vec<(usize, f64)> = Vec::new();
+    let mut forced_t = f64::NAN;
+    let mut h0: Option<f64> = None;
+    for chunk in 1..=CHUNKS {
+        let chunk_end = if chunk == CHUNKS {
+            t_end
+        } else {
+            t_end * chunk as f64 / CHUNKS as f64
+        };
+        while t < chunk_end {
+            let mut evs: Vec<ContactEvent<'_>> = (0..m)
+                .map(|i| ContactEvent {
+                    rhs: &rhs,
+                    roller: i,
+                    start: forced.iter().find(|(j, _)| *j == i).map(|&(_, s)| (t, s)),
+                })
+                .collect();
+            let mut ev_refs: Vec<&mut dyn Event> =
+                evs.iter_mut().map(|e| e as &mut dyn Event).collect();
+            // Every sample before t is recorded (a segment records all those up to
+            // where it stops), so the next ones start at samples.len().
+            let first = samples.len();
+            let mut last = first;
+            while last < times.len() && times[last] <= chunk_end {
+                last += 1;
+            }
+            let seg_times = times[first..last].to_vec();
+            let opts = OdeOptions {
+                h0,
+                max_steps: MAX_STEPS
+                    .saturating_sub(stats.steps + stats.rejected)
+                    .max(1),
+                ..opts_base.clone()
+            };
+            let sol = solve(
+                &rhs,
+                t,
+                &y,
+                chunk_end,
+                &opts,
+                &mut ev_refs,
+                Output::Times(seg_times),
+                cancel,
+            )
+            .map_err(|e| match e {
+                OdeError::Cancelled { .. } => DynamicsError::Cancelled,
+                OdeError::MaxSteps { t, .. } => DynamicsError::TooMuchWork {
+                    steps: MAX_STEPS,
+                    t_s: t,
+                },
+                other => DynamicsError::Integration {
+                    t_s: t,
+                    reason: other.to_string(),
+                },
+            })?;
+            stats.steps += sol.stats.steps;
+            stats.rejected += sol.stats.rejected;
+            stats.rhs_evaluations += sol.stats.rhs_evaluations;
+            samples.extend(sol.t.into_iter().zip(sol.y));
+            let h_mean = (sol.t_final - t) / sol.stats.steps.max(1) as f64;
+            if h_mean > 0.0 {
+                h0 = Some(h_mean);
+            }
+            match sol.termination {
+                Termination::Event { index, t: te } => {
+                    stats.events += 1;
+                    // The side the gap crossed to: the other one than at the segment's
+                    // start (as forced there, or as evaluated).
+                    let was = forced
+                        .iter()
+                        .find(|(j, _)| *j == index)
+                        .map_or_else(|| rhs.roller(index, t, &y).gap_m, |&(_, s)| s);
+                    let sign = if was > 0.0 { -1.0 } else { 1.0 };
+                    if sign < 0.0 && te >= settle {
+                        stats.contact_losses_after_settle += 1;
+                    }
+                    // Simultaneous crossings (within Brent's location error) keep the
+                    // earlier ones forced too.
+                    if !((te - forced_t).abs() <= 1e-9 * te.abs().max(1.0)) {
+                        forced.clear();
+                    }
+                    forced.retain(|(j, _)| *j != index);
+                    forced.push((index, sign));
+                    forced_t = te;
+                    t = te;
+                    y = sol.y_final;
+                }
+                Termination::ReachedEnd => {
+                    forced.clear();
+                    t = chunk_end;
+                    y = sol.y_final;
+                }
+            }
+        }
+        cancel.report(t / t_end);
+    }
+    stats.film_clamps = rhs.clamps.get();
+    samples.truncate(count);
+
+    assemble(
+        model,
+        &rhs,
+        Assembly {
+            offset,
+            k,
+            linearised_frequency_hz,
+            fc,
+            dt,
+            per_cycle,
+            samples,
+            e0,
+            stats,
+        },
+    )
+}
+
+/// The eigenvalue of the symmetric 2×2 `k` whose eigenvector is closest to x, and the
+/// other.
+fn x_eigen(k: &[[f64; 2]; 2]) -> (f64, f64) {
+    let (a, b, d) = (k[0][0], k[0][1], k[1][1]);
+    let mean = 0.5 * (a + d);
+    let rad = (0.25 * (a - d) * (a - d) + b * b).sqrt();
+    let (hi, lo) = (mean + rad, mean - rad);
+    // The x-closer eigenvector belongs to the eigenvalue on a's side of the mean.
+    if a >= d {
+        (hi, lo)
+    } else {
+        (lo, hi)
+    }
+}
+
+struct Assembly {
+    offset: [f64; 2],
+    k: [[f64; 2]; 2],
+    linearised_frequency_hz: f64,
+    fc: f64,
+    dt: f64,
+    per_cycle: usize,
+    samples: Vec<(f64, Vec<f64>)>,
+    e0: Option<f64>,
+    stats: DynamicsStats,
+}
+
+fn assemble(
+    model: &DynamicsModel,
+    rhs: &Rhs,
+    a: Assembly,
+) -> Result<DynamicsResult, DynamicsError> {
+    let m = model.roller_count;
+    let n = a.samples.len();
+    let mut series = Series {
+        dt_s: a.dt,
+        t_s: Vec::with_capacity(n),
+        x_m: Vec::with_capacity(n),
+        y_m: Vec::with_capacity(n),
+        vx_m_s: Vec::with_capacity(n),
+        vy_m_s: Vec::with_capacity(n),
+        roller_load_n: vec![Vec::with_capacity(n); m],
+        film_m: vec![Vec::with_capacity(n); m],
+        squeeze_velocity_m_s: vec![Vec::with_capacity(n); m],
+    };
+    let mut min_load = f64::INFINITY;
+    let mut drift: f64 = 0.0;
+    let energy_scale = {
+        let (x, y) = (a.offset[0], a.offset[1]);
+        (model.force_n[0] * x + model.force_n[1] * y).abs() + rhs.potential(0.0, x, y)
+    };
+    for (t, y) in &a.samples {
+        series.t_s.push(*t);
+        series.x_m.push(y[0]);
+        series.y_m.push(y[1]);
+        series.vx_m_s.push(y[2] * rhs.omega_ref);
+        series.vy_m_s.push(y[3] * rhs.omega_ref);
+        for i in 0..m {
+            let c = rhs.roller(i, *t, y);
+            min_load = min_load.min(c.load_n);
+            series.roller_load_n[i].push(c.load_n);
+            series.film_m[i].push(c.film_m);
+            series.squeeze_velocity_m_s[i].push(if c.load_n > 0.0 { c.squeeze_m_s } else { 0.0 });
+        }
+        if let (Some(e0), Some(q)) = (a.e0, y.get(4)) {
+            drift = drift.max((rhs.energy(*t, y) - e0 - q * rhs.energy_ref).abs());
+        }
+    }
+    let energy_drift_rel = (a.e0.is_some() && model.damping_ratio == 0.0 && energy_scale > 0.0)
+        .then_some(drift / energy_scale);
+
+    let spectra = spectra::spectra(&series, a.fc, m)?;
+    let mut harmonics = Vec::new();
+    if a.fc > 0.0 {
+        if let Some(load) = series.roller_load_n.first() {
+            for order in 1..=8 {
+                let f = order as f64 * a.fc;
+                harmonics.push(Harmonic {
+                    order,
+                    frequency_hz: f,
+                    amplitude_n: amplitude_at(load, a.dt, f)?,
+                });
+            }
+        }
+    }
+    let cycle = if a.per_cycle > 0 && n >= a.per_cycle {
+        let from = n - a.per_cycle;
+        Cycle {
+            cage_angle_deg: series.t_s[from..]
+                .iter()
+                .map(|&t| rhs.angle(0, t).to_degrees().rem_euclid(360.0))
+                .collect(),
+            roller_load_n: series.roller_load_n[0][from..].to_vec(),
+            film_m: series.film_m[0][from..].to_vec(),
+            squeeze_velocity_m_s: series.squeeze_velocity_m_s[0][from..].to_vec(),
+        }
+    } else {
+        Cycle::default()
+    };
+    let loss_of_contact = a.stats.contact_losses_after_settle > 0 || min_load <= 0.0;
+    Ok(DynamicsResult {
+        static_offset_m: a.offset,
+        stiffness_n_per_m: a.k,
+        linearised_frequency_hz: a.linearised_frequency_hz,
+        base_natural_frequency_hz: spectra.base_natural_frequency_hz,
+        cage_frequency_hz: a.fc,
+        roller_pass_frequency_hz: m as f64 * a.fc,
+        min_roller_load_n: if min_load.is_finite() { min_load } else { 0.0 },
+        loss_of_contact,
+        energy_drift_rel,
+        series,
+        spectrum_x: spectra.x,
+        spectrum_roller_load: spectra.roller_load,
+        roller_load_harmonics: harmonics,
+        cycle,
+        stats: a.stats,
+        note: "settle_revolutions is a count of shaft revolutions skipped before sampling, \
+               not a convergence test: the seed's model has no damping, so the oscillation \
+               after release never decays"
+            .to_string(),
+    })
+}

@@ -1,0 +1,229 @@
+//! The 2-DOF equations of motion (seed 003 eqs. 1–3), their static equilibrium with the
+//! cage frozen, the analytic stiffness there, and the energy of the film-off model.
+
+use super::film::{Contact, ContactLaw};
+use super::DynamicsError;
+use crate::numerics::ode::{Event, OdeSystem};
+use std::cell::Cell;
+
+/// The model reduced for the hot loop.
+#[derive(Debug)]
+pub(crate) struct Rhs {
+    pub law: ContactLaw,
+    pub mass_kg: f64,
+    pub cage_speed_rad_s: f64,
+    /// θ_i at t = 0: first_azimuth + 2π(i−1)/m.
+    pub phases: Vec<f64>,
+    /// (sin, cos) of `phases`: θ_i(t)'s sine and cosine by one rotation of ω_c t's
+    /// instead of one `sin_cos` per roller per evaluation.
+    pub phase_sin_cos: Vec<(f64, f64)>,
+    pub force_n: [f64; 2],
+    /// Viscous damping coefficient c = 2ζ√(K_xx M), N·s/m (0 in the seed).
+    pub damping_n_s_m: f64,
+    /// Whether the state carries a 5th component q' = ∂V/∂t (film off: the energy check).
+    pub energy_integral: bool,
+    /// The state holds (x, y, ẋ/ω_ref, ẏ/ω_ref, q/E_ref): velocities and the energy
+    /// integral scaled so that the integrator's one absolute tolerance (rtol × the
+    /// static offset) means the same relative accuracy for every component; unscaled,
+    /// a velocity near 0 would be held to 1e-14 m/s and force ~5× the steps.
+    pub omega_ref: f64,
+    /// E_ref, J (|F·r_s| + V(r_s)).
+    pub energy_ref: f64,
+    /// Film clamps at h = 0 seen by the right-hand side.
+    pub clamps: Cell<usize>,
+}
+
+impl Rhs {
+    /// θ_i(t) = ω_c t + θ_i(0).
+    pub fn angle(&self, i: usize, t: f64) -> f64 {
+        self.cage_speed_rad_s * t + self.phases.get(i).copied().unwrap_or(0.0)
+    }
+
+    /// Roller `i`'s contact at time `t` in state `y` = (x, y, ẋ, ẏ, …).
+    pub fn roller(&self, i: usize, t: f64, y: &[f64]) -> Contact {
+        let (s, c) = self.angle(i, t).sin_cos();
+        let (x, yy, vx, vy) = (y[0], y[1], y[2] * self.omega_ref, y[3] * self.omega_ref);
+        let p = x * c + yy * s;
+        // d/dt(x cos θ + y sin θ) includes θ̇ = ω_c (the rollers orbit the loaded shaft).
+        let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (yy * c - x * s);
+        self.law.contact(p, p_dot)
+    }
+
+    /// The contact force Σ W_i (cos θ_i, sin θ_i) at a frozen time `t` and position
+    /// (x, y) with no motion, and its Jacobian ∂/∂(x, y) (for the static solve).
+    pub fn static_reaction(&self, t: f64, x: f64, y: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+        let mut f = [0.0; 2];
+        let mut k = [[0.0; 2]; 2];
+        for i in 0..self.phases.len() {
+            let (s, c) = self.angle(i, t).sin_cos();
+            let ct = self.law.contact(x * c + y * s, 0.0);
+            f[0] += ct.load_n * c;
+            f[1] += ct.load_n * s;
+            k[0][0] += ct.stiffness_n_m * c * c;
+            k[0][1] += ct.stiffness_n_m * c * s;
+            k[1][1] += ct.stiffness_n_m * s * s;
+        }
+        k[1][0] = k[0][1];
+        (f, k)
+    }
+
+    /// V = Σ 2k_n δ₊^(n+1)/(n+1), the contacts' potential (film off), J.
+    pub fn potential(&self, t: f64, x: f64, y: f64) -> f64 {
+        let (k, n) = (self.law.stiffness, self.law.exponent);
+        (0..self.phases.len())
+            .map(|i| {
+                let (s, c) = self.angle(i, t).sin_cos();
+                let d = 0.5 * (x * c + y * s) - self.law.clearance_m;
+                if d > 0.0 {
+                    2.0 * k * d.powf(n + 1.0) / (n + 1.0)
+                } else {
+                    0.0
+                }
+            })
+            .sum()
+    }
+
+    /// E = ½M|v|² + V − F·r (film off), J (issue 25, Validation 3).
+    pub fn energy(&self, t: f64, y: &[f64]) -> f64 {
+        let (vx, vy) = (y[2] * self.omega_ref, y[3] * self.omega_ref);
+        0.5 * self.mass_kg * (vx * vx + vy * vy) + self.potential(t, y[0], y[1])
+            - self.force_n[0] * y[0]
+            - self.force_n[1] * y[1]
+    }
+}
+
+impl OdeSystem for Rhs {
+    fn dim(&self) -> usize {
+        if self.energy_integral {
+            5
+        } else {
+            4
+        }
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        let (mut fx, mut fy, mut dv_dt) = (0.0, 0.0, 0.0);
+        let mut clamps = 0;
+        let w = self.omega_ref;
+        let (vx, vy) = (y[2] * w, y[3] * w);
+        let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
+        for &(sp, cp) in &self.phase_sin_cos {
+            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+            let p = y[0] * c + y[1] * s;
+            let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (y[1] * c - y[0] * s);
+            let ct = self.law.contact(p, p_dot);
+            fx += ct.load_n * c;
+            fy += ct.load_n * s;
+            if ct.clamped {
+                clamps += 1;
+            }
+            // ∂V/∂t at fixed (x, y): Σ 2k δ^n ∂δ/∂t with ∂δ/∂t = ½ ω_c (y cos θ − x sin θ)
+            // and 2k δ^n = 2W_i: Σ W_i ω_c (y cos θ − x sin θ).
+            dv_dt += ct.load_n * self.cage_speed_rad_s * (y[1] * c - y[0] * s);
+        }
+        if clamps > 0 {
+            self.clamps.set(self.clamps.get() + clamps);
+        }
+        // Eq. (1): M ẍ = −Σ W_i cos θ_i + F_x (F includes gravity), likewise y.
+        dydt[0] = vx;
+        dydt[1] = vy;
+        dydt[2] = (self.force_n[0] - fx - self.damping_n_s_m * vx) / (self.mass_kg * w);
+        dydt[3] = (self.force_n[1] - fy - self.damping_n_s_m * vy) / (self.mass_kg * w);
+        if self.energy_integral {
+            dydt[4] = dv_dt / self.energy_ref;
+        }
+    }
+}
+
+/// Roller `roller`'s contact loss/regain: the gap crosses 0. At a restart the event
+/// that just fired reads the side it crossed to, so that a root located a hair early
+/// (Brent's 1e-13) is not found again at the restart.
+pub(crate) struct ContactEvent<'a> {
+    pub rhs: &'a Rhs,
+    pub roller: usize,
+    pub start: Option<(f64, f64)>,
+}
+
+impl Event for ContactEvent<'_> {
+    fn value(&self, t: f64, y: &[f64]) -> f64 {
+        if let Some((t0, sign)) = self.start {
+            if t == t0 {
+                return sign * f64::MIN_POSITIVE;
+            }
+        }
+        self.rhs.roller(self.roller, t, y).gap_m
+    }
+    fn terminal(&self) -> bool {
+        true
+    }
+}
+
+/// Static equilibrium with the cage frozen at t = 0: Σ W_i (cos θ_i, sin θ_i) = F, by
+/// damped Newton on the analytic Jacobian from a Stribeck-sized first guess. Returns
+/// the offset and the stiffness matrix K = ∂(ΣW)/∂r there.
+pub(crate) fn static_equilibrium(rhs: &Rhs) -> Result<([f64; 2], [[f64; 2]; 2]), DynamicsError> {
+    let f = rhs.force_n;
+    let fmag = f[0].hypot(f[1]);
+    let m = rhs.phases.len() as f64;
+    let (k, n) = (rhs.law.stiffness, rhs.law.exponent);
+    // Stribeck: W_max ≈ 4.37 F/m; δ_max = (W_max/k)^(1/n); r ≈ 2(δ_max + C).
+    let d_max = (4.37 * fmag / (m * k)).powf(1.0 / n);
+    let r0 = 2.0 * (d_max + rhs.law.clearance_m).max(0.5 * d_max);
+    let (ux, uy) = if fmag > 0.0 {
+        (f[0] / fmag, f[1] / fmag)
+    } else {
+        (1.0, 0.0)
+    };
+    let mut r = [ux * r0, uy * r0];
+    if fmag == 0.0 {
+        r = [0.0, 0.0];
+    }
+    let residual = |r: &[f64; 2]| {
+        let (w, _) = rhs.static_reaction(0.0, r[0], r[1]);
+        [w[0] - f[0], w[1] - f[1]]
+    };
+    let scale = fmag.max(1e-9 * k.powf(1.0 / n));
+    let mut res = residual(&r);
+    for _ in 0..200 {
+        let norm = res[0].hypot(res[1]);
+        if norm <= 1e-12 * scale {
+            break;
+        }
+        let (_, kk) = rhs.static_reaction(0.0, r[0], r[1]);
+        let det = kk[0][0] * kk[1][1] - kk[0][1] * kk[1][0];
+        if !(det.abs() > 0.0 && det.is_finite()) {
+            // No contact yet (the clearance is open): step towards the load.
+            r = [r[0] + ux * d_max, r[1] + uy * d_max];
+            res = residual(&r);
+            continue;
+        }
+        let dx = (kk[1][1] * res[0] - kk[0][1] * res[1]) / det;
+        let dy = (kk[0][0] * res[1] - kk[1][0] * res[0]) / det;
+        // Backtracking: halve until the residual falls (at most 30 halvings).
+        let mut lambda = 1.0;
+        let mut accepted = false;
+        for _ in 0..30 {
+            let trial = [r[0] - lambda * dx, r[1] - lambda * dy];
+            let rt = residual(&trial);
+            if rt[0].hypot(rt[1]) < norm {
+                r = trial;
+                res = rt;
+                accepted = true;
+                break;
+            }
+            lambda *= 0.5;
+        }
+        if !accepted {
+            break;
+        }
+    }
+    let norm = res[0].hypot(res[1]);
+    if !(norm <= 1e-9 * scale) {
+        return Err(DynamicsError::NoEquilibrium {
+            residual_n: norm,
+            load_n: fmag,
+        });
+    }
+    let (_, kk) = rhs.static_reaction(0.0, r[0], r[1]);
+    Ok((r, kk))
+}

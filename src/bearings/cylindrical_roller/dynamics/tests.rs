@@ -1,0 +1,268 @@
+//! Validation of the 2-DOF dynamics (issue 25, Validation 2–4) and its guards.
+
+use super::*;
+use std::sync::atomic::AtomicBool;
+
+fn frozen(interference_m: f64, duration_s: f64) -> DynamicsModel {
+    DynamicsModel {
+        cage_speed_rad_s: 0.0,
+        span: Span::Duration {
+            duration_s,
+            settle_s: 0.0,
+        },
+        ..DynamicsModel::truck(interference_m)
+    }
+}
+
+fn truck_film(squeeze: Squeeze) -> FilmLaw {
+    FilmLaw {
+        viscosity_pa_s: 0.0499,
+        pressure_viscosity_pa_inv: 1.39e-8,
+        reduced_modulus_pa: 210e9 / (1.0 - 0.09),
+        reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
+        length_m: 0.022,
+        entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
+        squeeze,
+    }
+}
+
+#[test]
+fn linearisation_small_release_rings_at_the_linearised_frequency() {
+    // Validation 2: cage frozen, released from the static offset displaced by 1e-3 of
+    // it along x. 2 s of record: bins of 0.5 Hz; the peak must sit within one bin and
+    // 0.5 % of √(K/M)/2π (the release's amplitude shifts the frequency by O(1e-6)).
+    let mut model = frozen(5e-6, 2.0);
+    let probe = simulate(
+        &DynamicsModel {
+            span: Span::Duration {
+                duration_s: 0.05,
+                settle_s: 0.0,
+            },
+            ..model.clone()
+        },
+        Cancel::NONE,
+    )
+    .unwrap();
+    let r = probe.static_offset_m;
+    model.initial_state = [r[0] * 1.001, r[1], 0.0, 0.0];
+    let res = simulate(&model, Cancel::NONE).unwrap();
+    let f_lin = res.linearised_frequency_hz;
+    let f_fft = res.base_natural_frequency_hz.unwrap();
+    let bin = 1.0 / 2.0;
+    eprintln!(
+        "linearised {f_lin:.4} Hz, FFT peak {f_fft:.4} Hz, K {:?}",
+        res.stiffness_n_per_m
+    );
+    assert!((f_fft - f_lin).abs() <= bin, "{f_fft} vs {f_lin}");
+    assert!((f_fft / f_lin - 1.0).abs() <= 5e-3);
+    assert!(!res.loss_of_contact);
+}
+
+#[test]
+fn energy_is_conserved_with_the_cage_frozen_through_contact_loss() {
+    // Validation 3a: film off, cage frozen, ρ = 0 (the kinks of δ₊^(10/9) every
+    // half-period: events at every loss and regain), released at rest from x = y = 0:
+    // E = ½M|v|² + Σ2k δ₊^(n+1)/(n+1) − F·r drifts < 1e-7 of |F·r_s| + V(r_s) over 1 s.
+    let model = DynamicsModel {
+        rtol: 1e-11,
+        ..frozen(0.0, 1.0)
+    };
+    let res = simulate(&model, Cancel::NONE).unwrap();
+    let drift = res.energy_drift_rel.unwrap();
+    eprintln!("frozen drift {drift:.3e}, stats {:?}", res.stats);
+    assert!(res.stats.events > 0, "contact loss and regain are events");
+    assert!(drift < 1e-7, "{drift}");
+}
+
+#[test]
+fn energy_balance_with_a_turning_cage() {
+    // Validation 3b: cage turning, ρ = 0, film off: E(t) − E(0) = ∫∂V/∂t dt (the
+    // potential moves with the rollers) to 1e-6 of the static energy scale over 1 s.
+    let model = DynamicsModel {
+        rtol: 1e-10,
+        span: Span::Duration {
+            duration_s: 1.0,
+            settle_s: 0.2,
+        },
+        ..DynamicsModel::truck(0.0)
+    };
+    let res = simulate(&model, Cancel::NONE).unwrap();
+    let drift = res.energy_drift_rel.unwrap();
+    eprintln!("turning drift {drift:.3e}, stats {:?}", res.stats);
+    assert!(drift < 1e-6, "{drift}");
+}
+
+fn harmonic(res: &DynamicsResult, k: usize) -> f64 {
+    res.roller_load_harmonics[k - 1].amplitude_n
+}
+
+fn line(spec: &LabelledSpectrum, label: &str) -> f64 {
+    spec.peaks
+        .iter()
+        .filter(|p| p.label == label)
+        .map(|p| p.amplitude)
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn spectra_as_the_seed_describes_them() {
+    // Validation 4 (seed 003 Figs. 3–5), truck bearing, film off, 100 revolutions, the
+    // last 80 sampled over whole cage cycles; roller-load harmonics by projection.
+    let tight = simulate(&DynamicsModel::truck(5e-6), Cancel::NONE).unwrap();
+    let loose = simulate(&DynamicsModel::truck(0.0), Cancel::NONE).unwrap();
+    for (name, r) in [("rho 5 um", &tight), ("rho 0", &loose)] {
+        let h: Vec<String> = r
+            .roller_load_harmonics
+            .iter()
+            .map(|h| format!("{}:{:.2}", h.order, h.amplitude_n))
+            .collect();
+        eprintln!(
+            "{name}: f_bn {:?} lin {:.2} min W {:.1} loss {} stats {:?}\n  harmonics {}\n  x peaks {:?}\n  W peaks {:?}",
+            r.base_natural_frequency_hz,
+            r.linearised_frequency_hz,
+            r.min_roller_load_n,
+            r.loss_of_contact,
+            r.stats,
+            h.join(" "),
+            r.spectrum_x
+                .peaks
+                .iter()
+                .map(|p| format!("{:.2}Hz {:.3e} {}", p.frequency_hz, p.amplitude, p.label))
+                .collect::<Vec<_>>(),
+            r.spectrum_roller_load
+                .peaks
+                .iter()
+                .map(|p| format!("{:.2}Hz {:.3e} {}", p.frequency_hz, p.amplitude, p.label))
+                .collect::<Vec<_>>(),
+        );
+    }
+    // f_c = 83.26/2π = 13.251 Hz.
+    assert!((tight.cage_frequency_hz - 13.251).abs() < 1e-3);
+    // The roller load shows f_c and f_bn ± f_c (both cases).
+    for r in [&tight, &loose] {
+        for label in ["f_c", "f_bn-f_c", "f_bn+f_c"] {
+            assert!(line(&r.spectrum_roller_load, label) > 0.0, "{label}");
+        }
+    }
+    // ρ = 5 µm: the seed's "only the second harmonic of cage frequency is noted". The
+    // model as specified gives 2f_c at 0.50 % of f_c (1.65 N of 331.7 N; SciPy DOP853 on
+    // the same model: 1.652 of 331.708), not above 1 %: the line is there and is the only
+    // cage harmonic above 0.1 %, but weaker than the issue's threshold. Not bent to fit
+    // (see the closing note); pinned here as measured.
+    let a1 = harmonic(&tight, 1);
+    let a2 = harmonic(&tight, 2) / a1;
+    assert!((1e-3..1e-2).contains(&a2), "ρ 5 µm: 2f_c/f_c = {a2}");
+    for k in 3..=8 {
+        assert!(
+            harmonic(&tight, k) < 1e-3 * a1,
+            "ρ 5 µm: {k}f_c below 0.1 %"
+        );
+    }
+    assert!(tight.min_roller_load_n > 0.0 && !tight.loss_of_contact);
+    // ρ = 0: 2, 3 and 4 f_c each above 1 % (45 %, 2.7 %, 7.8 % measured), 2f_bn in x,
+    // W reaches 0.
+    let b1 = harmonic(&loose, 1);
+    for k in 2..=4 {
+        assert!(harmonic(&loose, k) > 0.01 * b1, "ρ 0: {k}f_c above 1 %");
+    }
+    assert!(line(&loose.spectrum_x, "2f_bn") > 0.0);
+    assert!(loose.loss_of_contact && loose.min_roller_load_n == 0.0);
+    assert!(tight.base_natural_frequency_hz.unwrap() > loose.base_natural_frequency_hz.unwrap());
+    // The x line at the roller pass m·f_c, by projection over the whole cage cycles.
+    let pass = |r: &DynamicsResult| {
+        amplitude_at(&r.series.x_m, r.series.dt_s, r.roller_pass_frequency_hz).unwrap()
+    };
+    eprintln!(
+        "x at m·f_c: ρ 5 µm {:.3e} m, ρ 0 {:.3e} m",
+        pass(&tight),
+        pass(&loose)
+    );
+    assert!(pass(&loose) > pass(&tight));
+    // ρ = 0 loses and regains contact (events); ρ = 5 µm never does. (The issue's
+    // "ρ = 0 costs about 3× the steps" does not hold here: 126 631 steps against
+    // 152 703 at rtol 1e-8, since its f_bn is lower, 604 against 933 Hz.)
+    assert!(loose.stats.events > 0 && tight.stats.events == 0);
+}
+
+#[test]
+fn film_in_the_deflection_runs_and_reads_pan_hamrock() {
+    let model = DynamicsModel {
+        film: Some(truck_film(Squeeze::Normalised)),
+        span: Span::Revolutions {
+            shaft_speed_rad_s: 209.0,
+            revolutions: 20.0,
+            settle_revolutions: 10.0,
+        },
+        ..DynamicsModel::truck(5e-6)
+    };
+    let res = simulate(&model, Cancel::NONE).unwrap();
+    let max_w = res.cycle.roller_load_n.iter().copied().fold(0.0, f64::max);
+    let at_max = res
+        .cycle
+        .roller_load_n
+        .iter()
+        .position(|&w| w == max_w)
+        .unwrap();
+    let h = res.cycle.film_m[at_max];
+    eprintln!(
+        "film on: W_max {max_w:.1} N, h there {h:.3e} m, f_bn {:?}, stats {:?}, harmonics {:?}",
+        res.base_natural_frequency_hz, res.stats, res.roller_load_harmonics
+    );
+    assert!((0.25e-6..=0.46e-6).contains(&h), "{h}");
+    assert!(res.energy_drift_rel.is_none());
+    // The film adds compliance in series (and h ≥ 0.3 µm more deflection at each
+    // contact): the offset moves further than the dry one.
+    let dry = simulate(
+        &DynamicsModel {
+            film: None,
+            ..model.clone()
+        },
+        Cancel::NONE,
+    )
+    .unwrap();
+    assert!(res.static_offset_m[0] != dry.static_offset_m[0]);
+}
+
+#[test]
+fn cancellation_and_bounds_are_typed_errors_naming_the_key() {
+    let flag = AtomicBool::new(true);
+    assert_eq!(
+        simulate(&DynamicsModel::truck(5e-6), Cancel::new(&flag)),
+        Err(DynamicsError::Cancelled)
+    );
+    let too_long = DynamicsModel {
+        span: Span::Revolutions {
+            shaft_speed_rad_s: 209.0,
+            revolutions: 1e6,
+            settle_revolutions: 1.0,
+        },
+        ..DynamicsModel::truck(5e-6)
+    };
+    let e = simulate(&too_long, Cancel::NONE).unwrap_err();
+    assert!(e.to_string().contains("dynamics.revolutions"), "{e}");
+    let bad_mass = DynamicsModel {
+        mass_kg: -1.0,
+        ..DynamicsModel::truck(5e-6)
+    };
+    let e = simulate(&bad_mass, Cancel::NONE).unwrap_err();
+    assert!(e.to_string().contains("dynamics.system_mass"), "{e}");
+}
+
+#[test]
+fn progress_is_reported_up_to_one() {
+    let seen = std::sync::Mutex::new(Vec::new());
+    let p = |x: f64| seen.lock().map(|mut v| v.push(x)).unwrap_or(());
+    let model = DynamicsModel {
+        span: Span::Revolutions {
+            shaft_speed_rad_s: 209.0,
+            revolutions: 5.0,
+            settle_revolutions: 1.0,
+        },
+        ..DynamicsModel::truck(5e-6)
+    };
+    simulate(&model, Cancel::NONE.with_progress(&p)).unwrap();
+    let v = seen.lock().unwrap();
+    assert_eq!(v.len(), CHUNKS);
+    assert!(v.windows(2).all(|w| w[1] >= w[0]));
+    assert!((v[v.len() - 1] - 1.0).abs() < 1e-12);
+}
