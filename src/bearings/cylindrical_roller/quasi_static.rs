@@ -365,27 +365,33 @@ fn validate(m: &QuasiStaticModel) -> Result<(), QuasiStaticError> {
     Ok(())
 }
 
-/// (a₊^p − b₊^p)/(a − b) for a ≥ b, p = 1 + e/9 with e ∈ {1, 10, 19}, free of
-/// cancellation when a and b are close (b^p·expm1(p·ln1p((a − b)/b)) there), p·a^(p−1)
-/// when a = b. x^p = x^(1+e/9) is formed from [`ninth_root`] (the law's own root).
+/// (a₊^p − b₊^p)/(a − b) for a > b and p = m + 1/9 (m = 1, 2, 3), returned for the three
+/// m at once, free of cancellation however close a and b are: with r = x^(1/9),
+/// a^p − b^p = a^m·(r_a − r_b) + r_b·(a^m − b^m), r_a − r_b = (a − b)/Σ_{k=0}^{8} r_a^k r_b^(8−k)
+/// and a^m − b^m = (a − b)·Σ_{k<m} a^k b^(m−1−k): every term positive. Two ninth roots,
+/// no other transcendental (the hot loop of the dub-off's segments).
 #[inline]
-fn divided_power(ninths: i32, a: f64, b: f64) -> f64 {
-    let pow = |x: f64| x.powi(1 + ninths / 9) * ninth_root(x).powi(ninths % 9);
-    let p = 1.0 + ninths as f64 / 9.0;
-    if a <= 0.0 {
-        0.0
-    } else if b <= 0.0 {
-        pow(a) / (a - b)
-    } else if a == b {
-        p * pow(a) / a
-    } else {
-        let t = (a - b) / b;
-        if t < 1.0 {
-            pow(b) * (p * t.ln_1p()).exp_m1() / (a - b)
-        } else {
-            (pow(a) - pow(b)) / (a - b)
-        }
+fn divided_powers(a: f64, b: f64) -> [f64; 3] {
+    let ra = ninth_root(a);
+    if b <= 0.0 {
+        let inv = 1.0 / (a - b);
+        let a10 = a * ra;
+        return [a10 * inv, a10 * a * inv, a10 * a * a * inv];
     }
+    let rb = ninth_root(b);
+    // S = Σ_{k=0}^{8} r_a^k·r_b^(8−k) by Horner in r_a.
+    let mut sum = 1.0;
+    let mut pb = 1.0;
+    for _ in 0..8 {
+        pb *= rb;
+        sum = pb + ra * sum;
+    }
+    let inv = 1.0 / sum;
+    [
+        a * inv + rb,
+        a * a * inv + rb * (a + b),
+        a * a * a * inv + rb * (a * a + a * b + b * b),
+    ]
 }
 
 /// A segment of the lamina law whose approach varies linearly from `ua` to `ub` across
@@ -403,11 +409,8 @@ fn segment(law: &LaminaLaw, ua: f64, ub: f64) -> (f64, f64, f64) {
         return (0.0, 0.0, 0.0);
     }
     let k = law.stiffness;
-    (
-        k * (9.0 / 19.0) * divided_power(10, a, b),
-        k * divided_power(1, a, b),
-        k * (81.0 / 532.0) * divided_power(19, a, b),
-    )
+    let [d10, d19, d28] = divided_powers(a, b);
+    (k * (9.0 / 19.0) * d19, k * d10, k * (81.0 / 532.0) * d28)
 }
 
 /// One roller's radial equilibrium at a ring approach.

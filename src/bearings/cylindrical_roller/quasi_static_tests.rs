@@ -485,3 +485,28 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn divided_powers_against_the_direct_form() {
+    // Where a and b are far apart the direct (a^p − b^p)/(a − b) is well conditioned:
+    // 1e-13 relative. As b → a the result tends to p·a^(p−1): at b = a(1 − 1e-12) the
+    // difference is (p − 1)/2·1e-12 ≈ 1e-12 relative, so 1e-11 (the direct form would
+    // have lost 12 digits there).
+    for (a, b) in [(3e-6, 1e-6), (5e-6, 2.5e-7), (1e-3, 4e-4)] {
+        let d = divided_powers(a, b);
+        for (m, v) in d.iter().enumerate() {
+            let p = m as f64 + 1.0 + 1.0 / 9.0;
+            let direct = (a.powf(p) - b.powf(p)) / (a - b);
+            assert!((v / direct - 1.0).abs() < 1e-13, "{a} {b} {m}");
+        }
+        // b ≤ 0: a^p/(a − b).
+        let d = divided_powers(a, -b);
+        assert!((d[0] / (a.powf(10.0 / 9.0) / (a + b)) - 1.0).abs() < 1e-13);
+    }
+    let a: f64 = 4e-6;
+    let d = divided_powers(a, a * (1.0 - 1e-12));
+    for (m, v) in d.iter().enumerate() {
+        let p = m as f64 + 1.0 + 1.0 / 9.0;
+        assert!((v / (p * a.powf(p - 1.0)) - 1.0).abs() < 1e-11, "{m}");
+    }
+}
