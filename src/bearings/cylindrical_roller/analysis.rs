@@ -4,6 +4,7 @@
 use super::geometry::{derive, Derived};
 use super::input::{CylindricalInput, ProfileKind};
 use super::quasi_static::{self, Profile, QuasiStatic, QuasiStaticError, QuasiStaticModel};
+use super::tribodynamics::{tribodynamics, Tribodynamics, TribodynamicsError};
 use crate::numerics::cancel::Cancel;
 use crate::physics::contact::line::{effective_modulus, Elastic};
 use crate::physics::lubrication::film::{pan_hamrock_min, FilmInputs};
@@ -49,6 +50,9 @@ pub struct CylindricalAnalysis {
     pub warnings: Vec<String>,
     /// Wall time of the solve, s.
     pub wall_time_s: f64,
+    /// The 2-DOF tribodynamics and the friction over a cage cycle; `None` when not run
+    /// (`dynamics.revolutions = 0`, `run --no-transient`, sweeps).
+    pub tribo: Option<Tribodynamics>,
 }
 
 impl CylindricalAnalysis {
@@ -165,7 +169,38 @@ pub fn analyse_from(
         films,
         warnings,
         wall_time_s: t0.elapsed().as_secs_f64(),
+        tribo: None,
     })
+}
+
+/// `a` with its tribodynamics (`super::tribodynamics`) when the deck asks for it
+/// (`dynamics.revolutions > 0`); the dynamics' warnings (lost contacts, clamped films)
+/// join the statics'.
+pub fn with_tribodynamics(
+    mut a: CylindricalAnalysis,
+    cancel: Cancel<'_>,
+) -> Result<CylindricalAnalysis, TribodynamicsError> {
+    if a.input.dynamics.revolutions == 0 {
+        return Ok(a);
+    }
+    let t0 = std::time::Instant::now();
+    let t = tribodynamics(&a.input, &a.derived, cancel)?;
+    let d = &t.dynamics;
+    if d.loss_of_contact {
+        a.warnings.push(format!(
+            "rollers lose contact in the steady orbit (smallest roller load {:.1} N, {} losses after settling): the load zone does not cover the ring, roller-pass lines appear in the spectra",
+            d.min_roller_load_n, d.stats.contact_losses_after_settle
+        ));
+    }
+    if d.stats.film_clamps > 0 {
+        a.warnings.push(format!(
+            "the film of eq. 4 was clamped at 0 in {} evaluations (dynamics.squeeze = \"printed\" gives a negative film under fast approach)",
+            d.stats.film_clamps
+        ));
+    }
+    a.wall_time_s += t0.elapsed().as_secs_f64();
+    a.tribo = Some(t);
+    Ok(a)
 }
 
 /// Each slice's Pan–Hamrock minimum film at the inner and outer contacts (flooded,
@@ -186,7 +221,7 @@ fn films(input: &CylindricalInput, d: &Derived, q: &QuasiStatic) -> Vec<RollerFi
             return None;
         }
         pan_hamrock_min(&FilmInputs {
-            viscosity_pa_s: lub.viscosity_pa_s,
+            viscosity_pa_s: super::tribodynamics::inlet_viscosity_pa_s(input),
             pressure_viscosity_pa_inv: lub.pressure_viscosity_pa_inv,
             entrainment_speed_m_s: d.entrainment_speed_m_s,
             reduced_radius_m: r,

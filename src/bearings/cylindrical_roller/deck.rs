@@ -60,7 +60,7 @@ const OUTER: [FieldSpec<CylindricalInput>; 5] =
         .materials
         .outer);
 
-static FIELDS: [FieldSpec<CylindricalInput>; 54] = [
+static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
     // [geometry] (seed 003 Table A1)
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers m", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
@@ -209,7 +209,7 @@ static FIELDS: [FieldSpec<CylindricalInput>; 54] = [
         set: |t, v| t.dynamics.damping_ratio = v,
     },
     FieldSpec {
-        meta: meta("dynamics.revolutions", "dynamics", "Shaft revolutions", Quantity::Count, INT, (1.0, false), (100_000.0, false), def(100.0), "shaft revolutions simulated"),
+        meta: meta("dynamics.revolutions", "dynamics", "Shaft revolutions", Quantity::Count, INT, (0.0, false), (100_000.0, false), def(100.0), "shaft revolutions simulated (0: the quasi-statics only, no dynamics)"),
         get: |t| t.dynamics.revolutions as f64,
         set: |t, v| t.dynamics.revolutions = v as usize,
     },
@@ -269,6 +269,11 @@ static FIELDS: [FieldSpec<CylindricalInput>; 54] = [
         meta: meta("lubricant.inlet_temperature", "lubricant", "Inlet temperature", Quantity::Temperature, REAL, (223.15, false), (573.15, false), def(super::input::DEFAULT_INLET_TEMPERATURE_K), "lubricant inlet temperature (the seed gives none: 40 °C by default)"),
         get: |t| t.lubricant.inlet_temperature_k,
         set: |t, v| t.lubricant.inlet_temperature_k = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.reference_temperature", "lubricant", "Reference temperature T₀", Quantity::Temperature, REAL, (223.15, false), (573.15, false), def(super::input::DEFAULT_REFERENCE_TEMPERATURE_K), "temperature at which lubricant.viscosity is given (T₀ of eq. 10; the seed gives none: 40 °C, the ISO grades' reference)"),
+        get: |t| t.lubricant.reference_temperature_k,
+        set: |t, v| t.lubricant.reference_temperature_k = v,
     },
     // [surfaces] (seed 003 Table 2)
     FieldSpec {

@@ -138,6 +138,9 @@ pub struct Lubricant {
     pub limiting_shear_slope: f64,
     /// Inlet temperature, K.
     pub inlet_temperature_k: f64,
+    /// T₀, the temperature at which η₀ is given (eq. 10's reference; the seed names it
+    /// without a value), K.
+    pub reference_temperature_k: f64,
 }
 
 /// Surface topography (seed 003 Table 2), SI.
@@ -200,6 +203,11 @@ pub const DEFAULT_SLIDING_SPEED_M_S: f64 = 23.95 / 40.67;
 /// Default inlet temperature, K (40 °C: the seed gives none; issue 25 trap 5).
 pub const DEFAULT_INLET_TEMPERATURE_K: f64 = 313.15;
 
+/// The temperature at which η₀ is given when the deck does not say, K: 40 °C, the ISO
+/// viscosity grades' reference (Table A2's 0.0499 Pa·s at 829 kg/m³ is ν ≈ 60 mm²/s,
+/// between ISO VG 46 and 68 at 40 °C).
+pub const DEFAULT_REFERENCE_TEMPERATURE_K: f64 = 313.15;
+
 /// The seed's steel (Table A2): E 210 GPa, ν 0.3, ρ 7 850 kg/m³, c 470 J/(kg·K),
 /// k 46 W/(m·K).
 pub const SEED_STEEL: Material = Material {
@@ -261,6 +269,7 @@ impl CylindricalInput {
                 limiting_shear_pa: 2.3e6,
                 limiting_shear_slope: 0.047,
                 inlet_temperature_k: DEFAULT_INLET_TEMPERATURE_K,
+                reference_temperature_k: DEFAULT_REFERENCE_TEMPERATURE_K,
             },
             surfaces: Surfaces {
                 composite_rms_m: 0.6e-6,

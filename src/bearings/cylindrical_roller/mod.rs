@@ -21,7 +21,9 @@ pub mod geometry;
 pub mod input;
 pub mod quasi_static;
 pub mod report;
+pub mod report_tribo;
 pub mod system;
+pub mod tribodynamics;
 pub mod view;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`).

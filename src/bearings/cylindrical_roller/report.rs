@@ -60,7 +60,7 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
         })
         .collect();
     let k = q.stiffness_n_m;
-    json!({
+    let mut v = json!({
         "type": super::SYSTEM_ID,
         "name": a.name,
         "method": "seed 003 (tribodynamics of cylindrical roller bearings): quasi-static lamina load distribution (slice law, inner and outer contacts in series), Pan–Hamrock films per slice",
@@ -99,7 +99,13 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
             "slices": a.input.solver.slices,
             "wall_time_s": a.wall_time_s,
         },
-    })
+    });
+    if let (Some(t), Some(o)) = (&a.tribo, v.as_object_mut()) {
+        for (k, block) in super::report_tribo::json_blocks(t) {
+            o.insert(k.to_string(), block);
+        }
+    }
+    v
 }
 
 /// The 2×2 ring stiffness and the static offset in `units`: the text report's section
@@ -202,6 +208,9 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
     let _ = writeln!(s, "  (loads in {fu}, pressure in {pu})\n");
     for line in stiffness_lines(a, units) {
         let _ = writeln!(s, "{line}");
+    }
+    if let Some(t) = &a.tribo {
+        s.push_str(&super::report_tribo::text(t, units));
     }
     for w in &a.warnings {
         let _ = writeln!(s, "\nWarning: {w}");

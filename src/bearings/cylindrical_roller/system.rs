@@ -1,7 +1,7 @@
 //! The cylindrical roller bearing's registration: how its decks are read, solved and
 //! shown through the system-independent [`crate::bearings::BearingSystem`] interface.
 
-use super::analysis::{analyse_from, CylindricalAnalysis};
+use super::analysis::{analyse_from, with_tribodynamics, CylindricalAnalysis};
 use super::deck::SCHEMA;
 use super::input::CylindricalInput;
 use super::quasi_static::{QuasiStatic, QuasiStaticError};
@@ -136,14 +136,26 @@ impl FormSystem for CylindricalRoller {
 
     fn solve(
         case: &CylindricalCase,
-        _options: RunOptions,
+        options: RunOptions,
         cancel: Cancel,
     ) -> Result<Box<dyn Solution>, String> {
         // The errors are worded in SI deep in the solver; a US deck's user reads them in
         // lbf and inches like the other systems'.
-        analyse_from(&case.form.value, &case.form.name, None, &cancel)
-            .map(|a| Box::new(CylindricalSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| restate_si(&e.to_string(), case.form.units))
+        let a = analyse_from(&case.form.value, &case.form.name, None, &cancel)
+            .map_err(|e| restate_si(&e.to_string(), case.form.units))?;
+        let a = if options.skip_transient {
+            a
+        } else {
+            with_tribodynamics(a, cancel)
+                .map_err(|e| restate_si(&e.to_string(), case.form.units))?
+        };
+        Ok(Box::new(CylindricalSolution(a)))
+    }
+
+    /// The 2-DOF dynamics is this system's time simulation: run unless the deck says
+    /// `dynamics.revolutions = 0`.
+    fn has_transient(case: &CylindricalCase) -> bool {
+        case.form.value.dynamics.revolutions > 0
     }
 
     fn fidelity(input: &CylindricalInput) -> Option<Fidelity> {
@@ -188,25 +200,43 @@ impl Session for CylindricalSession {
     fn solve(
         &mut self,
         case: &dyn Case,
-        _detail: Detail,
+        detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError> {
         let case = CylindricalCase::of(case)?;
-        match analyse_from(
+        let stage = |message: String| SolveError::Stage {
+            stage: SYSTEM_ID,
+            message: restate_si(&message, case.form.units),
+        };
+        let a = match analyse_from(
             &case.form.value,
             &case.form.name,
             self.last.as_ref(),
             cancel,
         ) {
-            Ok(a) => {
-                self.last = Some(a.statics.clone());
-                Ok(Box::new(CylindricalSolution(a)))
-            }
-            Err(QuasiStaticError::Cancelled) => Err(SolveError::Cancelled),
-            Err(e) => Err(SolveError::Stage {
-                stage: SYSTEM_ID,
-                message: restate_si(&e.to_string(), case.form.units),
-            }),
-        }
+            Ok(a) => a,
+            Err(QuasiStaticError::Cancelled) => return Err(SolveError::Cancelled),
+            Err(e) => return Err(stage(e.to_string())),
+        };
+        self.last = Some(a.statics.clone());
+        // The dynamics only when the panes ask for the time simulation (the workbench
+        // does for this system; sweeps do not).
+        let a = if detail.transient {
+            let c = Cancel::from_option(cancel.flag());
+            let c = match cancel.progress() {
+                Some(p) => c.with_progress(p),
+                None => c,
+            };
+            with_tribodynamics(a, c).map_err(|e| {
+                if cancel.is_cancelled() {
+                    SolveError::Cancelled
+                } else {
+                    stage(e.to_string())
+                }
+            })?
+        } else {
+            a
+        };
+        Ok(Box::new(CylindricalSolution(a)))
     }
 }

@@ -8,12 +8,17 @@ use crate::bearings::Detail;
 
 impl App {
     /// What the visible panes need from the solver: the stepper's trace and the thermal
-    /// transient only when their panes are on screen; the other stages (contact, heat)
-    /// take `Request`'s defaults.
+    /// transient only when their panes are on screen (a time simulation of a system
+    /// without a Thermal pane always); the other stages (contact, heat) take `Request`'s
+    /// defaults.
     pub fn wanted_request(&self) -> Detail {
         Detail {
             trace_element: self.visible(Pane::Stepper).then_some(self.roller_sel),
-            transient: self.visible(Pane::Thermal) && self.deck.has_thermal(),
+            // A system with a Thermal pane runs its transient for that pane only; one
+            // without (the cylindrical roller's dynamics, drawn on its chart panes) runs
+            // its time simulation with every solve.
+            transient: self.deck.has_thermal()
+                && (self.visible(Pane::Thermal) || !self.panes().contains(&Pane::Thermal)),
             stream_chart: self.panes().into_iter().find_map(|p| match p {
                 Pane::Chart(n) if self.visible(p) => Some(n),
                 _ => None,
