@@ -206,7 +206,8 @@ fn us_deck_solves_like_si() {
         let (code, t, err) = run(&["template", "--type", "cylindrical-roller", "--units", units]);
         assert_eq!(code, 0, "{err}");
         let p = temp(&format!("run_{units}.toml"), &t);
-        out.push(run_json(&p.display().to_string(), &[]));
+        // The statics are compared: the dynamics (100 revolutions) is not needed.
+        out.push(run_json(&p.display().to_string(), &["--no-transient"]));
     }
     let (a, b) = (
         num(&out[0]["max_roller_load_n"]),
@@ -222,7 +223,7 @@ fn us_deck_solves_like_si() {
     let (code, t, _) = run(&["template", "--type", "cylindrical-roller", "--units", "us"]);
     assert_eq!(code, 0);
     let p = temp("text_us.toml", &t);
-    let (code, text, err) = run(&["run", &p.display().to_string()]);
+    let (code, text, err) = run(&["run", &p.display().to_string(), "--no-transient"]);
     assert_eq!(code, 0, "{err}");
     assert!(text.contains("lbf") && text.contains(" in "), "{text}");
 }
@@ -230,7 +231,13 @@ fn us_deck_solves_like_si() {
 /// The CSV report is the rollers table, one row per roller.
 #[test]
 fn run_csv_rollers_table() {
-    let (code, out, err) = run(&["run", &deck("crb_truck.toml"), "--format", "csv"]);
+    let (code, out, err) = run(&[
+        "run",
+        &deck("crb_truck.toml"),
+        "--format",
+        "csv",
+        "--no-transient",
+    ]);
     assert_eq!(code, 0, "{err}");
     let lines: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
     assert!(
@@ -264,4 +271,63 @@ fn nasa_210_deck_stribeck_number() {
         .filter(|r| num(&r["inner_load_n"]) > 0.0)
         .count();
     assert_eq!(loaded, 5, "rollers in the load zone");
+}
+
+/// The friction of roller 1's inner contact at the shipped deck's three cage positions
+/// (Table 3's A1, B1, C1) against Table 3 as a band (its inputs are missing; issue 25
+/// Validation 6): total 30–55 N, boundary 1.5–6 N. The isothermal formula tier at the
+/// deck's documented 100 °C inlet gives µ ≈ 0.019, not the seed's ≈ 0.01 (its thermal EHL
+/// heats the film further; decks/crb_truck.toml's header has the sensitivity): the band
+/// asserted for µ is 0.006–0.025 and the test says so. A short run (6 revolutions, the
+/// film out of the deflection) keeps the debug test fast: the friction uses the film of
+/// eq. 4 either way, and the preloaded ring's loads move by < 1 % between the two.
+#[test]
+fn table_3_band_at_the_shipped_positions() {
+    let j = run_json(
+        &deck("crb_truck.toml"),
+        &[
+            "--set",
+            "dynamics.revolutions=6",
+            "--set",
+            "dynamics.settle_revolutions=1",
+            "--set",
+            "dynamics.film_in_deflection=false",
+        ],
+    );
+    let positions = j["contact_positions"].as_array().unwrap();
+    assert_eq!(positions.len(), 3);
+    for p in positions {
+        let (total, boundary, mu) = (
+            num(&p["total_n"]),
+            num(&p["boundary_n"]),
+            num(&p["coefficient"]),
+        );
+        assert!((30.0..=55.0).contains(&total), "total {total} N");
+        assert!((1.5..=6.0).contains(&boundary), "boundary {boundary} N");
+        assert!((0.006..=0.025).contains(&mu), "mu {mu}");
+    }
+    // The bearing's friction: every roller, both contacts, positive, µ in the same band.
+    let mu = num(&j["friction"]["coefficient"]);
+    assert!((0.006..=0.025).contains(&mu), "bearing mu {mu}");
+    assert!(num(&j["friction"]["power_w"]) > 0.0);
+    // The dynamics' contract fields are there.
+    for key in [
+        "static_offset_m",
+        "stiffness_n_per_m",
+        "linearised_frequency_hz",
+        "base_natural_frequency_hz",
+        "cage_frequency_hz",
+        "roller_pass_frequency_hz",
+        "min_roller_load_n",
+        "loss_of_contact",
+        "energy_drift_rel",
+        "spectrum_x",
+        "spectrum_roller_load",
+        "cycle",
+        "stats",
+    ] {
+        assert!(j["dynamics"].get(key).is_some(), "dynamics.{key}");
+    }
+    let f_c = num(&j["dynamics"]["cage_frequency_hz"]);
+    assert!((f_c - 13.251).abs() < 1e-3, "f_c {f_c}");
 }

@@ -214,7 +214,7 @@ static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
         set: |t, v| t.dynamics.revolutions = v as usize,
     },
     FieldSpec {
-        meta: meta("dynamics.settle_revolutions", "dynamics", "Settle revolutions", Quantity::Count, INT, (0.0, false), (100_000.0, false), def(20.0), "shaft revolutions dropped before the spectra (a count, not a convergence test: the undamped oscillation never decays)"),
+        meta: meta("dynamics.settle_revolutions", "dynamics", "Settle revolutions", Quantity::Count, INT, (0.0, false), (100_000.0, false), def(20.0), "shaft revolutions dropped before the spectra (a count, not a convergence test)"),
         get: |t| t.dynamics.settle_revolutions as f64,
         set: |t, v| t.dynamics.settle_revolutions = v as usize,
     },
@@ -345,7 +345,7 @@ fn cross(t: &CylindricalInput, units: Units) -> Vec<(&'static str, String)> {
                 .to_string(),
         ));
     }
-    if t.dynamics.settle_revolutions >= t.dynamics.revolutions {
+    if t.dynamics.revolutions > 0 && t.dynamics.settle_revolutions >= t.dynamics.revolutions {
         v.push((
             "dynamics.settle_revolutions",
             format!(

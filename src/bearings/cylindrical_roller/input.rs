@@ -268,7 +268,8 @@ impl CylindricalInput {
                 specific_heat_j_kg_k: 2000.0,
                 limiting_shear_pa: 2.3e6,
                 limiting_shear_slope: 0.047,
-                inlet_temperature_k: DEFAULT_INLET_TEMPERATURE_K,
+                // The shipped deck's documented choice: a 100 °C sump (decks/crb_truck.toml).
+                inlet_temperature_k: 373.15,
                 reference_temperature_k: DEFAULT_REFERENCE_TEMPERATURE_K,
             },
             surfaces: Surfaces {

@@ -8,16 +8,29 @@
 //! (`Squeeze::Printed`: 1.3924 with the Pan–Hamrock exponents, W* exponent −0.128), the
 //! factor (1 − 0.75 e^(−1.32 w/U)) is 0.25 in pure rolling (w = 0), which gives
 //! h ≈ 0.08 µm for the truck bearing, λ ≈ 0.1, and turns negative for w/U < −0.218.
-//! The physically consistent reading (`Squeeze::Normalised`, the default) keeps the
-//! squeeze law's *shape* but normalises it to 1 at w = 0, so that pure rolling gives the
+//! As printed, the factor also thins the film on approach (w < 0) and thickens it on
+//! separation. In the deflection of eq. 3 that makes the roller load fall while the rings
+//! close and rise while they open: a force −c·ṗ with c > 0, negative damping (ζ ≈
+//! −0.0015 at 933 Hz for the truck bearing), and the undamped orbit grows until rollers
+//! unload (W_max 23.7 kN against 3.5 kN for the steady film within 1.5 s). It also
+//! contradicts the seed's own EHL results: its squeeze cave *thickens* the film under
+//! approach (Fig. 10, A1 and C1, negative squeeze velocity) and lowers the boundary
+//! friction (Table 3).
+//!
+//! The physically consistent reading (`Squeeze::Normalised`, the default) therefore
+//! keeps the squeeze law's *shape* with the sense of the seed's Fig. 10, approach
+//! thickening the film, and normalises it to 1 at w = 0, so that pure rolling gives the
 //! steady Pan–Hamrock minimum film (`physics::lubrication::film::pan_hamrock_min`,
 //! 1.714·R·U*^0.694·G*^0.568·W*^(−0.128) with W* = W/(E_r R L)): 0.38–0.44 µm at
 //! 3 000–1 000 N, inside the 0.25–0.46 µm the issue asks for:
 //!
-//!   h = h_PH(W) · (1 − 0.75 e^(−1.32 w/U)) / 0.25.
+//!   h = h_PH(W) · (1 − 0.75 e^(+1.32 w/U)) / 0.25,
 //!
-//! Approach (w < 0) thins the film, separation thickens it. Both readings clamp h ≥ 0
-//! and count the clamps. `Squeeze::None` is the steady film (factor 1).
+//! up to 4 h_PH under fast approach, 0 (a collapsed film, clamped) under separation
+//! faster than w/U = ln(4/3)/1.32 = 0.218. A squeeze film resisting approach is positive
+//! damping. `Squeeze::Printed` keeps the printed sense and coefficient (negative damping:
+//! tested, and said in the deck's help). Both clamp h ≥ 0 and count the clamps.
+//! `Squeeze::None` is the steady film (factor 1).
 //!
 //! **Unloaded contacts.** W*^(−0.128) grows without bound as W → 0 (the regression is
 //! for loaded EHL contacts), and read literally it would keep every roller in contact
@@ -30,7 +43,8 @@ use crate::physics::lubrication::film::{pan_hamrock_min, FilmInputs};
 /// How eq. (4)'s squeeze factor is read (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Squeeze {
-    /// Pan–Hamrock at w = 0, times the squeeze factor normalised to 1 at w = 0.
+    /// Pan–Hamrock at w = 0, times the squeeze factor normalised to 1 at w = 0, approach
+    /// thickening the film (module docs).
     #[default]
     Normalised,
     /// The printed form: 1.3924 and the unnormalised factor (0.25 at w = 0).
@@ -117,7 +131,9 @@ impl FilmCoefficients {
         match self.squeeze {
             Squeeze::None => 1.0,
             Squeeze::Printed => raw(w_m_s),
-            Squeeze::Normalised => raw(w_m_s) / 0.25,
+            // Approach (w < 0) thickens: the printed law's shape mirrored in w (module
+            // docs), 1 at w = 0.
+            Squeeze::Normalised => raw(-w_m_s) / 0.25,
         }
     }
 
@@ -314,8 +330,41 @@ mod tests {
         // (1 − 0.75 e^(−1.32 w/U)) < 0 for w/U < ln(0.75)/1.32 = −0.2179.
         assert!(c.squeeze_factor(-0.21 * u) > 0.0);
         assert!(c.squeeze_factor(-0.23 * u) < 0.0);
-        // Approach thins, separation thickens, in both readings.
-        assert!(n.squeeze_factor(-1e-3) < 1.0 && n.squeeze_factor(1e-3) > 1.0);
+        // As printed, approach thins and separation thickens; the normalised reading
+        // mirrors it (approach thickens), 1 at w = 0, 4 at fast approach, 0 at
+        // w/U = ln(4/3)/1.32.
+        assert!(c.squeeze_factor(-1e-3) < 0.25 && c.squeeze_factor(1e-3) > 0.25);
+        assert!(n.squeeze_factor(-1e-3) > 1.0 && n.squeeze_factor(1e-3) < 1.0);
+        assert!((n.squeeze_factor(-100.0 * u) - 4.0).abs() < 1e-9);
+        assert!(n.squeeze_factor((4.0f64 / 3.0).ln() / 1.32 * u).abs() < 1e-12);
+    }
+
+    /// The sign of the squeeze term's damping, read from the contact law itself: with
+    /// the rings closing (ṗ > 0, w < 0) a damping law carries more load than at rest and
+    /// with them opening less. The normalised reading does (positive damping); the
+    /// printed one does the opposite (negative damping, the module docs' instability).
+    /// Strict inequalities: the squeeze term is ≈ 1e-4 of the load at ṗ = 1e-3 m/s, far
+    /// above round-off (1e-15).
+    #[test]
+    fn the_normalised_squeeze_damps_and_the_printed_one_pumps() {
+        for (squeeze, damps) in [(Squeeze::Normalised, true), (Squeeze::Printed, false)] {
+            let law = ContactLaw {
+                stiffness: 2.0e9,
+                exponent: 10.0 / 9.0,
+                clearance_m: -5e-6,
+                film: truck(squeeze).coefficients(),
+            };
+            let (p, v) = (1e-6, 1e-3);
+            let closing = law.contact(p, v).load_n;
+            let rest = law.contact(p, 0.0).load_n;
+            let opening = law.contact(p, -v).load_n;
+            assert_eq!(
+                closing > rest && rest > opening,
+                damps,
+                "{squeeze:?}: {closing} {rest} {opening}"
+            );
+            assert_eq!(closing < rest && rest < opening, !damps, "{squeeze:?}");
+        }
     }
 
     #[test]

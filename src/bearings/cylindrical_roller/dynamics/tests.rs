@@ -223,14 +223,13 @@ fn film_in_the_deflection_runs_and_reads_pan_hamrock() {
 }
 
 #[test]
-fn the_seed_squeeze_law_is_negative_damping_in_this_model() {
-    // Eq. (4)'s factor thins the film on approach (w < 0) and thickens it on separation,
-    // so the load falls while the rings close and rises while they open: a velocity
-    // term −c·ṗ with c > 0, i.e. negative damping. Estimate for the truck bearing:
-    // c ≈ ½·dW/dδ·∂h/∂w ≈ ½·5.7e8·5e-7 ≈ 140 N·s/m per loaded roller, ζ ≈ −0.0015 at
-    // 933 Hz, growth ≈ e^(8.6 t): within the 1.5 s simulated the vibration grows until
-    // rollers unload. Measured, not bent (closing note): the normalised reading's
-    // largest load over the last cage cycle is several times the steady film's.
+fn the_normalised_squeeze_is_stable_where_the_printed_sense_is_not() {
+    // Eq. (4)'s printed factor thins the film on approach: a force −c·ṗ with c > 0,
+    // negative damping (c ≈ ½·dW/dδ·∂h/∂w ≈ 140 N·s/m per loaded roller, ζ ≈ −0.0015
+    // at 933 Hz): within the 1.5 s simulated the vibration grows until rollers unload
+    // (measured with that sense: W_max 23.7 kN against 3.46 kN for the steady film). The
+    // default reading (approach thickens, film.rs docs) is positive damping: its orbit
+    // stays within the steady film's (≤ 1 % above its largest load), no roller unloads.
     let steady = film_run(Squeeze::None);
     let squeeze = film_run(Squeeze::Normalised);
     eprintln!(
@@ -239,8 +238,8 @@ fn the_seed_squeeze_law_is_negative_damping_in_this_model() {
         max_load(&squeeze),
         squeeze.stats.contact_losses_after_settle
     );
-    assert!(max_load(&squeeze) > 2.0 * max_load(&steady));
-    assert!(squeeze.loss_of_contact);
+    assert!(max_load(&squeeze) <= 1.01 * max_load(&steady));
+    assert!(!squeeze.loss_of_contact);
 }
 
 #[test]
