@@ -1,5 +1,6 @@
-//! `rollbench validate`'s cases for the angular-contact ball bearing (seed 001, issue 16)
-//! and the tapered roller bearing (seed 004, issue 17).
+//! `rollbench validate`'s cases for the angular-contact ball bearing (seed 001, issue 16),
+//! the tapered roller bearing (seed 004, issue 17) and the cylindrical roller bearing
+//! (seed 003, issue 25).
 //!
 //! Bearing-level numbers come through the shipped decks and the JSON report (the same path
 //! a user's script takes: deck text, `--set` overrides, `run --format json`), so a case
@@ -26,6 +27,8 @@ use crate::units::{INCH_M, LBF_N, RPM_RAD_S};
 const CHEN_A: &str = include_str!("../../decks/chen_a.toml");
 const CHEN_B: &str = include_str!("../../decks/chen_b.toml");
 const TRB: &str = include_str!("../../decks/trb_afapl.toml");
+const CRB_TRUCK: &str = include_str!("../../decks/crb_truck.toml");
+const CRB_NASA: &str = include_str!("../../decks/crb_nasa210.toml");
 
 /// The JSON report of a shipped deck with `overrides`, or why it failed.
 fn report(text: &str, name: &str, overrides: &[&str]) -> Result<Value, String> {
@@ -406,11 +409,85 @@ fn tapered_cases(out: &mut Vec<Case>) {
     ));
 }
 
-/// The ball and tapered roller cases.
+// ------------------------------------------------------- cylindrical roller (seed 003)
+
+/// Stribeck's number Z·W_max/F of a report (the largest inner-contact load).
+fn stribeck_number(r: &Result<Value, String>, z: f64, load_n: f64) -> f64 {
+    let w_max = r
+        .as_ref()
+        .ok()
+        .and_then(|v| v["rollers"].as_array())
+        .map(|rs| {
+            rs.iter()
+                .filter_map(|r| r["inner_load_n"].as_f64())
+                .fold(f64::NAN, f64::max)
+        })
+        .unwrap_or(f64::NAN);
+    z * w_max / load_n
+}
+
+/// The cylindrical roller's statics through its shipped decks (issue 25 Validation 1).
+fn cylindrical_cases(out: &mut Vec<Case>) {
+    // The Stribeck limit: the truck deck made straight (no dub-off), zero interference,
+    // at rest, without gravity: every roller approaches by δ_max·cos ψ, so
+    // Z·W_max/F = Z/Σ cos^(19/9) ψ_j over the loaded rollers exactly.
+    for (z, table) in [(10usize, 4.087), (20, 4.084)] {
+        let zs = z.to_string();
+        let count = format!("geometry.roller_count={zs}");
+        let r = report(
+            CRB_TRUCK,
+            "crb_truck.toml",
+            &[
+                &count,
+                "geometry.radial_interference=0",
+                "geometry.dub_off_length=0",
+                "operating.inner_speed=0",
+                "operating.cage_speed=kinematic",
+                "operating.gravity=false",
+                "dynamics.revolutions=0",
+            ],
+        );
+        let load = at(&r, "/load_n/0").abs();
+        let st = stribeck_number(&r, z as f64, load);
+        let sum: f64 = (0..z)
+            .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).cos())
+            .filter(|c| *c > 0.0)
+            .map(|c| c.powf(19.0 / 9.0))
+            .sum();
+        out.push(case(
+            &format!("cylindrical Stribeck number, Z = {z}, zero clearance"),
+            z as f64 / sum,
+            "exact discrete sum Z/Σcos^(19/9)ψ (rigid rings)",
+            st,
+            1e-9,
+            &note(&r, "the ring equilibrium's tolerance"),
+        ));
+        out.push(case(
+            &format!("cylindrical Stribeck number, Z = {z}, vs NASA/TM-2012-217115 Table I"),
+            table,
+            "NASA/TM-2012-217115 Table I (line contact)",
+            st,
+            2e-3,
+            &note(&r, "the table's 4 figures"),
+        ));
+    }
+    let r = report(CRB_NASA, "crb_nasa210.toml", &[]);
+    out.push(case(
+        "cylindrical NASA 210 CRB Stribeck number (0.045 mm clearance)",
+        5.974611127962,
+        "discrete straight-roller equilibrium (SciPy root find); 5.876 published for a continuous integral",
+        stribeck_number(&r, 14.0, 6940.0),
+        5e-4,
+        &note(&r, "21 slices over the deck's abrupt dub-off ends"),
+    ));
+}
+
+/// The ball, tapered and cylindrical roller cases.
 pub fn cases(out: &mut Vec<Case>) {
     ball_hertz_cases(out);
     ball_load_cases(out);
     ball_race_control_cases(out);
     ball_skid_and_heat_cases(out);
     tapered_cases(out);
+    cylindrical_cases(out);
 }

@@ -25,6 +25,7 @@ pub mod report_tribo;
 pub mod system;
 pub mod tribodynamics;
 pub mod view;
+pub mod view_tribo;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`).
 pub const SYSTEM_ID: &str = "cylindrical-roller";

@@ -100,7 +100,7 @@ impl FormSystem for CylindricalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 5] = [
+        const PANES: [PaneSpec; 9] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -112,6 +112,22 @@ impl FormSystem for CylindricalRoller {
             PaneSpec {
                 kind: PaneKind::Chart(0),
                 title: "Load",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(1),
+                title: "Orbit",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(2),
+                title: "Spectrum",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(3),
+                title: "Load spectrum",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(4),
+                title: "Cycle",
             },
             PaneSpec {
                 kind: PaneKind::Text(0),

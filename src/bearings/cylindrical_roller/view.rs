@@ -306,6 +306,41 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             KeyRole::Guard,
         ),
     ];
+    // The tribodynamics' headline numbers (absent without a dynamics run; sweeps run
+    // without it).
+    let mut key_outputs = key_outputs;
+    if let Some(t) = &a.tribo {
+        key_outputs.extend([
+            key(
+                "base_natural_frequency_hz",
+                "f_bn Hz",
+                t.dynamics.base_natural_frequency_hz,
+                Quantity::Dimensionless,
+                KeyRole::Info,
+            ),
+            key(
+                "friction_total_n",
+                "friction",
+                Some(t.friction.total_n),
+                Quantity::Force,
+                KeyRole::Info,
+            ),
+            key(
+                "friction_coefficient",
+                "µ",
+                Some(t.friction.coefficient),
+                Quantity::Dimensionless,
+                KeyRole::Info,
+            ),
+            key(
+                "power_loss_w",
+                "power",
+                Some(t.friction.power_w),
+                Quantity::Power,
+                KeyRole::Info,
+            ),
+        ]);
+    }
     View {
         system: super::SYSTEM_ID,
         tables: vec![Table {
@@ -313,7 +348,9 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             columns: ROLLER_COLUMNS.to_vec(),
             rows,
         }],
-        charts: vec![load_chart],
+        charts: std::iter::once(load_chart)
+            .chain(super::view_tribo::charts(a.tribo.as_ref()))
+            .collect(),
         element_charts,
         element_chart_pane: 0,
         summary,
@@ -322,8 +359,9 @@ pub fn view(a: &CylindricalAnalysis) -> View {
         thermal: None,
         stats: SolveStats {
             iterations: q.iterations,
-            inner_iterations: 0,
-            names: ["ring Newton", "-"],
+            // The dynamics' accepted steps beside the ring Newton's iterations.
+            inner_iterations: a.tribo.as_ref().map_or(0, |t| t.dynamics.stats.steps),
+            names: ["ring Newton", "dynamics steps"],
             wall_time_s: a.wall_time_s,
         },
         warnings: a
