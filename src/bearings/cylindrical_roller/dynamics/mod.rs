@@ -611,7 +611,7 @@ pub fn simulate(
                     let was = forced
                         .iter()
                         .find(|(j, _)| *j == index)
-                        .map_or_else(|| rhs.roller(index, t, &y).gap_m, |&(_, s)| s);
+                        .map_or_else(|| rhs.gap(index, t, &y), |&(_, s)| s);
                     let sign = if was > 0.0 { -1.0 } else { 1.0 };
                     if sign < 0.0 && te >= settle {
                         stats.contact_losses_after_settle += 1;

@@ -39,14 +39,27 @@ impl Rhs {
         self.cage_speed_rad_s * t + self.phases.get(i).copied().unwrap_or(0.0)
     }
 
-    /// Roller `i`'s contact at time `t` in state `y` = (x, y, ẋ, ẏ, …).
-    pub fn roller(&self, i: usize, t: f64, y: &[f64]) -> Contact {
+    /// Roller `i`'s approach p = x cos θ_i + y sin θ_i and its rate at time `t` in state
+    /// `y` = (x, y, ẋ, ẏ, …).
+    fn approach(&self, i: usize, t: f64, y: &[f64]) -> (f64, f64) {
         let (s, c) = self.angle(i, t).sin_cos();
         let (x, yy, vx, vy) = (y[0], y[1], y[2] * self.omega_ref, y[3] * self.omega_ref);
         let p = x * c + yy * s;
         // d/dt(x cos θ + y sin θ) includes θ̇ = ω_c (the rollers orbit the loaded shaft).
         let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (yy * c - x * s);
+        (p, p_dot)
+    }
+
+    /// Roller `i`'s contact at time `t` in state `y` = (x, y, ẋ, ẏ, …).
+    pub fn roller(&self, i: usize, t: f64, y: &[f64]) -> Contact {
+        let (p, p_dot) = self.approach(i, t, y);
         self.law.contact(p, p_dot)
+    }
+
+    /// Roller `i`'s event function alone ([`Contact::gap_m`] without the film solve).
+    pub fn gap(&self, i: usize, t: f64, y: &[f64]) -> f64 {
+        let (p, p_dot) = self.approach(i, t, y);
+        self.law.gap(p, p_dot)
     }
 
     /// The contact force Σ W_i (cos θ_i, sin θ_i) at a frozen time `t` and position
@@ -151,7 +164,7 @@ impl Event for ContactEvent<'_> {
                 return sign * f64::MIN_POSITIVE;
             }
         }
-        self.rhs.roller(self.roller, t, y).gap_m
+        self.rhs.gap(self.roller, t, y)
     }
     fn terminal(&self) -> bool {
         true
