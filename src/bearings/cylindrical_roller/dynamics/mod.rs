@@ -9,7 +9,8 @@
 //! with a terminal event at every contact loss and regain (δ^(10/9) is not smooth there)
 //! after which the integration restarts, so no step straddles a kink.
 //!
-//! No damping in the seed: the oscillation after release never decays, and
+//! No damping in the seed: without the film's squeeze term (or `damping_ratio`) the
+//! oscillation after release never decays, and
 //! `settle_revolutions` is a count of shaft revolutions skipped before sampling, not a
 //! convergence test (the result's `note` says so).
 
@@ -772,9 +773,16 @@ fn assemble(
         roller_load_harmonics: harmonics,
         cycle,
         stats: a.stats,
-        note: "settle_revolutions is a count of shaft revolutions skipped before sampling, \
-               not a convergence test: the seed's model has no damping, so the oscillation \
-               after release never decays"
-            .to_string(),
+        note: match (&model.film, model.damping_ratio > 0.0) {
+            (None, false) => "settle_revolutions is a count of shaft revolutions skipped \
+                before sampling, not a convergence test: without a film or damping the \
+                model is undamped, so the oscillation after release never decays"
+                .to_string(),
+            _ => "settle_revolutions is a count of shaft revolutions skipped before \
+                sampling, not a convergence test: the release oscillation decays only \
+                through the squeeze term or dynamics.damping_ratio, and what is left of it \
+                shows in the spectra as the f_bn line"
+                .to_string(),
+        },
     })
 }
