@@ -739,7 +739,10 @@ fn tui_snapshot_shipped_decks() {
             let cmds = app.handle(AppEvent::Resize(w, h)); // what the pane needs
             run_sync_tolerant(&mut app, cmds);
             snap(
-                &format!("deck_{stem}_{}", app.pane_title(pane).to_lowercase()),
+                &format!(
+                    "deck_{stem}_{}",
+                    app.pane_title(pane).to_lowercase().replace(' ', "_")
+                ),
                 &app,
                 w,
                 h,

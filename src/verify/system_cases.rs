@@ -475,7 +475,7 @@ fn cylindrical_cases(out: &mut Vec<Case>) {
     out.push(case(
         "cylindrical NASA 210 CRB Stribeck number (0.045 mm clearance)",
         5.974611127962,
-        "discrete straight-roller equilibrium (SciPy root find); 5.876 published for a continuous integral",
+        "discrete straight roller (SciPy root); 5.876 published, continuous",
         stribeck_number(&r, 14.0, 6940.0),
         5e-4,
         &note(&r, "21 slices over the deck's abrupt dub-off ends"),
