@@ -11,6 +11,8 @@
 //! where `r1..r4` alone are the cubic Hermite interpolant through
 //! `(y0, h·f0)` and `(y1, h·f1)`, and `r5` is DOPRI5's fourth-order correction
 //! (zero for the Hermite cubic). One evaluation routine therefore serves both.
+//! DOP853's seventh-order extension continues the same nesting with `r6..r8`:
+//! `… r4 + (1−θ) (r5 + θ (r6 + (1−θ) (r7 + θ r8)))` (Hairer's `contd8`).
 
 /// Continuous extension of the numerical solution over `[t, t + h]`.
 #[derive(Debug, Clone)]
@@ -22,6 +24,11 @@ pub(crate) struct Interpolant {
     r3: Vec<f64>,
     r4: Vec<f64>,
     r5: Vec<f64>,
+    r6: Vec<f64>,
+    r7: Vec<f64>,
+    r8: Vec<f64>,
+    /// Whether `r6..r8` are in use (DOP853).
+    high: bool,
 }
 
 impl Interpolant {
@@ -35,6 +42,10 @@ impl Interpolant {
             r3: vec![0.0; n],
             r4: vec![0.0; n],
             r5: vec![0.0; n],
+            r6: vec![0.0; n],
+            r7: vec![0.0; n],
+            r8: vec![0.0; n],
+            high: false,
         }
     }
 
@@ -51,6 +62,7 @@ impl Interpolant {
     ) {
         self.t = t;
         self.h = h;
+        self.high = false;
         let it = self
             .r1
             .iter_mut()
@@ -76,6 +88,12 @@ impl Interpolant {
         &mut self.r5
     }
 
+    /// Mutable access to `r5..r8` of DOP853's extension (after `set_hermite`).
+    pub(crate) fn high_mut(&mut self) -> (&mut [f64], &mut [f64], &mut [f64], &mut [f64]) {
+        self.high = true;
+        (&mut self.r5, &mut self.r6, &mut self.r7, &mut self.r8)
+    }
+
     /// Evaluate the interpolant at time `t_out` into `out`.
     ///
     /// Callers only ask for times inside the step; outside it the polynomial is an
@@ -87,6 +105,20 @@ impl Interpolant {
             (t_out - self.t) / self.h
         };
         let theta1 = 1.0 - theta;
+        if self.high {
+            let it = self
+                .r1
+                .iter()
+                .zip(&self.r2)
+                .zip(&self.r3)
+                .zip(&self.r4)
+                .zip(self.r5.iter().zip(&self.r6).zip(&self.r7).zip(&self.r8));
+            for (o, ((((r1, r2), r3), r4), (((r5, r6), r7), r8))) in out.iter_mut().zip(it) {
+                let tail = r5 + theta * (r6 + theta1 * (r7 + theta * r8));
+                *o = r1 + theta * (r2 + theta1 * (r3 + theta * (r4 + theta1 * tail)));
+            }
+            return;
+        }
         let it = self
             .r1
             .iter()

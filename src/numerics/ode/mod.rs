@@ -5,7 +5,9 @@
 //! and a single entry point, [`solve`], runs one of two integrators:
 //!
 //! * [`Method::DormandPrince45`]: the explicit Dormand–Prince 5(4) pair with its
-//!   fourth-order dense output — cheapest for non-stiff problems;
+//!   fourth-order dense output — cheapest for non-stiff problems at loose tolerances;
+//! * [`Method::Dop853`]: Hairer's explicit 8(5,3) pair with its seventh-order dense
+//!   output — fewer evaluations at tight tolerances on smooth problems;
 //! * [`Method::Sdirk`]: Rodas4, an L-stable linearly implicit (Rosenbrock) method of
 //!   order 4(3) for stiff problems;
 //! * [`Method::Auto`]: starts with DOPRI5 and switches, once and for good, to Rodas4
@@ -16,6 +18,7 @@
 //! them, and cancellation is polled before every step attempt.
 
 mod dense;
+mod dop853;
 mod explicit;
 mod implicit;
 mod problem;
@@ -25,6 +28,7 @@ mod tests;
 
 use crate::numerics::cancel::Cancel;
 use dense::{brent, Interpolant};
+use dop853::Dop853;
 use explicit::Dopri5;
 use implicit::Rodas4;
 pub use problem::{Direction, Event, FnEvent, FnSystem, Method, OdeOptions, OdeSystem, Output};
@@ -141,6 +145,9 @@ const MAX_DECREASE: f64 = 5.0;
 /// from its last Jacobian, so it grows more cautiously).
 const MAX_INCREASE_EXPLICIT: f64 = 10.0;
 const MAX_INCREASE_IMPLICIT: f64 = 6.0;
+/// DOP853's step-change bounds (Hairer's FAC1 = 0.333, FAC2 = 6).
+const MAX_INCREASE_DOP853: f64 = 6.0;
+const MAX_DECREASE_DOP853: f64 = 3.0;
 /// Step reduction after a non-finite trial: harsher than an error rejection because
 /// the error estimate, which would say by how much, does not exist.
 const NONFINITE_SHRINK: f64 = 0.25;
@@ -159,6 +166,8 @@ const NONSTIFF_RESET: usize = 6;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Active {
     Explicit,
+    /// DOP853.
+    Explicit8,
     Implicit,
 }
 
@@ -166,6 +175,7 @@ impl Active {
     fn error_exponent(self) -> f64 {
         match self {
             Active::Explicit => explicit::ERROR_EXPONENT,
+            Active::Explicit8 => dop853::ERROR_EXPONENT,
             Active::Implicit => implicit::ERROR_EXPONENT,
         }
     }
@@ -202,6 +212,9 @@ impl Controller {
                 self.facold = err.max(1e-4);
                 fac.clamp(1.0 / MAX_INCREASE_EXPLICIT, MAX_DECREASE)
             }
+            // Hairer's dop853.f defaults: no PI term (β = 0), h_new/h in [1/3, 6].
+            Active::Explicit8 => (err.powf(dop853::ERROR_EXPONENT) / SAFETY)
+                .clamp(1.0 / MAX_INCREASE_DOP853, MAX_DECREASE_DOP853),
             Active::Implicit => {
                 let mut fac = (err.powf(implicit::ERROR_EXPONENT) / SAFETY)
                     .clamp(1.0 / MAX_INCREASE_IMPLICIT, MAX_DECREASE);
@@ -351,6 +364,17 @@ impl Recorder {
                     self.next_time += 1;
                 }
             }
+        }
+    }
+
+    /// Whether a step ending at `t_stop` holds an output time other than `t_stop`
+    /// (which needs the dense output).
+    fn wants_dense(&self, t_stop: f64, dir: f64) -> bool {
+        match &self.mode {
+            Output::Times(times) => times
+                .get(self.next_time)
+                .is_some_and(|&tr| dir * (tr - t_stop) < 0.0),
+            Output::Final | Output::Steps => false,
         }
     }
 
@@ -576,6 +600,7 @@ pub fn solve<S: OdeSystem + ?Sized>(
 
     let mut active = match opts.method {
         Method::DormandPrince45 | Method::Auto => Active::Explicit,
+        Method::Dop853 => Active::Explicit8,
         Method::Sdirk => Active::Implicit,
     };
     let mut h = match (fixed, opts.h0) {
@@ -584,6 +609,7 @@ pub fn solve<S: OdeSystem + ?Sized>(
         (None, None) => {
             let order = match active {
                 Active::Explicit => 5.0,
+                Active::Explicit8 => 8.0,
                 Active::Implicit => 4.0,
             };
             initial_step(&mut rhs, t0, &y, &f0, dir, h_max, order, tol)
@@ -593,10 +619,14 @@ pub fn solve<S: OdeSystem + ?Sized>(
     let mut ctl = Controller::new(active);
     let mut stiffness = StiffnessDetector::default();
     let mut dopri = Dopri5::new(n);
+    let mut dop853: Option<Dop853> = match active {
+        Active::Explicit8 => Some(Dop853::new(n)),
+        _ => None,
+    };
     // The n×n storage of the implicit method is only allocated when needed.
     let mut rodas: Option<Rodas4> = match active {
         Active::Implicit => Some(Rodas4::new(n)),
-        Active::Explicit => None,
+        Active::Explicit | Active::Explicit8 => None,
     };
     let mut ip = Interpolant::new(n);
     let mut y_new = vec![0.0; n];
@@ -645,6 +675,9 @@ pub fn solve<S: OdeSystem + ?Sized>(
 
         let trial = match active {
             Active::Explicit => dopri.step(&mut rhs, t, &y, &f0, h, t_new, &mut y_new, tol),
+            Active::Explicit8 => dop853
+                .get_or_insert_with(|| Dop853::new(n))
+                .step(&mut rhs, t, &y, &f0, h, t_new, &mut y_new, tol),
             Active::Implicit => rodas
                 .get_or_insert_with(|| Rodas4::new(n))
                 .step(&mut rhs, t, &y, &f0, h, t_new, &mut y_new, tol),
@@ -661,6 +694,15 @@ pub fn solve<S: OdeSystem + ?Sized>(
         if let (Verdict::Accept(_), Active::Implicit, Some(r)) = (&verdict, active, rodas.as_mut())
         {
             if !r.finish(&mut rhs, t_new, &y_new) {
+                verdict = Verdict::NonFinite;
+            }
+        }
+        // DOP853 likewise (its error estimate does not use the FSAL stage, so a
+        // rejected step saves the evaluation).
+        if let (Verdict::Accept(_), Active::Explicit8, Some(d)) =
+            (&verdict, active, dop853.as_mut())
+        {
+            if !d.finish(&mut rhs, t_new, &y_new) {
                 verdict = Verdict::NonFinite;
             }
         }
@@ -707,13 +749,17 @@ pub fn solve<S: OdeSystem + ?Sized>(
         nonfinite_streak = 0;
         singular_streak = 0;
         last_failure_nonfinite = false;
-        let f_new: &[f64] = match (active, rodas.as_ref()) {
-            (Active::Implicit, Some(r)) => r.f_new(),
-            _ => dopri.f_new(),
-        };
+        // DOP853's dense output costs three evaluations: built below only if the step
+        // holds an output time or an event crossing.
+        let mut dense_ready = true;
         match active {
             Active::Explicit => dopri.dense(&mut ip, t, h, &y, &y_new, &f0),
-            Active::Implicit => ip.set_hermite(t, h, &y, &y_new, &f0, f_new),
+            Active::Implicit => {
+                if let Some(r) = rodas.as_ref() {
+                    ip.set_hermite(t, h, &y, &y_new, &f0, r.f_new());
+                }
+            }
+            Active::Explicit8 => dense_ready = false,
         }
 
         let switch_now = opts.method == Method::Auto
@@ -729,6 +775,14 @@ pub fn solve<S: OdeSystem + ?Sized>(
         {
             *gn = ev.value(t_new, &y_new);
             if crosses(ev.direction(), go, *gn) {
+                if !dense_ready {
+                    if let Some(d) = dop853.as_mut() {
+                        if !d.dense(&mut rhs, &mut ip, t, h, &y, &y_new) {
+                            return Err(OdeError::NonFinite { t });
+                        }
+                    }
+                    dense_ready = true;
+                }
                 let tr = if *gn == 0.0 {
                     t_new
                 } else {
@@ -764,6 +818,13 @@ pub fn solve<S: OdeSystem + ?Sized>(
             }
         }
 
+        if !dense_ready && rec.wants_dense(t_new, dir) {
+            if let Some(d) = dop853.as_mut() {
+                if !d.dense(&mut rhs, &mut ip, t, h, &y, &y_new) {
+                    return Err(OdeError::NonFinite { t });
+                }
+            }
+        }
         if let Some((index, te, ye)) = stop {
             rec.step(&ip, te, &ye, dir);
             return Ok(finish(
@@ -779,6 +840,11 @@ pub fn solve<S: OdeSystem + ?Sized>(
         rec.step(&ip, t_new, &y_new, dir);
 
         // Advance.
+        let f_new: &[f64] = match (active, rodas.as_ref(), dop853.as_ref()) {
+            (Active::Implicit, Some(r), _) => r.f_new(),
+            (Active::Explicit8, _, Some(d)) => d.f_new(),
+            _ => dopri.f_new(),
+        };
         copy_into(&mut f0, f_new);
         std::mem::swap(&mut y, &mut y_new);
         t = t_new;

@@ -51,6 +51,12 @@ pub enum Method {
     /// dense output. Efficient while the step size is limited by accuracy; on stiff
     /// problems it is limited by stability instead and crawls.
     DormandPrince45,
+    /// Hairer's explicit DOP853: order 8 with a 5(3) error estimate and a seventh-order
+    /// dense output (Hairer, Nørsett & Wanner I, §II.5–II.6; SciPy's `DOP853`): twelve
+    /// right-hand-side evaluations per step, three more for the dense output of a step
+    /// that holds an output time or an event. Far fewer steps than DOPRI5 at tight
+    /// tolerances on smooth non-stiff problems; no stiffness switch.
+    Dop853,
     /// The implicit method for stiff problems: **Rodas4** (Hairer & Wanner, *Solving
     /// ODE II*, §IV.7), a 6-stage Rosenbrock method of order 4 with an embedded
     /// order-3 error estimate. All stages share one diagonal coefficient γ = 1/4

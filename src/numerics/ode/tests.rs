@@ -1086,3 +1086,155 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// DOP853.
+
+/// Largest error of fixed-step DOP853 on the harmonic oscillator y'' = −y from (1, 0)
+/// over [0, 10] (about 1.6 periods), against (cos t, −sin t).
+fn oscillator_fixed_step_error(method: Method, h: f64) -> f64 {
+    let o = OdeOptions {
+        fixed_step: Some(h),
+        method,
+        ..OdeOptions::default()
+    };
+    let sol = run(&oscillator(), 0.0, &[1.0, 0.0], 10.0, &o, Output::Steps);
+    sol.t
+        .iter()
+        .zip(&sol.y)
+        .map(|(&t, y)| (y[0] - t.cos()).abs().max((y[1] + t.sin()).abs()))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn dop853_fixed_step_converges_with_order_8() {
+    // Halving h must divide the error by ≈ 2^8. Window [7.4, 8.6]: steps large enough
+    // that the errors (1e-7 … 1e-10) stay far above rounding; a wrong coefficient in
+    // the tableau drops the order to ≤ 7 (most to ≤ 5), which the window rejects.
+    let hs = [0.8, 0.4, 0.2];
+    for p in observed_orders(&decay(1.0), Method::Dop853, &hs, exp_minus) {
+        assert!((7.4..=8.6).contains(&p), "decay order {p}");
+    }
+    let errs: Vec<f64> = hs
+        .iter()
+        .map(|&h| oscillator_fixed_step_error(Method::Dop853, h))
+        .collect();
+    eprintln!("oscillator errors {errs:?}");
+    for e in errs.windows(2) {
+        let p = (e[0] / e[1]).log2();
+        assert!((7.4..=8.6).contains(&p), "oscillator order {p}");
+    }
+}
+
+#[test]
+fn dop853_dense_output_matches_the_exact_solution() {
+    // 201 output times over ~3 periods. The extension is of order 7 against the step's
+    // 8, so allow 20·rtol as for DOPRI5; outputs build the dense output lazily and must
+    // not change the step sequence.
+    let times: Vec<f64> = (0..=200).map(|i| f64::from(i) * 0.1).collect();
+    for rtol in [1e-6, 1e-9, 1e-12] {
+        let o = opts(Method::Dop853, rtol, rtol * 1e-2);
+        let sol = run(
+            &oscillator(),
+            0.0,
+            &[1.0, 0.0],
+            20.0,
+            &o,
+            Output::Times(times.clone()),
+        );
+        let plain = run(&oscillator(), 0.0, &[1.0, 0.0], 20.0, &o, Output::Final);
+        assert_eq!(sol.stats.steps, plain.stats.steps);
+        assert_eq!(sol.t, times);
+        let worst = sol
+            .t
+            .iter()
+            .zip(&sol.y)
+            .map(|(&t, y)| (y[0] - t.cos()).abs().max((y[1] + t.sin()).abs()))
+            .fold(0.0, f64::max);
+        eprintln!("dense DOP853 rtol {rtol:e}: worst {worst:e}");
+        assert!(
+            worst < 20.0 * rtol,
+            "rtol {rtol:e}: worst dense error {worst:e}"
+        );
+    }
+}
+
+#[test]
+fn dop853_locates_events_as_dopri5_does() {
+    // exp(−t) = 0.5 at ln 2 (non-terminal), and the oscillator's cos t = 0 at π/2
+    // (terminal). At rtol 1e-12 both methods' dense outputs are accurate to ~1e-12
+    // and the slopes are 0.5 and 1, so the times are within 1e-10 of the exact ones
+    // and of each other.
+    for method in [Method::DormandPrince45, Method::Dop853] {
+        let mut ev = FnEvent::new(|_t, y: &[f64]| y[0] - 0.5);
+        let sol = solve(
+            &decay(1.0),
+            0.0,
+            &[1.0],
+            2.0,
+            &opts(method, 1e-12, 1e-14),
+            &mut [&mut ev],
+            Output::Final,
+            Cancel::NONE,
+        )
+        .unwrap();
+        assert_eq!(sol.events.len(), 1);
+        assert!((sol.events[0].t - LN_2).abs() < 1e-10, "{method:?}");
+        assert_eq!(sol.termination, Termination::ReachedEnd);
+
+        let mut ev = FnEvent::new(|_t, y: &[f64]| y[0]).with_terminal(true);
+        let sol = solve(
+            &oscillator(),
+            0.0,
+            &[1.0, 0.0],
+            5.0,
+            &opts(method, 1e-12, 1e-14),
+            &mut [&mut ev],
+            Output::Final,
+            Cancel::NONE,
+        )
+        .unwrap();
+        let Termination::Event { t, .. } = sol.termination else {
+            panic!("{method:?}: no terminal event");
+        };
+        assert!((t - PI / 2.0).abs() < 1e-10, "{method:?}: {t}");
+        assert!((sol.y_final[1] + 1.0).abs() < 1e-10);
+    }
+}
+
+#[test]
+fn dop853_agrees_with_dopri5_at_tight_tolerance_with_less_work() {
+    // A nonlinear problem without a closed form: the Van der Pol oscillator (µ = 1)
+    // over [0, 10]. At rtol 1e-12 both are accurate to ~1e-10 (global error ≈ a few
+    // hundred rtol over ~1.5 periods), so they agree to 1e-9; DOP853 needs fewer
+    // right-hand-side evaluations there (the point of an eighth-order method).
+    let vdp = FnSystem::new(2, |_t, y: &[f64], d: &mut [f64]| {
+        d[0] = y[1];
+        d[1] = (1.0 - y[0] * y[0]) * y[1] - y[0];
+    });
+    let a = run(
+        &vdp,
+        0.0,
+        &[2.0, 0.0],
+        10.0,
+        &opts(Method::DormandPrince45, 1e-12, 1e-14),
+        Output::Final,
+    );
+    let b = run(
+        &vdp,
+        0.0,
+        &[2.0, 0.0],
+        10.0,
+        &opts(Method::Dop853, 1e-12, 1e-14),
+        Output::Final,
+    );
+    let diff = (a.y_final[0] - b.y_final[0])
+        .abs()
+        .max((a.y_final[1] - b.y_final[1]).abs());
+    eprintln!(
+        "vdp: diff {diff:e}, evaluations DOPRI5 {} DOP853 {}",
+        a.stats.rhs_evaluations, b.stats.rhs_evaluations
+    );
+    assert!(diff < 1e-9, "{diff:e}");
+    assert!(b.stats.rhs_evaluations < a.stats.rhs_evaluations);
+}
