@@ -449,10 +449,10 @@ impl Dop853 {
         tol: Tol,
     ) -> Result<f64, TrialError> {
         self.k[0].copy_from_slice(f0);
-        for s in 1..12 {
+        for (s, &cs) in C.iter().enumerate().take(12).skip(1) {
             Self::stage_point(&self.k, &mut self.stage, y, h, s);
             // C[11] = 1: land on t_new bit-exactly.
-            let ts = if s == 11 { t_new } else { t + C[s] * h };
+            let ts = if s == 11 { t_new } else { t + cs * h };
             if !rhs.eval(ts, &self.stage, &mut self.k[s]) {
                 return Err(TrialError::NonFinite);
             }
@@ -513,9 +513,9 @@ impl Dop853 {
         y: &[f64],
         y_new: &[f64],
     ) -> bool {
-        for s in 13..16 {
+        for (s, &cs) in C.iter().enumerate().skip(13) {
             Self::stage_point(&self.k, &mut self.stage, y, h, s);
-            if !rhs.eval(t + C[s] * h, &self.stage, &mut self.k[s]) {
+            if !rhs.eval(t + cs * h, &self.stage, &mut self.k[s]) {
                 return false;
             }
         }
