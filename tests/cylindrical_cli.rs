@@ -331,3 +331,21 @@ fn table_3_band_at_the_shipped_positions() {
     let f_c = num(&j["dynamics"]["cage_frequency_hz"]);
     assert!((f_c - 13.251).abs() < 1e-3, "f_c {f_c}");
 }
+
+/// Too few revolutions after settling for one whole cage cycle: the message quotes the
+/// deck's own numbers (21 revolutions, 20 settling; one cage cycle is ω_i/ω_c =
+/// 209/83.26 ≈ 2.51 shaft revolutions, so at least 23 are needed), not cage cycles.
+#[test]
+fn too_short_a_run_names_the_deck_revolutions() {
+    let (code, _, err) = run(&[
+        "run",
+        &deck("crb_truck.toml"),
+        "--set",
+        "dynamics.revolutions=21",
+    ]);
+    assert_ne!(code, 0);
+    assert!(err.contains("dynamics.revolutions = 21 "), "{err}");
+    assert!(err.contains("dynamics.settle_revolutions = 20"), "{err}");
+    assert!(err.contains("at least 23"), "{err}");
+    assert!(err.contains("2.510 shaft revolutions"), "{err}");
+}

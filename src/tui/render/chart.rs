@@ -8,7 +8,7 @@ use ratatui::layout::{Constraint, Rect};
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::Line;
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition, Paragraph, Widget};
 
 use super::{no_solution_text, pane_block, stale_note, DIM, SERIES_COLOURS};
 use crate::tui::app::{App, Pane};
@@ -110,7 +110,12 @@ pub(super) fn series_datasets(s: &view_model::ChartSeries) -> Vec<Dataset<'_>> {
         .collect()
 }
 
-/// Draws `datasets` on `s`'s axes inside `block`.
+/// Draws `datasets` on `s`'s axes inside `block`, the legend in the corner where it
+/// hides the least of what is drawn (data and axis titles): the top right when that
+/// corner is free, else the first free one of top left, bottom right, bottom left, else
+/// the one covering the fewest cells. Measured, not guessed: the chart is drawn once
+/// without a legend and once per corner into scratch buffers; the cells a legend changes
+/// are its box, and the bare chart's non-blank cells inside that box are what it hides.
 pub(super) fn draw_chart(
     s: &view_model::ChartSeries,
     datasets: Vec<Dataset>,
@@ -120,22 +125,174 @@ pub(super) fn draw_chart(
 ) {
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
     let x_prec = label_precision(s.x_bounds[1]);
-    let chart = Chart::new(datasets)
-        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
-        .block(block)
-        .x_axis(
-            Axis::default()
-                .title(s.x_label.clone())
-                .style(Style::default().fg(DIM))
-                .bounds(s.x_bounds)
-                .labels(axis_labels(s.x_bounds, x_prec)),
-        )
-        .y_axis(
-            Axis::default()
-                .title(s.y_label.clone())
-                .style(Style::default().fg(DIM))
-                .bounds(s.y_bounds)
-                .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds[1]))),
+    let make = |legend: Option<LegendPosition>| {
+        Chart::new(datasets.clone())
+            .legend_position(legend)
+            .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
+            .block(block.clone())
+            .x_axis(
+                Axis::default()
+                    .title(s.x_label.clone())
+                    .style(Style::default().fg(DIM))
+                    .bounds(s.x_bounds)
+                    .labels(axis_labels(s.x_bounds, x_prec)),
+            )
+            .y_axis(
+                Axis::default()
+                    .title(s.y_label.clone())
+                    .style(Style::default().fg(DIM))
+                    .bounds(s.y_bounds)
+                    .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds[1]))),
+            )
+    };
+    make(legend_corner(area, &make)).render(area, buf);
+}
+
+/// The legend corner that hides the fewest non-blank cells of the chart `make(None)`
+/// draws (see [`draw_chart`]); `None` when no corner has room for a legend.
+fn legend_corner<'a>(
+    area: Rect,
+    make: &impl Fn(Option<LegendPosition>) -> Chart<'a>,
+) -> Option<LegendPosition> {
+    let mut bare = Buffer::empty(area);
+    make(None).render(area, &mut bare);
+    let mut best: Option<(usize, LegendPosition)> = None;
+    for corner in [
+        LegendPosition::TopRight,
+        LegendPosition::TopLeft,
+        LegendPosition::BottomRight,
+        LegendPosition::BottomLeft,
+    ] {
+        let mut with = Buffer::empty(area);
+        make(Some(corner)).render(area, &mut with);
+        let Some(boxed) = changed_box(&bare, &with, area) else {
+            // No room for a legend at all: every corner is alike.
+            return None;
+        };
+        let hidden = non_blank_cells(&bare, boxed);
+        if best.is_none_or(|(h, _)| hidden < h) {
+            best = Some((hidden, corner));
+        }
+        if hidden == 0 {
+            break;
+        }
+    }
+    best.map(|(_, corner)| corner)
+}
+
+/// The smallest rectangle holding every cell where `a` and `b` differ.
+fn changed_box(a: &Buffer, b: &Buffer, area: Rect) -> Option<Rect> {
+    let mut lo: Option<(u16, u16)> = None;
+    let mut hi = (0u16, 0u16);
+    for y in area.top()..area.bottom() {
+        for x in area.left()..area.right() {
+            if a[(x, y)] != b[(x, y)] {
+                let l = lo.get_or_insert((x, y));
+                *l = (l.0.min(x), l.1.min(y));
+                hi = (hi.0.max(x), hi.1.max(y));
+            }
+        }
+    }
+    lo.map(|(x, y)| Rect::new(x, y, hi.0 - x + 1, hi.1 - y + 1))
+}
+
+/// Cells of `buf` inside `r` that show something.
+fn non_blank_cells(buf: &Buffer, r: Rect) -> usize {
+    (r.top()..r.bottom())
+        .flat_map(|y| (r.left()..r.right()).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            // U+2800 is the empty braille pattern: nothing drawn.
+            let sym = buf[(x, y)].symbol();
+            !sym.trim().is_empty() && sym != "\u{2800}"
+        })
+        .count()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn series(points: Vec<(f64, f64)>) -> view_model::ChartSeries {
+        view_model::ChartSeries {
+            title: String::new(),
+            x_label: "x m".into(),
+            y_label: "y N".into(),
+            series: vec![
+                ("first series".into(), points.clone()),
+                ("second".into(), points),
+            ],
+            x_bounds: [0.0, 1.0],
+            y_bounds: [0.0, 1.0],
+        }
+    }
+
+    fn line(f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+        (0..=400)
+            .map(|i| f64::from(i) / 400.0)
+            .map(|x| (x, f(x)))
+            .collect()
+    }
+
+    /// The cells the legend box covers and the bare chart's non-blank cells under it.
+    fn hidden_under_legend(s: &view_model::ChartSeries, area: Rect) -> (Rect, usize) {
+        let mut bare_s = s.clone();
+        for (name, _) in &mut bare_s.series {
+            name.clear();
+        }
+        let mut bare = Buffer::empty(area);
+        draw_chart(
+            &bare_s,
+            series_datasets(&bare_s),
+            Block::bordered(),
+            area,
+            &mut bare,
         );
-    chart.render(area, buf);
+        let mut drawn = Buffer::empty(area);
+        draw_chart(s, series_datasets(s), Block::bordered(), area, &mut drawn);
+        let boxed = changed_box(&bare, &drawn, area).expect("a legend is drawn");
+        (boxed, non_blank_cells(&bare, boxed))
+    }
+
+    /// A rising line fills the top-right corner (ratatui's default legend place), so the
+    /// legend moves to a free corner and hides nothing; a falling line leaves the top
+    /// right free and the legend stays there (issue 30, item 3: legends go where no data
+    /// is). Both at 60×20 and 80×24.
+    #[test]
+    fn the_legend_goes_where_no_data_is() {
+        for (w, h) in [(60, 20), (80, 24)] {
+            let area = Rect::new(0, 0, w, h);
+            let (boxed, hidden) = hidden_under_legend(&series(line(|x| x)), area);
+            assert_eq!(hidden, 0, "rising line, {w}×{h}: legend at {boxed:?}");
+            assert!(
+                boxed.x < w / 2,
+                "rising line: the legend left the right side, {boxed:?}"
+            );
+            let (boxed, hidden) = hidden_under_legend(&series(line(|x| 1.0 - x)), area);
+            assert_eq!(hidden, 0, "falling line, {w}×{h}: legend at {boxed:?}");
+            assert!(
+                boxed.x > w / 2 && boxed.y < h / 2,
+                "falling line: top right, {boxed:?}"
+            );
+        }
+    }
+
+    /// With data everywhere the legend still shows, in the corner hiding the least.
+    #[test]
+    fn a_full_chart_still_has_its_legend() {
+        let area = Rect::new(0, 0, 60, 20);
+        let zigzag: Vec<(f64, f64)> = (0..=2000)
+            .map(|i| {
+                let x = f64::from(i) / 2000.0;
+                (x, (x * 300.0).sin().abs())
+            })
+            .collect();
+        let s = series(zigzag);
+        let mut drawn = Buffer::empty(area);
+        draw_chart(&s, series_datasets(&s), Block::bordered(), area, &mut drawn);
+        let text: String = (0..area.height)
+            .flat_map(|y| (0..area.width).map(move |x| (x, y)))
+            .map(|(x, y)| drawn[(x, y)].symbol().to_string())
+            .collect();
+        assert!(text.contains("first series"), "{text}");
+    }
 }

@@ -233,6 +233,26 @@ pub enum DynamicsError {
         /// The allowed range.
         allowed: &'static str,
     },
+    /// Too little simulated after settling for one whole cage cycle (the spectra and the
+    /// friction cycle are taken over whole cage cycles).
+    #[error(
+        "dynamics.revolutions = {revolutions} leaves {after:.3} shaft revolutions after \
+         dynamics.settle_revolutions = {settle}, less than one whole cage cycle \
+         ({per_cycle:.3} shaft revolutions at this cage speed): raise dynamics.revolutions \
+         to at least {needed} or lower dynamics.settle_revolutions"
+    )]
+    ShorterThanACageCycle {
+        /// Shaft revolutions simulated (the deck's value).
+        revolutions: f64,
+        /// Shaft revolutions skipped.
+        settle: f64,
+        /// Shaft revolutions left after settling.
+        after: f64,
+        /// Shaft revolutions per cage cycle.
+        per_cycle: f64,
+        /// The smallest whole number of revolutions that gives one cage cycle.
+        needed: f64,
+    },
     /// The work bound was reached.
     #[error(
         "the dynamics took more than {steps} integration steps by t = {t_s:.4} s; lower \
@@ -499,12 +519,26 @@ pub fn simulate(
     let (dt, count, per_cycle) = if fc > 0.0 {
         let per_cycle = (model.sample_rate_hz / fc).round().max(8.0);
         let cycles = ((duration - settle) * fc + 1e-9).floor();
-        input(
-            "dynamics.revolutions",
-            duration / (TAU / model.cage_speed_rad_s.max(1e-300)),
-            cycles >= 1.0,
-            "enough revolutions after settling for one whole cage cycle",
-        )?;
+        if cycles < 1.0 {
+            // Name the deck's own numbers (shaft revolutions), not cage cycles.
+            let (revolutions, settle_rev, shaft_rev_s) = match model.span {
+                Span::Revolutions {
+                    shaft_speed_rad_s,
+                    revolutions,
+                    settle_revolutions,
+                } => (revolutions, settle_revolutions, TAU / shaft_speed_rad_s),
+                // Validation runs in seconds: report seconds as "revolutions" of 1 s.
+                Span::Duration { .. } => (duration, settle, 1.0),
+            };
+            let per_cycle = 1.0 / (fc * shaft_rev_s);
+            return Err(DynamicsError::ShorterThanACageCycle {
+                revolutions,
+                settle: settle_rev,
+                after: (duration - settle) / shaft_rev_s,
+                per_cycle,
+                needed: (settle_rev + per_cycle).ceil(),
+            });
+        }
         (
             1.0 / (fc * per_cycle),
             (cycles * per_cycle) as usize,
