@@ -32,6 +32,8 @@ pub enum Display {
     Moment,
     /// Surface and sliding speeds: m/s or ft/s.
     Speed,
+    /// Small velocities (a shaft's vibration velocity): mm/s or in/s.
+    SmallSpeed,
     /// A state stored as its index into these names (the tapered roller's
     /// `both-races`/`cup-and-flange`/`free`): the pane shows the name, CSV the index.
     Choice(&'static [&'static str]),
@@ -59,6 +61,8 @@ impl Display {
             (Display::Moment, Units::Us) => v / INCH_LBF_N_M,
             (Display::Speed, Units::Si) => v,
             (Display::Speed, Units::Us) => v / FOOT_M,
+            (Display::SmallSpeed, Units::Si) => v * 1e3,
+            (Display::SmallSpeed, Units::Us) => v / INCH_M,
         }
     }
 
@@ -83,6 +87,8 @@ impl Display {
             (Display::Moment, Units::Us) => "lbf·in",
             (Display::Speed, Units::Si) => "m/s",
             (Display::Speed, Units::Us) => "ft/s",
+            (Display::SmallSpeed, Units::Si) => "mm/s",
+            (Display::SmallSpeed, Units::Us) => "in/s",
         }
     }
 
@@ -611,6 +617,7 @@ mod tests {
         assert_eq!(Display::Plain.convert(7.0, Units::Us), 7.0);
         assert!(close(us(Display::Moment, INCH_LBF_N_M), 1.0));
         assert!(close(us(Display::Speed, FOOT_M), 1.0));
+        assert!(close(us(Display::SmallSpeed, INCH_M), 1.0));
         // BTU_PER_HOUR_PER_WATT is given to 10 digits (units.rs checks it to 1e-10).
         let btu_per_hour = us(Display::Power, crate::units::BTU_J / crate::units::HOUR_S);
         assert!((btu_per_hour - 1.0).abs() < 1e-9);

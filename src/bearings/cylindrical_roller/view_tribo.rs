@@ -46,16 +46,20 @@ pub fn charts(t: Option<&Tribodynamics>) -> Vec<Chart> {
     vec![orbit(t), spectrum(t, false), spectrum(t, true), cycle(t)]
 }
 
+/// The x–ẋ phase plane after settling: the first cage cycle apart from the later ones
+/// (issue 25: "the first cycle dim"), drawn first so that the later cycles lie over it.
 fn orbit(t: &Tribodynamics) -> Chart {
     let s = &t.dynamics.series;
-    let pts: Vec<(f64, f64)> = thin(
-        &s.x_m
-            .iter()
-            .zip(&s.vx_m_s)
-            .map(|(&x, &v)| (x, v))
-            .collect::<Vec<_>>(),
-    );
-    let (lo, hi) = pts
+    let all: Vec<(f64, f64)> = s.x_m.iter().zip(&s.vx_m_s).map(|(&x, &v)| (x, v)).collect();
+    // Samples per cage cycle: the recorded cycle's length (whole cycles are sampled);
+    // with the cage frozen there is no cycle and the orbit is one series.
+    let per_cycle = t.dynamics.cycle.cage_angle_deg.len();
+    let split = if per_cycle > 0 && per_cycle < all.len() {
+        per_cycle + 1
+    } else {
+        0
+    };
+    let (lo, hi) = all
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
             (lo.min(p.0), hi.max(p.0))
@@ -65,6 +69,25 @@ fn orbit(t: &Tribodynamics) -> Chart {
         .dynamics
         .base_natural_frequency_hz
         .map_or_else(|| "-".to_string(), |f| format!("{f:.1}"));
+    let mut series = Vec::new();
+    if split > 0 {
+        series.push(Series {
+            name: "first cage cycle",
+            points: thin(&all[..split]),
+            display: None,
+        });
+        series.push(Series {
+            name: "later cycles",
+            points: thin(&all[split - 1..]),
+            display: None,
+        });
+    } else {
+        series.push(Series {
+            name: "orbit",
+            points: thin(&all),
+            display: None,
+        });
+    }
     Chart {
         title: format!(
             "x–ẋ after settling, f_bn {fbn} Hz, static x {:.4} µm",
@@ -77,18 +100,16 @@ fn orbit(t: &Tribodynamics) -> Chart {
         x: ChartAxis {
             label: "x",
             display: Display::Film,
-            bounds: pts.first().map(|_| [lo - pad, hi + pad]),
+            bounds: all.first().map(|_| [lo - pad, hi + pad]),
         },
         y: ChartAxis {
             label: "ẋ",
-            display: Display::Speed,
+            // mm/s: the vibration velocity is of order 1 mm/s, which m/s labels round
+            // to 0.001.
+            display: Display::SmallSpeed,
             bounds: None,
         },
-        series: vec![Series {
-            name: "orbit",
-            points: pts,
-            display: None,
-        }],
+        series,
         per_element: false,
     }
 }

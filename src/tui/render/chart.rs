@@ -14,14 +14,23 @@ use super::{no_solution_text, pane_block, stale_note, DIM, SERIES_COLOURS};
 use crate::tui::app::{App, Pane};
 use crate::tui::view_model;
 
-/// Decimals that keep an axis's labels distinct: none from 100 up, more below.
-fn label_precision(max: f64) -> usize {
-    match max.abs() {
+/// Decimals that keep an axis's labels distinct: none from 100 up, more below, and at
+/// least enough that the three labels (ends and middle) differ in their last two digits
+/// (±1 mm/s at three decimals of m/s would read 0.001, 0.000, -0.001).
+fn label_precision(b: [f64; 2]) -> usize {
+    let by_size = match b[1].abs() {
         m if m >= 100.0 => 0,
         m if m >= 10.0 => 1,
         m if m >= 1.0 => 2,
         _ => 3,
-    }
+    };
+    let step = 0.5 * (b[1] - b[0]).abs();
+    let by_step = if step.is_finite() && step > 0.0 {
+        (-step.log10()).ceil().clamp(-1.0, 8.0) as i64 + 1
+    } else {
+        0
+    };
+    by_size.max(usize::try_from(by_step).unwrap_or(0))
 }
 
 pub(super) fn axis_labels(b: [f64; 2], prec: usize) -> Vec<Line<'static>> {
@@ -124,7 +133,7 @@ pub(super) fn draw_chart(
     buf: &mut Buffer,
 ) {
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
-    let x_prec = label_precision(s.x_bounds[1]);
+    let x_prec = label_precision(s.x_bounds);
     let make = |legend: Option<LegendPosition>| {
         Chart::new(datasets.clone())
             .legend_position(legend)
@@ -142,7 +151,7 @@ pub(super) fn draw_chart(
                     .title(s.y_label.clone())
                     .style(Style::default().fg(DIM))
                     .bounds(s.y_bounds)
-                    .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds[1]))),
+                    .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds))),
             )
     };
     make(legend_corner(area, &make)).render(area, buf);
@@ -274,6 +283,17 @@ mod tests {
                 "falling line: top right, {boxed:?}"
             );
         }
+    }
+
+    /// Labels differ: a ±0.0011 axis gets four decimals, a 0–360 axis none, a 0–1.05
+    /// axis two (as before).
+    #[test]
+    fn axis_labels_are_distinct() {
+        assert_eq!(label_precision([-0.0011, 0.0011]), 4);
+        assert_eq!(label_precision([0.0, 360.0]), 0);
+        assert_eq!(label_precision([0.0, 1.05]), 2);
+        assert_eq!(label_precision([-1.212, -0.956]), 3);
+        assert_eq!(label_precision([0.0, 0.0]), 3);
     }
 
     /// With data everywhere the legend still shows, in the corner hiding the least.
