@@ -220,13 +220,17 @@ pub fn view(a: &CylindricalAnalysis) -> View {
         Summary {
             label: "x",
             value: q.displacement_m[0],
-            display: Display::SmallLength,
+            // µm (µin): the ring moves about a micrometre, which mm at four
+            // decimals shows as -0.0010.
+            display: Display::Film,
             precision: 4,
         },
         Summary {
             label: "y",
             value: q.displacement_m[1],
-            display: Display::SmallLength,
+            // µm (µin): the ring moves about a micrometre, which mm at four
+            // decimals shows as -0.0010.
+            display: Display::Film,
             precision: 4,
         },
         Summary {
