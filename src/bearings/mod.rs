@@ -81,6 +81,27 @@ pub struct SweepPlan {
     pub marker: Option<(&'static str, &'static str)>,
 }
 
+impl SweepPlan {
+    /// `points` values from 0 to `factor` × the case's own value of `key` (its magnitude),
+    /// at least to `floor`, evenly spaced: the workbench's default span around a deck.
+    pub fn span_from_zero(
+        case: &dyn Case,
+        key: &str,
+        factor: f64,
+        floor: f64,
+        points: usize,
+    ) -> Vec<f64> {
+        let here = case
+            .get(key)
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or(0.0)
+            .abs();
+        let top = (factor * here).max(floor);
+        let last = points.saturating_sub(1).max(1) as f64;
+        (0..points).map(|i| top * i as f64 / last).collect()
+    }
+}
+
 /// A fidelity setting of a case: how finely its elements are discretised (laminae,
 /// slices) and how tightly its equilibria are solved.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -80,19 +80,10 @@ impl FormSystem for CylindricalRoller {
         if n != 0 {
             return None;
         }
-        let here = case
-            .get("operating.radial_load")
-            .and_then(|v| v.parse::<f64>().ok())
-            .unwrap_or(0.0)
-            .abs();
-        let top = (2.5 * here).max(1000.0);
-        let points = 21;
         Some(SweepPlan {
             title: "W_max and K_xx ÷ value at zero radial load".to_string(),
             key: "operating.radial_load",
-            values: (0..points)
-                .map(|i| top * i as f64 / (points - 1) as f64)
-                .collect(),
+            values: SweepPlan::span_from_zero(case, "operating.radial_load", 2.5, 1000.0, 21),
             outputs: vec!["max_roller_load_n", "stiffness_xx_n_m"],
             normalise: true,
             marker: None,

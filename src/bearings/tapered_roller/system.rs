@@ -79,20 +79,10 @@ impl FormSystem for TaperedRoller {
         if n != 0 {
             return None;
         }
-        let here = case
-            .get("operating.inner_speed")
-            .and_then(|v| v.parse::<f64>().ok())
-            .unwrap_or(0.0)
-            .abs();
-        let top = (2.5 * here).max(10_000.0);
-        let points = 21;
-        let values = (0..points)
-            .map(|i| top * i as f64 / (points - 1) as f64)
-            .collect();
         Some(SweepPlan {
             title: "stiffness ÷ zero-speed value".to_string(),
             key: "operating.inner_speed",
-            values,
+            values: SweepPlan::span_from_zero(case, "operating.inner_speed", 2.5, 10_000.0, 21),
             outputs: vec![
                 "stiffness_xx_n_m",
                 "stiffness_zz_n_m",
