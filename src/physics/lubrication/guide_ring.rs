@@ -34,7 +34,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::physics::contact::point::{CurvatureSum, HertzMethod, HertzPointContact};
-use crate::physics::heat::cage_rail_friction_force_n;
+use crate::physics::heat::{cage_rail_friction_force_n, HeatError};
 use crate::physics::lubrication::film_point::PointFilmInputs;
 use crate::physics::lubrication::lamina_friction::{FilmRheology, RacewayTractionLaw};
 use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
@@ -219,15 +219,19 @@ impl GuideRingGeometry {
     /// Petroff torque of the bore film on the ring, N·m (signed: it opposes ω_g − ω_i):
     /// T = −2π·η·R_b³·L_b·(ω_g − ω_i)/c, through `heat::cage_rail_friction_force_n`
     /// (F = π·η·W·D²·|Δω|/dc with D = 2R_b, dc = 2c) times R_b.
+    ///
+    /// # Errors
+    /// [`GuideRingError::BadInput`] for a non-positive bore radius, width or clearance, or
+    /// a negative viscosity.
     pub fn bore_torque_nm(
         &self,
         viscosity_pa_s: f64,
         ring_speed_rad_s: f64,
         inner_speed_rad_s: f64,
-    ) -> f64 {
+    ) -> Result<f64, GuideRingError> {
         let dw = ring_speed_rad_s - inner_speed_rad_s;
-        if viscosity_pa_s <= 0.0 || dw == 0.0 {
-            return 0.0;
+        if viscosity_pa_s == 0.0 || dw == 0.0 {
+            return Ok(0.0);
         }
         let f = cage_rail_friction_force_n(
             viscosity_pa_s,
@@ -236,8 +240,14 @@ impl GuideRingGeometry {
             2.0 * self.bore_clearance_m,
             dw,
         )
-        .unwrap_or(0.0); // validated geometry and η > 0: the only error cases are excluded
-        -f * self.bore_radius_m * dw.signum()
+        .map_err(|e| match e {
+            HeatError::NotPositive { value, .. } => GuideRingError::BadInput {
+                name: "bore geometry or viscosity",
+                value,
+                allowed: "positive and finite",
+            },
+        })?;
+        Ok(-f * self.bore_radius_m * dw.signum())
     }
 }
 
@@ -289,7 +299,11 @@ pub fn end_contact(
         u_e,
     )
     .central_film_thickness_m()
-    .unwrap_or(0.0); // a loaded contact with valid η, α: only u_e = 0 gives h = 0 anyway
+    .map_err(|_| GuideRingError::BadInput {
+        name: "viscosity or pressure-viscosity coefficient of the end-contact film",
+        value: rheology.pressure_viscosity_pa_inv,
+        allowed: "finite and not negative",
+    })?;
     let force = if rheology.viscosity_pa_s <= 0.0 || v == 0.0 {
         0.0
     } else {
@@ -387,7 +401,7 @@ pub fn guide_ring_balance(
         hi = hi.max(w);
     }
     let residual = |w: f64| -> Result<f64, GuideRingError> {
-        let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s);
+        let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s)?;
         for k in rollers {
             t -= end_contact(geometry, &hertz, law, rheology, k, w)?.force_on_roller_n * r;
         }
@@ -412,7 +426,7 @@ pub fn guide_ring_balance(
         .iter()
         .map(|k| end_contact(geometry, &hertz, law, rheology, k, speed))
         .collect::<Result<Vec<_>, _>>()?;
-    let bore_torque_nm = geometry.bore_torque_nm(eta, speed, inner_speed_rad_s);
+    let bore_torque_nm = geometry.bore_torque_nm(eta, speed, inner_speed_rad_s)?;
     let ends_power_w: f64 = contacts.iter().map(|c| c.power_w).sum();
     let residual_nm = bore_torque_nm
         - contacts
@@ -523,10 +537,10 @@ mod tests {
     #[test]
     fn bore_torque_is_petroff() {
         let g = ring();
-        let t = g.bore_torque_nm(0.017, 250.0, 400.0);
+        let t = g.bore_torque_nm(0.017, 250.0, 400.0).expect("valid");
         let want = 2.0 * std::f64::consts::PI * 0.017 * 0.026f64.powi(3) * 0.006 * 150.0 / 1e-4;
         assert!((t - want).abs() < 1e-13 * want, "{t} vs {want}");
-        assert_eq!(g.bore_torque_nm(0.0, 250.0, 400.0), 0.0);
+        assert_eq!(g.bore_torque_nm(0.0, 250.0, 400.0), Ok(0.0));
     }
 
     /// Balance with unloaded roller ends: the ring runs with the inner ring and loses
