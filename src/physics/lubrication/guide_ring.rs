@@ -626,6 +626,32 @@ mod tests {
         assert!((c.radius_m / a - 1.0).abs() < 1e-12);
     }
 
+    /// The other limit: a bore film that barely brakes (clearance 1 m) lets the ring run
+    /// with the roller ends, ω_g → ω_c + u/r_g; the gap to that speed is below 1e-3 of the
+    /// gap between the inner ring and it (the bore torque is ~10⁻⁸ of the ends' slope).
+    #[test]
+    fn free_ring_follows_the_roller_ends() {
+        let mut g = ring();
+        g.bore_clearance_m = 1.0;
+        let (wi, wc, u) = (400.0, 160.0, 0.05);
+        let inp = vec![
+            EndContactInput {
+                load_n: 60.0,
+                roller_end_speed_m_s: u,
+                orbital_speed_rad_s: wc,
+            };
+            13
+        ];
+        let s = guide_ring_balance(&g, RacewayTractionLaw::Atz, &oil(), wi, &inp).expect("balance");
+        let w_end = wc + u / 0.031;
+        assert!(s.speed_rad_s >= w_end, "{}", s.speed_rad_s);
+        assert!(
+            s.speed_rad_s - w_end < 1e-3 * (wi - w_end),
+            "{} vs {w_end}",
+            s.speed_rad_s
+        );
+    }
+
     /// η = 0: no traction, no bore torque, no loss (and no error).
     #[test]
     fn inviscid_is_lossless() {
