@@ -4,14 +4,18 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod cage_film;
 pub mod film;
 pub mod film_point;
 pub mod greenwood_tripp;
+pub mod guide_ring;
 pub mod houpert;
+pub mod lamina_friction;
 pub mod mixed_friction;
 pub mod rheology;
 pub mod traction;
 pub mod traction_curve;
+pub mod walther;
 
 /// Which film-thickness formula the EHD stage uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]

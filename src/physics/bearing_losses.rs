@@ -1,0 +1,758 @@
+//! Where the power goes in a double-row spherical roller bearing (seed 002 §3, issue 27
+//! Model 2–4): the friction loss by mechanism, the friction torques, and the cage's torque
+//! imbalance at a measured cage speed, SI.
+//!
+//! This module knows no deck and no statics: the caller (the double-row system) passes
+//! the solved laminae and roller forces in a plain [`LossInputs`]; the physics is the
+//! shared lubrication code (`lamina_friction`, `guide_ring`, `cage_film`, `heat`).
+//!
+//! # Mechanisms (the output's contract names)
+//! * `raceway_inner_w`, `raceway_outer_w`: Σ F·v_sl over the laminae of each raceway
+//!   (seed eq. 3 under the deck's law), less the skew part below;
+//! * `skew_w`: per contact the sliding field along the roller is fitted (least squares
+//!   weighted by the lamina loads) as v(y) = v̄ + ω_s·(y − ȳ), ȳ the load centroid: a
+//!   translation plus a rotation ω_s about the contact normal. The traction's power then
+//!   splits exactly into v̄·ΣF + ω_s·ΣF·(y − ȳ) + a residual; the middle term, the moment
+//!   of the traction about the normal through the load centroid times the rotation rate it
+//!   works against, is the skew loss. It is a part of the contact's power reported apart,
+//!   so the raceway terms exclude it and the sum is unchanged. It is non-negative whenever
+//!   the traction grows with the local sliding (Newtonian: ω_s²·ΣkQ(y − ȳ)²);
+//! * `guide_ring_w`: the roller-end EHD contacts plus the ring's bore film, at the ring
+//!   speed of its torque balance (`guide_ring`), 0 without a guide ring;
+//! * `cage_pockets_w`: Martin's rigid-isoviscous pocket film, drag × roller surface speed;
+//! * `cage_land_w`: the cage's Petroff land on the guide ring or the inner ring;
+//! * `drag_w`: Palmgren viscous drag (`heat::viscous_drag_power_w`), off unless a drag
+//!   factor is given (not in the seed); 0 for η = 0 (the formula's low-speed floor would
+//!   otherwise churn an oil that is not there);
+//! * `total_w`: their sum; `shares_pct`: each over the total, %.
+//!
+//! # Torques
+//! M_fi, M_fo (`friction_torque_inner_nm`, `friction_torque_outer_nm`) are the loss at the
+//! inner / outer raceway contacts (skew part included) over |ω_i − ω_o|; the bearing's
+//! friction torque is total/|ω_i − ω_o| (power identity). All three are 0 when the rings
+//! turn together (|ω_i − ω_o| below `heat::MIN_RELATIVE_SPEED_RAD_S`).
+//!
+//! # Cage imbalance
+//! Quasi-statically each roller passes its net circumferential traction (inner + outer
+//! raceway laminae + guide-ring end, all along the bearing's rotation) to its pocket, which
+//! acts on the cage at the pitch radius; the land film adds its Petroff torque. The net is
+//! `cage_torque_imbalance_nm`: 0 at a cage speed from the cage's torque balance, and the
+//! torque that would accelerate (+) or brake (−) the cage at a measured one.
+//!
+//! # Signs
+//! Every sliding speed and force is along the bearing's rotation (+θ, the direction of a
+//! positive inner-ring speed), sliding = raceway (or ring) surface minus roller surface;
+//! the traction on the roller acts along +v.
+
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
+use crate::physics::lubrication::cage_film::{
+    land_power_w, land_torque_on_cage_nm, pocket_film, CageFilmError, PocketGeometry,
+};
+use crate::physics::lubrication::guide_ring::{
+    guide_ring_balance, EndContactInput, GuideRingError, GuideRingGeometry, GuideRingSolution,
+};
+use crate::physics::lubrication::lamina_friction::{
+    lamina_friction, FilmRheology, LaminaFrictionError, LaminaSlice, RacewayTractionLaw,
+};
+
+/// Which surface pilots the cage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum CageLandKind {
+    /// The cage runs on the guide ring (deck `land = "guide-ring"`).
+    #[default]
+    GuideRing,
+    /// The cage runs on the inner ring (deck `land = "inner-ring"`).
+    InnerRing,
+}
+
+/// The cage's piloting land, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct CageLand {
+    /// Which surface pilots the cage.
+    pub kind: CageLandKind,
+    /// R, land radius, m.
+    pub radius_m: f64,
+    /// L, land width, m.
+    pub width_m: f64,
+    /// c, radial clearance, m.
+    pub radial_clearance_m: f64,
+}
+
+/// One roller's contacts and forces from the statics.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RollerLossInput {
+    /// Row, 1 or 2.
+    pub row: u8,
+    /// Laminae at the inner raceway.
+    pub inner: Vec<LaminaSlice>,
+    /// Laminae at the outer raceway.
+    pub outer: Vec<LaminaSlice>,
+    /// Normal load of the roller end on the guide ring, N.
+    pub guide_ring_load_n: f64,
+    /// Force between roller and cage pocket, N (its magnitude sets the pocket film).
+    pub pocket_force_n: f64,
+    /// Orbital (cage) speed of the roller, rad/s.
+    pub orbital_speed_rad_s: f64,
+    /// Speed of the roller end's guide-ring contact point relative to the cage, along +θ,
+    /// m/s.
+    pub roller_end_speed_m_s: f64,
+    /// Roller surface speed relative to the cage at the pocket (ω_R·D/2), m/s.
+    pub surface_speed_m_s: f64,
+}
+
+/// Lubricant of the loss model, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LossLubricant {
+    /// η, α, τ_tr, μ_fl at the measured temperature.
+    pub rheology: FilmRheology,
+    /// The raceway (and end-contact) traction law.
+    pub law: RacewayTractionLaw,
+    /// ρ, density at the measured temperature, kg/m³ (ν = η/ρ for the drag).
+    pub density_kg_m3: f64,
+    /// f₀ of Palmgren's viscous drag; `None` (the default) leaves drag out.
+    pub drag_factor: Option<f64>,
+}
+
+/// Everything the loss breakdown reads.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LossInputs {
+    /// Both rows' rollers.
+    pub rollers: Vec<RollerLossInput>,
+    /// ω_i, rad/s.
+    pub inner_speed_rad_s: f64,
+    /// ω_o, rad/s.
+    pub outer_speed_rad_s: f64,
+    /// ω_c, cage speed (measured or computed), rad/s.
+    pub cage_speed_rad_s: f64,
+    /// The guide ring, if present.
+    pub guide_ring: Option<GuideRingGeometry>,
+    /// A roller in its pocket.
+    pub pocket: PocketGeometry,
+    /// The cage land.
+    pub cage_land: CageLand,
+    /// d_m, pitch diameter, m (pocket moment arm d_m/2, Palmgren drag).
+    pub pitch_diameter_m: f64,
+    /// The lubricant.
+    pub lubricant: LossLubricant,
+}
+
+/// Each mechanism as a percentage of the total.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct LossShares {
+    /// Inner raceway contacts, %.
+    pub raceway_inner: f64,
+    /// Outer raceway contacts, %.
+    pub raceway_outer: f64,
+    /// Guide ring (roller ends and bore), %.
+    pub guide_ring: f64,
+    /// Cage pockets, %.
+    pub cage_pockets: f64,
+    /// Cage land, %.
+    pub cage_land: f64,
+    /// Skew, %.
+    pub skew: f64,
+    /// Churning drag, %.
+    pub drag: f64,
+}
+
+/// The loss by mechanism and the torques (report contract `losses`).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Losses {
+    /// Inner raceway laminae, skew part excluded, W.
+    pub raceway_inner_w: f64,
+    /// Outer raceway laminae, skew part excluded, W.
+    pub raceway_outer_w: f64,
+    /// Roller ends and bore film of the guide ring, W.
+    pub guide_ring_w: f64,
+    /// Roller / pocket films, W.
+    pub cage_pockets_w: f64,
+    /// Cage / land Petroff film, W.
+    pub cage_land_w: f64,
+    /// Skew part of the raceway contacts' power, W.
+    pub skew_w: f64,
+    /// Palmgren viscous drag, W (0 when off).
+    pub drag_w: f64,
+    /// Sum of the seven terms, W.
+    pub total_w: f64,
+    /// Each term over the total, % (all 0 when the total is 0).
+    pub shares_pct: LossShares,
+    /// M_fi, inner raceway loss over |ω_i − ω_o|, N·m.
+    pub friction_torque_inner_nm: f64,
+    /// M_fo, outer raceway loss over |ω_i − ω_o|, N·m.
+    pub friction_torque_outer_nm: f64,
+    /// total/|ω_i − ω_o|, N·m.
+    pub friction_torque_nm: f64,
+    /// Net torque on the cage about the bearing axis, N·m (0 at a balanced cage speed).
+    pub cage_torque_imbalance_nm: f64,
+}
+
+/// One roller's share.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct RollerLoss {
+    /// Row, 1 or 2.
+    pub row: u8,
+    /// Σ y·F over both raceways about the contact normal through the roller centre, N·m.
+    pub skew_moment_nm: f64,
+    /// Inner raceway power (skew part included), W.
+    pub inner_w: f64,
+    /// Outer raceway power (skew part included), W.
+    pub outer_w: f64,
+    /// Skew part of the two, W.
+    pub skew_w: f64,
+    /// Roller end / guide ring contact, W.
+    pub guide_ring_end_w: f64,
+    /// Pocket film, W.
+    pub pocket_w: f64,
+    /// Pocket minimum film, m.
+    pub pocket_film_m: f64,
+    /// Net circumferential traction passed to the pocket (along +θ), N.
+    pub circumferential_force_n: f64,
+    /// Laminae where the printed eq. 3 exceeds μ = 0.2.
+    pub eq3_flagged_laminae: usize,
+}
+
+/// The breakdown with its details.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LossBreakdown {
+    /// The contract numbers.
+    pub losses: Losses,
+    /// Per roller, in input order.
+    pub rollers: Vec<RollerLoss>,
+    /// The guide ring at its balance (absent without a guide ring).
+    pub guide_ring: Option<GuideRingSolution>,
+    /// Laminae (both raceways, all rollers) where the printed eq. 3 exceeds μ = 0.2.
+    pub eq3_flagged_laminae: usize,
+}
+
+/// Why the loss breakdown cannot be computed.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum LossError {
+    /// A lamina is unusable.
+    #[error("roller {roller}, {raceway} raceway, lamina {lamina}: {source}")]
+    Lamina {
+        /// Roller index (0-based, input order).
+        roller: usize,
+        /// "inner" or "outer".
+        raceway: &'static str,
+        /// Lamina index.
+        lamina: usize,
+        /// The lamina's error.
+        source: LaminaFrictionError,
+    },
+    /// The guide ring failed.
+    #[error(transparent)]
+    GuideRing(#[from] GuideRingError),
+    /// A cage film failed.
+    #[error(transparent)]
+    Cage(#[from] CageFilmError),
+    /// An input outside its range.
+    #[error("{name} = {value} is not usable: it must be {allowed}")]
+    BadInput {
+        /// The field.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The allowed range.
+        allowed: &'static str,
+    },
+}
+
+/// Power of one raceway contact and its skew part, with the roller-centre skew moment and
+/// net force: (power W, skew power W, moment N·m, force N, flagged laminae).
+fn contact_losses(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    laminae: &[LaminaSlice],
+    roller: usize,
+    raceway: &'static str,
+) -> Result<(f64, f64, f64, f64, usize), LossError> {
+    let mut forces = Vec::with_capacity(laminae.len());
+    let (mut power, mut moment, mut force, mut flagged) = (0.0, 0.0, 0.0, 0usize);
+    for (j, s) in laminae.iter().enumerate() {
+        let r = lamina_friction(law, rheology, s).map_err(|source| LossError::Lamina {
+            roller,
+            raceway,
+            lamina: j,
+            source,
+        })?;
+        power += r.power_w;
+        moment += r.skew_moment_nm;
+        force += r.force_n;
+        flagged += usize::from(r.exceeds_newtonian_bound);
+        forces.push(r.force_n);
+    }
+    // Load-weighted fit v = v̄ + ω_s·(y − ȳ).
+    let (mut sq, mut sy, mut sv) = (0.0, 0.0, 0.0);
+    for s in laminae.iter().filter(|s| s.load_n > 0.0) {
+        sq += s.load_n;
+        sy += s.load_n * s.axial_offset_m;
+        sv += s.load_n * s.sliding_speed_m_s;
+    }
+    let mut skew = 0.0;
+    if sq > 0.0 {
+        let (yb, vb) = (sy / sq, sv / sq);
+        let (mut syy, mut syv) = (0.0, 0.0);
+        for s in laminae.iter().filter(|s| s.load_n > 0.0) {
+            let dy = s.axial_offset_m - yb;
+            syy += s.load_n * dy * dy;
+            syv += s.load_n * dy * (s.sliding_speed_m_s - vb);
+        }
+        if syy > 0.0 {
+            let omega = syv / syy;
+            let m_centroid: f64 = laminae
+                .iter()
+                .zip(&forces)
+                .map(|(s, f)| f * (s.axial_offset_m - yb))
+                .sum();
+            skew = omega * m_centroid;
+        }
+    }
+    Ok((power, skew, moment, force, flagged))
+}
+
+fn finite(name: &'static str, value: f64) -> Result<f64, LossError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(LossError::BadInput {
+            name,
+            value,
+            allowed: "finite",
+        })
+    }
+}
+
+/// The loss breakdown of one operating point (module notes).
+///
+/// # Errors
+/// [`LossError`] naming the roller, raceway and lamina, or the guide-ring / cage input at
+/// fault; [`LossError::BadInput`] for a non-finite speed, a non-positive pitch diameter or
+/// density with drag on, or a guide-ring land without a guide ring.
+pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
+    let wi = finite("inner_speed_rad_s", inputs.inner_speed_rad_s)?;
+    let wo = finite("outer_speed_rad_s", inputs.outer_speed_rad_s)?;
+    let wc = finite("cage_speed_rad_s", inputs.cage_speed_rad_s)?;
+    let dm = inputs.pitch_diameter_m;
+    if !(dm.is_finite() && dm > 0.0) {
+        return Err(LossError::BadInput {
+            name: "pitch_diameter_m",
+            value: dm,
+            allowed: "positive and finite",
+        });
+    }
+    let lub = &inputs.lubricant;
+    let rh = &lub.rheology;
+    let eta = rh.viscosity_pa_s;
+    if !(eta.is_finite() && eta >= 0.0) {
+        return Err(LossError::BadInput {
+            name: "viscosity_pa_s",
+            value: eta,
+            allowed: "finite and not negative",
+        });
+    }
+
+    // Guide ring first: its speed sets the end contacts and, for a guide-ring land, the cage
+    // land's relative speed.
+    let guide = match &inputs.guide_ring {
+        Some(g) => {
+            let ends: Vec<EndContactInput> = inputs
+                .rollers
+                .iter()
+                .map(|r| EndContactInput {
+                    load_n: r.guide_ring_load_n,
+                    roller_end_speed_m_s: r.roller_end_speed_m_s,
+                    orbital_speed_rad_s: r.orbital_speed_rad_s,
+                })
+                .collect();
+            Some(guide_ring_balance(g, lub.law, rh, wi, &ends)?)
+        }
+        None => None,
+    };
+
+    let mut rollers = Vec::with_capacity(inputs.rollers.len());
+    let mut l = Losses::default();
+    let (mut inner_total, mut outer_total, mut flagged) = (0.0, 0.0, 0usize);
+    let mut cage_torque = 0.0;
+    for (k, r) in inputs.rollers.iter().enumerate() {
+        let (pi, ski, mi, fi, ni) = contact_losses(lub.law, rh, &r.inner, k, "inner")?;
+        let (po, sko, mo, fo, no) = contact_losses(lub.law, rh, &r.outer, k, "outer")?;
+        let end = guide.as_ref().and_then(|g| g.contacts.get(k)).copied();
+        let (end_w, end_f) = end.map_or((0.0, 0.0), |c| (c.power_w, c.force_on_roller_n));
+        let pocket = pocket_film(&inputs.pocket, eta, r.pocket_force_n, r.surface_speed_m_s)?;
+        inner_total += pi;
+        outer_total += po;
+        l.raceway_inner_w += pi - ski;
+        l.raceway_outer_w += po - sko;
+        l.skew_w += ski + sko;
+        l.cage_pockets_w += pocket.power_w;
+        flagged += ni + no;
+        let circumferential = fi + fo + end_f;
+        cage_torque += circumferential * 0.5 * dm;
+        rollers.push(RollerLoss {
+            row: r.row,
+            skew_moment_nm: mi + mo,
+            inner_w: pi,
+            outer_w: po,
+            skew_w: ski + sko,
+            guide_ring_end_w: end_w,
+            pocket_w: pocket.power_w,
+            pocket_film_m: pocket.min_film_m,
+            circumferential_force_n: circumferential,
+            eq3_flagged_laminae: ni + no,
+        });
+    }
+    if let Some(g) = &guide {
+        l.guide_ring_w = g.ends_power_w + g.bore_power_w;
+    }
+
+    let land = &inputs.cage_land;
+    let land_speed = match land.kind {
+        CageLandKind::InnerRing => wi,
+        CageLandKind::GuideRing => match &guide {
+            Some(g) => g.speed_rad_s,
+            None => {
+                return Err(LossError::BadInput {
+                    name: "cage land = \"guide-ring\" without a guide ring; present",
+                    value: 0.0,
+                    allowed: "true (or land = \"inner-ring\")",
+                })
+            }
+        },
+    };
+    let dw_land = wc - land_speed;
+    l.cage_land_w = land_power_w(
+        eta,
+        land.radius_m,
+        land.width_m,
+        land.radial_clearance_m,
+        dw_land,
+    )?;
+    cage_torque += land_torque_on_cage_nm(
+        eta,
+        land.radius_m,
+        land.width_m,
+        land.radial_clearance_m,
+        dw_land,
+    )?;
+
+    let rel = (wi - wo).abs();
+    if let Some(f0) = lub.drag_factor {
+        let rho = lub.density_kg_m3;
+        if !(rho.is_finite() && rho > 0.0) {
+            return Err(LossError::BadInput {
+                name: "density_kg_m3",
+                value: rho,
+                allowed: "positive and finite when drag is on",
+            });
+        }
+        // Palmgren's floor 160·10⁻⁷·f₀·d_m³ (νn < 2000) stands for oil that is there: with
+        // η = 0 there is nothing to churn.
+        if eta > 0.0 {
+            l.drag_w = viscous_drag_power_w(f0, eta / rho, wi - wo, dm);
+        }
+    }
+
+    l.total_w = l.raceway_inner_w
+        + l.raceway_outer_w
+        + l.guide_ring_w
+        + l.cage_pockets_w
+        + l.cage_land_w
+        + l.skew_w
+        + l.drag_w;
+    if l.total_w != 0.0 {
+        let pct = |x: f64| 100.0 * x / l.total_w;
+        l.shares_pct = LossShares {
+            raceway_inner: pct(l.raceway_inner_w),
+            raceway_outer: pct(l.raceway_outer_w),
+            guide_ring: pct(l.guide_ring_w),
+            cage_pockets: pct(l.cage_pockets_w),
+            cage_land: pct(l.cage_land_w),
+            skew: pct(l.skew_w),
+            drag: pct(l.drag_w),
+        };
+    }
+    if rel.is_finite() && rel >= MIN_RELATIVE_SPEED_RAD_S {
+        l.friction_torque_inner_nm = inner_total / rel;
+        l.friction_torque_outer_nm = outer_total / rel;
+        l.friction_torque_nm = l.total_w / rel;
+    }
+    l.cage_torque_imbalance_nm = cage_torque;
+    Ok(LossBreakdown {
+        losses: l,
+        rollers,
+        guide_ring: guide,
+        eq3_flagged_laminae: flagged,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rheology() -> FilmRheology {
+        FilmRheology {
+            viscosity_pa_s: 0.017,
+            pressure_viscosity_pa_inv: 2.0e-8,
+            transition_shear_stress_pa: 5.0e6,
+            limiting_traction_coefficient: 0.06,
+        }
+    }
+
+    fn lamina(q: f64, v: f64, y: f64) -> LaminaSlice {
+        let (b, l) = (1.2e-4, 2.5e-4);
+        LaminaSlice {
+            load_n: q,
+            half_width_m: b,
+            length_m: l,
+            peak_pressure_pa: 2.0 * q / (std::f64::consts::PI * b * l),
+            rolling_speed_m_s: 8.0,
+            sliding_speed_m_s: v,
+            film_m: 2.5e-7,
+            axial_offset_m: y,
+        }
+    }
+
+    /// A 2 × 13-roller bearing with a spread of loads and sliding speeds that vary along
+    /// the roller (so the skew term is not trivially 0).
+    fn bearing(law: RacewayTractionLaw, speed_scale: f64) -> LossInputs {
+        let (wi, wc) = (300.0 * speed_scale, 130.0 * speed_scale);
+        let rollers = (0..26)
+            .map(|k| {
+                let q = 30.0 * (1.0 + (k % 13) as f64 / 13.0);
+                let lam = |v0: f64| -> Vec<LaminaSlice> {
+                    (0..9)
+                        .map(|j| {
+                            let y = (j as f64 - 4.0) * 1.3e-3;
+                            let qj = q * (1.0 - (y / 7e-3).powi(2));
+                            lamina(qj, speed_scale * (v0 + 40.0 * y), y)
+                        })
+                        .collect()
+                };
+                RollerLossInput {
+                    row: if k < 13 { 1 } else { 2 },
+                    inner: lam(0.05),
+                    outer: lam(-0.03),
+                    guide_ring_load_n: 20.0 + k as f64,
+                    pocket_force_n: 5.0,
+                    orbital_speed_rad_s: wc,
+                    roller_end_speed_m_s: 0.02 * speed_scale,
+                    surface_speed_m_s: 1.5 * speed_scale,
+                }
+            })
+            .collect();
+        LossInputs {
+            rollers,
+            inner_speed_rad_s: wi,
+            outer_speed_rad_s: 0.0,
+            cage_speed_rad_s: wc,
+            guide_ring: Some(GuideRingGeometry {
+                roller_end_radius_m: 0.03,
+                reduced_modulus_pa: 1.26e11,
+                contact_radius_m: 0.031,
+                bore_radius_m: 0.026,
+                width_m: 0.006,
+                bore_clearance_m: 1e-4,
+            }),
+            pocket: PocketGeometry {
+                roller_radius_m: 0.006,
+                length_m: 0.012,
+                pocket_clearance_m: 3e-4,
+            },
+            cage_land: CageLand {
+                kind: CageLandKind::GuideRing,
+                radius_m: 0.033,
+                width_m: 0.004,
+                radial_clearance_m: 2e-4,
+            },
+            pitch_diameter_m: 0.065,
+            lubricant: LossLubricant {
+                rheology: rheology(),
+                law,
+                density_kg_m3: 860.0,
+                drag_factor: Some(4.0),
+            },
+        }
+    }
+
+    /// Power identity: the seven terms sum to the total, and total = M·|ω_i − ω_o|, to
+    /// 1e-12 relative; M_fi, M_fo are the raceway losses (skew included) over the
+    /// relative speed; shares sum to 100 %.
+    #[test]
+    fn power_identity() {
+        for law in [RacewayTractionLaw::Atz, RacewayTractionLaw::NewtonianEq3] {
+            let b = loss_breakdown(&bearing(law, 1.0)).expect("breakdown");
+            let l = b.losses;
+            let sum = l.raceway_inner_w
+                + l.raceway_outer_w
+                + l.guide_ring_w
+                + l.cage_pockets_w
+                + l.cage_land_w
+                + l.skew_w
+                + l.drag_w;
+            assert!((sum - l.total_w).abs() < 1e-12 * l.total_w);
+            assert!((l.friction_torque_nm * 300.0 - l.total_w).abs() < 1e-12 * l.total_w);
+            let inner: f64 = b.rollers.iter().map(|r| r.inner_w).sum();
+            assert!((l.friction_torque_inner_nm * 300.0 - inner).abs() < 1e-12 * inner);
+            let s = l.shares_pct;
+            let pct = s.raceway_inner
+                + s.raceway_outer
+                + s.guide_ring
+                + s.cage_pockets
+                + s.cage_land
+                + s.skew
+                + s.drag;
+            assert!((pct - 100.0).abs() < 1e-10, "{pct}");
+            // Every mechanism is active in this case, and the skew part is positive.
+            assert!(l.skew_w > 0.0 && l.guide_ring_w > 0.0 && l.cage_pockets_w > 0.0);
+            assert!(l.cage_land_w > 0.0 && l.drag_w > 0.0);
+        }
+    }
+
+    /// 0 rpm (every ring, cage and surface speed 0) ⇒ 0 W and 0 torques.
+    #[test]
+    fn zero_speed_zero_loss() {
+        let b = loss_breakdown(&bearing(RacewayTractionLaw::Atz, 0.0)).expect("breakdown");
+        assert_eq!(b.losses.total_w, 0.0);
+        assert_eq!(b.losses.friction_torque_nm, 0.0);
+        assert_eq!(b.losses.shares_pct, LossShares::default());
+    }
+
+    /// η = 0 ⇒ 0 W from every mechanism (drag included: ν = 0).
+    #[test]
+    fn inviscid_zero_loss() {
+        for law in [RacewayTractionLaw::Atz, RacewayTractionLaw::NewtonianEq3] {
+            let mut i = bearing(law, 1.0);
+            i.lubricant.rheology.viscosity_pa_s = 0.0;
+            let b = loss_breakdown(&i).expect("breakdown");
+            assert_eq!(b.losses.total_w, 0.0, "{law:?}");
+            assert_eq!(b.losses.cage_torque_imbalance_nm, 0.0);
+        }
+    }
+
+    /// One roller, no guide ring, inner-ring land, drag off, the printed eq. 3 on two
+    /// laminae per raceway: every term by hand from the formulas (eq. 3 slice force, the
+    /// least-squares skew split, Martin's pocket, Petroff), tolerance 1e-12.
+    #[test]
+    fn hand_built_case() {
+        let rh = rheology();
+        let inner = vec![lamina(20.0, 0.04, -1e-3), lamina(10.0, 0.10, 2e-3)];
+        let outer = vec![lamina(25.0, -0.02, 0.0)];
+        let inputs = LossInputs {
+            rollers: vec![RollerLossInput {
+                row: 1,
+                inner: inner.clone(),
+                outer: outer.clone(),
+                guide_ring_load_n: 0.0,
+                pocket_force_n: 3.0,
+                orbital_speed_rad_s: 100.0,
+                roller_end_speed_m_s: 0.0,
+                surface_speed_m_s: 2.0,
+            }],
+            inner_speed_rad_s: 250.0,
+            outer_speed_rad_s: 10.0,
+            cage_speed_rad_s: 100.0,
+            guide_ring: None,
+            pocket: PocketGeometry {
+                roller_radius_m: 0.006,
+                length_m: 0.012,
+                pocket_clearance_m: 3e-4,
+            },
+            cage_land: CageLand {
+                kind: CageLandKind::InnerRing,
+                radius_m: 0.03,
+                width_m: 0.005,
+                radial_clearance_m: 1.5e-4,
+            },
+            pitch_diameter_m: 0.065,
+            lubricant: LossLubricant {
+                rheology: rh,
+                law: RacewayTractionLaw::NewtonianEq3,
+                density_kg_m3: 860.0,
+                drag_factor: None,
+            },
+        };
+        let b = loss_breakdown(&inputs).expect("breakdown");
+        let l = b.losses;
+        // Eq. 3 by hand: F = η·e^{α·q/A}·v/h·A, A = 2bL.
+        let area = 2.0 * 1.2e-4 * 2.5e-4;
+        let f = |q: f64, v: f64| 0.017 * f64::exp(2.0e-8 * q / area) * v / 2.5e-7 * area;
+        let (f1, f2, f3) = (f(20.0, 0.04), f(10.0, 0.10), f(25.0, -0.02));
+        let p_inner = f1 * 0.04 + f2 * 0.10;
+        let p_outer = f3 * -0.02;
+        // Skew split of the inner contact: ȳ = (20·(−1) + 10·2)/30 mm = 0, v̄ = 0.06,
+        // ω = Σq·y·(v − v̄)/Σq·y² = (20·−1e-3·−0.02 + 10·2e-3·0.04)/(20·1e-6 + 10·4e-6)
+        //   = 1.2e-3/6e-5 = 20 1/s; skew = 20·(f1·(−1e-3) + f2·2e-3).
+        let skew = 20.0 * (-1e-3 * f1 + 2e-3 * f2);
+        assert!(
+            (l.skew_w - skew).abs() < 1e-12 * skew.abs(),
+            "{} {skew}",
+            l.skew_w
+        );
+        assert!((l.raceway_inner_w - (p_inner - skew)).abs() < 1e-12 * p_inner);
+        assert!((l.raceway_outer_w - p_outer).abs() < 1e-12 * p_outer);
+        // Pocket: h₀ = C_w·η·ū·R·L/F = 4.8949685·0.017·1·0.006·0.012/3, below c_p/2.
+        let h0: f64 = 4.894_968_5 * 0.017 * 1.0 * 0.006 * 0.012 / 3.0;
+        let drag = (0.017
+            * 2.0
+            * (2.0 * 0.006 / h0).sqrt()
+            * (std::f64::consts::FRAC_PI_2 + 0.443_554_334_2)
+            + 4.601_076_9 * 0.017 * 1.0 * (0.006 / h0).sqrt())
+            * 0.012;
+        assert!((l.cage_pockets_w - drag * 2.0).abs() < 1e-12 * drag);
+        // Land on the inner ring: Δω = 100 − 250; T = 2πηR³LΔω/c, P = T·Δω.
+        let t = 2.0 * std::f64::consts::PI * 0.017 * 0.03f64.powi(3) * 0.005 * 150.0 / 1.5e-4;
+        assert!((l.cage_land_w - t * 150.0).abs() < 1e-12 * l.cage_land_w);
+        assert_eq!((l.guide_ring_w, l.drag_w), (0.0, 0.0));
+        let total = p_inner + p_outer + drag * 2.0 + t * 150.0;
+        assert!((l.total_w - total).abs() < 1e-12 * total);
+        assert!((l.friction_torque_nm - total / 240.0).abs() < 1e-12 * l.friction_torque_nm);
+        assert!((l.friction_torque_inner_nm - p_inner / 240.0).abs() < 1e-12 * p_inner);
+        // Cage: the roller's net traction at d_m/2, plus the land torque (+: the inner ring
+        // runs faster than the cage and drags it forward).
+        let imb = (f1 + f2 + f3) * 0.0325 + t;
+        assert!((l.cage_torque_imbalance_nm - imb).abs() < 1e-12 * imb.abs());
+        // Skew moment about the roller centre: Σ y·F.
+        let m = -1e-3 * f1 + 2e-3 * f2;
+        assert!((b.rollers[0].skew_moment_nm - m).abs() < 1e-15);
+    }
+
+    /// A guide-ring land without a guide ring is refused with both keys named.
+    #[test]
+    fn guide_ring_land_needs_a_guide_ring() {
+        let mut i = bearing(RacewayTractionLaw::Atz, 1.0);
+        i.guide_ring = None;
+        let e = loss_breakdown(&i).expect_err("no ring");
+        assert!(e.to_string().contains("guide-ring"), "{e}");
+    }
+
+    /// The contract's field names.
+    #[test]
+    fn contract_names() {
+        let b = loss_breakdown(&bearing(RacewayTractionLaw::Atz, 1.0)).expect("breakdown");
+        let j = serde_json::to_value(b.losses).expect("ser");
+        for k in [
+            "raceway_inner_w",
+            "raceway_outer_w",
+            "guide_ring_w",
+            "cage_pockets_w",
+            "cage_land_w",
+            "skew_w",
+            "drag_w",
+            "total_w",
+            "shares_pct",
+            "friction_torque_inner_nm",
+            "friction_torque_outer_nm",
+            "friction_torque_nm",
+            "cage_torque_imbalance_nm",
+        ] {
+            assert!(j.get(k).is_some(), "missing {k}");
+        }
+    }
+}

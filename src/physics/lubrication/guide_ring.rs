@@ -1,0 +1,672 @@
+//! Roller end / guide ring EHD point contact and the guide ring's speed (seed 002 §3: "The
+//! roller/guiding ring contact is also an EHD contact"), SI.
+//!
+//! # The end contact
+//! The roller's spherical end (radius R_e) touches the guide ring's flat face: a Hertz
+//! circle (curvature sums 1/R_e in both directions; `contact::point`, exact for A = B),
+//! under the load Q from the roller's axial balance. Film: Hamrock–Dowson central film
+//! (`film_point`, k = 1) at the entrainment speed u_e = ½(u_ring + u_roller), both surface
+//! speeds taken in the frame that carries the contact (the cage). Traction: the same law
+//! as the raceways ([`RacewayTractionLaw`]) integrated over the circle: the circle is cut
+//! into strips across the sliding direction; the strip at y = a·sin θ is a Hertz strip of
+//! half-width a·cos θ and peak p₀·cos θ, integrated in x by `TractionModel::lamina_traction`
+//! (reused), and in θ by 8-point Gauss–Legendre (∫ cos³θ is integrated to round-off, so a
+//! constant μ gives F = μ·Q; tested). The printed eq. 3 uses the mean pressure Q/(πa²) on
+//! the whole circle, as on a raceway slice. Spin inside the end contact (the contact point
+//! lies close to the roller axis) is not modelled.
+//!
+//! # The guide ring's speed
+//! The ring floats on the inner ring (a hydrodynamic bore, a Petroff journal of radius R_b,
+//! width L_b and radial clearance c: T = 2π·η·R_b³·L_b·(ω_g − ω_i)/c, the form of
+//! `heat::cage_rail_friction_force_n`, reused) and is driven by the roller ends. Its
+//! steady speed ω_g solves G(ω_g) = T_ends(ω_g) + T_bore(ω_g) = 0 with
+//! T_ends = −Σ F_roller·r_g (the ring receives the opposite of the roller's traction) and
+//! v_k = ω_g·r_g − (ω_c·r_g + u_k) (ring minus roller end, along the bearing's rotation).
+//! G ≥ 0 at ω_lo = min(ω_i, ω_k*) and G ≤ 0 at ω_hi = max(ω_i, ω_k*), ω_k* = ω_c + u_k/r_g
+//! (every torque pushes the ring towards the bracket), so the root is bracketed; it is
+//! found by the Illinois variant of regula falsi, and a failure is a typed error with the
+//! bracket and residuals.
+
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::physics::contact::point::{CurvatureSum, HertzMethod, HertzPointContact};
+use crate::physics::heat::{cage_rail_friction_force_n, HeatError};
+use crate::physics::lubrication::film_point::PointFilmInputs;
+use crate::physics::lubrication::lamina_friction::{FilmRheology, RacewayTractionLaw};
+use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
+
+/// 8-point Gauss–Legendre on [0, π/2] for the strips of a circle: nodes θ and weights
+/// (already scaled by π/4), from the [−1, 1] rule.
+fn gl8_quarter() -> [(f64, f64); 8] {
+    const X: [f64; 4] = [
+        0.183_434_642_495_649_8,
+        0.525_532_409_916_329,
+        0.796_666_477_413_626_7,
+        0.960_289_856_497_536_3,
+    ];
+    const W: [f64; 4] = [
+        0.362_683_783_378_362,
+        0.313_706_645_877_887_3,
+        0.222_381_034_453_374_5,
+        0.101_228_536_290_376_3,
+    ];
+    let h = std::f64::consts::FRAC_PI_4;
+    let mut out = [(0.0, 0.0); 8];
+    for i in 0..4 {
+        out[2 * i] = (h * (1.0 - X[i]), h * W[i]);
+        out[2 * i + 1] = (h * (1.0 + X[i]), h * W[i]);
+    }
+    out
+}
+
+/// Traction force, N, of a circular Hertz contact (radius `radius_m` a, peak pressure
+/// `peak_pressure_pa` p₀) under `model` at sliding speed `sliding_m_s` (sign kept) and
+/// film `film_m`: F = ∫∫τ(p) dA by strips (module notes).
+pub fn circular_contact_traction_n(
+    model: &TractionModel,
+    radius_m: f64,
+    peak_pressure_pa: f64,
+    sliding_m_s: f64,
+    film_m: f64,
+) -> f64 {
+    if !(radius_m > 0.0 && peak_pressure_pa > 0.0) || sliding_m_s == 0.0 {
+        return 0.0;
+    }
+    let a = radius_m;
+    let mut sum = 0.0;
+    for (theta, w) in gl8_quarter() {
+        let c = theta.cos();
+        let b = a * c;
+        // Strip of unit width with peak p₀·cos θ: q = π·b·p/2 per metre of width.
+        let strip = HertzStrip {
+            load_n: std::f64::consts::FRAC_PI_2 * b * peak_pressure_pa * c,
+            half_width_m: b,
+            width_m: 1.0,
+        };
+        let f = model.lamina_traction(&strip, sliding_m_s, film_m).force_n;
+        sum += w * f * a * c; // dy = a·cos θ dθ
+    }
+    2.0 * sum
+}
+
+/// The guide ring and its end contacts, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GuideRingGeometry {
+    /// R_e, radius of the roller's spherical end, m.
+    pub roller_end_radius_m: f64,
+    /// E*, reduced modulus of roller and ring, Pa.
+    pub reduced_modulus_pa: f64,
+    /// r_g, distance of the end contacts from the bearing axis, m.
+    pub contact_radius_m: f64,
+    /// R_b, bore radius of the guide ring (on the inner ring), m.
+    pub bore_radius_m: f64,
+    /// L_b, width of the bore film, m.
+    pub width_m: f64,
+    /// c, radial clearance of the bore, m.
+    pub bore_clearance_m: f64,
+}
+
+/// One roller's end contact as the guide ring sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EndContactInput {
+    /// Q, normal load of the roller end on the ring (from the roller's axial balance), N.
+    pub load_n: f64,
+    /// u, speed of the roller end's contact point relative to the cage, along the bearing's
+    /// rotation (ω_R × offset from the roller axis), m/s.
+    pub roller_end_speed_m_s: f64,
+    /// ω_c, the roller's orbital (cage) speed, rad/s.
+    pub orbital_speed_rad_s: f64,
+}
+
+/// Result of one end contact at a given ring speed.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct EndContact {
+    /// a, Hertz radius, m.
+    pub radius_m: f64,
+    /// p₀, peak pressure, Pa.
+    pub max_pressure_pa: f64,
+    /// Central film, m.
+    pub film_m: f64,
+    /// Ring minus roller end speed, m/s.
+    pub sliding_speed_m_s: f64,
+    /// Traction on the roller along the bearing's rotation, N.
+    pub force_on_roller_n: f64,
+    /// |F·v|, W.
+    pub power_w: f64,
+}
+
+/// The guide ring at its torque balance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct GuideRingSolution {
+    /// ω_g, rad/s.
+    pub speed_rad_s: f64,
+    /// Per roller, in input order.
+    pub contacts: Vec<EndContact>,
+    /// Σ end-contact power, W.
+    pub ends_power_w: f64,
+    /// Petroff power of the bore film, |T|·|ω_g − ω_i|, W.
+    pub bore_power_w: f64,
+    /// Bore torque on the ring (signed, about the bearing axis), N·m.
+    pub bore_torque_nm: f64,
+    /// Torque balance residual at ω_g, N·m.
+    pub residual_nm: f64,
+}
+
+/// Why the end contacts or the guide ring's balance cannot be computed.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum GuideRingError {
+    /// A geometry or lubricant value is outside its range.
+    #[error("guide ring {name} = {value} is not usable: it must be {allowed}")]
+    BadInput {
+        /// The field.
+        name: &'static str,
+        /// Its value (SI).
+        value: f64,
+        /// The allowed range.
+        allowed: &'static str,
+    },
+    /// The printed eq. 3 at a loaded, sliding end contact without a film is infinite.
+    #[error(
+        "the roller end contact slides at {sliding_m_s} m/s without an EHD film (entrainment 0): eq. 3 as printed gives an infinite force; use traction = \"atz\""
+    )]
+    NoFilm {
+        /// The sliding speed, m/s.
+        sliding_m_s: f64,
+    },
+    /// The torque balance did not converge inside its bracket.
+    #[error(
+        "the guide ring speed did not converge between {lo_rad_s} and {hi_rad_s} rad/s (torque residuals {g_lo_nm} and {g_hi_nm} N·m)"
+    )]
+    NoBalance {
+        /// Lower end of the bracket, rad/s.
+        lo_rad_s: f64,
+        /// Upper end, rad/s.
+        hi_rad_s: f64,
+        /// Residual at the lower end, N·m.
+        g_lo_nm: f64,
+        /// Residual at the upper end, N·m.
+        g_hi_nm: f64,
+    },
+}
+
+fn positive(name: &'static str, value: f64) -> Result<f64, GuideRingError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(GuideRingError::BadInput {
+            name,
+            value,
+            allowed: "positive and finite",
+        })
+    }
+}
+
+impl GuideRingGeometry {
+    fn validate(&self) -> Result<(), GuideRingError> {
+        positive("roller_end_radius_m", self.roller_end_radius_m)?;
+        positive("reduced_modulus_pa", self.reduced_modulus_pa)?;
+        positive("contact_radius_m", self.contact_radius_m)?;
+        positive("bore_radius_m", self.bore_radius_m)?;
+        positive("width_m", self.width_m)?;
+        positive("bore_clearance_m", self.bore_clearance_m)?;
+        Ok(())
+    }
+
+    /// Petroff torque of the bore film on the ring, N·m (signed: it opposes ω_g − ω_i):
+    /// T = −2π·η·R_b³·L_b·(ω_g − ω_i)/c, through `heat::cage_rail_friction_force_n`
+    /// (F = π·η·W·D²·|Δω|/dc with D = 2R_b, dc = 2c) times R_b.
+    ///
+    /// # Errors
+    /// [`GuideRingError::BadInput`] for a non-positive bore radius, width or clearance, or
+    /// a negative viscosity.
+    pub fn bore_torque_nm(
+        &self,
+        viscosity_pa_s: f64,
+        ring_speed_rad_s: f64,
+        inner_speed_rad_s: f64,
+    ) -> Result<f64, GuideRingError> {
+        let dw = ring_speed_rad_s - inner_speed_rad_s;
+        if viscosity_pa_s == 0.0 || dw == 0.0 {
+            return Ok(0.0);
+        }
+        let f = cage_rail_friction_force_n(
+            viscosity_pa_s,
+            self.width_m,
+            2.0 * self.bore_radius_m,
+            2.0 * self.bore_clearance_m,
+            dw,
+        )
+        .map_err(|e| match e {
+            HeatError::NotPositive { value, .. } => GuideRingError::BadInput {
+                name: "bore geometry or viscosity",
+                value,
+                allowed: "positive and finite",
+            },
+        })?;
+        Ok(-f * self.bore_radius_m * dw.signum())
+    }
+}
+
+/// One end contact at the ring speed `ring_speed_rad_s`.
+///
+/// # Errors
+/// [`GuideRingError::BadInput`] for a negative or non-finite load, [`GuideRingError::NoFilm`]
+/// for the printed eq. 3 at a sliding contact without film.
+pub fn end_contact(
+    geometry: &GuideRingGeometry,
+    hertz: &HertzPointContact,
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    input: &EndContactInput,
+    ring_speed_rad_s: f64,
+) -> Result<EndContact, GuideRingError> {
+    let q = input.load_n;
+    if !(q.is_finite() && q >= 0.0) {
+        return Err(GuideRingError::BadInput {
+            name: "guide_ring_load_n",
+            value: q,
+            allowed: "finite and not negative",
+        });
+    }
+    let r = geometry.contact_radius_m;
+    // Surface speeds in the cage frame, along the bearing's rotation.
+    let u_ring = (ring_speed_rad_s - input.orbital_speed_rad_s) * r;
+    let u_roller = input.roller_end_speed_m_s;
+    let v = u_ring - u_roller;
+    if q == 0.0 {
+        return Ok(EndContact {
+            sliding_speed_m_s: v,
+            ..EndContact::default()
+        });
+    }
+    let c = hertz.solve(q).map_err(|_| GuideRingError::BadInput {
+        name: "guide_ring_load_n",
+        value: q,
+        allowed: "a load the Hertz circle accepts",
+    })?;
+    let a = c.semi_major_m;
+    let p0 = c.max_pressure_pa;
+    let u_e = 0.5 * (u_ring + u_roller);
+    let film = PointFilmInputs::from_contact(
+        hertz,
+        q,
+        rheology.viscosity_pa_s,
+        rheology.pressure_viscosity_pa_inv,
+        u_e,
+    )
+    .central_film_thickness_m()
+    .map_err(|_| GuideRingError::BadInput {
+        name: "viscosity or pressure-viscosity coefficient of the end-contact film",
+        value: rheology.pressure_viscosity_pa_inv,
+        allowed: "finite and not negative",
+    })?;
+    let force = if rheology.viscosity_pa_s <= 0.0 || v == 0.0 {
+        0.0
+    } else {
+        match law {
+            RacewayTractionLaw::Atz => circular_contact_traction_n(&rheology.atz(), a, p0, v, film),
+            RacewayTractionLaw::NewtonianEq3 => {
+                if film <= 0.0 {
+                    return Err(GuideRingError::NoFilm { sliding_m_s: v });
+                }
+                let area = std::f64::consts::PI * a * a;
+                rheology.viscosity_pa_s * (rheology.pressure_viscosity_pa_inv * q / area).exp() * v
+                    / film
+                    * area
+            }
+        }
+    };
+    Ok(EndContact {
+        radius_m: a,
+        max_pressure_pa: p0,
+        film_m: film,
+        sliding_speed_m_s: v,
+        force_on_roller_n: force,
+        power_w: (force * v).abs(),
+    })
+}
+
+/// The Hertz model of the end contact: a sphere of radius R_e on a flat.
+///
+/// # Errors
+/// [`GuideRingError::BadInput`] for an unusable geometry.
+pub fn end_contact_model(
+    geometry: &GuideRingGeometry,
+) -> Result<HertzPointContact, GuideRingError> {
+    geometry.validate()?;
+    let k = 1.0 / geometry.roller_end_radius_m;
+    let curvature = CurvatureSum::new(k, k).map_err(|_| GuideRingError::BadInput {
+        name: "roller_end_radius_m",
+        value: geometry.roller_end_radius_m,
+        allowed: "positive and finite",
+    })?;
+    HertzPointContact::new(curvature, geometry.reduced_modulus_pa, HertzMethod::Exact).map_err(
+        |_| GuideRingError::BadInput {
+            name: "reduced_modulus_pa",
+            value: geometry.reduced_modulus_pa,
+            allowed: "positive and finite",
+        },
+    )
+}
+
+/// The guide ring's speed from its torque balance, and its losses (module notes).
+///
+/// # Errors
+/// [`GuideRingError::BadInput`] for an unusable geometry, viscosity or roller input,
+/// [`GuideRingError::NoFilm`] (printed eq. 3 only), [`GuideRingError::NoBalance`] if the
+/// bracketed search fails.
+pub fn guide_ring_balance(
+    geometry: &GuideRingGeometry,
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    inner_speed_rad_s: f64,
+    rollers: &[EndContactInput],
+) -> Result<GuideRingSolution, GuideRingError> {
+    let hertz = end_contact_model(geometry)?;
+    let eta = rheology.viscosity_pa_s;
+    if !(eta.is_finite() && eta >= 0.0) {
+        return Err(GuideRingError::BadInput {
+            name: "viscosity_pa_s",
+            value: eta,
+            allowed: "finite and not negative",
+        });
+    }
+    if !inner_speed_rad_s.is_finite() {
+        return Err(GuideRingError::BadInput {
+            name: "inner_speed_rad_s",
+            value: inner_speed_rad_s,
+            allowed: "finite",
+        });
+    }
+    let r = geometry.contact_radius_m;
+    let (mut lo, mut hi) = (inner_speed_rad_s, inner_speed_rad_s);
+    for k in rollers {
+        if !(k.roller_end_speed_m_s.is_finite() && k.orbital_speed_rad_s.is_finite()) {
+            return Err(GuideRingError::BadInput {
+                name: "roller end or orbital speed",
+                value: if k.roller_end_speed_m_s.is_finite() {
+                    k.orbital_speed_rad_s
+                } else {
+                    k.roller_end_speed_m_s
+                },
+                allowed: "finite",
+            });
+        }
+        let w = k.orbital_speed_rad_s + k.roller_end_speed_m_s / r;
+        lo = lo.min(w);
+        hi = hi.max(w);
+    }
+    let residual = |w: f64| -> Result<f64, GuideRingError> {
+        let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s)?;
+        for k in rollers {
+            t -= end_contact(geometry, &hertz, law, rheology, k, w)?.force_on_roller_n * r;
+        }
+        Ok(t)
+    };
+    let (g_lo, g_hi) = (residual(lo)?, residual(hi)?);
+    let speed = if g_lo == 0.0 || hi == lo {
+        lo
+    } else if g_hi == 0.0 {
+        hi
+    } else if g_lo > 0.0 && g_hi < 0.0 {
+        illinois(&residual, (lo, g_lo), (hi, g_hi))?
+    } else {
+        return Err(GuideRingError::NoBalance {
+            lo_rad_s: lo,
+            hi_rad_s: hi,
+            g_lo_nm: g_lo,
+            g_hi_nm: g_hi,
+        });
+    };
+    let contacts = rollers
+        .iter()
+        .map(|k| end_contact(geometry, &hertz, law, rheology, k, speed))
+        .collect::<Result<Vec<_>, _>>()?;
+    let bore_torque_nm = geometry.bore_torque_nm(eta, speed, inner_speed_rad_s)?;
+    let ends_power_w: f64 = contacts.iter().map(|c| c.power_w).sum();
+    let residual_nm = bore_torque_nm
+        - contacts
+            .iter()
+            .map(|c| c.force_on_roller_n * r)
+            .sum::<f64>();
+    Ok(GuideRingSolution {
+        speed_rad_s: speed,
+        contacts,
+        ends_power_w,
+        bore_power_w: (bore_torque_nm * (speed - inner_speed_rad_s)).abs(),
+        bore_torque_nm,
+        residual_nm,
+    })
+}
+
+/// Illinois regula falsi on a bracket with g(lo) > 0 > g(hi); stops when the bracket is
+/// below 1e-13 of the speed scale or the residual is 0.
+fn illinois(
+    g: &dyn Fn(f64) -> Result<f64, GuideRingError>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+) -> Result<f64, GuideRingError> {
+    let (lo0, hi0, g_lo0, g_hi0) = (a, b, fa, fb);
+    let scale = a.abs().max(b.abs()).max(1e-9);
+    let mut side = 0i8;
+    for _ in 0..200 {
+        let x = (a * fb - b * fa) / (fb - fa);
+        let x = if x.is_finite() && x > a.min(b) && x < a.max(b) {
+            x
+        } else {
+            0.5 * (a + b)
+        };
+        let fx = g(x)?;
+        if fx == 0.0 || (b - a).abs() < 1e-13 * scale {
+            return Ok(x);
+        }
+        if (fx > 0.0) == (fa > 0.0) {
+            a = x;
+            fa = fx;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            b = x;
+            fb = fx;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    Err(GuideRingError::NoBalance {
+        lo_rad_s: lo0,
+        hi_rad_s: hi0,
+        g_lo_nm: g_lo0,
+        g_hi_nm: g_hi0,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring() -> GuideRingGeometry {
+        GuideRingGeometry {
+            roller_end_radius_m: 0.03,
+            reduced_modulus_pa: 2.3e11 / 2.0 / (1.0 - 0.09), // steel on steel
+            contact_radius_m: 0.031,
+            bore_radius_m: 0.026,
+            width_m: 0.006,
+            bore_clearance_m: 1e-4,
+        }
+    }
+
+    fn oil() -> FilmRheology {
+        FilmRheology {
+            viscosity_pa_s: 0.017,
+            pressure_viscosity_pa_inv: 2.0e-8,
+            transition_shear_stress_pa: 5.0e6,
+            limiting_traction_coefficient: 0.06,
+        }
+    }
+
+    /// A constant μ over the circle gives F = μ·Q (∫∫μp dA), to 1e-13: the strip
+    /// quadrature integrates the Hertz circle's cos³θ to round-off. A constant viscous
+    /// stress (α = 0, no limit) gives η·v/h·πa² to 1e-13.
+    #[test]
+    fn circle_quadrature_is_exact_for_the_limits() {
+        let (a, p0) = (2e-4, 1.2e9);
+        let q = 2.0 / 3.0 * std::f64::consts::PI * a * a * p0;
+        let f =
+            circular_contact_traction_n(&TractionModel::Constant { mu: 0.07 }, a, p0, -0.3, 1e-7);
+        assert!((f + 0.07 * q).abs() < 1e-13 * q, "{f} vs {}", -0.07 * q);
+        let m = TractionModel::Ehd {
+            viscosity_pa_s: 0.02,
+            pressure_viscosity_pa_inv: 0.0,
+            transition_shear_stress_pa: 1e15,
+            limiting_traction_coefficient: 0.0,
+        };
+        let f = circular_contact_traction_n(&m, a, p0, 0.3, 1e-7);
+        let want = 0.02 * 0.3 / 1e-7 * std::f64::consts::PI * a * a;
+        assert!((f / want - 1.0).abs() < 1e-13, "{f} vs {want}");
+    }
+
+    /// Bore torque is Petroff's T = 2π·η·R³·L·ω/c, typed out independently (1e-13).
+    #[test]
+    fn bore_torque_is_petroff() {
+        let g = ring();
+        let t = g.bore_torque_nm(0.017, 250.0, 400.0).expect("valid");
+        let want = 2.0 * std::f64::consts::PI * 0.017 * 0.026f64.powi(3) * 0.006 * 150.0 / 1e-4;
+        assert!((t - want).abs() < 1e-13 * want, "{t} vs {want}");
+        assert_eq!(g.bore_torque_nm(0.0, 250.0, 400.0), Ok(0.0));
+    }
+
+    /// Balance with unloaded roller ends: the ring runs with the inner ring and loses
+    /// nothing. With loaded ends it settles strictly between the inner ring's speed and
+    /// the roller ends' speed, the torques balance (residual below 1e-9 of the bore torque),
+    /// and each side's power is positive.
+    #[test]
+    fn balance_bracket_and_residual() {
+        let (wi, wc) = (400.0, 160.0);
+        let free = vec![
+            EndContactInput {
+                load_n: 0.0,
+                roller_end_speed_m_s: 0.0,
+                orbital_speed_rad_s: wc,
+            };
+            13
+        ];
+        let s = guide_ring_balance(&ring(), RacewayTractionLaw::Atz, &oil(), wi, &free)
+            .expect("balance");
+        assert_eq!(s.speed_rad_s, wi);
+        assert_eq!(s.ends_power_w + s.bore_power_w, 0.0);
+        let loaded: Vec<_> = (0..13)
+            .map(|k| EndContactInput {
+                load_n: 50.0 + 10.0 * k as f64,
+                roller_end_speed_m_s: 0.05,
+                orbital_speed_rad_s: wc,
+            })
+            .collect();
+        let s = guide_ring_balance(&ring(), RacewayTractionLaw::Atz, &oil(), wi, &loaded)
+            .expect("balance");
+        let w_end = wc + 0.05 / 0.031;
+        assert!(
+            s.speed_rad_s > w_end && s.speed_rad_s < wi,
+            "{}",
+            s.speed_rad_s
+        );
+        assert!(
+            s.residual_nm.abs() < 1e-9 * s.bore_torque_nm.abs(),
+            "{}",
+            s.residual_nm
+        );
+        assert!(s.ends_power_w > 0.0 && s.bore_power_w > 0.0);
+        // Power check: Σ|F v| over the ends equals Σ F·v (every end slides the same way).
+        let by_hand: f64 = s
+            .contacts
+            .iter()
+            .map(|c| c.force_on_roller_n * c.sliding_speed_m_s)
+            .sum();
+        assert!((by_hand - s.ends_power_w).abs() < 1e-12 * s.ends_power_w);
+    }
+
+    /// The end contact's film is the Hamrock–Dowson central film of a sphere on a flat
+    /// (k = 1, R_x = R_e) at u_e = ½(u_ring + u_roller), recomputed here from the groups
+    /// (1e-12).
+    #[test]
+    fn end_film_is_hamrock_dowson() {
+        let g = ring();
+        let h = end_contact_model(&g).expect("model");
+        let inp = EndContactInput {
+            load_n: 120.0,
+            roller_end_speed_m_s: 0.2,
+            orbital_speed_rad_s: 150.0,
+        };
+        let c = end_contact(&g, &h, RacewayTractionLaw::Atz, &oil(), &inp, 300.0).expect("contact");
+        let u_ring = 150.0 * 0.031;
+        let ue = 0.5 * (u_ring + 0.2);
+        let e = 2.0 * g.reduced_modulus_pa;
+        let (u, gg, w) = (
+            0.017 * ue / (e * 0.03),
+            2.0e-8 * e,
+            120.0 / (e * 0.03 * 0.03),
+        );
+        let hc = 0.03
+            * 2.69
+            * u.powf(0.67)
+            * gg.powf(0.53)
+            * w.powf(-0.067)
+            * (1.0 - 0.61 * f64::exp(-0.73));
+        assert!((c.film_m / hc - 1.0).abs() < 1e-12, "{} {hc}", c.film_m);
+        assert!((c.sliding_speed_m_s - (u_ring - 0.2)).abs() < 1e-15);
+        // Hertz circle: a = (3QR/(4E*))^⅓.
+        let a = (3.0 * 120.0 * 0.03 / (4.0 * g.reduced_modulus_pa)).cbrt();
+        assert!((c.radius_m / a - 1.0).abs() < 1e-12);
+    }
+
+    /// The other limit: a bore film that barely brakes (clearance 1 m) lets the ring run
+    /// with the roller ends, ω_g → ω_c + u/r_g; the gap to that speed is below 1e-3 of the
+    /// gap between the inner ring and it (the bore torque is ~10⁻⁸ of the ends' slope).
+    #[test]
+    fn free_ring_follows_the_roller_ends() {
+        let mut g = ring();
+        g.bore_clearance_m = 1.0;
+        let (wi, wc, u) = (400.0, 160.0, 0.05);
+        let inp = vec![
+            EndContactInput {
+                load_n: 60.0,
+                roller_end_speed_m_s: u,
+                orbital_speed_rad_s: wc,
+            };
+            13
+        ];
+        let s = guide_ring_balance(&g, RacewayTractionLaw::Atz, &oil(), wi, &inp).expect("balance");
+        let w_end = wc + u / 0.031;
+        assert!(s.speed_rad_s >= w_end, "{}", s.speed_rad_s);
+        assert!(
+            s.speed_rad_s - w_end < 1e-3 * (wi - w_end),
+            "{} vs {w_end}",
+            s.speed_rad_s
+        );
+    }
+
+    /// η = 0: no traction, no bore torque, no loss (and no error).
+    #[test]
+    fn inviscid_is_lossless() {
+        let mut o = oil();
+        o.viscosity_pa_s = 0.0;
+        let inp = vec![
+            EndContactInput {
+                load_n: 80.0,
+                roller_end_speed_m_s: 0.1,
+                orbital_speed_rad_s: 150.0,
+            };
+            4
+        ];
+        let s =
+            guide_ring_balance(&ring(), RacewayTractionLaw::Atz, &o, 400.0, &inp).expect("balance");
+        assert_eq!(s.ends_power_w + s.bore_power_w, 0.0);
+    }
+}

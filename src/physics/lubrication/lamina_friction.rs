@@ -1,0 +1,374 @@
+//! Roller/raceway traction of one lamina of a spherical roller (seed 002 §3, eq. 3):
+//! force, power and the moment about the contact normal (skew), SI.
+//!
+//! # Eq. 3 and the two laws
+//! The seed slices the roller ("for each slice the sliding speed and the contact pressure
+//! is constant") and writes the elementary friction force of a Newtonian, Barus film
+//!
+//! dF = η·e^{α·p}·v_sl/h_EHD·dA                                   (seed 002 eq. 3)
+//!
+//! * [`RacewayTractionLaw::NewtonianEq3`] (`"newtonian-eq3"`) keeps eq. 3 *as printed*:
+//!   on one slice p is constant, so dA is the whole strip 2b·L and p is the pressure that
+//!   makes the slice carry its load, the mean Hertz pressure p̄ = q/(2bL) = π·p₀/4. The
+//!   reading "p constant" is the seed's; choosing the mean (not the peak) keeps ∫p dA = q.
+//!   F = η·e^{α·p̄}·v/h·2bL, exactly linear in v. At bearing pressures e^{α·p̄} is huge
+//!   (α = 2·10⁻⁸ 1/Pa at 2 GPa: e⁴⁰ ≈ 10¹⁷), so the law gives traction coefficients far
+//!   above anything an oil can transmit: the result is flagged
+//!   ([`LaminaFriction::exceeds_newtonian_bound`]) whenever μ = |F|/q > 0.2.
+//! * [`RacewayTractionLaw::Atz`] (`"atz"`, the default) reads eq. 3 as the Newtonian branch
+//!   of the limiting-shear law already used for every other system: the Allen–Townsend–
+//!   Zaretsky law of [`crate::physics::lubrication::traction`] (τ = min(τ_N, max(τ_tr, μ_fl·p))
+//!   with τ_N the integrand of eq. 3), integrated over the Hertz semi-ellipse of the strip
+//!   by `TractionModel::lamina_traction` (reused, not copied).
+//!
+//! # Sign and moment
+//! v_sl is the raceway's surface speed minus the roller's in the rolling direction t (the
+//! convention of `kinematics::sliding_velocity`); the force on the *roller* acts along +v.
+//! With a the roller axis and n = a × t the contact normal, a lamina at axial offset y
+//! (along a, from the roller's centre plane) carrying the force F·t has the moment
+//! y·a × F·t = y·F·n about the normal through the roller centre: [`LaminaFriction::skew_moment_nm`].
+//! Power = F·v ≥ 0 (the film dissipates it).
+
+// Every public item of this physics module must say what it computes and in which units.
+#![warn(missing_docs)]
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
+
+/// Traction coefficient above which the printed eq. 3 is flagged: no lubricant film
+/// transmits more than about 0.1 in EHD (limiting traction coefficients of bearing oils are
+/// 0.05–0.1), so 0.2 is already twice the physical ceiling.
+pub const EQ3_MU_FLAG: f64 = 0.2;
+
+/// Which law turns eq. 3's film shear into a lamina force (deck `traction`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum RacewayTractionLaw {
+    /// Eq. 3 as the Newtonian branch of the Allen–Townsend–Zaretsky limiting-shear law.
+    #[default]
+    Atz,
+    /// Eq. 3 as printed: Newtonian, Barus, constant (mean) pressure on the slice.
+    NewtonianEq3,
+}
+
+/// Lubricant properties the raceway traction reads, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct FilmRheology {
+    /// η₀, dynamic viscosity at the measured temperature and ambient pressure, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// α, Barus pressure–viscosity coefficient, 1/Pa.
+    pub pressure_viscosity_pa_inv: f64,
+    /// τ_tr, ATZ transition shear stress, Pa.
+    pub transition_shear_stress_pa: f64,
+    /// μ_fl, ATZ limiting traction coefficient, dimensionless.
+    pub limiting_traction_coefficient: f64,
+}
+
+impl FilmRheology {
+    /// The shared ATZ model with these constants.
+    pub fn atz(&self) -> TractionModel {
+        TractionModel::Ehd {
+            viscosity_pa_s: self.viscosity_pa_s,
+            pressure_viscosity_pa_inv: self.pressure_viscosity_pa_inv,
+            transition_shear_stress_pa: self.transition_shear_stress_pa,
+            limiting_traction_coefficient: self.limiting_traction_coefficient,
+        }
+    }
+}
+
+/// One lamina contact of a roller with a raceway, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LaminaSlice {
+    /// q, normal load of the lamina, N (0 for an unloaded lamina).
+    pub load_n: f64,
+    /// b, Hertz half-width in the rolling direction, m.
+    pub half_width_m: f64,
+    /// L, lamina length along the roller axis, m.
+    pub length_m: f64,
+    /// p₀, peak Hertz pressure, Pa; must equal 2q/(π·b·L) (checked to 1e-6 relative):
+    /// the traction integrates the Hertz semi-ellipse of this strip.
+    pub peak_pressure_pa: f64,
+    /// Mean rolling (entrainment) speed, m/s (reported as the slide/roll ratio).
+    pub rolling_speed_m_s: f64,
+    /// v_sl, raceway minus roller surface speed along the rolling direction, m/s.
+    pub sliding_speed_m_s: f64,
+    /// h, EHD film thickness of the lamina, m.
+    pub film_m: f64,
+    /// y, axial offset of the lamina from the roller's centre plane, m.
+    pub axial_offset_m: f64,
+}
+
+/// Traction result of one lamina.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct LaminaFriction {
+    /// Traction on the roller along the rolling direction (sign of v_sl), N.
+    pub force_n: f64,
+    /// F·v_sl ≥ 0, W.
+    pub power_w: f64,
+    /// y·F about the contact normal through the roller centre, N·m.
+    pub skew_moment_nm: f64,
+    /// |F|/q, dimensionless (0 for an unloaded lamina).
+    pub traction_coefficient: f64,
+    /// v_sl/u_roll (0 when the rolling speed is 0), dimensionless.
+    pub slide_roll_ratio: f64,
+    /// True when the printed eq. 3 gives μ > [`EQ3_MU_FLAG`] (never set by `"atz"`).
+    pub exceeds_newtonian_bound: bool,
+}
+
+/// Why a lamina cannot be evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum LaminaFrictionError {
+    /// An input is negative where it must not be, or not finite.
+    #[error("lamina {name} = {value} is not usable: it must be finite and {allowed}")]
+    BadInput {
+        /// The field.
+        name: &'static str,
+        /// Its value (SI).
+        value: f64,
+        /// The allowed range, in words.
+        allowed: &'static str,
+    },
+    /// The peak pressure does not belong to the strip's load and size.
+    #[error(
+        "lamina peak_pressure_pa = {given} Pa does not match its Hertz strip: 2q/(π·b·L) = {expected} Pa"
+    )]
+    InconsistentPressure {
+        /// The given peak pressure, Pa.
+        given: f64,
+        /// 2q/(π·b·L), Pa.
+        expected: f64,
+    },
+}
+
+fn check(name: &'static str, value: f64, allow_negative: bool) -> Result<f64, LaminaFrictionError> {
+    if value.is_finite() && (allow_negative || value >= 0.0) {
+        Ok(value)
+    } else {
+        Err(LaminaFrictionError::BadInput {
+            name,
+            value,
+            allowed: if allow_negative {
+                "any sign"
+            } else {
+                "not negative"
+            },
+        })
+    }
+}
+
+/// Eq. 3 as printed on one slice, N: F = η·e^{α·p̄}·v/h·A with p̄ = q/A and A = 2b·L.
+/// Returns 0 for an unloaded slice or v = 0; h ≤ 0 gives an infinite force (no film).
+pub fn eq3_slice_force_n(rheology: &FilmRheology, slice: &LaminaSlice) -> f64 {
+    let area = 2.0 * slice.half_width_m * slice.length_m;
+    if slice.load_n <= 0.0 || area <= 0.0 || slice.sliding_speed_m_s == 0.0 {
+        return 0.0;
+    }
+    let p_mean = slice.load_n / area;
+    rheology.viscosity_pa_s
+        * (rheology.pressure_viscosity_pa_inv * p_mean).exp()
+        * slice.sliding_speed_m_s
+        / slice.film_m
+        * area
+}
+
+/// Traction, power and skew moment of one lamina under `law`.
+///
+/// # Errors
+/// [`LaminaFrictionError::BadInput`] for non-finite inputs or negative load, half-width,
+/// length, film or pressure; [`LaminaFrictionError::InconsistentPressure`] when p₀ is not
+/// the Hertz peak of the strip.
+pub fn lamina_friction(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    slice: &LaminaSlice,
+) -> Result<LaminaFriction, LaminaFrictionError> {
+    let q = check("load_n", slice.load_n, false)?;
+    let b = check("half_width_m", slice.half_width_m, false)?;
+    let l = check("length_m", slice.length_m, false)?;
+    let p0 = check("peak_pressure_pa", slice.peak_pressure_pa, false)?;
+    let u = check("rolling_speed_m_s", slice.rolling_speed_m_s, true)?;
+    let v = check("sliding_speed_m_s", slice.sliding_speed_m_s, true)?;
+    let h = check("film_m", slice.film_m, false)?;
+    let y = check("axial_offset_m", slice.axial_offset_m, true)?;
+    let strip = HertzStrip {
+        load_n: q,
+        half_width_m: b,
+        width_m: l,
+    };
+    let expected = strip.peak_pressure_pa();
+    if (p0 - expected).abs() > 1e-6 * expected.max(p0) {
+        return Err(LaminaFrictionError::InconsistentPressure {
+            given: p0,
+            expected,
+        });
+    }
+    // An unloaded lamina, or an inviscid oil: the limiting-shear law caps a viscous
+    // stress, and with η = 0 there is none to cap (without this the ATZ branch would read
+    // a zero film as "no film, limited stress").
+    if expected == 0.0 || rheology.viscosity_pa_s == 0.0 {
+        return Ok(LaminaFriction::default());
+    }
+    if law == RacewayTractionLaw::NewtonianEq3 && h == 0.0 && v != 0.0 {
+        // Eq. 3 divides by the film: a sliding lamina without one has no finite force.
+        return Err(LaminaFrictionError::BadInput {
+            name: "film_m",
+            value: h,
+            allowed:
+                "positive for the printed eq. 3 (traction = \"newtonian-eq3\") at a sliding lamina",
+        });
+    }
+    let force = match law {
+        RacewayTractionLaw::NewtonianEq3 => eq3_slice_force_n(rheology, slice),
+        RacewayTractionLaw::Atz => rheology.atz().lamina_traction(&strip, v, h).force_n,
+    };
+    let mu = force.abs() / q;
+    Ok(LaminaFriction {
+        force_n: force,
+        power_w: force * v,
+        skew_moment_nm: y * force,
+        traction_coefficient: mu,
+        slide_roll_ratio: if u != 0.0 { v / u } else { 0.0 },
+        exceeds_newtonian_bound: law == RacewayTractionLaw::NewtonianEq3
+            && (mu > EQ3_MU_FLAG || mu.is_nan()),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn oil() -> FilmRheology {
+        FilmRheology {
+            viscosity_pa_s: 0.02,
+            pressure_viscosity_pa_inv: 2.0e-8,
+            transition_shear_stress_pa: 5.0e6,
+            limiting_traction_coefficient: 0.06,
+        }
+    }
+
+    fn slice(q: f64, v: f64) -> LaminaSlice {
+        let (b, l) = (1.5e-4, 2.0e-4);
+        LaminaSlice {
+            load_n: q,
+            half_width_m: b,
+            length_m: l,
+            peak_pressure_pa: 2.0 * q / (std::f64::consts::PI * b * l),
+            rolling_speed_m_s: 10.0,
+            sliding_speed_m_s: v,
+            film_m: 3.0e-7,
+            axial_offset_m: 4.0e-3,
+        }
+    }
+
+    /// Eq. 3 on one slice, by hand: q = 20 N on 2·1.5e-4·2e-4 m² → p̄ = 333.3 MPa,
+    /// α·p̄ = 6.667, F = 0.02·e^{6.667}·0.01/3e-7·6e-8 m² = 0.031431 N.
+    /// Tolerance 1e-13 against the expression typed out independently; exactly linear in
+    /// v (ratio 1e-15); power = F·v, skew = y·F.
+    #[test]
+    fn eq3_one_slice_by_hand_and_linear() {
+        let s = slice(20.0, 0.01);
+        let r = lamina_friction(RacewayTractionLaw::NewtonianEq3, &oil(), &s).expect("valid");
+        let area = 2.0 * 1.5e-4 * 2.0e-4;
+        let want = 0.02 * f64::exp(2.0e-8 * 20.0 / area) * 0.01 / 3.0e-7 * area;
+        assert!(
+            (r.force_n - want).abs() < 1e-13 * want,
+            "{} {want}",
+            r.force_n
+        );
+        assert!((want - 0.031_430_9).abs() < 1e-6, "{want}");
+        assert!((r.power_w - want * 0.01).abs() < 1e-15);
+        assert!((r.skew_moment_nm - 4.0e-3 * want).abs() < 1e-18);
+        for k in [-3.0, 0.5, 7.0] {
+            let rk = lamina_friction(
+                RacewayTractionLaw::NewtonianEq3,
+                &oil(),
+                &slice(20.0, 0.01 * k),
+            )
+            .expect("valid");
+            assert!((rk.force_n / (k * r.force_n) - 1.0).abs() < 1e-14);
+        }
+        assert!(!r.exceeds_newtonian_bound, "μ = {}", r.traction_coefficient);
+    }
+
+    /// At a bearing's 1.5 GPa the printed eq. 3 gives μ ≫ 0.2 and is flagged; the ATZ law
+    /// on the same slice stays at or below its limit max(τ_tr, μ_fl·p) integrated over the
+    /// strip, i.e. μ ≤ μ_fl + τ_tr·2bL/q (independent bound).
+    #[test]
+    fn eq3_flag_and_atz_bound() {
+        let b = 1.5e-4;
+        let l = 2.0e-4;
+        let q = 1.5e9 * std::f64::consts::PI * b * l / 2.0; // p₀ = 1.5 GPa, q = 70.7 N
+        let s = slice(q, 0.5);
+        let e = lamina_friction(RacewayTractionLaw::NewtonianEq3, &oil(), &s).expect("valid");
+        assert!(
+            e.exceeds_newtonian_bound && e.traction_coefficient > 100.0,
+            "{e:?}"
+        );
+        let a = lamina_friction(RacewayTractionLaw::Atz, &oil(), &s).expect("valid");
+        assert!(!a.exceeds_newtonian_bound);
+        let bound = 0.06 + 5.0e6 * 2.0 * b * l / q;
+        assert!(a.traction_coefficient > 0.0 && a.traction_coefficient <= bound + 1e-12);
+        // Here the whole strip but its fringe is limited: μ close to μ_fl.
+        assert!(
+            a.traction_coefficient > 0.5 * 0.06,
+            "{}",
+            a.traction_coefficient
+        );
+    }
+
+    /// The ATZ branch at α = 0 and a high limit is Newtonian with a constant viscosity:
+    /// F = η·v/h·2bL exactly (the integral of a constant stress over the strip), which is
+    /// also eq. 3 at α = 0: the two laws meet where they must.
+    #[test]
+    fn atz_newtonian_limit_is_eq3() {
+        let mut o = oil();
+        o.pressure_viscosity_pa_inv = 0.0;
+        o.transition_shear_stress_pa = 1e12;
+        let s = slice(50.0, 0.2);
+        let a = lamina_friction(RacewayTractionLaw::Atz, &o, &s).expect("valid");
+        let e = lamina_friction(RacewayTractionLaw::NewtonianEq3, &o, &s).expect("valid");
+        let want = 0.02 * 0.2 / 3.0e-7 * 2.0 * 1.5e-4 * 2.0e-4;
+        assert!((a.force_n / want - 1.0).abs() < 1e-12, "{}", a.force_n);
+        assert!((e.force_n / want - 1.0).abs() < 1e-14);
+    }
+
+    /// Zero sliding, zero viscosity or an unloaded lamina: no force, no power, no moment.
+    #[test]
+    fn zero_limits() {
+        for law in [RacewayTractionLaw::Atz, RacewayTractionLaw::NewtonianEq3] {
+            let r = lamina_friction(law, &oil(), &slice(20.0, 0.0)).expect("valid");
+            assert_eq!((r.force_n, r.power_w, r.skew_moment_nm), (0.0, 0.0, 0.0));
+            let r = lamina_friction(law, &oil(), &slice(0.0, 0.3)).expect("valid");
+            assert_eq!((r.force_n, r.power_w), (0.0, 0.0));
+            let mut dry = oil();
+            dry.viscosity_pa_s = 0.0;
+            let r = lamina_friction(law, &dry, &slice(20.0, 0.3)).expect("valid");
+            assert_eq!(r.power_w, 0.0);
+        }
+    }
+
+    /// A peak pressure that is not the strip's Hertz peak, or a negative film, is refused
+    /// with the field named.
+    #[test]
+    fn rejects_inconsistent_input() {
+        let mut s = slice(20.0, 0.1);
+        s.peak_pressure_pa *= 1.01;
+        let e = lamina_friction(RacewayTractionLaw::Atz, &oil(), &s).expect_err("inconsistent");
+        assert!(e.to_string().contains("peak_pressure_pa"), "{e}");
+        let mut s = slice(20.0, 0.1);
+        s.film_m = -1.0;
+        let e = lamina_friction(RacewayTractionLaw::Atz, &oil(), &s).expect_err("negative");
+        assert!(e.to_string().contains("film_m"), "{e}");
+    }
+
+    /// Serde names of the deck's `traction` key.
+    #[test]
+    fn law_names() {
+        let s = serde_json::to_string(&RacewayTractionLaw::NewtonianEq3).expect("ser");
+        assert_eq!(s, "\"newtonian-eq3\"");
+        let s = serde_json::to_string(&RacewayTractionLaw::Atz).expect("ser");
+        assert_eq!(s, "\"atz\"");
+    }
+}
