@@ -331,3 +331,73 @@ fn table_3_band_at_the_shipped_positions() {
     let f_c = num(&j["dynamics"]["cage_frequency_hz"]);
     assert!((f_c - 13.251).abs() < 1e-3, "f_c {f_c}");
 }
+
+/// `run --series FILE`: the truck bearing's 2-DOF history after settling as CSV, SI with
+/// units in the header (t, x, y, ẋ, ẏ, one load per roller). 10 revolutions at
+/// 209 rad/s, 2 dropped: 8 × 2π/209 s = 0.2405 s at about 4 096 Hz, cut to whole cage
+/// cycles (so between 1 and 985 rows); the sampling step is uniform (1e-9 relative, the
+/// printed digits) and within 0.1 % of 1/4 096 s (the dynamics fits whole cycles), the rings sit near the static offset (x < 0 along the load: the 1 990.5 N
+/// push −x) and every load is finite and non-negative (eq. 2: W = 0 on separation).
+/// Without the dynamics (`dynamics.revolutions = 0`) the CLI refuses with exit 1 naming
+/// the key and writes no file.
+#[test]
+fn series_writes_the_history_or_names_revolutions() {
+    let d = deck("crb_truck.toml");
+    let dir = std::env::temp_dir().join(format!("rollbench-crb-series-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let series = dir.join("history.csv");
+    let s = series.to_string_lossy().into_owned();
+    let (code, out, err) = run(&[
+        "run",
+        &d,
+        "--set",
+        "dynamics.revolutions=10",
+        "--set",
+        "dynamics.settle_revolutions=2",
+        "--series",
+        &s,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.is_empty());
+    let csv = std::fs::read_to_string(&series).unwrap_or_else(|e| panic!("{e}"));
+    let mut lines = csv.lines();
+    let header = lines.next().unwrap_or("");
+    let mut want = "time_s,x_m,y_m,vx_m_s,vy_m_s".to_string();
+    for j in 1..=12 {
+        want.push_str(&format!(",roller_{j}_load_n"));
+    }
+    assert_eq!(header, want);
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|x| x.parse().unwrap_or_else(|e| panic!("{e}: {l}")))
+                .collect()
+        })
+        .collect();
+    assert!((1..=985).contains(&rows.len()), "{}", rows.len());
+    if rows.len() > 1 {
+        let dt = rows[1][0] - rows[0][0];
+        assert!((dt * 4096.0 - 1.0).abs() < 1e-3, "{dt}");
+        for w in rows.windows(2) {
+            assert!((w[1][0] - w[0][0] - dt).abs() < 1e-9 * w[1][0], "{dt}");
+        }
+    }
+    for r in &rows {
+        assert_eq!(r.len(), 17);
+        assert!(r[1] < 0.0, "{r:?}");
+        assert!(r[5..].iter().all(|w| w.is_finite() && *w >= 0.0), "{r:?}");
+    }
+    std::fs::remove_file(&series).ok();
+    let (code, _, err) = run(&[
+        "run",
+        &d,
+        "--set",
+        "dynamics.revolutions=0",
+        "--series",
+        &s,
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("dynamics.revolutions"), "{err}");
+    assert!(!series.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}

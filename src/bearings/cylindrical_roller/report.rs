@@ -224,3 +224,54 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
     );
     s
 }
+
+/// Most rows `run --series` writes (the ball's bound, `angular_ball::dynamics::budget`):
+/// a longer history keeps every k-th sample and says so in a `#` line.
+pub const MAX_SERIES_ROWS: usize = 100_000;
+
+/// `run --series FILE`: the 2-DOF dynamics' time history after settling (the uniformly
+/// sampled series the spectra are taken from) as CSV, SI with units in the header: t, the
+/// inner ring's x, y, ẋ, ẏ and each roller's load W_i (eq. 2). A history longer than
+/// [`MAX_SERIES_ROWS`] keeps one sample in k and starts with a `# decimated` line; a
+/// solve without the dynamics is refused naming `dynamics.revolutions`.
+pub fn series_csv(a: &CylindricalAnalysis) -> Result<String, String> {
+    let Some(t) = &a.tribo else {
+        return Err(format!(
+            "no time history: the 2-DOF dynamics was not run (dynamics.revolutions = {}; run --no-transient also skips it); set dynamics.revolutions > 0 (e.g. --set dynamics.revolutions=100)",
+            a.input.dynamics.revolutions
+        ));
+    };
+    let s = &t.dynamics.series;
+    let n = s.t_s.len();
+    let every = n.div_ceil(MAX_SERIES_ROWS).max(1);
+    let mut out = String::new();
+    if every > 1 {
+        let _ = writeln!(
+            out,
+            "# decimated: 1 sample in {every} of {n} (sampling step {:e} s) kept, to keep at most {MAX_SERIES_ROWS} rows",
+            s.dt_s
+        );
+    }
+    out.push_str("time_s,x_m,y_m,vx_m_s,vy_m_s");
+    for j in 0..s.roller_load_n.len() {
+        let _ = write!(out, ",roller_{}_load_n", j + 1);
+    }
+    out.push('\n');
+    for i in (0..n).step_by(every) {
+        let cell = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
+        let _ = write!(
+            out,
+            "{:e},{:e},{:e},{:e},{:e}",
+            s.t_s[i],
+            cell(&s.x_m),
+            cell(&s.y_m),
+            cell(&s.vx_m_s),
+            cell(&s.vy_m_s)
+        );
+        for w in &s.roller_load_n {
+            let _ = write!(out, ",{:e}", cell(w));
+        }
+        out.push('\n');
+    }
+    Ok(out)
+}
