@@ -388,14 +388,7 @@ fn series_writes_the_history_or_names_revolutions() {
         assert!(r[5..].iter().all(|w| w.is_finite() && *w >= 0.0), "{r:?}");
     }
     std::fs::remove_file(&series).ok();
-    let (code, _, err) = run(&[
-        "run",
-        &d,
-        "--set",
-        "dynamics.revolutions=0",
-        "--series",
-        &s,
-    ]);
+    let (code, _, err) = run(&["run", &d, "--set", "dynamics.revolutions=0", "--series", &s]);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("dynamics.revolutions"), "{err}");
     assert!(!series.exists());

@@ -575,7 +575,11 @@ mod tests {
             assert!(f.value.operating.gravity);
         }
         for (from, to, want) in [
-            ("axial_load = 0", "axial_load = 100", "geometry.ribs = \"both\""),
+            (
+                "axial_load = 0",
+                "axial_load = 100",
+                "geometry.ribs = \"both\"",
+            ),
             (
                 "dub_off_length = 0.003",
                 "dub_off_length = 0.011",

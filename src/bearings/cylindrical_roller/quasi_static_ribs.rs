@@ -57,9 +57,11 @@
 //! A deck without ribs or without axial load never comes here: the radial solve
 //! ([`super::quasi_static::solve`]) runs unchanged, bit for bit.
 
+// The 3×3 and 5×5 algebra below reads as the matrices are written: indices, not iterators.
+#![allow(clippy::needless_range_loop)]
+
 use super::quasi_static::{
-    validate, QuasiStatic, QuasiStaticError, QuasiStaticModel, RollerState, SliceState,
-    SUB_LAMINAE,
+    validate, QuasiStatic, QuasiStaticError, QuasiStaticModel, RollerState, SliceState, SUB_LAMINAE,
 };
 use crate::numerics::cancel::Cancel;
 use crate::physics::contact::lamina_law::{ninth_root, LaminaLaw};
@@ -624,11 +626,19 @@ pub fn solve_ribbed(
                 .enumerate()
                 .map(|(j, r)| {
                     let p = s.displacement_m[0] * rb.cos[j] + s.displacement_m[1] * rb.sin[j];
-                    [p + rb.rho - r.inner_approach_m, r.axial_position_m, r.tilt_rad]
+                    [
+                        p + rb.rho - r.inner_approach_m,
+                        r.axial_position_m,
+                        r.tilt_rad,
+                    ]
                 })
                 .collect();
             (
-                [s.displacement_m[0], s.displacement_m[1], s.axial_displacement_m],
+                [
+                    s.displacement_m[0],
+                    s.displacement_m[1],
+                    s.axial_displacement_m,
+                ],
                 g,
             )
         }
@@ -671,12 +681,7 @@ pub fn solve_ribbed(
             ring.force[2] - load[2],
         ];
         let r = norm3(residual);
-        let floor = 1e-13
-            * ring
-                .rollers
-                .iter()
-                .map(|e| e.w_in + e.q_ri)
-                .sum::<f64>();
+        let floor = 1e-13 * ring.rollers.iter().map(|e| e.w_in + e.q_ri).sum::<f64>();
         if r <= tol_n.max(floor) && ring.roller_residual <= tol_n.max(floor) {
             break;
         }
@@ -696,8 +701,11 @@ pub fn solve_ribbed(
         for (i, row) in k.iter_mut().enumerate() {
             row[i] += 1e-12 * trace.max(1e-300);
         }
-        let mut dir = solve3(k, [-residual[0], -residual[1], -residual[2]])
-            .unwrap_or([-residual[0] / r * step_cap, -residual[1] / r * step_cap, -residual[2] / r * step_cap]);
+        let mut dir = solve3(k, [-residual[0], -residual[1], -residual[2]]).unwrap_or([
+            -residual[0] / r * step_cap,
+            -residual[1] / r * step_cap,
+            -residual[2] / r * step_cap,
+        ]);
         let len = norm3(dir);
         if !(len.is_finite()) || len > step_cap {
             let f = if len.is_finite() { step_cap / len } else { 0.0 };
