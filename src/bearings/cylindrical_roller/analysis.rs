@@ -2,8 +2,9 @@
 //! (`super::quasi_static`) built from the deck, and per slice the EHL film and Λ.
 
 use super::geometry::{derive, Derived};
-use super::input::{CylindricalInput, ProfileKind};
-use super::quasi_static::{self, Profile, QuasiStatic, QuasiStaticError, QuasiStaticModel};
+use super::input::{CylindricalInput, ProfileKind, Ribs};
+use super::quasi_static::{Profile, QuasiStatic, QuasiStaticError, QuasiStaticModel};
+use super::quasi_static_ribs::{solve_with, RibContact};
 use super::tribodynamics::{tribodynamics, Tribodynamics, TribodynamicsError};
 use crate::numerics::cancel::Cancel;
 use crate::physics::contact::line::{effective_modulus, Elastic};
@@ -113,6 +114,17 @@ pub fn model(input: &CylindricalInput) -> QuasiStaticModel {
     }
 }
 
+/// The roller end–rib contacts of `input` when its ribs carry axial load (ribs on both
+/// rings and a non-zero `operating.axial_load`); `None` otherwise (the radial solve).
+pub fn rib_contact(input: &CylindricalInput) -> Option<RibContact> {
+    let g = &input.geometry;
+    (g.ribs == Ribs::Both && input.operating.axial_load_n != 0.0).then(|| RibContact {
+        angle_rad: g.rib_angle_rad,
+        contact_height_m: g.rib_contact_height(),
+        axial_load_n: input.operating.axial_load_n,
+    })
+}
+
 /// Solve `input` (named `name`) from rest.
 pub fn analyse(
     input: &CylindricalInput,
@@ -133,13 +145,15 @@ pub fn analyse_from(
     let t0 = std::time::Instant::now();
     let derived = derive(input);
     let model = model(input);
+    let ribs = rib_contact(input);
+    let ribs = ribs.as_ref();
     let statics = match start {
-        Some(s) => match quasi_static::solve(&model, Some(s), cancel) {
+        Some(s) => match solve_with(&model, ribs, Some(s), cancel) {
             Ok(q) => q,
             Err(QuasiStaticError::Cancelled) => return Err(QuasiStaticError::Cancelled),
-            Err(_) => quasi_static::solve(&model, None, cancel)?,
+            Err(_) => solve_with(&model, ribs, None, cancel)?,
         },
-        None => quasi_static::solve(&model, None, cancel)?,
+        None => solve_with(&model, ribs, None, cancel)?,
     };
     let films = films(input, &derived, &statics);
     let mut warnings = Vec::new();

@@ -60,7 +60,7 @@ const OUTER: [FieldSpec<CylindricalInput>; 5] =
         .materials
         .outer);
 
-static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
+static FIELDS: [FieldSpec<CylindricalInput>; 57] = [
     // [geometry] (seed 003 Table A1)
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers m", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
@@ -117,7 +117,7 @@ static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
         },
     },
     FieldSpec {
-        meta: meta("geometry.ribs", "geometry", "Ribs", Quantity::Dimensionless, FieldKind::Choice(RIBS), (0.0, false), (3.0, false), def(0.0), "ring ribs carrying axial load through the roller ends; only \"none\" for now (the ribbed variant is later work)"),
+        meta: meta("geometry.ribs", "geometry", "Ribs", Quantity::Dimensionless, FieldKind::Choice(RIBS), (0.0, false), (3.0, false), def(0.0), "ring ribs: \"both\" (NJ/NUP) carries operating.axial_load through the roller ends (inner rib → roller → outer rib), tilting the rollers; \"inner\" or \"outer\" alone (N, NU) locates the rollers but carries no axial load"),
         get: |t| match t.geometry.ribs {
             Ribs::None => 0.0,
             Ribs::Inner => 1.0,
@@ -132,6 +132,16 @@ static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
                 _ => Ribs::None,
             }
         },
+    },
+    FieldSpec {
+        meta: meta("geometry.rib_angle", "geometry", "Rib angle φ", Quantity::Angle, REAL, (0.0, true), (45.0 * DEG, false), def(super::input::DEFAULT_RIB_ANGLE_RAD), "lay-back of the rib faces from the radial plane (the roller end–rib contact normal's angle to the axis); with the contact height it sets the roller end's sphere radius (r − h)/sin φ"),
+        get: |t| t.geometry.rib_angle_rad,
+        set: |t, v| t.geometry.rib_angle_rad = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.rib_contact_height", "geometry", "Rib contact height h", Quantity::Length, FieldKind::RealOr("auto"), (0.0, true), (1.0, false), def(f64::NAN), "height of the roller end–rib contact above the raceway, below the roller axis; \"auto\": a quarter of the roller diameter"),
+        get: |t| t.geometry.rib_contact_height_m.unwrap_or(f64::NAN),
+        set: |t, v| t.geometry.rib_contact_height_m = (!v.is_nan()).then_some(v),
     },
     ROLLER[0], ROLLER[1], ROLLER[2], ROLLER[3], ROLLER[4],
     INNER[0], INNER[1], INNER[2], INNER[3], INNER[4],
@@ -305,7 +315,8 @@ static FIELDS: [FieldSpec<CylindricalInput>; 55] = [
 ];
 
 /// Rules across keys: nominal raceways (the play is `radial_interference`), a dub-off
-/// inside half the roller, no axial load and no ribs yet, the settling inside the run.
+/// inside half the roller, axial load only with ribs on both rings and the rib contact
+/// below the roller axis, the settling inside the run.
 fn cross(t: &CylindricalInput, units: Units) -> Vec<(&'static str, String)> {
     let g = &t.geometry;
     let mut v = Vec::new();
@@ -331,18 +342,28 @@ fn cross(t: &CylindricalInput, units: Units) -> Vec<(&'static str, String)> {
             ),
         ));
     }
-    if g.ribs != Ribs::None {
-        v.push((
-            "geometry.ribs",
-            "only \"none\" is accepted for now: ribbed rollers carrying axial load are later work"
-                .to_string(),
-        ));
-    }
-    if t.operating.axial_load_n != 0.0 {
+    if t.operating.axial_load_n != 0.0 && g.ribs != Ribs::Both {
+        let ribs = match g.ribs {
+            Ribs::None => "none",
+            Ribs::Inner => "inner",
+            Ribs::Outer => "outer",
+            Ribs::Both => "both",
+        };
         v.push((
             "operating.axial_load",
-            "must be 0: without ribs (geometry.ribs = \"none\") the bearing carries no axial load"
-                .to_string(),
+            format!(
+                "must be 0 unless geometry.ribs = \"both\": with geometry.ribs = \"{ribs}\" no rib pair passes axial load from the inner ring through the rollers to the outer ring"
+            ),
+        ));
+    }
+    let h = g.rib_contact_height();
+    if g.ribs != Ribs::None && !(h < 0.5 * g.roller_diameter_m) {
+        v.push((
+            "geometry.rib_contact_height",
+            format!(
+                "must be less than the roller radius (half of {}): the contact lies between the raceway and the roller axis",
+                show(&SCHEMA, t, "geometry.roller_diameter", units)
+            ),
         ));
     }
     if t.dynamics.revolutions > 0 && t.dynamics.settle_revolutions >= t.dynamics.revolutions {
@@ -554,8 +575,11 @@ mod tests {
             assert!(f.value.operating.gravity);
         }
         for (from, to, want) in [
-            ("ribs = \"none\"", "ribs = \"inner\"", "later work"),
-            ("axial_load = 0", "axial_load = 100", "no axial load"),
+            (
+                "axial_load = 0",
+                "axial_load = 100",
+                "geometry.ribs = \"both\"",
+            ),
             (
                 "dub_off_length = 0.003",
                 "dub_off_length = 0.011",

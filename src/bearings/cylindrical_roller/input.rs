@@ -14,8 +14,10 @@ pub enum ProfileKind {
     Logarithmic,
 }
 
-/// Which ring carries ribs (roller-end contacts for axial load). Only `None` is solved
-/// for now: the ribbed variant is later work (issue 25 model item 1).
+/// Which ring carries ribs (roller-end contacts for axial load; issue 25 model item 1).
+/// Axial load needs ribs on both rings (`Both`: an NJ/NUP arrangement, the load passing
+/// inner rib → roller → outer rib); one ribbed ring alone (an N or NU bearing) locates
+/// the rollers on that ring but carries no axial load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Ribs {
     /// No ribs: the bearing carries radial load only.
@@ -61,8 +63,27 @@ pub struct Geometry {
     pub radial_interference_m: f64,
     /// The axial profile.
     pub profile: ProfileKind,
-    /// Ribs (only [`Ribs::None`] is accepted for now).
+    /// Ribs.
     pub ribs: Ribs,
+    /// φ, the rib faces' lay-back from the radial plane, rad (the roller end–rib
+    /// contact normal's angle to the bearing axis; `super::quasi_static_ribs`).
+    pub rib_angle_rad: f64,
+    /// h, the roller end–rib contact's height above the raceway, m; `None`: a quarter of
+    /// the roller diameter ([`Geometry::rib_contact_height`]).
+    pub rib_contact_height_m: Option<f64>,
+}
+
+/// Default rib lay-back angle, rad (0.5°: a slightly open rib, so the crowned roller end
+/// touches it at a height set by the end's radius; a documented choice, not a standard).
+pub const DEFAULT_RIB_ANGLE_RAD: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+impl Geometry {
+    /// The rib contact height in effect, m: the deck's, else d/4 (the contact halfway
+    /// between the raceway and the roller axis).
+    pub fn rib_contact_height(&self) -> f64 {
+        self.rib_contact_height_m
+            .unwrap_or(0.25 * self.roller_diameter_m)
+    }
 }
 
 /// Roller and ring materials.
@@ -90,7 +111,7 @@ pub struct Operating {
     pub load_angle_rad: f64,
     /// The rotor's weight M·g along −x (g = 9.81 m/s², the seed's value).
     pub gravity: bool,
-    /// Axial load, N (0 while there are no ribs).
+    /// Axial load on the inner ring, N, along +z (carried only with ribs on both rings).
     pub axial_load_n: f64,
 }
 
@@ -234,6 +255,8 @@ impl CylindricalInput {
                 radial_interference_m: 5e-6,
                 profile: ProfileKind::DubOff,
                 ribs: Ribs::None,
+                rib_angle_rad: DEFAULT_RIB_ANGLE_RAD,
+                rib_contact_height_m: None,
             },
             materials: Materials {
                 roller: SEED_STEEL,

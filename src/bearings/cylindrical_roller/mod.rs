@@ -20,6 +20,7 @@ pub mod dynamics;
 pub mod geometry;
 pub mod input;
 pub mod quasi_static;
+pub mod quasi_static_ribs;
 pub mod report;
 pub mod report_tribo;
 pub mod system;

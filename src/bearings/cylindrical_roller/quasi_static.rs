@@ -100,6 +100,19 @@ pub struct RollerState {
     pub outer_approach_m: f64,
     /// Slices, from one end to the other.
     pub slices: Vec<SliceState>,
+    /// Tilt θ in the radial–axial plane, rad: a point at axial y moves radially by −θ·y
+    /// (0 without axial load; `super::quasi_static_ribs`).
+    pub tilt_rad: f64,
+    /// Axial position of the roller, m (0 without axial load).
+    pub axial_position_m: f64,
+    /// Normal load of the inner ring's rib on the roller end, N (0 without axial load).
+    pub inner_rib_load_n: f64,
+    /// Normal load of the outer ring's rib on the roller end, N (equal to the inner's:
+    /// the roller's axial balance).
+    pub outer_rib_load_n: f64,
+    /// The rib load of the roller, N: the mean of the two (which are equal in
+    /// equilibrium).
+    pub rib_load_n: f64,
 }
 
 /// The solved bearing.
@@ -115,6 +128,11 @@ pub struct QuasiStatic {
     pub iterations: usize,
     /// Final force residual, N.
     pub residual_n: f64,
+    /// Axial displacement z of the inner ring, m (0 without axial load).
+    pub axial_displacement_m: f64,
+    /// The 3×3 ring stiffness ∂(F_x, F_y, F_z)/∂(x, y, z), N/m, when ribs carry axial
+    /// load (`None`: the 2×2 radial one is the whole story).
+    pub stiffness_xyz_n_m: Option<[[f64; 3]; 3]>,
 }
 
 /// Why the lamina solve failed, with the numbers, phrased for a person.
@@ -297,7 +315,7 @@ fn positive(name: &str, v: f64, unit: &str) -> Result<(), QuasiStaticError> {
 }
 
 /// Checks that the model describes a bearing; every message names the field and range.
-fn validate(m: &QuasiStaticModel) -> Result<(), QuasiStaticError> {
+pub(super) fn validate(m: &QuasiStaticModel) -> Result<(), QuasiStaticError> {
     if !(3..=1000).contains(&m.roller_count) {
         return Err(QuasiStaticError::Invalid(format!(
             "roller_count must lie in 3..=1000, got {}",
@@ -859,6 +877,11 @@ fn report(
                 inner_approach_m: base_in,
                 outer_approach_m: base_out,
                 slices,
+                tilt_rad: 0.0,
+                axial_position_m: 0.0,
+                inner_rib_load_n: 0.0,
+                outer_rib_load_n: 0.0,
+                rib_load_n: 0.0,
             }
         })
         .collect();
@@ -868,6 +891,8 @@ fn report(
         stiffness_n_m: ring.stiffness,
         iterations,
         residual_n: norm(ring.residual),
+        axial_displacement_m: 0.0,
+        stiffness_xyz_n_m: None,
     }
 }
 

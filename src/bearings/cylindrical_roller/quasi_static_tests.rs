@@ -510,3 +510,241 @@ fn divided_powers_against_the_direct_form() {
         assert!((v / (p * a.powf(p - 1.0)) - 1.0).abs() < 1e-11, "{m}");
     }
 }
+
+// ---- Ribs and axial load (`super::super::quasi_static_ribs`) ----
+
+use super::super::quasi_static_ribs::{ribbed_force, solve_ribbed, solve_with, RibContact};
+
+/// The truck bearing's ribs: 0.5° lay-back, contact a quarter diameter above the raceway
+/// (the deck's defaults), `fa` N of axial load.
+fn ribs(fa: f64) -> RibContact {
+    RibContact {
+        angle_rad: 0.5f64.to_radians(),
+        contact_height_m: 0.25 * 0.0127,
+        axial_load_n: fa,
+    }
+}
+
+fn run_ribbed(m: &QuasiStaticModel, r: &RibContact) -> QuasiStatic {
+    solve_ribbed(m, r, None, &Cancel::NONE).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Axial balance Σ Q·cos φ = F_a (the inner ring's z balance) and the radial one
+/// Σ (W_i + Q·sin φ)(cos ψ, sin ψ) = F, both to the solve's tolerance (1e-12 of |F|, so
+/// 1e-9 relative leaves room for the sums' round-off); each roller's two rib loads
+/// equal (its axial balance) and W_o = W_i + F_c (its radial balance), 1e-9 relative.
+/// Both signs of F_a (ribs on both sides of both rings).
+#[test]
+fn ribbed_axial_and_radial_balance() {
+    let m = truck();
+    for fa in [400.0, -400.0] {
+        let r = ribs(fa);
+        let q = run_ribbed(&m, &r);
+        let (s, c) = r.angle_rad.sin_cos();
+        let fz: f64 = q.rollers.iter().map(|x| x.inner_rib_load_n * c).sum();
+        assert!((fz - fa.abs()).abs() < 1e-9 * 2000.0, "{fz} vs {fa}");
+        let (mut fx, mut fy) = (0.0, 0.0);
+        for x in &q.rollers {
+            let w = x.inner_load_n + x.inner_rib_load_n * s;
+            fx += w * x.azimuth_rad.cos();
+            fy += w * x.azimuth_rad.sin();
+            assert!(
+                (x.inner_rib_load_n - x.outer_rib_load_n).abs()
+                    < 1e-9 * x.inner_rib_load_n.max(1.0),
+                "{x:?}"
+            );
+            assert!(
+                (x.outer_load_n - x.inner_load_n - m.centrifugal_n).abs()
+                    < 1e-9 * x.outer_load_n.max(1.0)
+            );
+        }
+        assert!((fx - m.load_n[0]).abs() < 1e-9 * 2000.0, "{fx}");
+        assert!(fy.abs() < 1e-9 * 2000.0, "{fy}");
+        // The inner ring moves along the load; the rollers tilt against σ (θ·y moves the
+        // inner contact's load towards −σ, the inner rib's end).
+        assert!(
+            q.axial_displacement_m * fa > 0.0,
+            "{}",
+            q.axial_displacement_m
+        );
+        let top = &q.rollers[6]; // ψ = 180°, on the load line (−x)
+        assert!(top.tilt_rad * fa < 0.0, "{top:?}");
+    }
+}
+
+/// F_a = 0 with ribs present is the radial-only result exactly (the dispatch keeps the
+/// radial solve bit for bit), and the ribbed solve at a vanishing axial load (1e-6 N)
+/// approaches it: W_max within 2e-5 and x within 3e-5 relative (measured 1.1e-5),
+/// K_xx within 1e-3, the
+/// tilt below 1e-9 rad. The two slice quadratures (exact segments against 2-point
+/// Gauss per sub-lamina) differ only where a sub-lamina straddles the end of the loaded
+/// length; the stiffness weighs that edge by δ^(1/9), whose kink Gauss resolves worst
+/// (measured 2.7e-4 on K_xx).
+#[test]
+fn zero_axial_load_with_ribs_is_the_radial_result() {
+    let m = truck();
+    let radial = run(&m);
+    let with =
+        solve_with(&m, Some(&ribs(0.0)), None, &Cancel::NONE).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(with, radial);
+    let tiny = run_ribbed(&m, &ribs(1e-6));
+    let (a, b) = (w_max(&tiny), w_max(&radial));
+    assert!((a / b - 1.0).abs() < 2e-5, "{a} vs {b}");
+    let (ka, kb) = (tiny.stiffness_n_m[0][0], radial.stiffness_n_m[0][0]);
+    assert!((ka / kb - 1.0).abs() < 1e-3, "{ka} vs {kb}");
+    assert!(tiny.rollers.iter().all(|r| r.tilt_rad.abs() < 1e-9));
+    let (xa, xb) = (tiny.displacement_m[0], radial.displacement_m[0]);
+    assert!((xa / xb - 1.0).abs() < 3e-5, "{xa} vs {xb}");
+}
+
+/// The tilt moment balance of a uniformly loaded roller: straight rollers, pure axial
+/// load (no radial load, no centrifugal force, a 5 µm interference so that every roller
+/// is loaded alike): Σ_k y_k·(q_o,k − q_i,k) = 2Q·σ·(e − (l/2)·sin φ), the rib couple
+/// (e = r − h). The slice loads are sums over their quadrature points, so the moment
+/// from slice centres differs from the exact one by the load's variation across a slice:
+/// Σ q′·w³/12 ≈ (w/l)² of the moment; with 201 slices that is 2.5e-5, tolerance 1e-4.
+/// The couple is not small: it moves the load towards the ribs' ends (the inner
+/// contact's first slice carries more than its last).
+#[test]
+fn rib_couple_is_balanced_by_the_slices() {
+    let m = QuasiStaticModel {
+        profile: STRAIGHT,
+        slices: 201,
+        centrifugal_n: 0.0,
+        load_n: [0.0, 0.0],
+        ..truck()
+    };
+    let r = ribs(600.0);
+    let q = run_ribbed(&m, &r);
+    let e = m.roller_radius_m - r.contact_height_m;
+    let lever = e - 0.5 * m.roller_length_m * r.angle_rad.sin();
+    for x in &q.rollers {
+        let moment: f64 = x
+            .slices
+            .iter()
+            .map(|s| s.axial_m * (s.outer_load_n - s.inner_load_n))
+            .sum();
+        let couple = 2.0 * x.rib_load_n * lever;
+        assert!((moment / couple - 1.0).abs() < 1e-4, "{moment} vs {couple}");
+        let (first, last) = (&x.slices[0], &x.slices[200]);
+        assert!(first.inner_load_n > last.inner_load_n, "{x:?}");
+    }
+}
+
+/// Symmetry: ribs on both rings under pure axial load (no radial load, gravity or
+/// centrifugal force) share it evenly: every roller carries the same rib load and tilt
+/// within 1e-9 relative, each F_a/(Z cos φ), and the ring does not move radially.
+#[test]
+fn pure_axial_load_is_shared_evenly() {
+    let m = QuasiStaticModel {
+        load_n: [0.0, 0.0],
+        centrifugal_n: 0.0,
+        ..truck()
+    };
+    let r = ribs(500.0);
+    let q = run_ribbed(&m, &r);
+    let share = 500.0 / (12.0 * r.angle_rad.cos());
+    for x in &q.rollers {
+        assert!(
+            (x.rib_load_n / share - 1.0).abs() < 1e-9,
+            "{}",
+            x.rib_load_n
+        );
+        assert!((x.tilt_rad / q.rollers[0].tilt_rad - 1.0).abs() < 1e-9);
+    }
+    assert!(q.displacement_m[0].abs() < 1e-15 && q.displacement_m[1].abs() < 1e-15);
+}
+
+/// The analytic 3×3 stiffness (the Schur complement of each roller's Hessian) against
+/// central differences of the equilibrated contact force (rollers re-solved at each
+/// perturbed ring position), 1e-6 relative to the largest entry: steps of 1e-4 of the
+/// displacement scale leave a truncation error ~1e-8 and round-off ~1e-10 there.
+#[test]
+fn ribbed_stiffness_against_finite_differences() {
+    let m = truck();
+    let r = ribs(400.0);
+    let q = run_ribbed(&m, &r);
+    let k = q.stiffness_xyz_n_m.unwrap_or_default();
+    let xyz = [
+        q.displacement_m[0],
+        q.displacement_m[1],
+        q.axial_displacement_m,
+    ];
+    let guesses: Vec<[f64; 3]> = q
+        .rollers
+        .iter()
+        .map(|x| {
+            let p = xyz[0] * x.azimuth_rad.cos() + xyz[1] * x.azimuth_rad.sin();
+            [
+                p + m.radial_interference_m - x.inner_approach_m,
+                x.axial_position_m,
+                x.tilt_rad,
+            ]
+        })
+        .collect();
+    let (f0, k0) = ribbed_force(&m, &r, xyz, &guesses);
+    assert_eq!(k0, k);
+    assert!((f0[2] - 400.0).abs() < 1e-6, "{f0:?}");
+    let big = k.iter().flatten().fold(0.0f64, |a, b| a.max(b.abs()));
+    let h = 1e-4 * xyz[0].abs().max(xyz[2].abs());
+    for j in 0..3 {
+        let mut a = xyz;
+        let mut b = xyz;
+        a[j] += h;
+        b[j] -= h;
+        let fa = ribbed_force(&m, &r, a, &guesses).0;
+        let fb = ribbed_force(&m, &r, b, &guesses).0;
+        for i in 0..3 {
+            let fd = (fa[i] - fb[i]) / (2.0 * h);
+            assert!(
+                (fd - k[i][j]).abs() < 1e-6 * big,
+                "K[{i}][{j}] {} vs {fd}",
+                k[i][j]
+            );
+        }
+    }
+    // Symmetric, positive definite, and K_zz far below K_xx (the ribs are laid back).
+    assert!(k[0][2] == k[2][0] && k[2][2] > 0.0 && k[2][2] < k[0][0]);
+}
+
+/// An axial load beyond what the ribs carry (the contact ellipse reaching past the contact
+/// height into the raceway's corner) is a typed error naming both keys with the numbers;
+/// a rib contact above the roller axis or a zero rib angle is refused naming its key.
+#[test]
+fn rib_overload_and_bad_rib_geometry_are_named() {
+    let m = truck();
+    let r = RibContact {
+        contact_height_m: 2e-4,
+        ..ribs(20_000.0)
+    };
+    let e = solve_ribbed(&m, &r, None, &Cancel::NONE)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        e.contains("operating.axial_load") && e.contains("geometry.rib_contact_height"),
+        "{e}"
+    );
+    for (bad, key) in [
+        (
+            RibContact {
+                contact_height_m: 0.007,
+                ..ribs(100.0)
+            },
+            "geometry.rib_contact_height",
+        ),
+        (
+            RibContact {
+                angle_rad: 0.0,
+                ..ribs(100.0)
+            },
+            "geometry.rib_angle",
+        ),
+    ] {
+        let e = solve_ribbed(&m, &bad, None, &Cancel::NONE)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        assert!(e.contains(key), "{e}");
+    }
+}

@@ -49,9 +49,12 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
                 "outer_load_n": r.outer_load_n,
                 "inner_approach_m": r.inner_approach_m,
                 "outer_approach_m": r.outer_approach_m,
-                // No ribs and no moments yet: the rollers do not tilt, nothing loads a rib.
-                "tilt_rad": 0.0,
-                "rib_load_n": 0.0,
+                // 0 without ribs carrying axial load (super::quasi_static_ribs).
+                "tilt_rad": r.tilt_rad,
+                "rib_load_n": r.rib_load_n,
+                "inner_rib_load_n": r.inner_rib_load_n,
+                "outer_rib_load_n": r.outer_rib_load_n,
+                "axial_position_m": r.axial_position_m,
                 "film_m": f.min_film_m,
                 "lambda": f.lambda,
                 "max_pressure_pa": f.max_pressure_pa,
@@ -84,7 +87,12 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
         "rings": {
             "displacement_m": q.displacement_m,
             "stiffness_n_per_m": [k[0], k[1]],
+            "axial_displacement_m": q.axial_displacement_m,
+            "stiffness_xyz_n_per_m": q.stiffness_xyz_n_m,
         },
+        "stiffness": stiffness_json(a),
+        "axial_load_n": a.input.operating.axial_load_n,
+        "ribs": ribs_json(a),
         "contact": {
             "sliding_speed_m_s": a.input.contact.sliding_speed_m_s,
             "positions_deg": a.input.contact.positions_rad.iter().map(|p| p.to_degrees()).collect::<Vec<_>>(),
@@ -108,6 +116,39 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
     v
 }
 
+/// The ring stiffness for `rollbench stiffness` (rows of forces, columns of
+/// displacements, SI): the 2×2 (x, y), or the 3×3 (x, y, z) when ribs carry axial load.
+fn stiffness_json(a: &CylindricalAnalysis) -> Value {
+    let q = &a.statics;
+    match q.stiffness_xyz_n_m {
+        Some(k) => json!({
+            "rows": ["F_x", "F_y", "F_z"],
+            "columns": ["x", "y", "z"],
+            "matrix": k,
+            "unit": "N/m",
+        }),
+        None => json!({
+            "rows": ["F_x", "F_y"],
+            "columns": ["x", "y"],
+            "matrix": q.stiffness_n_m,
+            "unit": "N/m",
+        }),
+    }
+}
+
+/// The rib contact's geometry when ribs carry axial load (`null` otherwise).
+fn ribs_json(a: &CylindricalAnalysis) -> Value {
+    match super::analysis::rib_contact(&a.input) {
+        Some(r) => json!({
+            "rib_angle_deg": r.angle_rad.to_degrees(),
+            "contact_height_m": r.contact_height_m,
+            "roller_end_radius_m": r.end_radius_m(a.derived.roller_radius_m),
+            "max_rib_load_n": a.statics.rollers.iter().map(|x| x.rib_load_n).fold(0.0, f64::max),
+        }),
+        None => Value::Null,
+    }
+}
+
 /// The 2×2 ring stiffness and the static offset in `units`: the text report's section
 /// and the workbench's Stiffness pane.
 pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
@@ -115,16 +156,32 @@ pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
     let ks = Quantity::LinearStiffness;
     let len = Quantity::Length;
     let k = q.stiffness_n_m;
-    let mut v = vec![format!(
-        "Ring stiffness (rows F_x F_y; columns x y), {}",
-        ks.unit(units)
-    )];
-    for (name, row) in ["F_x", "F_y"].iter().zip(k) {
+    let mut v = Vec::new();
+    if let Some(k3) = q.stiffness_xyz_n_m {
         v.push(format!(
-            "  {name:<4} {:>12.4e} {:>12.4e}",
-            ks.from_si(row[0], units),
-            ks.from_si(row[1], units)
+            "Ring stiffness (rows F_x F_y F_z; columns x y z), {}",
+            ks.unit(units)
         ));
+        for (name, row) in ["F_x", "F_y", "F_z"].iter().zip(k3) {
+            v.push(format!(
+                "  {name:<4} {:>12.4e} {:>12.4e} {:>12.4e}",
+                ks.from_si(row[0], units),
+                ks.from_si(row[1], units),
+                ks.from_si(row[2], units)
+            ));
+        }
+    } else {
+        v.push(format!(
+            "Ring stiffness (rows F_x F_y; columns x y), {}",
+            ks.unit(units)
+        ));
+        for (name, row) in ["F_x", "F_y"].iter().zip(k) {
+            v.push(format!(
+                "  {name:<4} {:>12.4e} {:>12.4e}",
+                ks.from_si(row[0], units),
+                ks.from_si(row[1], units)
+            ));
+        }
     }
     v.push(format!(
         "Static offset of the inner ring  x = {:.4e}  y = {:.4e} {}",
@@ -132,6 +189,13 @@ pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
         len.from_si(q.displacement_m[1], units),
         len.unit(units)
     ));
+    if q.stiffness_xyz_n_m.is_some() {
+        v.push(format!(
+            "Axial displacement of the inner ring  z = {:.4e} {}",
+            len.from_si(q.axial_displacement_m, units),
+            len.unit(units)
+        ));
+    }
     v
 }
 
@@ -206,6 +270,32 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
         );
     }
     let _ = writeln!(s, "  (loads in {fu}, pressure in {pu})\n");
+    if let Some(r) = super::analysis::rib_contact(&a.input) {
+        let _ = writeln!(
+            s,
+            "Ribs (both rings): axial load {:.2} {fu}, rib angle {:.3} deg, contact height {:.4e} {lu}, roller end radius {:.4e} {lu}",
+            force(a.input.operating.axial_load_n),
+            r.angle_rad.to_degrees(),
+            len(r.contact_height_m),
+            len(r.end_radius_m(d.roller_radius_m))
+        );
+        let _ = writeln!(
+            s,
+            "  {:>3} {:>7} {:>11} {:>12}",
+            "#", "phi deg", "rib load", "tilt mrad"
+        );
+        for (i, r) in a.statics.rollers.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "  {:>3} {:>7.2} {:>11.3} {:>12.5}",
+                i + 1,
+                azimuth_deg(r.azimuth_rad),
+                force(r.rib_load_n),
+                r.tilt_rad * 1e3
+            );
+        }
+        let _ = writeln!(s);
+    }
     for line in stiffness_lines(a, units) {
         let _ = writeln!(s, "{line}");
     }
@@ -223,4 +313,55 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
         a.wall_time_s * 1e3
     );
     s
+}
+
+/// Most rows `run --series` writes (the ball's bound, `angular_ball::dynamics::budget`):
+/// a longer history keeps every k-th sample and says so in a `#` line.
+pub const MAX_SERIES_ROWS: usize = 100_000;
+
+/// `run --series FILE`: the 2-DOF dynamics' time history after settling (the uniformly
+/// sampled series the spectra are taken from) as CSV, SI with units in the header: t, the
+/// inner ring's x, y, ẋ, ẏ and each roller's load W_i (eq. 2). A history longer than
+/// [`MAX_SERIES_ROWS`] keeps one sample in k and starts with a `# decimated` line; a
+/// solve without the dynamics is refused naming `dynamics.revolutions`.
+pub fn series_csv(a: &CylindricalAnalysis) -> Result<String, String> {
+    let Some(t) = &a.tribo else {
+        return Err(format!(
+            "no time history: the 2-DOF dynamics was not run (dynamics.revolutions = {}; run --no-transient also skips it); set dynamics.revolutions > 0 (e.g. --set dynamics.revolutions=100)",
+            a.input.dynamics.revolutions
+        ));
+    };
+    let s = &t.dynamics.series;
+    let n = s.t_s.len();
+    let every = n.div_ceil(MAX_SERIES_ROWS).max(1);
+    let mut out = String::new();
+    if every > 1 {
+        let _ = writeln!(
+            out,
+            "# decimated: 1 sample in {every} of {n} (sampling step {:e} s) kept, to keep at most {MAX_SERIES_ROWS} rows",
+            s.dt_s
+        );
+    }
+    out.push_str("time_s,x_m,y_m,vx_m_s,vy_m_s");
+    for j in 0..s.roller_load_n.len() {
+        let _ = write!(out, ",roller_{}_load_n", j + 1);
+    }
+    out.push('\n');
+    for i in (0..n).step_by(every) {
+        let cell = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
+        let _ = write!(
+            out,
+            "{:e},{:e},{:e},{:e},{:e}",
+            s.t_s[i],
+            cell(&s.x_m),
+            cell(&s.y_m),
+            cell(&s.vx_m_s),
+            cell(&s.vy_m_s)
+        );
+        for w in &s.roller_load_n {
+            let _ = write!(out, ",{:e}", cell(w));
+        }
+        out.push('\n');
+    }
+    Ok(out)
 }

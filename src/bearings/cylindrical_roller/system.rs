@@ -194,6 +194,10 @@ impl Solution for CylindricalSolution {
     fn text(&self, units: Units) -> String {
         super::report::text(&self.0, units)
     }
+
+    fn series_csv(&self) -> Result<String, String> {
+        super::report::series_csv(&self.0)
+    }
 }
 
 /// The session: it keeps the last converged equilibrium and starts the next solve from
