@@ -17,6 +17,7 @@
 //! convergence test (the result's `note` says so).
 
 pub mod film;
+mod film_table;
 mod model;
 mod spectra;
 #[cfg(test)]
@@ -29,6 +30,7 @@ use crate::numerics::cancel::Cancel;
 use crate::numerics::ode::{solve, Event, Method, OdeError, OdeOptions, Output, Termination};
 use crate::numerics::spectrum::{amplitude_at, SpectrumError};
 use film::ContactLaw;
+use film_table::FastFilm;
 use model::{static_equilibrium, ContactEvent, Rhs};
 use std::cell::Cell;
 use std::f64::consts::TAU;
@@ -473,7 +475,13 @@ pub fn simulate(
         omega_ref: 1.0,
         energy_ref: 1.0,
         clamps: Cell::new(0),
+        fast_film: None,
     };
+
+    // The film solve tabulated for loads up to 1 000× the applied force (beyond, and
+    // wherever the table does not reach, the Newton solve).
+    let load_hi = 1e3 * model.force_n[0].hypot(model.force_n[1]).max(LOAD_FLOOR_N);
+    rhs.fast_film = FastFilm::new(&rhs.law, load_hi);
 
     // Statics with the cage frozen at t = 0, and the linearised frequency.
     let (offset, k) = static_equilibrium(&rhs)?;

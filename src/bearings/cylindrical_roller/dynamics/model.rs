@@ -2,6 +2,7 @@
 //! cage frozen, the analytic stiffness there, and the energy of the film-off model.
 
 use super::film::{Contact, ContactLaw};
+use super::film_table::FastFilm;
 use super::DynamicsError;
 use crate::numerics::ode::{Event, OdeSystem};
 use crate::physics::contact::lamina_law::ninth_root;
@@ -32,6 +33,8 @@ pub(crate) struct Rhs {
     pub energy_ref: f64,
     /// Film clamps at h = 0 seen by the right-hand side.
     pub clamps: Cell<usize>,
+    /// The film solve tabulated for the hot loop (film on; `None`: Newton per roller).
+    pub fast_film: Option<FastFilm>,
 }
 
 impl Rhs {
@@ -168,8 +171,9 @@ impl Rhs {
         [fx, fy, dv]
     }
 
-    /// The film-in-the-deflection loop: each roller's eqs. (2)–(4) solved by
-    /// [`ContactLaw::contact`]; clamps at h = 0 counted.
+    /// The film-in-the-deflection loop: each roller's eqs. (2)–(4) from the tabulated
+    /// solve ([`FastFilm`]; Newton by [`ContactLaw::contact`] without it); clamps at
+    /// h = 0 counted.
     #[inline]
     fn film_sums(&self, x: f64, y: f64, vx: f64, vy: f64, s0: f64, c0: f64) -> [f64; 3] {
         let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
@@ -179,11 +183,17 @@ impl Rhs {
             let p = x * c + y * s;
             // d/dt(x cos θ + y sin θ) includes θ̇ = ω_c (the rollers orbit the loaded shaft).
             let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (y * c - x * s);
-            let ct = self.law.contact(p, p_dot);
-            fx += ct.load_n * c;
-            fy += ct.load_n * s;
-            dv += ct.load_n * (y * c - x * s);
-            if ct.clamped {
+            let (load, clamped) = match &self.fast_film {
+                Some(fast) => fast.load(&self.law, p, p_dot),
+                None => {
+                    let ct = self.law.contact(p, p_dot);
+                    (ct.load_n, ct.clamped)
+                }
+            };
+            fx += load * c;
+            fy += load * s;
+            dv += load * (y * c - x * s);
+            if clamped {
                 clamps += 1;
             }
         }
