@@ -403,33 +403,47 @@ const D: [[f64; 16]; 4] = [
 /// Order of the error estimate plus one: the step-size exponent is 1/8.
 pub(crate) const ERROR_EXPONENT: f64 = 0.125;
 
-/// Stage storage for DOP853: `k[0]` is a copy of the driver's f(t, y); `k[12]` is
-/// f(t + h, y_new); `k[13..16]` are the dense output's extra stages.
+/// Stage storage for DOP853: stage `j` is `k[j·n..(j + 1)·n]` (one flat buffer: no
+/// pointer chase per stage); `k_0` is a copy of the driver's f(t, y); `k_12` is
+/// f(t + h, y_new); `k_13..16` are the dense output's extra stages.
 #[derive(Debug, Clone)]
 pub(crate) struct Dop853 {
-    k: Vec<Vec<f64>>,
+    n: usize,
+    k: Vec<f64>,
     stage: Vec<f64>,
+    /// Σ_j A[s][j]·k_j per component, before the `y + h·acc` of [`Dop853::stage_point`].
+    acc: Vec<f64>,
 }
 
 impl Dop853 {
     pub(crate) fn new(n: usize) -> Self {
         Dop853 {
-            k: vec![vec![0.0; n]; 16],
+            n,
+            k: vec![0.0; 16 * n],
             stage: vec![0.0; n],
+            acc: vec![0.0; n],
         }
     }
 
-    /// `out = y + h·Σ_{j<s} A[s][j]·k_j`.
-    fn stage_point(k: &[Vec<f64>], out: &mut [f64], y: &[f64], h: f64, s: usize) {
-        for (i, (o, &yi)) in out.iter_mut().zip(y).enumerate() {
-            let mut acc = 0.0;
-            for (j, kj) in k.iter().enumerate().take(s) {
-                let a = A[s][j];
-                if a != 0.0 {
-                    acc += a * kj[i];
+    fn kj(&self, j: usize) -> &[f64] {
+        &self.k[j * self.n..(j + 1) * self.n]
+    }
+
+    /// `out = y + h·Σ_{j<s} A[s][j]·k_j`, summed over j in ascending order for every
+    /// component (the same rounding as a per-component loop), zero coefficients skipped
+    /// once per stage rather than once per component.
+    fn stage_point(k: &[f64], acc: &mut [f64], out: &mut [f64], y: &[f64], h: f64, s: usize) {
+        let n = y.len();
+        acc.iter_mut().for_each(|a| *a = 0.0);
+        for (j, &a) in A[s].iter().enumerate().take(s) {
+            if a != 0.0 {
+                for (acc_i, &kji) in acc.iter_mut().zip(&k[j * n..(j + 1) * n]) {
+                    *acc_i += a * kji;
                 }
             }
-            *o = yi + h * acc;
+        }
+        for ((o, &yi), &ai) in out.iter_mut().zip(y).zip(acc.iter()) {
+            *o = yi + h * ai;
         }
     }
 
@@ -448,16 +462,17 @@ impl Dop853 {
         y_new: &mut [f64],
         tol: Tol,
     ) -> Result<f64, TrialError> {
-        self.k[0].copy_from_slice(f0);
+        let n = self.n;
+        self.k[..n].copy_from_slice(f0);
         for (s, &cs) in C.iter().enumerate().take(12).skip(1) {
-            Self::stage_point(&self.k, &mut self.stage, y, h, s);
+            Self::stage_point(&self.k, &mut self.acc, &mut self.stage, y, h, s);
             // C[11] = 1: land on t_new bit-exactly.
             let ts = if s == 11 { t_new } else { t + cs * h };
-            if !rhs.eval(ts, &self.stage, &mut self.k[s]) {
+            if !rhs.eval(ts, &self.stage, &mut self.k[s * n..(s + 1) * n]) {
                 return Err(TrialError::NonFinite);
             }
         }
-        Self::stage_point(&self.k, y_new, y, h, 12);
+        Self::stage_point(&self.k, &mut self.acc, y_new, y, h, 12);
         let (mut e5, mut e3) = (0.0, 0.0);
         for (i, (&a, &b)) in y.iter().zip(y_new.iter()).enumerate() {
             if !b.is_finite() {
@@ -465,9 +480,10 @@ impl Dop853 {
             }
             let sk = tol.atol + tol.rtol * a.abs().max(b.abs());
             let (mut r5, mut r3) = (0.0, 0.0);
-            for (j, kj) in self.k.iter().enumerate().take(12) {
-                r5 += E5[j] * kj[i];
-                r3 += E3[j] * kj[i];
+            for j in 0..12 {
+                let kji = self.k[j * n + i];
+                r5 += E5[j] * kji;
+                r3 += E3[j] * kji;
             }
             e5 += (r5 / sk) * (r5 / sk);
             e3 += (r3 / sk) * (r3 / sk);
@@ -493,12 +509,13 @@ impl Dop853 {
         t_new: f64,
         y_new: &[f64],
     ) -> bool {
-        rhs.eval(t_new, y_new, &mut self.k[12])
+        let n = self.n;
+        rhs.eval(t_new, y_new, &mut self.k[12 * n..13 * n])
     }
 
     /// f(t_new, y_new) from the last [`Dop853::finish`].
     pub(crate) fn f_new(&self) -> &[f64] {
-        &self.k[12]
+        self.kj(12)
     }
 
     /// Fill `ip` with the seventh-order continuous extension of the last accepted
@@ -513,13 +530,14 @@ impl Dop853 {
         y: &[f64],
         y_new: &[f64],
     ) -> bool {
+        let n = self.n;
         for (s, &cs) in C.iter().enumerate().skip(13) {
-            Self::stage_point(&self.k, &mut self.stage, y, h, s);
-            if !rhs.eval(t + cs * h, &self.stage, &mut self.k[s]) {
+            Self::stage_point(&self.k, &mut self.acc, &mut self.stage, y, h, s);
+            if !rhs.eval(t + cs * h, &self.stage, &mut self.k[s * n..(s + 1) * n]) {
                 return false;
             }
         }
-        ip.set_hermite(t, h, y, y_new, &self.k[0], &self.k[12]);
+        ip.set_hermite(t, h, y, y_new, self.kj(0), self.kj(12));
         let (r5, r6, r7, r8) = ip.high_mut();
         for (i, (((a, b), c), d)) in r5
             .iter_mut()
@@ -529,9 +547,10 @@ impl Dop853 {
             .enumerate()
         {
             let mut acc = [0.0; 4];
-            for (j, kj) in self.k.iter().enumerate() {
+            for j in 0..16 {
+                let kji = self.k[j * n + i];
                 for (row, out) in D.iter().zip(acc.iter_mut()) {
-                    *out += row[j] * kj[i];
+                    *out += row[j] * kji;
                 }
             }
             *a = h * acc[0];

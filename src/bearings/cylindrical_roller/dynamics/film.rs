@@ -185,7 +185,7 @@ impl ContactLaw {
     /// against ≈ 34 ns for δ·∛∛δ and more for a `powf`; within 8e-16 relative), the hot
     /// loop's largest term; any other n by `powf`.
     #[inline]
-    fn power(&self, delta: f64) -> f64 {
+    pub(crate) fn power(&self, delta: f64) -> f64 {
         if self.exponent == 10.0 / 9.0 {
             delta * ninth_root(delta)
         } else {

@@ -2,8 +2,10 @@
 //! cage frozen, the analytic stiffness there, and the energy of the film-off model.
 
 use super::film::{Contact, ContactLaw};
+use super::film_table::FastFilm;
 use super::DynamicsError;
 use crate::numerics::ode::{Event, OdeSystem};
+use crate::physics::contact::lamina_law::ninth_root;
 use std::cell::Cell;
 
 /// The model reduced for the hot loop.
@@ -31,6 +33,8 @@ pub(crate) struct Rhs {
     pub energy_ref: f64,
     /// Film clamps at h = 0 seen by the right-hand side.
     pub clamps: Cell<usize>,
+    /// The film solve tabulated for the hot loop (film on; `None`: Newton per roller).
+    pub fast_film: Option<FastFilm>,
 }
 
 impl Rhs {
@@ -115,36 +119,88 @@ impl OdeSystem for Rhs {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
-        let (mut fx, mut fy, mut dv_dt) = (0.0, 0.0, 0.0);
-        let mut clamps = 0;
         let w = self.omega_ref;
         let (vx, vy) = (y[2] * w, y[3] * w);
         let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
-        for &(sp, cp) in &self.phase_sin_cos {
-            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
-            let p = y[0] * c + y[1] * s;
-            let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (y[1] * c - y[0] * s);
-            let ct = self.law.contact(p, p_dot);
-            fx += ct.load_n * c;
-            fy += ct.load_n * s;
-            if ct.clamped {
-                clamps += 1;
-            }
-            // ∂V/∂t at fixed (x, y): Σ 2k δ^n ∂δ/∂t with ∂δ/∂t = ½ ω_c (y cos θ − x sin θ)
-            // and 2k δ^n = 2W_i: Σ W_i ω_c (y cos θ − x sin θ).
-            dv_dt += ct.load_n * self.cage_speed_rad_s * (y[1] * c - y[0] * s);
-        }
-        if clamps > 0 {
-            self.clamps.set(self.clamps.get() + clamps);
-        }
+        // Σ W_i cos θ_i, Σ W_i sin θ_i and Σ W_i (y cos θ_i − x sin θ_i).
+        let [fx, fy, dv] = if self.law.film.is_none() {
+            self.dry_sums(y[0], y[1], s0, c0)
+        } else {
+            self.film_sums(y[0], y[1], vx, vy, s0, c0)
+        };
+        // ∂V/∂t at fixed (x, y): Σ 2k δ^n ∂δ/∂t with ∂δ/∂t = ½ ω_c (y cos θ − x sin θ)
+        // and 2k δ^n = 2W_i: Σ W_i ω_c (y cos θ − x sin θ).
+        let dv_dt = self.cage_speed_rad_s * dv;
         // Eq. (1): M ẍ = −Σ W_i cos θ_i + F_x (F includes gravity), likewise y.
         dydt[0] = vx;
         dydt[1] = vy;
         dydt[2] = (self.force_n[0] - fx - self.damping_n_s_m * vx) / (self.mass_kg * w);
         dydt[3] = (self.force_n[1] - fy - self.damping_n_s_m * vy) / (self.mass_kg * w);
         if self.energy_integral {
-            dydt[4] = dv_dt / self.energy_ref;
+            if let Some(q) = dydt.get_mut(4) {
+                *q = dv_dt / self.energy_ref;
+            }
         }
+    }
+}
+
+impl Rhs {
+    /// The hot loop of the dry contact (film off): eq. (3) with h = 0 and eq. (2), the
+    /// load alone (no stiffness, no `Contact`), θ_i's sine and cosine by rotating
+    /// (sin ω_c t, cos ω_c t) by each roller's phase.
+    #[inline]
+    fn dry_sums(&self, x: f64, y: f64, s0: f64, c0: f64) -> [f64; 3] {
+        let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
+        let clearance = self.law.clearance_m;
+        let k = self.law.stiffness;
+        let ten_ninths = self.law.exponent == 10.0 / 9.0;
+        for &(sp, cp) in &self.phase_sin_cos {
+            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+            let d = 0.5 * (x * c + y * s) - clearance;
+            if d > 0.0 {
+                let load = k * if ten_ninths {
+                    d * ninth_root(d)
+                } else {
+                    d.powf(self.law.exponent)
+                };
+                fx += load * c;
+                fy += load * s;
+                dv += load * (y * c - x * s);
+            }
+        }
+        [fx, fy, dv]
+    }
+
+    /// The film-in-the-deflection loop: each roller's eqs. (2)–(4) from the tabulated
+    /// solve ([`FastFilm`]; Newton by [`ContactLaw::contact`] without it); clamps at
+    /// h = 0 counted.
+    #[inline]
+    fn film_sums(&self, x: f64, y: f64, vx: f64, vy: f64, s0: f64, c0: f64) -> [f64; 3] {
+        let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
+        let mut clamps = 0;
+        for &(sp, cp) in &self.phase_sin_cos {
+            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+            let p = x * c + y * s;
+            // d/dt(x cos θ + y sin θ) includes θ̇ = ω_c (the rollers orbit the loaded shaft).
+            let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (y * c - x * s);
+            let (load, clamped) = match &self.fast_film {
+                Some(fast) => fast.load(&self.law, p, p_dot),
+                None => {
+                    let ct = self.law.contact(p, p_dot);
+                    (ct.load_n, ct.clamped)
+                }
+            };
+            fx += load * c;
+            fy += load * s;
+            dv += load * (y * c - x * s);
+            if clamped {
+                clamps += 1;
+            }
+        }
+        if clamps > 0 {
+            self.clamps.set(self.clamps.get() + clamps);
+        }
+        [fx, fy, dv]
     }
 }
 
@@ -163,6 +219,16 @@ impl Event for ContactEvent<'_> {
             if t == t0 {
                 return sign * f64::MIN_POSITIVE;
             }
+        }
+        // The gap is p/2 − C (+ a film ≥ 0) with |p| ≤ |r|: while −C − |r|/2 > 0 (an
+        // interference larger than half the shaft's excursion, as ρ = 5 µm throughout)
+        // no roller can lose contact, and that bound, of the gap's sign, is returned
+        // without the roller's angle (a sin_cos per roller per step otherwise). The
+        // event function's sign, and so every crossing, is unchanged; where the bound
+        // is not positive the exact gap is returned.
+        let lower = -self.rhs.law.clearance_m - 0.5 * (y[0] * y[0] + y[1] * y[1]).sqrt();
+        if lower > 0.0 {
+            return lower;
         }
         self.rhs.gap(self.roller, t, y)
     }
