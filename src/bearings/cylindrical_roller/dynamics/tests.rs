@@ -285,3 +285,37 @@ fn progress_is_reported_up_to_one() {
     assert!(v.windows(2).all(|w| w[1] >= w[0]));
     assert!((v[v.len() - 1] - 1.0).abs() < 1e-12);
 }
+
+/// A run far past the step bound is refused before integrating, naming the keys: the
+/// truck bearing at 1 rpm for 100 revolutions is 6 000 s simulated, ≈ 5.6 M periods of
+/// f_lin ≈ 932 Hz, ≈ 5e7 steps against the 5e6 bound. The estimate at the shipped
+/// 209 rad/s (3 s simulated, ≈ 26 k steps measured) stays far below it.
+#[test]
+fn a_run_past_the_step_bound_is_refused_up_front() {
+    let mut m = DynamicsModel::truck(5e-6);
+    m.span = Span::Revolutions {
+        shaft_speed_rad_s: TAU / 60.0,
+        revolutions: 100.0,
+        settle_revolutions: 20.0,
+    };
+    // TooLong is the estimate's refusal; stepping into the bound would be TooMuchWork.
+    let err = simulate(&m, Cancel::NONE).map(|_| ()).unwrap_err();
+    match &err {
+        DynamicsError::TooLong {
+            estimate, periods, ..
+        } => {
+            assert!(*estimate > 1e7 && *estimate < 1e8, "{estimate}");
+            // f_lin ≈ 932 Hz × 6 000 s.
+            assert!((*periods / 5.6e6 - 1.0).abs() < 0.05, "{periods}");
+        }
+        other => panic!("{other}"),
+    }
+    let text = err.to_string();
+    for key in [
+        "dynamics.revolutions",
+        "operating.inner_speed",
+        "dynamics.tolerance",
+    ] {
+        assert!(text.contains(key), "{text}");
+    }
+}
