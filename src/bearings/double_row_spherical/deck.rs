@@ -4,7 +4,8 @@
 //! read by [`optimise_table`].
 
 use super::input::{
-    CageLand, CageSpeedSource, DoubleRowInput, LoadCase, Optimise, Traction, PITCH_CHECK_TOLERANCE,
+    CageKind, CageLand, CageSpeedSource, DoubleRowInput, LoadCase, Optimise, Traction,
+    PITCH_CHECK_TOLERANCE,
 };
 use super::SYSTEM_ID;
 use crate::deck::form::{
@@ -18,7 +19,7 @@ use crate::units::{Quantity, Units};
 const LANDS: &[&str] = &["guide-ring", "inner-ring"];
 const SPEEDS: &[&str] = &["measured", "computed"];
 const TRACTIONS: &[&str] = &["atz", "newtonian-eq3"];
-const KINDS: &[&str] = &["window"];
+const KINDS: &[&str] = &["window", "prong"];
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 const RPM: f64 = std::f64::consts::PI / 30.0;
@@ -141,9 +142,18 @@ static FIELDS: [FieldSpec<DoubleRowInput>; 52] = [
     },
     // [cage]
     FieldSpec {
-        meta: meta("cage.kind", "cage", "Cage kind", Quantity::Dimensionless, FieldKind::Choice(KINDS), (0.0, false), (0.0, false), def(0.0), "cage type: window cages (the only kind modelled)"),
-        get: |_| 0.0,
-        set: |_, _| {},
+        meta: meta("cage.kind", "cage", "Cage kind", Quantity::Dimensionless, FieldKind::Choice(KINDS), (0.0, false), (1.0, false), def(0.0), "cage type: \"window\" (the only kind modelled; \"prong\" is refused)"),
+        get: |t| match t.cage.kind {
+            CageKind::Window => 0.0,
+            CageKind::Prong => 1.0,
+        },
+        set: |t, v| {
+            t.cage.kind = if v as usize == 1 {
+                CageKind::Prong
+            } else {
+                CageKind::Window
+            }
+        },
     },
     FieldSpec {
         meta: meta("cage.pocket_clearance", "cage", "Pocket clearance", Quantity::Length, REAL, (0.0, true), (0.01, false), REQ, "clearance between roller and cage pocket"),
@@ -347,6 +357,12 @@ fn cross(t: &DoubleRowInput, units: Units) -> Vec<(&'static str, String)> {
                 "must leave the roller ends clear at rest: at most {:.4} mm for this geometry (the faces through (±width/2, d_m/2) normal to the roller axes)",
                 w_max * 1e3
             ),
+        ));
+    }
+    if t.cage.kind != CageKind::Window {
+        v.push((
+            "cage.kind",
+            "only \"window\" is modelled (the seed's 22308 CC has window cages)".to_string(),
         ));
     }
     if t.lubricant.viscosity_100_m2_s >= t.lubricant.viscosity_40_m2_s {

@@ -69,9 +69,19 @@ pub enum CageSpeedSource {
     Computed,
 }
 
+/// Cage design: window cages are modelled; prong cages are named so a deck can say so and
+/// be refused with a reason.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CageKind {
+    Window,
+    Prong,
+}
+
 /// The window cage(s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DrCage {
+    pub kind: CageKind,
     /// Pocket clearance, m (losses; later round).
     pub pocket_clearance_m: f64,
     pub land: CageLand,
@@ -223,6 +233,7 @@ impl DoubleRowInput {
                 mass_kg: 0.012,
             },
             cage: DrCage {
+                kind: CageKind::Window,
                 pocket_clearance_m: 0.2e-3,
                 land: CageLand::GuideRing,
                 speed: CageSpeedSource::Measured,
