@@ -14,6 +14,7 @@
 
 pub mod angular_ball;
 pub mod cylindrical_roller;
+pub mod double_row_spherical;
 pub mod error;
 pub mod form_system;
 pub mod spherical_roller;
@@ -38,6 +39,7 @@ pub static SYSTEMS: &[&dyn BearingSystem] = &[
     &angular_ball::system::SYSTEM,
     &tapered_roller::SYSTEM,
     &cylindrical_roller::SYSTEM,
+    &double_row_spherical::SYSTEM,
 ];
 
 /// What a run is asked to compute beyond the bearing itself.

@@ -36,7 +36,8 @@ pub fn allowed_residual_n(b: &Bearing, ld: &LoadDistribution) -> f64 {
         (r.centrifugal_force_n, r.gyroscopic_moment_nm)
     });
     let f_ref = applied_load_n(b)
-        .max(b.geometry.roller_count as f64 * cf.abs())
+        // Every roller of every row (a multi-row layout lists them all).
+        .max(ld.rollers.len().max(b.geometry.roller_count) as f64 * cf.abs())
         .max(if l_ref > 0.0 { gm.abs() / l_ref } else { 0.0 });
     (b.solver.force_tolerance * applied_load_n(b)).max(ROUND_OFF * f_ref)
 }

@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::contacts::{self, RollerContacts};
 use super::load_distribution::{
-    self, DynamicSpeeds, LoadDistribution, SolveOptions, SolveStats, TraceStep, WarmStart,
+    self, DynamicSpeeds, Layout, LoadDistribution, SolveOptions, SolveStats, TraceStep, WarmStart,
 };
 use super::stages::{self, Films, Friction, Life, Speeds, Stresses};
 use crate::bearings::spherical_roller::{Bearing, DynamicLoads};
@@ -34,6 +34,13 @@ pub struct Request {
     pub presolve: bool,
     /// The deck's thermal network, if any (§10); used by [`run`] and the workbench.
     pub thermal: Option<ThermalModel>,
+    /// Rows and guide ring of the load distribution (default: the single-row bearing; the
+    /// double-row spherical roller bearing solves both rows here).
+    pub layout: Layout,
+    /// Dynamic speeds imposed on the load distribution instead of App. C's estimate as the
+    /// start (with `solver.dynamic_loads = "estimate"` they are used as given: a measured
+    /// cage speed).
+    pub dynamic_speeds: Option<DynamicSpeeds>,
 }
 
 impl Default for Request {
@@ -45,6 +52,8 @@ impl Default for Request {
             thermal_transient: false,
             presolve: true,
             thermal: None,
+            layout: Layout::default(),
+            dynamic_speeds: None,
         }
     }
 }
@@ -179,6 +188,8 @@ struct LoadKey {
     solver: crate::bearings::spherical_roller::SolverSettings,
     trace_roller: Option<usize>,
     presolve: bool,
+    layout: Layout,
+    dynamic_speeds: Option<DynamicSpeeds>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -277,6 +288,8 @@ impl Pipeline {
             solver: bearing.solver,
             trace_roller: request.trace_roller,
             presolve: request.presolve,
+            layout: request.layout,
+            dynamic_speeds: request.dynamic_speeds,
         };
         if self
             .load
@@ -479,7 +492,9 @@ fn load_stage(
     request: &Request,
     cancel: Option<&AtomicBool>,
 ) -> Result<LoadStage, SolveError> {
-    let estimate = DynamicSpeeds::app_c_estimate(bearing);
+    let estimate = request
+        .dynamic_speeds
+        .unwrap_or_else(|| DynamicSpeeds::app_c_estimate(bearing));
     // The same path with or without a traced roller, so the stepper's final step is the
     // solution the other panes show, and the status line's counts are the same.
     let coarse = request.presolve && bearing.solver.laminae >= 2 * COARSE_LAMINAE;
@@ -489,7 +504,7 @@ fn load_stage(
         let mut c = bearing.clone();
         c.solver.laminae = COARSE_LAMINAE;
         c.solver.force_tolerance = c.solver.force_tolerance.max(COARSE_TOLERANCE);
-        match dynamic_iteration(&c, estimate, None, None, cancel) {
+        match dynamic_iteration(&c, estimate, None, None, request.layout, cancel) {
             Ok(pre) => {
                 add_stats(&mut stats, &pre.load.stats);
                 iterations += pre.iterations;
@@ -502,8 +517,15 @@ fn load_stage(
     } else {
         (estimate, None)
     };
-    let fine = dynamic_iteration(bearing, start, warm, request.trace_roller, cancel)
-        .map_err(|e| super::converged::describe_case(bearing, e))?;
+    let fine = dynamic_iteration(
+        bearing,
+        start,
+        warm,
+        request.trace_roller,
+        request.layout,
+        cancel,
+    )
+    .map_err(|e| super::converged::describe_case(bearing, e))?;
     // Converged means converged: the deck's tolerance on every residual, relative to the
     // applied load.
     super::converged::check_residuals(bearing, &fine.load)?;
@@ -554,6 +576,7 @@ fn dynamic_iteration(
     start: DynamicSpeeds,
     warm: Option<WarmStart>,
     trace_roller: Option<usize>,
+    layout: Layout,
     cancel: Option<&AtomicBool>,
 ) -> Result<Dynamic, SolveError> {
     let deck_tol = bearing.solver.force_tolerance;
@@ -566,6 +589,7 @@ fn dynamic_iteration(
         deck_tol
     };
     let mut opts = SolveOptions {
+        layout,
         warm_start: warm,
         trace_roller,
         force_tolerance: Some(tol),

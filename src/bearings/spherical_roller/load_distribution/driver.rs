@@ -115,7 +115,18 @@ impl Problem {
                 Some((idx, steps)) if *idx == j => Some((steps, ring_it)),
                 _ => None,
             };
-            let ev = self.solve_roller(j, cphi, u, q, roller_its, tr)?;
+            let mut ev = self.solve_roller(j, cphi, self.local_u(j, u), q, roller_its, tr)?;
+            if self.signs[j] < 0.0 {
+                // Back from the mirrored row's frame to the bearing's: the axial ring
+                // unknown changes sign (S = diag(−1, 1): g_u → S·g_u, H_uu → S·H_uu·S,
+                // H_uq → S·H_uq).
+                ev.g_u[0] = -ev.g_u[0];
+                ev.h_uu[(0, 1)] = -ev.h_uu[(0, 1)];
+                ev.h_uu[(1, 0)] = -ev.h_uu[(1, 0)];
+                for c in 0..3 {
+                    ev.h_uq[(0, c)] = -ev.h_uq[(0, c)];
+                }
+            }
             worst = worst.max(self.roller_residual(&ev.g_q));
             // Condensed stiffness: H_uu − H_uq H_qq⁻¹ H_qu (exact Jacobian of the ring forces
             // with every roller kept in equilibrium).
@@ -212,8 +223,8 @@ impl Problem {
             let mut e = -(self.load[0] * u[0] + self.load[1] * u[1]);
             let mut g = Vector2::new(-self.load[0], -self.load[1]);
             let mut h = Matrix2::zeros();
-            for &(cphi, mult) in &self.unique {
-                let m = Vector2::new(n[0], n[1] * cphi);
+            for (&(cphi, mult), &sign) in self.unique.iter().zip(&self.signs) {
+                let m = Vector2::new(sign * n[0], n[1] * cphi);
                 let d = m.dot(&Vector2::new(u[0], u[1])) - gap;
                 if d > 0.0 {
                     let x = d / c_pair;
@@ -270,8 +281,9 @@ impl Problem {
         let qs = self
             .unique
             .iter()
-            .map(|&(cphi, _)| {
-                let dj = n[0] * u[0] + n[1] * u[1] * cphi;
+            .zip(&self.signs)
+            .map(|(&(cphi, _), &sign)| {
+                let dj = sign * n[0] * u[0] + n[1] * u[1] * cphi;
                 let total = dj - gap;
                 let s = if total > 0.0 {
                     // Equal load Q: δ_i = Q^0.9·K_i^(−0.9) = Δ·c_i/(c_i + c_o).

@@ -47,7 +47,7 @@ use crate::bearings::SolveError;
 use crate::numerics::newton::Termination;
 
 use diagnostics::{tipped_over, unrestrained};
-use problem::{assemble, unique_index, Problem};
+use problem::{assemble, Problem};
 
 /// Speeds that set the dynamic loads: cage orbit and roller spin relative to the cage (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -95,9 +95,51 @@ pub fn gyroscopic_moment(mass: &RollerMass, speeds: &DynamicSpeeds, beta: f64) -
     wc * h_r
 }
 
+/// The guide ring of a double-row bearing as one unilateral contact per roller: the roller's
+/// inner end (a sphere of radius r_e centred on the roller axis) against a flat face of the
+/// guide ring normal to the row's nominal roller axis. The guide ring sits on the inner ring
+/// between the rows and moves with it (its own axial float is not modelled). Hertz sphere on
+/// plane: F = K·δ^(3/2), K = (4/3)·E*·√r_e (Johnson, Contact Mechanics, eq. 4.22–4.23),
+/// δ = −gap, zero force at a positive gap.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GuideContact {
+    /// Nominal gap along the roller axis between the roller end and the guide ring face
+    /// (rings concentric, roller at its nominal position), m.
+    pub gap_m: f64,
+    /// K of F = K·δ^(3/2), N/m^(3/2).
+    pub hertz_constant: f64,
+    /// Distance from the roller centre to the centre of its end sphere along the roller
+    /// axis, L/2 − r_e, m (negative when the end radius exceeds half the length).
+    pub end_centre_offset_m: f64,
+}
+
+/// How many rows share the inner ring and the outer sphere, and the guide ring between them.
+/// Row 1 is the single-row bearing's geometry; row 2 its mirror image in the bearing's radial
+/// plane (contact angle −β), solved in its own mirrored frame: there the ring deflection reads
+/// (−u_axial, u_radial) and its axial ring forces change sign. One row without a guide ring
+/// is the single-row bearing exactly (the same arithmetic; tested).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Layout {
+    /// Number of rows, 1 or 2.
+    pub rows: usize,
+    /// The guide ring, if any.
+    pub guide: Option<GuideContact>,
+}
+
+impl Default for Layout {
+    fn default() -> Self {
+        Layout {
+            rows: 1,
+            guide: None,
+        }
+    }
+}
+
 /// Options of one load-distribution solve.
 #[derive(Debug, Default, Clone)]
 pub struct SolveOptions {
+    /// Rows and guide ring (default: the single-row bearing).
+    pub layout: Layout,
     /// Warm start: ring deflection (axial, radial) and each unique roller's (axial, radial, pitch).
     pub warm_start: Option<WarmStart>,
     /// Record the Newton iterations of this roller (0-based roller index) for the stepper.
@@ -131,6 +173,18 @@ pub struct InertialSensitivity {
     roller: Vec<nalgebra::Matrix3x2<f64>>,
     ring: Vec<Matrix2<f64>>,
     sens: Vec<nalgebra::Matrix3x2<f64>>,
+}
+
+impl InertialSensitivity {
+    /// The condensed ring stiffness at the solution, N/m, in (axial, radial): the ring
+    /// Newton's exact Jacobian ∂(Σ contact forces on the inner ring)/∂u with every roller
+    /// kept in equilibrium.
+    pub fn ring_stiffness_n_m(&self) -> [[f64; 2]; 2] {
+        [
+            [self.k[(0, 0)], self.k[(0, 1)]],
+            [self.k[(1, 0)], self.k[(1, 1)]],
+        ]
+    }
 }
 
 /// Result for one lamina (seed 000 eq. 3.3–3.5).
@@ -205,6 +259,13 @@ pub struct RollerResult {
     /// Cage pocket reaction along the roller axis, N, and in pitch, N·m.
     pub cage_force_n: f64,
     pub cage_moment_nm: f64,
+    /// Row (1 or 2) of a multi-row layout; 1 for the single-row bearing (not in its JSON).
+    #[serde(skip)]
+    pub row: usize,
+    /// Guide ring force on the roller along its axis, N (≥ 0; zero without a guide ring;
+    /// not in the single-row bearing's JSON).
+    #[serde(skip)]
+    pub guide_force_n: f64,
     pub inner: RacewayContact,
     pub outer: RacewayContact,
     pub laminae: Vec<LaminaResult>,
@@ -282,15 +343,14 @@ pub fn solve(
     cancel: Option<&AtomicBool>,
 ) -> Result<LoadDistribution, SolveError> {
     let start = Instant::now();
-    let p = Problem::new(
+    let p = Problem::with_layout(
         b,
         speeds,
         options.force_tolerance.unwrap_or(b.solver.force_tolerance),
+        options.layout,
     );
     let (mut u, mut qs) = p.start(b, options);
-    let mut trace = options
-        .trace_roller
-        .map(|r| (unique_index(r, b.geometry.roller_count), Vec::new()));
+    let mut trace = options.trace_roller.map(|r| (p.unique_of(r), Vec::new()));
     let mut stats = SolveStats::default();
     let (termination, state) = p.solve_ring(b, &mut u, &mut qs, &mut stats, &mut trace, cancel)?;
     let not_converged = |iterations, residual_n| {

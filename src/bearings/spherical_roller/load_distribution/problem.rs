@@ -5,8 +5,8 @@
 use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 
 use super::{
-    gyroscopic_moment, DynamicSpeeds, LaminaResult, LoadDistribution, RacewayContact, Residuals,
-    RollerResult, SolveStats, TraceStep, WarmStart,
+    gyroscopic_moment, DynamicSpeeds, GuideContact, LaminaResult, Layout, LoadDistribution,
+    RacewayContact, Residuals, RollerResult, SolveStats, TraceStep, WarmStart,
 };
 use crate::bearings::spherical_roller::geometry::{Approach, LaminaGeometry};
 use crate::bearings::spherical_roller::roller::roller_mass;
@@ -28,8 +28,15 @@ pub(super) struct Problem {
     pub(super) f_ref: f64,
     pub(super) tol: f64,
     pub(super) max_roller_it: usize,
-    /// cos φ of each unique roller and its multiplicity.
+    /// cos φ of each unique roller and its multiplicity, row after row.
     pub(super) unique: Vec<(f64, f64)>,
+    /// Row sign of each unique roller: +1 for row 1, −1 for the mirrored row 2 (its frame's
+    /// axial direction is the bearing's reversed).
+    pub(super) signs: Vec<f64>,
+    /// Rollers per row Z and unique rollers per row.
+    pub(super) per_row: (usize, usize),
+    /// The guide ring contact, if any.
+    pub(super) guide: Option<GuideContact>,
     pub(super) evals: std::cell::Cell<usize>,
     /// Roller tolerance of the current ring iteration (inexact Newton: loose while the ring
     /// residual is large, the full tolerance at the end).
@@ -161,7 +168,19 @@ pub(super) struct RollerEval {
 }
 
 impl Problem {
+    /// The single-row problem (tests).
+    #[cfg(test)]
     pub(super) fn new(b: &Bearing, speeds: &DynamicSpeeds, force_tolerance: f64) -> Self {
+        Self::with_layout(b, speeds, force_tolerance, Layout::default())
+    }
+
+    /// The problem of `layout.rows` rows of `b`'s rollers (row 2 mirrored) with the guide ring.
+    pub(super) fn with_layout(
+        b: &Bearing,
+        speeds: &DynamicSpeeds,
+        force_tolerance: f64,
+        layout: Layout,
+    ) -> Self {
         let g = &b.geometry;
         let laminae = b.solver.laminae.max(1);
         let geom = LaminaGeometry::with_slicing(g, laminae, b.solver.slicing);
@@ -188,18 +207,24 @@ impl Problem {
         let k_cage = b.solver.cage_stiffness_ratio * k_roller;
         let l_ref = 0.5 * g.effective_length_m;
         let z = g.roller_count;
-        let unique = (0..=z / 2)
+        let row_unique: Vec<(f64, f64)> = (0..=z / 2)
             .map(|j| {
                 let phi = 2.0 * std::f64::consts::PI * j as f64 / z as f64; // eq. 3.1
                 let mult = if j == 0 || 2 * j == z { 1.0 } else { 2.0 };
                 (phi.cos(), mult)
             })
             .collect();
+        let rows = layout.rows.max(1);
+        let per_row = (z, row_unique.len());
+        let unique: Vec<(f64, f64)> = (0..rows).flat_map(|_| row_unique.clone()).collect();
+        let signs = (0..rows)
+            .flat_map(|r| std::iter::repeat_n(if r == 0 { 1.0 } else { -1.0 }, per_row.1))
+            .collect();
         let load = [b.operating.axial_load_n, b.operating.radial_load_n];
         let f_ref = load[0]
             .abs()
             .max(load[1].abs())
-            .max(z as f64 * cf)
+            .max((rows * z) as f64 * cf)
             .max(gm.abs() / l_ref)
             .max(1.0);
         Problem {
@@ -216,6 +241,9 @@ impl Problem {
             tol: force_tolerance.max(1e-14) * f_ref,
             max_roller_it: b.solver.max_roller_iterations.max(1),
             unique,
+            signs,
+            per_row,
+            guide: layout.guide,
             evals: std::cell::Cell::new(0),
             roller_tol: std::cell::Cell::new(0.0),
             max_step: 0.1 * g.roller_diameter_m,
@@ -262,7 +290,99 @@ impl Problem {
         }
         let mut ev = acc.finish(hessian);
         self.add_inertia_and_cage(&mut ev, q, hessian);
+        self.add_guide(&mut ev, cphi, u, q, pitch, hessian);
         ev
+    }
+
+    /// Unique roller (index into `unique`) of roller `r` (0-based over all rows).
+    pub(super) fn unique_of(&self, r: usize) -> usize {
+        let (z, n) = self.per_row;
+        let row = (r / z.max(1)).min(self.signs.len() / n.max(1) - 1);
+        row * n + unique_index(r % z.max(1), z)
+    }
+
+    /// Ring deflection u (bearing frame) as unique roller `k`'s row frame sees it.
+    #[inline]
+    pub(super) fn local_u(&self, k: usize, u: [f64; 2]) -> [f64; 2] {
+        [self.signs[k] * u[0], u[1]]
+    }
+
+    /// The guide ring's gap g, its derivatives along (axial, radial, pitch) of the roller, the
+    /// second derivative in pitch and the derivatives along the ring deflection (axial,
+    /// radial) at cos φ = `cphi`, u in the row's frame. g = g₀ + (q − s)·a − c·(cos α − 1)
+    /// with s = (u_a, u_r·cos φ) the inner ring's (and the guide ring's) shift at the roller,
+    /// a the roller axis and c = L/2 − r_e; the force F = K·(−g)^(3/2) acts on the roller along
+    /// +a (away from the bearing's centre plane, which lies on the roller's −a side).
+    #[inline]
+    pub(super) fn guide_gap(
+        &self,
+        guide: &GuideContact,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+        pitch: crate::bearings::spherical_roller::geometry::Pitch,
+    ) -> (f64, Vector3<f64>, f64, Vector2<f64>) {
+        let a = self.geom.axis;
+        let c = guide.end_centre_offset_m;
+        let s = (q[0] - u[0]) * a[0] + (q[1] - u[1] * cphi) * a[1];
+        let gap = guide.gap_m + s - c * pitch.cos_minus_one;
+        let cos = 1.0 + pitch.cos_minus_one;
+        (
+            gap,
+            Vector3::new(a[0], a[1], c * pitch.sin),
+            c * cos,
+            Vector2::new(-a[0], -a[1] * cphi),
+        )
+    }
+
+    /// The guide ring's contact force on the roller, N (≥ 0), u in the row's frame.
+    pub(super) fn guide_force(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>) -> f64 {
+        let Some(guide) = &self.guide else {
+            return 0.0;
+        };
+        let pitch = crate::bearings::spherical_roller::geometry::Pitch::new(q[2]);
+        let (gap, ..) = self.guide_gap(guide, cphi, u, q, pitch);
+        if gap >= 0.0 {
+            0.0
+        } else {
+            guide.hertz_constant * (-gap).powf(1.5)
+        }
+    }
+
+    /// The guide ring's energy U = (2/5)·K·δ^(5/2) (δ = −g > 0), its gradient and Hessian in
+    /// the roller's and the ring's unknowns (u in the row's frame). Nothing without a guide
+    /// ring, so the single-row bearing's arithmetic is untouched.
+    #[inline]
+    pub(super) fn add_guide(
+        &self,
+        ev: &mut RollerEval,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+        pitch: crate::bearings::spherical_roller::geometry::Pitch,
+        hessian: bool,
+    ) {
+        let Some(guide) = &self.guide else {
+            return;
+        };
+        let (gap, dq, d2, du) = self.guide_gap(guide, cphi, u, q, pitch);
+        if gap >= 0.0 {
+            return;
+        }
+        let delta = -gap;
+        let root = delta.sqrt();
+        let f = guide.hertz_constant * delta * root;
+        let df = 1.5 * guide.hertz_constant * root;
+        ev.energy += 0.4 * f * delta;
+        // ∂U/∂x = F·∂δ/∂x = −F·∂g/∂x.
+        ev.g_q -= f * dq;
+        ev.g_u -= f * du;
+        if hessian {
+            ev.h_qq += df * dq * dq.transpose();
+            ev.h_qq[(2, 2)] -= f * d2;
+            ev.h_uu += df * du * du.transpose();
+            ev.h_uq += df * du * dq.transpose();
+        }
     }
 
     /// Inertial loads and the cage pocket springs (shared by both evaluations).
@@ -359,6 +479,7 @@ impl Problem {
             }
         }
         self.add_inertia_and_cage(&mut ev, q, hessian);
+        self.add_guide(&mut ev, cphi, u, q, pitch, hessian);
         ev
     }
 
@@ -433,19 +554,24 @@ pub(super) fn assemble(
     let z = b.geometry.roller_count;
     let g = &p.geom;
     let beta_deg = b.geometry.contact_angle_rad.to_degrees();
-    let mut rollers: Vec<RollerResult> = Vec::with_capacity(z);
-    for j in 0..z {
+    let rows = p.signs.len() / p.per_row.1.max(1);
+    let mut rollers: Vec<RollerResult> = Vec::with_capacity(rows * z);
+    for k in 0..rows * z {
+        let (row, j) = (k / z, k % z);
         let uj = unique_index(j, z);
         if uj != j {
             // Roller Z−j mirrors roller j about the load plane (same cos φ): same state.
-            let mut r = rollers[uj].clone();
+            let mut r = rollers[row * z + uj].clone();
             r.index = j + 1;
             r.azimuth_deg = 360.0 * j as f64 / z as f64;
             rollers.push(r);
             continue;
         }
-        let (cphi, _) = p.unique[uj];
-        let q = qs[uj];
+        let ku = row * p.per_row.1 + uj;
+        let (cphi, _) = p.unique[ku];
+        let q = qs[ku];
+        // The row's own frame (row 2 mirrored).
+        let u = p.local_u(ku, u);
         // One pass gives the lamina results and the roller's residual (the same evaluation
         // as the solver's, through the same accumulator).
         let shift = [u[0], u[1] * cphi];
@@ -485,6 +611,7 @@ pub(super) fn assemble(
             .collect();
         let mut ev = acc.finish(false);
         p.add_inertia_and_cage(&mut ev, &q, false);
+        p.add_guide(&mut ev, cphi, u, &q, pitch, false);
         residuals.roller_force_n = residuals
             .roller_force_n
             .max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
@@ -502,6 +629,8 @@ pub(super) fn assemble(
             gyroscopic_moment_nm: p.gm,
             cage_force_n: -p.k_cage * s,
             cage_moment_nm: -p.k_tilt * q[2],
+            row: row + 1,
+            guide_force_n: p.guide_force(cphi, u, &q),
             inner,
             outer,
             laminae,
@@ -513,8 +642,11 @@ pub(super) fn assemble(
         radial_deflection_m: u[1],
         speeds: *speeds,
         roller_mass: roller_mass(&b.geometry, b.materials.roller.density_kg_m3),
-        mirror: (0..z)
-            .map(|j| Some(unique_index(j, z)).filter(|&i| i != j))
+        mirror: (0..rows * z)
+            .map(|k| {
+                let (row, j) = (k / z, k % z);
+                Some(row * z + unique_index(j, z)).filter(|&i| i != k)
+            })
             .collect(),
         rollers,
         residuals,

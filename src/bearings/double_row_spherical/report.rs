@@ -1,0 +1,176 @@
+//! The double-row bearing's reports: JSON (SI, units in key names; fields are added, never
+//! renamed) and text in the deck's units. Each row's rollers, life and speeds are the
+//! spherical roller's report of that row ([`crate::bearings::spherical_roller::report`]),
+//! with the row and the guide ring added.
+
+use serde_json::{json, Value};
+
+use super::statics::DoubleRowAnalysis;
+use super::SYSTEM_ID;
+use crate::bearings::spherical_roller::report::{json as sr_json, text as sr_text};
+use crate::units::{Quantity, Units};
+
+/// The stiffness matrix in the bearing's (radial x, axial z) order, N/m.
+pub fn stiffness_xz(a: &DoubleRowAnalysis) -> [[f64; 2]; 2] {
+    // The solver's order is (axial, radial).
+    let k = a.stiffness_n_m;
+    [[k[1][1], k[1][0]], [k[0][1], k[0][0]]]
+}
+
+/// The JSON report.
+pub fn json(a: &DoubleRowAnalysis) -> Value {
+    let mut rollers = Vec::new();
+    let mut rows = Vec::new();
+    for (i, row) in a.rows.iter().enumerate() {
+        let v = sr_json::to_value(row);
+        let z = row.load.rollers.len();
+        for (j, r) in v
+            .get("rollers")
+            .and_then(Value::as_array)
+            .cloned()
+            .unwrap_or_default()
+            .into_iter()
+            .enumerate()
+        {
+            let mut r = r;
+            if let Some(m) = r.as_object_mut() {
+                m.insert("row".into(), json!(i + 1));
+                let g = a
+                    .combined
+                    .rollers
+                    .get(i * z + j)
+                    .map_or(0.0, |x| x.guide_force_n);
+                m.insert("guide_ring_load_n".into(), json!(g));
+            }
+            rollers.push(r);
+        }
+        rows.push(json!({
+            "row": i + 1,
+            "life": v.get("life").cloned().unwrap_or(Value::Null),
+            "speeds": v.get("speeds").cloned().unwrap_or(Value::Null),
+            "max_roller_load_n": row.load.rollers.iter().map(|r| r.inner.normal_load_n.max(r.outer.normal_load_n)).fold(0.0, f64::max),
+        }));
+    }
+    let k = stiffness_xz(a);
+    let ld = &a.combined;
+    json!({
+        "type": SYSTEM_ID,
+        "name": a.name,
+        "input": serde_json::to_value(&a.input).unwrap_or(Value::Null),
+        "converged": ld.converged,
+        "loads": {"radial_n": a.input.operating.radial_load_n, "axial_n": a.input.operating.axial_load_n},
+        "rings": {"axial_deflection_m": a.axial_deflection_m(), "radial_deflection_m": a.radial_deflection_m()},
+        "stiffness": {
+            "rows": ["F_x", "F_z"],
+            "columns": ["x", "z"],
+            "matrix": k,
+            "unit": "N/m",
+        },
+        "dynamic_speeds": {
+            "source": a.input.cage.speed,
+            "cage_rad_s": a.dynamic.cage_rad_s,
+            "cage_rpm": a.dynamic.cage_rad_s * 30.0 / std::f64::consts::PI,
+            "roller_spin_rad_s": a.dynamic.roller_spin_rad_s,
+        },
+        "guide_ring": {
+            "force_row1_n": a.guide.force_row1_n,
+            "force_row2_n": a.guide.force_row2_n,
+            "net_axial_force_n": a.guide.net_axial_n,
+            "nominal_gap_m": a.input.guide_gap_m(),
+        },
+        "roller_properties": {
+            "mass_kg": ld.roller_mass.mass_kg,
+            "polar_inertia_kg_m2": ld.roller_mass.polar_inertia_kg_m2,
+            "transverse_inertia_kg_m2": ld.roller_mass.transverse_inertia_kg_m2,
+        },
+        "speeds": a.rows.first().map(|r| serde_json::to_value(&r.speeds).unwrap_or(Value::Null)),
+        "life": {
+            "l10_bearing_mrev": a.l10_mrev,
+            "l10_bearing_h": a.l10_h,
+            "rows": rows.iter().map(|r| r["life"].clone()).collect::<Vec<_>>(),
+        },
+        "rows": rows,
+        "rollers": rollers,
+        "max_roller_load_n": a.max_roller_load_n(),
+        "max_stress_pa": a.max_stress_pa(),
+        "residuals": {
+            "bearing_radial_n": ld.residuals.bearing_radial_n,
+            "bearing_axial_n": ld.residuals.bearing_axial_n,
+            "roller_force_n": ld.residuals.roller_force_n,
+            "roller_moment_nm": ld.residuals.roller_moment_nm,
+        },
+        "stats": {
+            "iterations": ld.stats.iterations,
+            "roller_iterations": ld.stats.roller_iterations,
+            "lamina_evaluations": ld.stats.lamina_evaluations,
+            "wall_time_s": a.wall_time_s,
+        },
+    })
+}
+
+/// The 2×2 ring stiffness and the ring deflection in `units`.
+pub fn stiffness_lines(a: &DoubleRowAnalysis, units: Units) -> Vec<String> {
+    let ks = Quantity::LinearStiffness;
+    let len = Quantity::Length;
+    let k = stiffness_xz(a);
+    let mut v = vec![format!(
+        "Ring stiffness (rows F_x F_z; columns x z), {}",
+        ks.unit(units)
+    )];
+    for (name, row) in ["F_x", "F_z"].iter().zip(k) {
+        v.push(format!(
+            "  {name:<4} {:>12.4e} {:>12.4e}",
+            ks.from_si(row[0], units),
+            ks.from_si(row[1], units)
+        ));
+    }
+    v.push(format!(
+        "Inner ring deflection  x (radial) = {:.4e}  z (axial) = {:.4e} {}",
+        len.from_si(a.radial_deflection_m(), units),
+        len.from_si(a.axial_deflection_m(), units),
+        len.unit(units)
+    ));
+    v
+}
+
+/// The text report in `units`: the bearing's lines, then each row as the spherical
+/// roller's report of that row.
+pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
+    let f = Quantity::Force;
+    let mut s = format!(
+        "rollbench {} — {}\nDouble-row spherical roller bearing: {} rows × {} rollers (seed 002)\n\n",
+        SYSTEM_ID,
+        a.name,
+        a.input.geometry.rows,
+        a.input.geometry.roller_count
+    );
+    for line in stiffness_lines(a, units) {
+        s.push_str(&line);
+        s.push('\n');
+    }
+    s.push_str(&format!(
+        "Cage speed ({}) {:.1} rpm; guide ring: row 1 {:.3} {u}, row 2 {:.3} {u}, net axial {:.3} {u}\n",
+        match a.input.cage.speed {
+            super::input::CageSpeedSource::Measured => "measured",
+            super::input::CageSpeedSource::Computed => "computed",
+        },
+        a.dynamic.cage_rad_s * 30.0 / std::f64::consts::PI,
+        f.from_si(a.guide.force_row1_n, units),
+        f.from_si(a.guide.force_row2_n, units),
+        f.from_si(a.guide.net_axial_n, units),
+        u = f.unit(units)
+    ));
+    match (a.l10_mrev, a.l10_h) {
+        (Some(m), Some(h)) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev, {h:.4e} h\n")),
+        (Some(m), None) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev\n")),
+        _ => s.push_str("Bearing L-10: no row loaded\n"),
+    }
+    for (i, row) in a.rows.iter().enumerate() {
+        s.push_str(&format!(
+            "\n==================== Row {} ====================\n",
+            i + 1
+        ));
+        s.push_str(&sr_text::to_string(row, units));
+    }
+    s
+}

@@ -1,0 +1,107 @@
+//! The double-row spherical roller bearing's registration through the
+//! system-independent [`crate::bearings::BearingSystem`] interface.
+
+use super::deck::SCHEMA;
+use super::input::DoubleRowInput;
+use super::statics::{analyse, DoubleRowAnalysis};
+use crate::bearings::view::{PaneKind, PaneSpec, View};
+use crate::bearings::{FormSystem, RunOptions, Solution, SystemCase};
+use crate::deck::form::{Form, Schema};
+use crate::deck::DeckErrors;
+use crate::numerics::cancel::Cancel;
+use crate::units::{restate_si, Units};
+
+/// The shipped example deck: an illustrative 22308 CC.
+pub const EXAMPLE_DECK: &str = include_str!("../../../decks/srb_22308.toml");
+
+/// The double-row spherical roller bearing system (registered in `crate::bearings::SYSTEMS`).
+pub struct DoubleRowSpherical;
+
+/// The registry entry.
+pub static SYSTEM: DoubleRowSpherical = DoubleRowSpherical;
+
+/// A validated double-row deck.
+pub type DoubleRowCase = SystemCase<DoubleRowSpherical>;
+
+impl FormSystem for DoubleRowSpherical {
+    type Input = DoubleRowInput;
+    type Derived = ();
+
+    fn registered() -> &'static Self {
+        &SYSTEM
+    }
+
+    fn schema(&self) -> &'static Schema<DoubleRowInput> {
+        &SCHEMA
+    }
+
+    fn title(&self) -> &'static str {
+        "double-row spherical roller bearing (lamina statics of both rows, guide ring)"
+    }
+
+    fn method(&self) -> &'static str {
+        "two rows of crowned rollers mirrored at ±α⁰ on one outer sphere, lamina contacts, roller equilibrium with centrifugal force and a unilateral guide ring, ring Newton in Δx, Δz (seed 002: Stirbu, Grigoras, Hanganu)"
+    }
+
+    fn element_name(&self) -> &'static str {
+        "roller"
+    }
+
+    fn panes(&self) -> &'static [PaneSpec] {
+        const PANES: [PaneSpec; 4] = [
+            PaneSpec {
+                kind: PaneKind::Inputs,
+                title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Elements,
+                title: "Rollers",
+            },
+            PaneSpec {
+                kind: PaneKind::Chart(0),
+                title: "Load",
+            },
+            PaneSpec {
+                kind: PaneKind::Text(0),
+                title: "Stiffness",
+            },
+        ];
+        &PANES
+    }
+
+    fn example_deck(&self) -> &'static str {
+        EXAMPLE_DECK
+    }
+
+    /// The `[optimise]` table into the input.
+    fn prepare(form: &mut Form<DoubleRowInput>) -> Result<(), DeckErrors> {
+        super::deck::optimise_table(form)
+    }
+
+    fn solve(
+        case: &DoubleRowCase,
+        _options: RunOptions,
+        cancel: Cancel,
+    ) -> Result<Box<dyn Solution>, String> {
+        let a = analyse(&case.form.value, &case.form.name, cancel.flag())
+            .map_err(|e| restate_si(&e.to_string(), case.form.units))?;
+        Ok(Box::new(DoubleRowSolution(a)))
+    }
+}
+
+/// A solved double-row bearing.
+pub struct DoubleRowSolution(pub DoubleRowAnalysis);
+
+impl Solution for DoubleRowSolution {
+    fn view(&self) -> View {
+        super::view::view(&self.0)
+    }
+
+    fn json(&self) -> serde_json::Value {
+        super::report::json(&self.0)
+    }
+
+    fn text(&self, units: Units) -> String {
+        super::report::text(&self.0, units)
+    }
+}
