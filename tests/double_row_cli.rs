@@ -57,7 +57,10 @@ fn bad_pitch_is_refused() {
         "geometry.pitch_diameter=0.066",
     ]);
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("geometry.pitch_diameter") && err.contains("cos α⁰"), "{err}");
+    assert!(
+        err.contains("geometry.pitch_diameter") && err.contains("cos α⁰"),
+        "{err}"
+    );
 }
 
 /// `run --format json`: both rows' rollers with `row` and `guide_ring_load_n`, the rings,
@@ -77,7 +80,9 @@ fn run_json_text_and_stiffness() {
         assert!(r["guide_ring_load_n"].as_f64().is_some_and(|g| g >= 0.0));
         assert!(r["inner"]["normal_load_n"].as_f64().is_some());
     }
-    assert!(v["rings"]["radial_deflection_m"].as_f64().is_some_and(|x| x > 0.0));
+    assert!(v["rings"]["radial_deflection_m"]
+        .as_f64()
+        .is_some_and(|x| x > 0.0));
     assert!(v["guide_ring"]["force_row1_n"].as_f64().is_some());
     assert!(v["life"]["l10_bearing_h"].as_f64().is_some_and(|x| x > 0.0));
     assert_eq!(v["life"]["rows"].as_array().map(Vec::len), Some(2));

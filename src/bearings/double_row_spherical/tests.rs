@@ -132,7 +132,7 @@ fn pure_axial_loads_one_row() {
     // (1.6 kN of 5 kN on the shipped deck). A floating guide ring carries no net axial
     // force; until it is modelled, only the exact balance (below) is asserted, and the
     // guide ring's share is bounded to show it is the guide ring, not a lost force.
-    assert!(guide >= 0.0 && guide < 0.5 * 5000.0, "{guide}");
+    assert!((0.0..0.5 * 5000.0).contains(&guide), "{guide}");
     // Rigid rotation symmetry: every roller of row 1 carries the same load.
     let q0 = a.combined.rollers[0].inner.normal_load_n;
     for r in &a.combined.rollers[..z] {
