@@ -471,3 +471,24 @@ fn ribbed_deck_via_set() {
         "{err}"
     );
 }
+
+/// With ribs carrying axial load the planar 2-DOF dynamics says what it leaves out.
+#[test]
+fn ribbed_dynamics_warns_it_is_radial_only() {
+    let v = run_json(
+        &deck("crb_truck.toml"),
+        &[
+            "--set",
+            "geometry.ribs=both",
+            "--set",
+            "operating.axial_load=500",
+            "--set",
+            "dynamics.revolutions=24",
+        ],
+    );
+    let warnings = v["warnings"].to_string();
+    assert!(
+        warnings.contains("radial only") && warnings.contains("500.0 N axial load"),
+        "{warnings}"
+    );
+}

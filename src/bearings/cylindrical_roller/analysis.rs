@@ -212,6 +212,13 @@ pub fn with_tribodynamics(
             d.stats.film_clamps
         ));
     }
+    if a.input.operating.axial_load_n != 0.0 {
+        // Seed eqs. 1–5 are planar: the dynamics carries the radial load only.
+        a.warnings.push(format!(
+            "the 2-DOF dynamics (seed eqs. 1–5) is radial only: the {:.1} N axial load, the rib loads and the roller tilts of the statics are not in the orbit, spectra or friction",
+            a.input.operating.axial_load_n
+        ));
+    }
     a.wall_time_s += t0.elapsed().as_secs_f64();
     a.tribo = Some(t);
     Ok(a)
