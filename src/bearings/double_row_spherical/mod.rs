@@ -8,6 +8,7 @@
 
 pub mod deck;
 pub mod input;
+pub mod load_sweep;
 pub mod losses;
 pub mod report;
 pub mod statics;
@@ -21,5 +22,7 @@ pub const SYSTEM_ID: &str = "double-row-spherical-roller";
 
 pub use system::SYSTEM;
 
+#[cfg(test)]
+mod losses_tests;
 #[cfg(test)]
 mod tests;

@@ -5,6 +5,7 @@
 
 use serde_json::{json, Value};
 
+use super::losses::LossBreakdown;
 use super::statics::DoubleRowAnalysis;
 use super::SYSTEM_ID;
 use crate::bearings::spherical_roller::report::{json as sr_json, text as sr_text};
@@ -173,4 +174,90 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         s.push_str(&sr_text::to_string(row, units));
     }
     s
+}
+
+/// rad/s to rpm.
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+/// The loss breakdown into the JSON report `v` (issue 27 "Outputs"): `losses` {…},
+/// `guide_ring.speed_rpm` (the ring's torque balance; absent without a guide ring) and,
+/// per roller (both rows, in the report's order), `guide_ring_load_n`, `pocket_force_n`
+/// (the roller's force on its pocket along +θ, N) and `skew_moment_nm`.
+pub fn add_losses(v: &mut Value, l: &LossBreakdown) {
+    let Some(m) = v.as_object_mut() else {
+        return;
+    };
+    m.insert(
+        "losses".into(),
+        serde_json::to_value(l.losses).unwrap_or(Value::Null),
+    );
+    if let (Some(g), Some(gr)) = (
+        m.get_mut("guide_ring").and_then(Value::as_object_mut),
+        l.guide_ring.as_ref(),
+    ) {
+        g.insert("speed_rpm".into(), json!(gr.speed_rad_s * RPM_PER_RAD_S));
+    }
+    if let Some(rs) = m.get_mut("rollers").and_then(Value::as_array_mut) {
+        for (r, rl) in rs.iter_mut().zip(&l.rollers) {
+            if let Some(o) = r.as_object_mut() {
+                o.insert("guide_ring_load_n".into(), json!(rl.guide_ring_load_n));
+                o.insert("pocket_force_n".into(), json!(rl.pocket_force_n));
+                o.insert("skew_moment_nm".into(), json!(rl.skew_moment_nm));
+            }
+        }
+    }
+}
+
+/// The LOSSES table in `units`: each mechanism in W and % of the total, M_fi, M_fo, M and
+/// the cage's torque imbalance, and the guide ring's speed.
+pub fn loss_lines(l: &LossBreakdown, units: Units) -> Vec<String> {
+    let x = &l.losses;
+    let s = &x.shares_pct;
+    let t = Quantity::Moment;
+    let tu = t.unit(units);
+    let mut v = vec![
+        "LOSSES".to_string(),
+        format!("  {:<24} {:>12} {:>8}", "mechanism", "W", "%"),
+    ];
+    for (name, w, p) in [
+        ("raceways, inner", x.raceway_inner_w, s.raceway_inner),
+        ("raceways, outer", x.raceway_outer_w, s.raceway_outer),
+        ("guide ring", x.guide_ring_w, s.guide_ring),
+        ("cage pockets", x.cage_pockets_w, s.cage_pockets),
+        ("cage land", x.cage_land_w, s.cage_land),
+        ("skew", x.skew_w, s.skew),
+        ("drag (off)", x.drag_w, s.drag),
+    ] {
+        v.push(format!("  {name:<24} {w:>12.4} {p:>8.2}"));
+    }
+    let all = if x.total_w != 0.0 { 100.0 } else { 0.0 };
+    v.push(format!("  {:<24} {:>12.4} {all:>8.2}", "total", x.total_w));
+    v.push(format!(
+        "  M_fi = {:.5} {tu}  M_fo = {:.5} {tu}  M = {:.5} {tu}  cage imbalance = {:.5} {tu}",
+        t.from_si(x.friction_torque_inner_nm, units),
+        t.from_si(x.friction_torque_outer_nm, units),
+        t.from_si(x.friction_torque_nm, units),
+        t.from_si(x.cage_torque_imbalance_nm, units),
+    ));
+    if let Some(g) = &l.guide_ring {
+        v.push(format!(
+            "  guide ring speed {:.1} rpm (its torque balance)",
+            g.speed_rad_s * RPM_PER_RAD_S
+        ));
+    }
+    v
+}
+
+/// The text report with the LOSSES table after the bearing's lines, before the rows.
+pub fn text_with_losses(a: &DoubleRowAnalysis, l: &LossBreakdown, units: Units) -> String {
+    let base = text(a, units);
+    let mut table = String::from("\n");
+    for line in loss_lines(l, units) {
+        table.push_str(&line);
+        table.push('\n');
+    }
+    match base.find("\n====================") {
+        Some(i) => format!("{}{}{}", &base[..i], table, &base[i..]),
+        None => base + &table,
+    }
 }
