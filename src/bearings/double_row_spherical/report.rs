@@ -77,6 +77,7 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
             "force_row1_n": a.guide.force_row1_n,
             "force_row2_n": a.guide.force_row2_n,
             "net_axial_force_n": a.guide.net_axial_n,
+            "axial_offset_m": a.guide.axial_offset_m,
             "nominal_gap_m": a.input.guide_gap_m(),
         },
         "roller_properties": {
@@ -150,7 +151,7 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         s.push('\n');
     }
     s.push_str(&format!(
-        "Cage speed ({}) {:.1} rpm; guide ring: row 1 {:.3} {u}, row 2 {:.3} {u}, net axial {:.3} {u}\n",
+        "Cage speed ({}) {:.1} rpm; guide ring: row 1 {:.3} {u}, row 2 {:.3} {u}, net axial {:.3} {u}, axial offset {:.4} {l}\n",
         match a.input.cage.speed {
             super::input::CageSpeedSource::Measured => "measured",
             super::input::CageSpeedSource::Computed => "computed",
@@ -159,7 +160,9 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         f.from_si(a.guide.force_row1_n, units),
         f.from_si(a.guide.force_row2_n, units),
         f.from_si(a.guide.net_axial_n, units),
-        u = f.unit(units)
+        Quantity::Length.from_si(a.guide.axial_offset_m, units),
+        u = f.unit(units),
+        l = Quantity::Length.unit(units)
     ));
     match (a.l10_mrev, a.l10_h) {
         (Some(m), Some(h)) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev, {h:.4e} h\n")),
