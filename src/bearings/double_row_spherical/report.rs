@@ -5,6 +5,7 @@
 
 use serde_json::{json, Value};
 
+use super::input::CageSpeedSource;
 use super::losses::LossBreakdown;
 use super::statics::DoubleRowAnalysis;
 use super::SYSTEM_ID;
@@ -174,7 +175,21 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
             "\n==================== Row {} ====================\n",
             i + 1
         ));
-        s.push_str(&sr_text::to_string(row, units));
+        let row_text = sr_text::to_string(row, units);
+        match (a.input.cage.speed, row_text.find("\nLoads:")) {
+            // The single-row report's speeds line says which speeds its own solver would
+            // have used; here the centrifugal forces and gyroscopic moments came from the
+            // measured cage speed, so say so right under it rather than let it mislead.
+            (CageSpeedSource::Measured, Some(k)) => {
+                s.push_str(&row_text[..k]);
+                s.push_str(&format!(
+                    "\nDynamic loads from the measured cage speed {:.1} rpm (cage.measured_speed); the §7 cage speed above is what the kinematics alone gives, and the film uses it",
+                    a.input.cage.measured_speed_rad_s * 30.0 / std::f64::consts::PI
+                ));
+                s.push_str(&row_text[k..]);
+            }
+            _ => s.push_str(&row_text),
+        }
     }
     s
 }
