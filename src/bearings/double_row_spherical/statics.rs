@@ -11,7 +11,10 @@
 //! row 2 is row 1 mirrored in the radial plane, both rows share the inner ring and the outer
 //! sphere (centred on the axis at the bearing's centre: the deck check d_m = 2(R_CE −
 //! D_W/2)·cos α⁰ puts each row's outer crown centre there), and the guide ring on the
-//! inner ring between the rows stops each roller's inner end (a unilateral Hertz contact).
+//! inner ring's land between the rows stops each roller's inner end (a unilateral Hertz
+//! contact). The guide ring floats axially: its offset on the inner ring balances the two
+//! rows' end forces, so it passes no axial load to the inner ring
+//! (`spherical_roller::load_distribution::float`).
 //! Centrifugal force and gyroscopic moment come from the cage speed: measured (the seed's
 //! input) or the §7 kinematics iterated with the loads (one cage speed for both rows, the
 //! mean over the rollers loaded at both raceways).
