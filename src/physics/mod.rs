@@ -10,7 +10,6 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
-pub mod bearing_losses;
 pub mod contact;
 pub mod heat;
 pub mod kinematics;

@@ -365,6 +365,28 @@ fn cross(t: &DoubleRowInput, units: Units) -> Vec<(&'static str, String)> {
             "only \"window\" is modelled (the seed's 22308 CC has window cages)".to_string(),
         ));
     }
+    // ASTM D341's constant 0.7 holds from 2 mm²/s up (physics::lubrication::walther).
+    for (key, nu) in [
+        ("lubricant.viscosity_40", t.lubricant.viscosity_40_m2_s),
+        ("lubricant.viscosity_100", t.lubricant.viscosity_100_m2_s),
+    ] {
+        if nu < crate::physics::lubrication::walther::MIN_ANCHOR_MM2_S * 1e-6 {
+            v.push((
+                key,
+                format!(
+                    "must be at least {} mm²/s (the range of ASTM D341's Walther line)",
+                    crate::physics::lubrication::walther::MIN_ANCHOR_MM2_S
+                ),
+            ));
+        }
+    }
+    // The losses run the cage on the guide ring's outer surface: there must be one.
+    if t.cage.land == CageLand::GuideRing && !(t.guide_ring.present && g.rows == 2) {
+        v.push((
+            "cage.land",
+            "\"guide-ring\" needs a guide ring (guide_ring.present = true and geometry.rows = 2); use \"inner-ring\"".to_string(),
+        ));
+    }
     if t.lubricant.viscosity_100_m2_s >= t.lubricant.viscosity_40_m2_s {
         v.push((
             "lubricant.viscosity_100",

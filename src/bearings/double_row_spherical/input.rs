@@ -8,6 +8,7 @@ use crate::bearings::spherical_roller::{
     Bearing, Cage, DynamicLoads, FilmModel, Geometry, GuidingRing, LifeFactors, LifeMethod,
     Lubricant, Materials, Operating, Slicing, SolverSettings, Surfaces,
 };
+use crate::physics::lubrication::walther::{Walther, WaltherError};
 use crate::physics::material::Material;
 
 /// Internal geometry, SI. The 22308's is not published: the shipped deck is illustrative.
@@ -191,17 +192,6 @@ const STEEL: Material = Material {
 /// 22308's 65 mm), below any clearance yet above a deck's rounding to 0.1 µm.
 pub const PITCH_CHECK_TOLERANCE: f64 = 1e-4;
 
-/// ASTM D341 (Walther): log₁₀ log₁₀(ν + 0.7) = A − B·log₁₀ T, ν in mm²/s, T in K, through
-/// the two given points. Returns ν at `t_k` in m²/s.
-pub fn walther_m2_s(nu40_m2_s: f64, nu100_m2_s: f64, t_k: f64) -> f64 {
-    let w = |nu_m2_s: f64| (nu_m2_s * 1e6 + 0.7).log10().log10();
-    let (t1, t2) = (313.15_f64.log10(), 373.15_f64.log10());
-    let b = (w(nu40_m2_s) - w(nu100_m2_s)) / (t2 - t1);
-    let a = w(nu40_m2_s) + b * t1;
-    let z = 10f64.powf(10f64.powf(a - b * t_k.log10()));
-    (z - 0.7) * 1e-6
-}
-
 impl DoubleRowInput {
     /// An illustrative 22308 CC (40 × 90 × 33 mm), the same bearing as
     /// `decks/srb_22308.toml`: internal geometry assumed (not published).
@@ -272,10 +262,24 @@ impl DoubleRowInput {
         }
     }
 
-    /// Dynamic viscosity at the measured oil temperature, Pa·s (Walther × density).
-    pub fn viscosity_pa_s(&self) -> f64 {
+    /// Dynamic viscosity at the measured oil temperature, Pa·s: the ASTM D341 (Walther)
+    /// line through ν₄₀ and ν₁₀₀ ([`crate::physics::lubrication::walther`]) times the
+    /// density.
+    ///
+    /// # Errors
+    /// [`WaltherError`] for anchors outside D341's range (below 2 mm²/s), a hotter anchor
+    /// not thinner, or an unusable temperature or density (the deck refuses all of them).
+    pub fn try_viscosity_pa_s(&self) -> Result<f64, WaltherError> {
         let l = &self.lubricant;
-        walther_m2_s(l.viscosity_40_m2_s, l.viscosity_100_m2_s, l.temperature_k) * l.density_kg_m3
+        Walther::from_40_100(l.viscosity_40_m2_s * 1e6, l.viscosity_100_m2_s * 1e6)?
+            .dynamic_pa_s(l.temperature_k - 273.15, l.density_kg_m3)
+    }
+
+    /// [`Self::try_viscosity_pa_s`] for a validated input (the deck's checks exclude its
+    /// errors); NaN otherwise, so that a hand-built invalid input cannot pass for a
+    /// lubricated one (the losses call the checked form and fail with its message).
+    pub fn viscosity_pa_s(&self) -> f64 {
+        self.try_viscosity_pa_s().unwrap_or(f64::NAN)
     }
 
     /// Nominal gap along the roller axis between a roller's inner end and the guide ring
@@ -391,15 +395,44 @@ impl DoubleRowInput {
 mod tests {
     use super::*;
 
-    /// Walther through its own two points (1e-12: round-off of the double logarithm), and
-    /// ISO VG 68 with ν₁₀₀ = 8.6 at 60 °C near the ISO 3104 table's 28–30 mm²/s.
+    /// The viscosity through `physics::lubrication::walther` equals the small in-file
+    /// D341 formula it replaced (typed out here as the reference) to 1e-12 relative (the
+    /// round-off of the nested powers of ten) at 20–120 °C, passes through its own two
+    /// points, and gives ISO VG 68 with ν₁₀₀ = 8.6 at 60 °C near the ISO 3104 table's
+    /// 28–30 mm²/s.
     #[test]
     fn walther_passes_through_its_points() {
+        let replaced = |nu40_m2_s: f64, nu100_m2_s: f64, t_k: f64| -> f64 {
+            let w = |nu_m2_s: f64| (nu_m2_s * 1e6 + 0.7).log10().log10();
+            let (t1, t2) = (313.15_f64.log10(), 373.15_f64.log10());
+            let b = (w(nu40_m2_s) - w(nu100_m2_s)) / (t2 - t1);
+            let a = w(nu40_m2_s) + b * t1;
+            let z = 10f64.powf(10f64.powf(a - b * t_k.log10()));
+            (z - 0.7) * 1e-6
+        };
+        let mut i = DoubleRowInput::example_22308();
+        let rho = i.lubricant.density_kg_m3;
         let (a, b) = (68e-6, 8.6e-6);
-        assert!((walther_m2_s(a, b, 313.15) / a - 1.0).abs() < 1e-12);
-        assert!((walther_m2_s(a, b, 373.15) / b - 1.0).abs() < 1e-12);
-        let mid = walther_m2_s(a, b, 333.15) * 1e6;
-        assert!((25.0..32.0).contains(&mid), "{mid}");
+        for t_c in [20.0, 40.0, 60.0, 100.0, 120.0] {
+            i.lubricant.temperature_k = t_c + 273.15;
+            let new = i.try_viscosity_pa_s().expect("valid oil") / rho;
+            let old = replaced(a, b, t_c + 273.15);
+            assert!((new / old - 1.0).abs() < 1e-12, "{t_c} °C: {new} vs {old}");
+            if t_c == 40.0 {
+                assert!((new / a - 1.0).abs() < 1e-12);
+            }
+            if t_c == 100.0 {
+                assert!((new / b - 1.0).abs() < 1e-12);
+            }
+            if t_c == 60.0 {
+                assert!((25.0..32.0).contains(&(new * 1e6)), "{new}");
+            }
+        }
+        // Outside D341's range the checked form says why.
+        i.lubricant.viscosity_100_m2_s = 1.0e-6;
+        let e = i.try_viscosity_pa_s().expect_err("below 2 mm²/s");
+        assert!(e.to_string().contains("viscosity_100"), "{e}");
+        assert!(i.viscosity_pa_s().is_nan());
     }
 
     /// The example's pitch circle satisfies the deck check exactly and its guide ring

@@ -8,6 +8,7 @@
 
 pub mod deck;
 pub mod input;
+pub mod losses;
 pub mod optimise;
 pub mod report;
 pub mod statics;

@@ -2,9 +2,10 @@
 //! Model 2–4): the friction loss by mechanism, the friction torques, and the cage's torque
 //! imbalance at a measured cage speed, SI.
 //!
-//! This module knows no deck and no statics: the caller (the double-row system) passes
-//! the solved laminae and roller forces in a plain [`LossInputs`]; the physics is the
-//! shared lubrication code (`lamina_friction`, `guide_ring`, `cage_film`, `heat`).
+//! The breakdown ([`loss_breakdown`]) reads a plain [`LossInputs`]; [`losses`] builds it
+//! from the solved statics of the double-row system. The physics is the shared
+//! lubrication code (`lamina_friction`, `guide_ring`, `cage_film`, `heat`): this file
+//! holds only what is the double-row bearing's own (its mechanisms and their wiring).
 //!
 //! # Mechanisms (the output's contract names)
 //! * `raceway_inner_w`, `raceway_outer_w`: Σ F·v_sl over the laminae of each raceway
@@ -50,7 +51,10 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::input::{CageLand as DeckCageLand, DoubleRowInput, Traction};
+use super::statics::DoubleRowAnalysis;
 use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
+use crate::physics::kinematics::sliding_velocity;
 use crate::physics::lubrication::cage_film::{
     land_power_w, land_torque_on_cage_nm, pocket_film, CageFilmError, PocketGeometry,
 };
@@ -60,6 +64,8 @@ use crate::physics::lubrication::guide_ring::{
 use crate::physics::lubrication::lamina_friction::{
     lamina_friction, FilmRheology, LaminaFrictionError, LaminaSlice, RacewayTractionLaw,
 };
+use crate::physics::lubrication::traction::HertzStrip;
+use crate::physics::lubrication::walther::WaltherError;
 
 /// Which surface pilots the cage.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -96,8 +102,10 @@ pub struct RollerLossInput {
     pub outer: Vec<LaminaSlice>,
     /// Normal load of the roller end on the guide ring, N.
     pub guide_ring_load_n: f64,
-    /// Force between roller and cage pocket, N (its magnitude sets the pocket film).
-    pub pocket_force_n: f64,
+    /// Force between roller and cage pocket, N (its magnitude sets the pocket film);
+    /// `None`: the roller's net circumferential traction (inner + outer laminae + guide-ring
+    /// end), the quasi-static roller passing it all to its pocket (module notes).
+    pub pocket_force_n: Option<f64>,
     /// Orbital (cage) speed of the roller, rad/s.
     pub orbital_speed_rad_s: f64,
     /// Speed of the roller end's guide-ring contact point relative to the cage, along +θ,
@@ -214,6 +222,11 @@ pub struct RollerLoss {
     pub pocket_film_m: f64,
     /// Net circumferential traction passed to the pocket (along +θ), N.
     pub circumferential_force_n: f64,
+    /// Force of the roller on its pocket that set the pocket film, N: the given one, or
+    /// the net circumferential traction (signed along +θ).
+    pub pocket_force_n: f64,
+    /// Normal load of the roller end on the guide ring, N.
+    pub guide_ring_load_n: f64,
     /// Laminae where the printed eq. 3 exceeds μ = 0.2.
     pub eq3_flagged_laminae: usize,
 }
@@ -252,6 +265,17 @@ pub enum LossError {
     /// A cage film failed.
     #[error(transparent)]
     Cage(#[from] CageFilmError),
+    /// The lubricant's viscosity line (ASTM D341) cannot be evaluated.
+    #[error("lubricant viscosity: {0}")]
+    Viscosity(#[from] WaltherError),
+    /// A stage of the statics the losses read did not run.
+    #[error("row {row}: the {stage} stage of the statics did not run; the losses need it")]
+    MissingStage {
+        /// The stage.
+        stage: &'static str,
+        /// Row, 1 or 2.
+        row: usize,
+    },
     /// An input outside its range.
     #[error("{name} = {value} is not usable: it must be {allowed}")]
     BadInput {
@@ -385,7 +409,9 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         let (po, sko, mo, fo, no) = contact_losses(lub.law, rh, &r.outer, k, "outer")?;
         let end = guide.as_ref().and_then(|g| g.contacts.get(k)).copied();
         let (end_w, end_f) = end.map_or((0.0, 0.0), |c| (c.power_w, c.force_on_roller_n));
-        let pocket = pocket_film(&inputs.pocket, eta, r.pocket_force_n, r.surface_speed_m_s)?;
+        let circumferential = fi + fo + end_f;
+        let pocket_force = r.pocket_force_n.unwrap_or(circumferential);
+        let pocket = pocket_film(&inputs.pocket, eta, pocket_force, r.surface_speed_m_s)?;
         inner_total += pi;
         outer_total += po;
         l.raceway_inner_w += pi - ski;
@@ -393,7 +419,6 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         l.skew_w += ski + sko;
         l.cage_pockets_w += pocket.power_w;
         flagged += ni + no;
-        let circumferential = fi + fo + end_f;
         cage_torque += circumferential * 0.5 * dm;
         rollers.push(RollerLoss {
             row: r.row,
@@ -405,6 +430,8 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
             pocket_w: pocket.power_w,
             pocket_film_m: pocket.min_film_m,
             circumferential_force_n: circumferential,
+            pocket_force_n: pocket_force,
+            guide_ring_load_n: r.guide_ring_load_n,
             eq3_flagged_laminae: ni + no,
         });
     }
@@ -492,6 +519,231 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
     })
 }
 
+// ------------------------------------------------------------------ wiring to the statics
+
+/// The guide ring and the cage land of the double-row deck, derived from its geometry
+/// (the 22308's are not published; the deck holds no keys for them yet):
+///
+/// * r_g, the end contacts' distance from the axis: the statics' end sphere touches the
+///   guide ring's face (normal to the nominal roller axis a = (cos α⁰, −sin α⁰)) on the
+///   roller axis, L/2 from the roller centre: r_g = d_m/2 + (L/2)·sin α⁰;
+/// * R_b, the guide ring's bore on the inner ring: the inner raceway's radius below the
+///   roller's inner end, r_g − ρ_e·cos α⁰ with ρ_e = D_W/2 − (L/2)²/(R_W + √(R_W² − (L/2)²))
+///   the crowned roller's radius at its end (the crown drop without cancellation);
+/// * the bore film's width is the deck's `guide_ring.width` and its radial clearance half
+///   the deck's diametral `guide_ring.bore_clearance`;
+/// * the cage land: on the guide ring's outer surface (radius r_g) or on the inner ring's
+///   central land (radius R_b), the guide ring's width wide, with the radial play half the
+///   deck's `cage.pocket_clearance` (the clearance the statics' cage already reads).
+pub struct DerivedGeometry {
+    /// r_g, m.
+    pub guide_contact_radius_m: f64,
+    /// R_b, m.
+    pub guide_bore_radius_m: f64,
+}
+
+/// [`DerivedGeometry`] of `input`.
+pub fn derived_geometry(input: &DoubleRowInput) -> DerivedGeometry {
+    let g = &input.geometry;
+    let half_l = 0.5 * g.roller_length_m;
+    let rw = g.roller_crown_radius_m;
+    let drop = half_l * half_l / (rw + (rw * rw - half_l * half_l).max(0.0).sqrt());
+    let rho_end = 0.5 * g.roller_diameter_m - drop;
+    let (s, c) = g.contact_angle_rad.sin_cos();
+    let rg = 0.5 * g.pitch_diameter_m + half_l * s;
+    DerivedGeometry {
+        guide_contact_radius_m: rg,
+        guide_bore_radius_m: rg - rho_end * c,
+    }
+}
+
+/// The reduced modulus E* of roller and inner ring (the guide ring is of the inner ring's
+/// steel), Pa: 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂, as the statics' guide contact reads it.
+fn guide_reduced_modulus_pa(input: &DoubleRowInput) -> f64 {
+    let (r, ring) = (&input.materials.roller, &input.materials.inner_ring);
+    1.0 / ((1.0 - r.poisson_ratio.powi(2)) / r.youngs_modulus_pa
+        + (1.0 - ring.poisson_ratio.powi(2)) / ring.youngs_modulus_pa)
+}
+
+/// The loss model's inputs from the solved statics (module notes; issue 27 Model 2–4):
+///
+/// * per loaded lamina of each raceway: its load and width (the statics), the Hertz
+///   half-width (the row's stress stage), p₀ = 2q/(π·b·L), the film (the row's film
+///   stage), the sliding speed along +θ (`kinematics::sliding_velocity`, raceway minus
+///   roller, seed 000 eq. 8.1–8.5) and the entrainment speed ½(|u_ring| + |u_roller|) in
+///   the cage frame, both at the cage speed and roller spin the statics' dynamic loads used
+///   (`DoubleRowAnalysis::dynamic`: the measured cage speed, or the computed one);
+/// * per roller: the guide ring's end load (the statics' unilateral contact), the roller
+///   end's speed at its contact point relative to the cage (ω_s·a × (p − c), nearly 0: the
+///   contact lies on the roller axis but for the roller's tilt), the orbital speed ω_c,
+///   the surface speed ω_s·D_W/2 at the pocket, and the pocket force left to the
+///   breakdown (the roller's net circumferential traction);
+/// * the lubricant at the measured temperature (Walther), the deck's pressure–viscosity
+///   and traction law, the ATZ constants the statics' row bearing carries; drag off (the
+///   seed has none; no deck key yet).
+///
+/// # Errors
+/// [`LossError::Viscosity`] for an oil outside D341's range, [`LossError::MissingStage`]
+/// if a row's stresses or films are absent.
+pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
+    let input = &a.input;
+    let g = &input.geometry;
+    let eta = input.try_viscosity_pa_s()?;
+    let lb = &a.row_bearing.lubricant;
+    let rheology = FilmRheology {
+        viscosity_pa_s: eta,
+        pressure_viscosity_pa_inv: input.lubricant.pressure_viscosity_pa_inv,
+        transition_shear_stress_pa: lb.transition_shear_stress_pa,
+        limiting_traction_coefficient: lb.limiting_traction_coefficient,
+    };
+    let law = match input.lubricant.traction {
+        Traction::Atz => RacewayTractionLaw::Atz,
+        Traction::NewtonianEq3 => RacewayTractionLaw::NewtonianEq3,
+    };
+    let wi = input.operating.inner_speed_rad_s;
+    let ring_w = [wi, 0.0];
+    let wc = a.dynamic.cage_rad_s;
+    let spin = a.dynamic.roller_spin_rad_s;
+    let beta = g.contact_angle_rad;
+    let a0 = [beta.cos(), -beta.sin(), 0.0];
+    let half_l = 0.5 * g.roller_length_m;
+    let re = g.roller_end_radius_m;
+    let with_guide = input.guide_ring.present && g.rows >= 2;
+    let mut rollers = Vec::with_capacity(a.combined.rollers.len());
+    for (row, ra) in a.rows.iter().enumerate() {
+        let st = ra.stresses.as_ref().ok_or(LossError::MissingStage {
+            stage: "stress",
+            row: row + 1,
+        })?;
+        let films = ra.films.as_ref().ok_or(LossError::MissingStage {
+            stage: "film",
+            row: row + 1,
+        })?;
+        for (j, r) in ra.load.rollers.iter().enumerate() {
+            let (Some(rc), Some(hz), Some(fl)) =
+                (ra.contacts.get(j), st.laminae.get(j), films.laminae.get(j))
+            else {
+                return Err(LossError::MissingStage {
+                    stage: "contact, stress or film (a roller is missing)",
+                    row: row + 1,
+                });
+            };
+            let (s, c) = r.tilt_rad.sin_cos();
+            let axis = [c * a0[0] - s * a0[1], s * a0[0] + c * a0[1], 0.0];
+            let centre = [
+                r.axial_displacement_m,
+                r.radial_displacement_m + 0.5 * g.pitch_diameter_m,
+                0.0,
+            ];
+            let mut sides: [Vec<LaminaSlice>; 2] = [Vec::new(), Vec::new()];
+            for (i, l) in r.laminae.iter().enumerate() {
+                for (k, side) in sides.iter_mut().enumerate() {
+                    let (Some(ct), Some(h)) = (rc.get(i).map(|p| p[k]), hz.get(i).map(|p| p[k]))
+                    else {
+                        continue;
+                    };
+                    if ct.load_n <= 0.0 {
+                        continue;
+                    }
+                    let pt = if k == 0 {
+                        l.inner_point_m
+                    } else {
+                        l.outer_point_m
+                    };
+                    let v =
+                        sliding_velocity([pt[0], pt[1], 0.0], ring_w[k], wc, centre, axis, spin);
+                    let strip = HertzStrip {
+                        load_n: ct.load_n,
+                        half_width_m: h.half_width_m,
+                        width_m: ct.width_m,
+                    };
+                    let u = 0.5
+                        * (((ring_w[k] - wc) * ct.ring_axis_distance_m).abs()
+                            + (spin * ct.roller_axis_distance_m).abs());
+                    side.push(LaminaSlice {
+                        load_n: ct.load_n,
+                        half_width_m: h.half_width_m,
+                        length_m: ct.width_m,
+                        peak_pressure_pa: strip.peak_pressure_pa(),
+                        rolling_speed_m_s: u,
+                        sliding_speed_m_s: v,
+                        film_m: fl.get(i).and_then(|p| p[k]).unwrap_or(0.0),
+                        axial_offset_m: l.offset_m,
+                    });
+                }
+            }
+            // The end contact point: the end sphere's centre (L/2 − r_e along −a from the
+            // roller centre) less r_e along the face normal a⁰; its speed relative to the
+            // cage is the roller's ω_s·a × (p − c) along +θ (the ring term cancels at a ring
+            // speed equal to the cage's).
+            let end_point = [
+                centre[0] - (half_l - re) * axis[0] - re * a0[0],
+                centre[1] - (half_l - re) * axis[1] - re * a0[1],
+                0.0,
+            ];
+            let end_speed = -sliding_velocity(end_point, wc, wc, centre, axis, spin);
+            let [inner, outer] = sides;
+            rollers.push(RollerLossInput {
+                row: u8::try_from(row + 1).unwrap_or(u8::MAX),
+                inner,
+                outer,
+                guide_ring_load_n: if with_guide { r.guide_force_n } else { 0.0 },
+                pocket_force_n: None,
+                orbital_speed_rad_s: wc,
+                roller_end_speed_m_s: end_speed,
+                surface_speed_m_s: spin * 0.5 * g.roller_diameter_m,
+            });
+        }
+    }
+    let d = derived_geometry(input);
+    let guide_ring = with_guide.then(|| GuideRingGeometry {
+        roller_end_radius_m: re,
+        reduced_modulus_pa: guide_reduced_modulus_pa(input),
+        contact_radius_m: d.guide_contact_radius_m,
+        bore_radius_m: d.guide_bore_radius_m,
+        width_m: input.guide_ring.width_m,
+        bore_clearance_m: 0.5 * input.guide_ring.bore_clearance_m,
+    });
+    let (kind, radius) = match input.cage.land {
+        DeckCageLand::GuideRing => (CageLandKind::GuideRing, d.guide_contact_radius_m),
+        DeckCageLand::InnerRing => (CageLandKind::InnerRing, d.guide_bore_radius_m),
+    };
+    Ok(LossInputs {
+        rollers,
+        inner_speed_rad_s: wi,
+        outer_speed_rad_s: 0.0,
+        cage_speed_rad_s: wc,
+        guide_ring,
+        pocket: PocketGeometry {
+            roller_radius_m: 0.5 * g.roller_diameter_m,
+            length_m: g.roller_length_m,
+            pocket_clearance_m: input.cage.pocket_clearance_m,
+        },
+        cage_land: CageLand {
+            kind,
+            radius_m: radius,
+            width_m: input.guide_ring.width_m,
+            radial_clearance_m: 0.5 * input.cage.pocket_clearance_m,
+        },
+        pitch_diameter_m: g.pitch_diameter_m,
+        lubricant: LossLubricant {
+            rheology,
+            law,
+            density_kg_m3: input.lubricant.density_kg_m3,
+            drag_factor: None,
+        },
+    })
+}
+
+/// The loss breakdown of a solved double-row bearing: [`loss_inputs`] then
+/// [`loss_breakdown`]. The signature is stable (the osculation optimiser's objective).
+///
+/// # Errors
+/// [`LossError`] naming the stage, roller, raceway, lamina or input at fault.
+pub fn losses(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
+    loss_breakdown(&loss_inputs(a)?)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -540,7 +792,7 @@ mod tests {
                     inner: lam(0.05),
                     outer: lam(-0.03),
                     guide_ring_load_n: 20.0 + k as f64,
-                    pocket_force_n: 5.0,
+                    pocket_force_n: Some(5.0),
                     orbital_speed_rad_s: wc,
                     roller_end_speed_m_s: 0.02 * speed_scale,
                     surface_speed_m_s: 1.5 * speed_scale,
@@ -650,7 +902,7 @@ mod tests {
                 inner: inner.clone(),
                 outer: outer.clone(),
                 guide_ring_load_n: 0.0,
-                pocket_force_n: 3.0,
+                pocket_force_n: Some(3.0),
                 orbital_speed_rad_s: 100.0,
                 roller_end_speed_m_s: 0.0,
                 surface_speed_m_s: 2.0,
