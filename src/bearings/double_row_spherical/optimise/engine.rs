@@ -381,7 +381,10 @@ mod tests {
         assert_eq!(pts.len(), 441);
         let b = best_feasible(&pts).unwrap();
         let x = &pts[b].x;
-        assert!((x[0] - 0.2).abs() < 1e-12 && (x[1] + 0.3).abs() < 1e-12, "{x:?}");
+        assert!(
+            (x[0] - 0.2).abs() < 1e-12 && (x[1] + 0.3).abs() < 1e-12,
+            "{x:?}"
+        );
         assert_eq!(binding_at(&pts, b), vec!["sum"]);
         // Polish from an off-optimum feasible grid point (0.1, −0.4): Nelder–Mead slides
         // along the active constraint toward (0.2, −0.3).
@@ -418,7 +421,11 @@ mod tests {
         assert!(at_bounds(&pts[b].x, &lo, &hi).is_empty());
         let e0 = pts[b].eval.clone().unwrap();
         let p = polish(&pts[b].x, e0, &[0.1, 0.1], &lo, &hi, 100, &f).unwrap();
-        assert!((p.x[0] - 0.123).abs() < 1e-4 && (p.x[1] - 0.0456).abs() < 1e-4, "{:?}", p.x);
+        assert!(
+            (p.x[0] - 0.123).abs() < 1e-4 && (p.x[1] - 0.0456).abs() < 1e-4,
+            "{:?}",
+            p.x
+        );
     }
 
     /// Cancellation stops the grid; failures are kept as infeasible points.

@@ -138,6 +138,26 @@ pub struct CaseLoss {
 /// The objective: the loss of one solved bearing, or why it has none.
 pub type Objective<'a> = dyn Fn(&DoubleRowAnalysis) -> Result<CaseLoss, String> + Sync + 'a;
 
+/// The system's objective: the loss breakdown of the solved bearing
+/// ([`super::losses::losses`]): total loss, M_fi, M_fo.
+pub fn loss_objective(a: &DoubleRowAnalysis) -> Result<CaseLoss, String> {
+    let l = super::losses::losses(a).map_err(|e| e.to_string())?.losses;
+    Ok(CaseLoss {
+        total_w: l.total_w,
+        friction_torque_inner_nm: l.friction_torque_inner_nm,
+        friction_torque_outer_nm: l.friction_torque_outer_nm,
+    })
+}
+
+/// [`optimise`] with the system's objective, [`loss_objective`].
+pub fn optimise_losses(
+    input: &DoubleRowInput,
+    name: &str,
+    cancel: Cancel<'_>,
+) -> Result<Optimisation, OptimiseError> {
+    optimise(input, name, &loss_objective, cancel)
+}
+
 /// What the constraints read from one solved load case.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CaseMetrics {
@@ -240,6 +260,16 @@ pub struct Optimum {
     pub binding: Vec<String>,
 }
 
+/// The grid's lowest loss whatever the constraints: what they cost.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Unconstrained {
+    pub variables: BTreeMap<&'static str, f64>,
+    pub total_w: f64,
+    pub improvement_pct: f64,
+    /// The constraints it violates.
+    pub violated: Vec<&'static str>,
+}
+
 /// One grid point in the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GridEntry {
@@ -288,6 +318,8 @@ pub struct Optimisation {
     pub load_cases: Vec<LoadCase>,
     pub nominal: NominalSummary,
     pub optimum: Optimum,
+    /// The grid point of lowest loss ignoring the constraints (None when no point solved).
+    pub unconstrained: Option<Unconstrained>,
     pub grid: Vec<GridEntry>,
     /// Objective change, % of its value at the optimum, per +0.1 % of each radius.
     pub sensitivity_pct_per_0_1pct: BTreeMap<&'static str, f64>,
@@ -382,10 +414,7 @@ impl Problem<'_> {
         let sum = |f: &dyn Fn(&CaseMetrics) -> f64| -> f64 {
             cases.iter().enumerate().map(|(i, c)| w(i) * f(c)).sum()
         };
-        let lambda_min = cases
-            .iter()
-            .filter_map(|c| c.lambda_min)
-            .reduce(f64::min);
+        let lambda_min = cases.iter().filter_map(|c| c.lambda_min).reduce(f64::min);
         let (mut cap, mut stress) = (1.0_f64, 1.0_f64);
         if let Some(nom) = nominal {
             for (c, n) in cases.iter().zip(nom) {
@@ -528,8 +557,12 @@ pub fn optimise(
     })?;
     let nominal_solves = p.solves.load(Ordering::Relaxed);
     let nom_detail = p.detail(nominal_cases.clone(), Some(&nominal_cases));
-    let weighted =
-        |cs: &[CaseMetrics]| -> f64 { cs.iter().zip(&cases).map(|(c, l)| l.weight * c.loss.total_w).sum() };
+    let weighted = |cs: &[CaseMetrics]| -> f64 {
+        cs.iter()
+            .zip(&cases)
+            .map(|(c, l)| l.weight * c.loss.total_w)
+            .sum()
+    };
     let nominal_total = weighted(&nominal_cases);
     let nom_margins = margins(input, &nom_detail, &nominal_cases);
     let nominal = NominalSummary {
@@ -692,8 +725,20 @@ pub fn optimise(
             },
         })
         .collect();
+    let unconstrained = points
+        .iter()
+        .filter_map(|gp| gp.eval.as_ref().ok().map(|e| (gp, e)))
+        .filter(|(_, e)| e.objective.is_finite())
+        .min_by(|a, b| a.1.objective.total_cmp(&b.1.objective))
+        .map(|(gp, e)| Unconstrained {
+            variables: named(&gp.x),
+            total_w: e.objective,
+            improvement_pct: (nominal_total - e.objective) / nominal_total * 100.0,
+            violated: e.violated(),
+        });
     let d = &pol.eval.detail;
     Ok(Optimisation {
+        unconstrained,
         variables: vars.iter().map(|v| v.name()).collect(),
         relative_range: r,
         grid_points_per_variable: n,

@@ -77,6 +77,19 @@ pub fn text(o: &Optimisation, units: Units) -> String {
             opt.binding.join(", ")
         }
     ));
+    if let Some(u) = &o.unconstrained {
+        s.push_str(&format!(
+            "unconstrained grid minimum  {}: total {:.3} W (improvement {:.2} %), violates {}\n",
+            vars_text(&u.variables),
+            u.total_w,
+            u.improvement_pct,
+            if u.violated.is_empty() {
+                "nothing".to_string()
+            } else {
+                u.violated.join(", ")
+            }
+        ));
+    }
     s.push_str(&format!(
         "sensitivity (% of the loss per +0.1 % of the radius): {}\n",
         o.sensitivity_pct_per_0_1pct
