@@ -41,6 +41,7 @@
 
 pub mod engine;
 pub mod report;
+pub mod view;
 
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -604,10 +605,13 @@ pub fn optimise(
             detail: d,
         })
     };
-    let eval = |k: &[f64]| eval_at(k, laminae);
+    // The engine works in u = k − 1 ∈ [−r, r]: the grid's middle point is u = 0 exactly
+    // (−r + 2r·½), so an odd grid holds the nominal bearing bit for bit.
+    let to_k = |u: &[f64]| -> Vec<f64> { u.iter().map(|x| 1.0 + x).collect() };
+    let eval = |u: &[f64]| eval_at(&to_k(u), laminae);
     let r = o.relative_range;
-    let lo = vec![1.0 - r; vars.len()];
-    let hi = vec![1.0 + r; vars.len()];
+    let lo = vec![-r; vars.len()];
+    let hi = vec![r; vars.len()];
     let points = engine::grid(&lo, &hi, n, &eval, Cancel::from_option(cancel.flag()))
         .map_err(|_| OptimiseError::Cancelled)?;
     let after_grid = p.solves.load(Ordering::Relaxed);
@@ -651,7 +655,7 @@ pub fn optimise(
             "{} {} bound ({})",
             vars[i].name(),
             if upper { "upper" } else { "lower" },
-            if upper { hi[i] } else { lo[i] }
+            1.0 + if upper { hi[i] } else { lo[i] }
         ));
     }
     for (name, m) in &pol.eval.margins {
@@ -681,15 +685,17 @@ pub fn optimise(
     }
     let after_sens = p.solves.load(Ordering::Relaxed);
     // Lamina noise: the optimum with 2Γ laminae.
-    let fine = p.solve_cases(&pol.x, 2 * laminae).map_err(|e| match e {
-        PointError::Cancelled => OptimiseError::Cancelled,
-        PointError::Failed(message) => OptimiseError::Nominal {
-            case: 1,
-            radial_n: 0.0,
-            axial_n: 0.0,
-            message: format!("at the optimum with {} laminae: {message}", 2 * laminae),
-        },
-    })?;
+    let fine = p
+        .solve_cases(&to_k(&pol.x), 2 * laminae)
+        .map_err(|e| match e {
+            PointError::Cancelled => OptimiseError::Cancelled,
+            PointError::Failed(message) => OptimiseError::Nominal {
+                case: 1,
+                radial_n: 0.0,
+                axial_n: 0.0,
+                message: format!("at the optimum with {} laminae: {message}", 2 * laminae),
+            },
+        })?;
     let noise_w = (weighted(&fine) - pol.eval.objective).abs();
     let after_noise = p.solves.load(Ordering::Relaxed);
     cancel.report(1.0);
@@ -700,7 +706,7 @@ pub fn optimise(
         .iter()
         .map(|gp: &GridPoint<PointDetail>| match &gp.eval {
             Ok(e) => GridEntry {
-                variables: named(&gp.x),
+                variables: named(&to_k(&gp.x)),
                 total_w: e.objective.is_finite().then_some(e.objective),
                 feasible: e.feasible(),
                 violated: e.violated(),
@@ -712,7 +718,7 @@ pub fn optimise(
                 error: None,
             },
             Err(msg) => GridEntry {
-                variables: named(&gp.x),
+                variables: named(&to_k(&gp.x)),
                 total_w: None,
                 feasible: false,
                 violated: vec!["solve failed"],
@@ -731,7 +737,7 @@ pub fn optimise(
         .filter(|(_, e)| e.objective.is_finite())
         .min_by(|a, b| a.1.objective.total_cmp(&b.1.objective))
         .map(|(gp, e)| Unconstrained {
-            variables: named(&gp.x),
+            variables: named(&to_k(&gp.x)),
             total_w: e.objective,
             improvement_pct: (nominal_total - e.objective) / nominal_total * 100.0,
             violated: e.violated(),
@@ -744,7 +750,7 @@ pub fn optimise(
         grid_points_per_variable: n,
         load_cases: cases,
         optimum: Optimum {
-            variables: named(&pol.x),
+            variables: named(&to_k(&pol.x)),
             total_w: pol.eval.objective,
             improvement_pct: (nominal_total - pol.eval.objective) / nominal_total * 100.0,
             lambda_min: d.lambda_min,

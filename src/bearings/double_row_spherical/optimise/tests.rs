@@ -225,3 +225,44 @@ fn print_shapes() {
         }
     }
 }
+
+/// The heat map and Fig. 3 charts of a 5 × 5 run: a 5-line map with the nominal and optimum
+/// marked once each (or '@' together), every other cell a level digit or 'x'; each chart's
+/// series hold the 5 points of the line through nominal, with ratio 1 at R′/R = 1.
+#[test]
+fn pane_heat_map_and_fig3() {
+    let mut b = shipped();
+    b.optimise.grid = 5;
+    b.optimise.load_cases.truncate(1);
+    b.solver.laminae = 21;
+    let o = optimise_losses(&b, "t", Cancel::NONE).unwrap_or_else(|e| panic!("{e}"));
+    let map = view::heat_map(&o).unwrap_or_default();
+    eprintln!("{}", map.join("\n"));
+    assert_eq!(map.len(), 5);
+    let all: String = map.concat();
+    assert_eq!(all.chars().count(), 25);
+    let marks = all.chars().filter(|c| matches!(c, 'N' | 'O' | '@')).count();
+    assert!(marks == 1 || marks == 2, "{all}");
+    assert!(
+        all.chars()
+            .all(|c| c.is_ascii_digit() || "xNO@?".contains(c)),
+        "{all}"
+    );
+    for v in 0..2 {
+        let c = view::fig3_chart(&o, v).unwrap_or_else(|| panic!("no chart {v}"));
+        assert_eq!(c.series.len(), 3);
+        for s in &c.series {
+            assert_eq!(s.points.len(), 5, "{}", s.name);
+            let mid = s
+                .points
+                .iter()
+                .find(|p| (p.0 - 1.0).abs() < 1e-12)
+                .map(|p| p.1);
+            assert!(
+                mid.is_some_and(|m| (m - 1.0).abs() < 1e-9),
+                "{}: {mid:?}",
+                s.name
+            );
+        }
+    }
+}
