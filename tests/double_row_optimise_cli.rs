@@ -1,6 +1,6 @@
 //! `rollbench optimise` through the real binary (issue 27 Model 5): the contract fields in
 //! JSON on the shipped deck (a 3 × 3 grid to keep it short), the text and CSV forms, a deck
-//! of another system refused by name, a bad `--grid` refused naming it.
+//! of another system refused by name, a bad `--grid` refused naming it, an infeasible grid.
 
 mod common;
 
@@ -52,6 +52,14 @@ fn optimise_text_csv_and_refusals() {
     let (code, _, err) = run(&["optimise", &deck("aerospace.toml")]);
     assert_eq!(code, 1);
     assert!(err.contains("double-row spherical roller decks"), "{err}");
+    // An even grid misses the nominal point; on the shipped deck nothing else is feasible:
+    // a failed optimisation (exit 2) with the nominal's margins.
+    let (code, _, err) = run(&["optimise", &d, "--grid", "2"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("no point of the 4-point grid") && err.contains("p_max margin"),
+        "{err}"
+    );
     let (code, _, err) = run(&["optimise", &d, "--grid", "1"]);
     assert_eq!(code, 64);
     assert!(err.contains("--grid 1"), "{err}");
