@@ -94,6 +94,26 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// Friction torques M_fi, M_fo, M against F/C (C: ISO 281's C_r) of a double-row
+    /// spherical roller deck, each point a full solve (seed 002 Fig. 2). Combined load keeps
+    /// the deck's F_a/F_r (F_a = 0.25·F_r if the deck lacks either) at F = √(F_r² + F_a²).
+    Losses {
+        /// Deck file (TOML), `type = "double-row-spherical-roller"`.
+        deck: PathBuf,
+        /// Load direction.
+        #[arg(long, value_enum, default_value_t = LossDirection::Radial)]
+        direction: LossDirection,
+        /// F/C values A:B:STEP (at most 200 points).
+        #[arg(
+            long = "f-over-c",
+            value_name = "A:B:STEP",
+            default_value = "0.02:0.2:0.02"
+        )]
+        f_over_c: String,
+        /// Table format (json: SI).
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
     /// Solve a deck at every value of one key (no transient): one row of key outputs per point.
     Sweep {
         /// Deck file (TOML).
@@ -128,6 +148,66 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
     },
+}
+
+/// Load direction of `rollbench losses`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LossDirection {
+    Radial,
+    Axial,
+    Combined,
+}
+
+/// `rollbench losses`: M_fi, M_fo and M against F/C of a double-row spherical roller deck
+/// (seed 002 Fig. 2), each point a full solve with its loss breakdown; progress on
+/// standard error. Returns the table, or (exit code, message).
+pub fn losses_command(
+    case: &dyn crate::bearings::Case,
+    direction: LossDirection,
+    f_over_c: &str,
+    format: Format,
+) -> Result<String, (u8, String)> {
+    use crate::bearings::double_row_spherical::load_sweep::{
+        dynamic_rating_n, parse_range, render, torque_point, Direction,
+    };
+    use crate::bearings::double_row_spherical::system::DoubleRowCase;
+    let Some(dr) = case.as_any().downcast_ref::<DoubleRowCase>() else {
+        return Err((
+            exit::INVALID_INPUT,
+            format!(
+                "losses: the {} has no loss breakdown (only double-row-spherical-roller decks have one)",
+                case.system().title()
+            ),
+        ));
+    };
+    let values = parse_range(f_over_c).map_err(|e| (exit::USAGE, e))?;
+    let input = &dr.form.value;
+    let Some(c) = dynamic_rating_n(input) else {
+        return Err((
+            exit::INVALID_INPUT,
+            "losses: ISO 281's f_c table does not cover this geometry (γ = D_W·cos α/d_m outside 0.01–0.30), so C is not defined".to_string(),
+        ));
+    };
+    let dir = match direction {
+        LossDirection::Radial => Direction::Radial,
+        LossDirection::Axial => Direction::Axial,
+        LossDirection::Combined => Direction::Combined,
+    };
+    let mut points = Vec::with_capacity(values.len());
+    for (k, x) in values.iter().enumerate() {
+        eprintln!("losses: point {}/{} F/C = {x:.4}", k + 1, values.len());
+        points.push(
+            torque_point(input, &dr.form.name, dir, *x, c, None)
+                .map_err(|e| (exit::SOLVE_FAILED, format!("solve failed: {e}")))?,
+        );
+    }
+    Ok(render(
+        &points,
+        dir,
+        c,
+        matches!(format, Format::Json),
+        matches!(format, Format::Csv),
+    ))
 }
 
 /// Formats of the validate and bench tables.

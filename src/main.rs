@@ -356,6 +356,30 @@ fn main() -> ExitCode {
                 ExitCode::from(exit::USAGE)
             }
         },
+        Some(Command::Losses {
+            deck,
+            direction,
+            f_over_c,
+            format,
+        }) => {
+            let case = match load_case(&deck, &cli.set) {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            };
+            match rollbench::cli::losses_command(case.as_ref(), direction, &f_over_c, format) {
+                Ok(text) => {
+                    print!("{text}");
+                    ExitCode::SUCCESS
+                }
+                Err((code, e)) => {
+                    eprintln!("{e}");
+                    ExitCode::from(code)
+                }
+            }
+        }
         Some(Command::Sweep {
             deck,
             set_range,

@@ -63,6 +63,61 @@ fn bad_pitch_is_refused() {
     );
 }
 
+/// The optimiser's k_CE in a deck: R_CE changed alone by 0.2 % (the seed's Fig. 3 step)
+/// breaks d_m = 2(R_CE − D_W/2)·cos α⁰ by 0.22 %, beyond the check's 1e-4, and is refused
+/// naming the checked key and the three keys it is derived from (the optimiser varies R_CE
+/// in the input instead: see `DrGeometry::outer_sphere_radius_m`).
+#[test]
+fn outer_sphere_radius_alone_is_refused() {
+    let (code, _, err) = run(&[
+        "check",
+        &deck("srb_22308.toml"),
+        "--set",
+        "geometry.outer_sphere_radius=0.03955",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    for key in [
+        "geometry.pitch_diameter",
+        "geometry.outer_sphere_radius",
+        "geometry.roller_diameter",
+        "geometry.contact_angle",
+    ] {
+        assert!(err.contains(key), "{key}: {err}");
+    }
+}
+
+/// The floating guide ring's offset is in the JSON beside the row forces; under pure axial
+/// load its net axial force is zero to the ring tolerance (1e-9 of F_a).
+#[test]
+fn guide_ring_axial_offset_in_json() {
+    let (code, out, err) = run(&[
+        "run",
+        &deck("srb_22308.toml"),
+        "--set",
+        "operating.radial_load=0",
+        "--set",
+        "operating.axial_load=5000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}"));
+    let g = &v["guide_ring"];
+    for k in [
+        "axial_offset_m",
+        "force_row1_n",
+        "force_row2_n",
+        "net_axial_force_n",
+    ] {
+        assert!(g[k].is_f64(), "{k}: {g}");
+    }
+    assert!(g["axial_offset_m"].as_f64().unwrap_or(0.0) < 0.0, "{g}");
+    assert!(
+        g["net_axial_force_n"].as_f64().unwrap_or(1.0).abs() <= 5e-6,
+        "{g}"
+    );
+}
+
 /// `run --format json`: both rows' rollers with `row` and `guide_ring_load_n`, the rings,
 /// the guide ring and the life; the text report names both rows; `stiffness` prints the
 /// 2×2.

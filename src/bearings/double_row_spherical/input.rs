@@ -29,6 +29,20 @@ pub struct DrGeometry {
     /// R_Ci, inner raceway crown radius, m.
     pub inner_raceway_radius_m: f64,
     /// R_CE, outer sphere radius (centred on the axis at the bearing's centre), m.
+    ///
+    /// Each row's outer raceway is the spherical roller's outer crown: radius R_CE, centred
+    /// R_CE − D_W/2 from the roller centre along the free contact line. The deck check
+    /// d_m = 2(R_CE − D_W/2)·cos α⁰ puts both rows' centres at one point on the axis (one
+    /// sphere, the self-aligning outer ring), so a deck with R_CE changed alone is refused.
+    /// The optimiser's k_CE (issue 27 §5) varies R_CE in the input directly ([`super::
+    /// statics::analyse`] does not re-run the deck check) keeping d_m, α⁰ and D_W: the
+    /// raceway osculation the seed's Fig. 3 varies; each row's crown centre then lies
+    /// ΔR_CE beyond the bearing centre along its contact line (±0.2 mm at ±0.5 %, a
+    /// negligible departure from one sphere), and the loads move smoothly (tested by
+    /// `radius_perturbations_are_smooth`). Keeping one exact sphere instead means
+    /// re-deriving α⁰ from cos α⁰ = d_m/(2(R_CE − D_W/2)) (≈ 1.5° at +0.5 %, which would
+    /// swamp the osculation effect) or d_m (moving the inner ring); a deck written from a
+    /// varied input must carry one of those or the check refuses it.
     pub outer_sphere_radius_m: f64,
     /// d_m, pitch diameter, m.
     pub pitch_diameter_m: f64,

@@ -8,6 +8,7 @@
 
 pub mod deck;
 pub mod input;
+pub mod load_sweep;
 pub mod losses;
 pub mod optimise;
 pub mod report;
@@ -22,5 +23,7 @@ pub const SYSTEM_ID: &str = "double-row-spherical-roller";
 
 pub use system::SYSTEM;
 
+#[cfg(test)]
+mod losses_tests;
 #[cfg(test)]
 mod tests;

@@ -5,6 +5,8 @@
 
 use serde_json::{json, Value};
 
+use super::input::CageSpeedSource;
+use super::losses::LossBreakdown;
 use super::statics::DoubleRowAnalysis;
 use super::SYSTEM_ID;
 use crate::bearings::spherical_roller::report::{json as sr_json, text as sr_text};
@@ -76,6 +78,7 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
             "force_row1_n": a.guide.force_row1_n,
             "force_row2_n": a.guide.force_row2_n,
             "net_axial_force_n": a.guide.net_axial_n,
+            "axial_offset_m": a.guide.axial_offset_m,
             "nominal_gap_m": a.input.guide_gap_m(),
         },
         "roller_properties": {
@@ -149,7 +152,7 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         s.push('\n');
     }
     s.push_str(&format!(
-        "Cage speed ({}) {:.1} rpm; guide ring: row 1 {:.3} {u}, row 2 {:.3} {u}, net axial {:.3} {u}\n",
+        "Cage speed ({}) {:.1} rpm; guide ring: row 1 {:.3} {u}, row 2 {:.3} {u}, net axial {:.3} {u}, axial offset {:.4} {l}\n",
         match a.input.cage.speed {
             super::input::CageSpeedSource::Measured => "measured",
             super::input::CageSpeedSource::Computed => "computed",
@@ -158,7 +161,9 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         f.from_si(a.guide.force_row1_n, units),
         f.from_si(a.guide.force_row2_n, units),
         f.from_si(a.guide.net_axial_n, units),
-        u = f.unit(units)
+        Quantity::Length.from_si(a.guide.axial_offset_m, units),
+        u = f.unit(units),
+        l = Quantity::Length.unit(units)
     ));
     match (a.l10_mrev, a.l10_h) {
         (Some(m), Some(h)) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev, {h:.4e} h\n")),
@@ -170,7 +175,107 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
             "\n==================== Row {} ====================\n",
             i + 1
         ));
-        s.push_str(&sr_text::to_string(row, units));
+        let row_text = sr_text::to_string(row, units);
+        match (a.input.cage.speed, row_text.find("\nLoads:")) {
+            // The single-row report's speeds line says which speeds its own solver would
+            // have used; here the centrifugal forces and gyroscopic moments came from the
+            // measured cage speed, so say so right under it rather than let it mislead.
+            (CageSpeedSource::Measured, Some(k)) => {
+                s.push_str(&row_text[..k]);
+                s.push_str(&format!(
+                    "\nDynamic loads from the measured cage speed {:.1} rpm (cage.measured_speed); the §7 cage speed above is what the kinematics alone gives, and the film uses it",
+                    a.input.cage.measured_speed_rad_s * 30.0 / std::f64::consts::PI
+                ));
+                s.push_str(&row_text[k..]);
+            }
+            _ => s.push_str(&row_text),
+        }
     }
     s
+}
+
+/// rad/s to rpm.
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+/// The loss breakdown into the JSON report `v` (issue 27 "Outputs"): `losses` {…},
+/// `guide_ring.speed_rpm` (the ring's torque balance; absent without a guide ring) and,
+/// per roller (both rows, in the report's order), `guide_ring_load_n`, `pocket_force_n`
+/// (the roller's force on its pocket along +θ, N) and `skew_moment_nm`.
+pub fn add_losses(v: &mut Value, l: &LossBreakdown) {
+    let Some(m) = v.as_object_mut() else {
+        return;
+    };
+    m.insert(
+        "losses".into(),
+        serde_json::to_value(l.losses).unwrap_or(Value::Null),
+    );
+    if let (Some(g), Some(gr)) = (
+        m.get_mut("guide_ring").and_then(Value::as_object_mut),
+        l.guide_ring.as_ref(),
+    ) {
+        g.insert("speed_rpm".into(), json!(gr.speed_rad_s * RPM_PER_RAD_S));
+    }
+    if let Some(rs) = m.get_mut("rollers").and_then(Value::as_array_mut) {
+        for (r, rl) in rs.iter_mut().zip(&l.rollers) {
+            if let Some(o) = r.as_object_mut() {
+                o.insert("guide_ring_load_n".into(), json!(rl.guide_ring_load_n));
+                o.insert("pocket_force_n".into(), json!(rl.pocket_force_n));
+                o.insert("skew_moment_nm".into(), json!(rl.skew_moment_nm));
+            }
+        }
+    }
+}
+
+/// The LOSSES table in `units`: each mechanism in W and % of the total, M_fi, M_fo, M and
+/// the cage's torque imbalance, and the guide ring's speed.
+pub fn loss_lines(l: &LossBreakdown, units: Units) -> Vec<String> {
+    let x = &l.losses;
+    let s = &x.shares_pct;
+    let t = Quantity::Moment;
+    let tu = t.unit(units);
+    let mut v = vec![
+        "LOSSES".to_string(),
+        format!("  {:<24} {:>12} {:>8}", "mechanism", "W", "%"),
+    ];
+    for (name, w, p) in [
+        ("raceways, inner", x.raceway_inner_w, s.raceway_inner),
+        ("raceways, outer", x.raceway_outer_w, s.raceway_outer),
+        ("guide ring", x.guide_ring_w, s.guide_ring),
+        ("cage pockets", x.cage_pockets_w, s.cage_pockets),
+        ("cage land", x.cage_land_w, s.cage_land),
+        ("skew", x.skew_w, s.skew),
+        ("drag (off)", x.drag_w, s.drag),
+    ] {
+        v.push(format!("  {name:<24} {w:>12.4} {p:>8.2}"));
+    }
+    let all = if x.total_w != 0.0 { 100.0 } else { 0.0 };
+    v.push(format!("  {:<24} {:>12.4} {all:>8.2}", "total", x.total_w));
+    v.push(format!(
+        "  M_fi = {:.5} {tu}  M_fo = {:.5} {tu}  M = {:.5} {tu}  cage imbalance = {:.5} {tu}",
+        t.from_si(x.friction_torque_inner_nm, units),
+        t.from_si(x.friction_torque_outer_nm, units),
+        t.from_si(x.friction_torque_nm, units),
+        t.from_si(x.cage_torque_imbalance_nm, units),
+    ));
+    if let Some(g) = &l.guide_ring {
+        v.push(format!(
+            "  guide ring speed {:.1} rpm (its torque balance)",
+            g.speed_rad_s * RPM_PER_RAD_S
+        ));
+    }
+    v
+}
+
+/// The text report with the LOSSES table after the bearing's lines, before the rows.
+pub fn text_with_losses(a: &DoubleRowAnalysis, l: &LossBreakdown, units: Units) -> String {
+    let base = text(a, units);
+    let mut table = String::from("\n");
+    for line in loss_lines(l, units) {
+        table.push_str(&line);
+        table.push('\n');
+    }
+    match base.find("\n====================") {
+        Some(i) => format!("{}{}{}", &base[..i], table, &base[i..]),
+        None => base + &table,
+    }
 }

@@ -33,14 +33,20 @@ use crate::bearings::spherical_roller::{stages, Bearing};
 use crate::bearings::SolveError;
 use crate::physics::kinematics::InternalSpeeds;
 
-/// Forces on the guide ring from each row's roller ends, N.
+/// Forces on the guide ring from each row's roller ends, N, and its axial float.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GuideRingForces {
     /// Σ over row 1's rollers of the end force magnitudes.
     pub force_row1_n: f64,
     pub force_row2_n: f64,
-    /// Net axial force of both rows on the guide ring, N (bearing frame, + toward row 1).
+    /// Net axial force of both rows on the guide ring, N (bearing frame, + toward row 1):
+    /// zero to the solver's tolerance, the floating guide ring's balance.
     pub net_axial_n: f64,
+    /// The guide ring's axial offset on the inner ring, m (bearing frame, + toward row 1,
+    /// 0 = centred between the rows): where its balance puts it, or, touching neither row,
+    /// the centred place clamped to its free travel
+    /// (`spherical_roller::load_distribution::float`).
+    pub axial_offset_m: f64,
 }
 
 /// The solved double-row bearing.
@@ -209,6 +215,7 @@ pub fn analyse(
         force_row1_n: f1,
         force_row2_n: f2,
         net_axial_n: (f2 - f1) * ca,
+        axial_offset_m: combined.guide_offset_m,
     };
     let stiffness = combined
         .warm

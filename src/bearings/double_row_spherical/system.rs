@@ -3,6 +3,7 @@
 
 use super::deck::SCHEMA;
 use super::input::DoubleRowInput;
+use super::losses::{losses, LossBreakdown};
 use super::statics::{analyse, DoubleRowAnalysis};
 use crate::bearings::view::{PaneKind, PaneSpec, View};
 use crate::bearings::{FormSystem, RunOptions, Solution, SystemCase};
@@ -48,7 +49,7 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 4] = [
+        const PANES: [PaneSpec; 5] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -64,6 +65,10 @@ impl FormSystem for DoubleRowSpherical {
             PaneSpec {
                 kind: PaneKind::Text(0),
                 title: "Stiffness",
+            },
+            PaneSpec {
+                kind: PaneKind::Text(1),
+                title: "Losses",
             },
         ];
         &PANES
@@ -85,23 +90,29 @@ impl FormSystem for DoubleRowSpherical {
     ) -> Result<Box<dyn Solution>, String> {
         let a = analyse(&case.form.value, &case.form.name, cancel.flag())
             .map_err(|e| restate_si(&e.to_string(), case.form.units))?;
-        Ok(Box::new(DoubleRowSolution(a)))
+        // The loss stage is part of the solve: a failure is the solve's error, never a
+        // silent zero.
+        let l =
+            losses(&a).map_err(|e| restate_si(&format!("loss breakdown: {e}"), case.form.units))?;
+        Ok(Box::new(DoubleRowSolution(a, l)))
     }
 }
 
-/// A solved double-row bearing.
-pub struct DoubleRowSolution(pub DoubleRowAnalysis);
+/// A solved double-row bearing: the statics and its loss breakdown.
+pub struct DoubleRowSolution(pub DoubleRowAnalysis, pub LossBreakdown);
 
 impl Solution for DoubleRowSolution {
     fn view(&self) -> View {
-        super::view::view(&self.0)
+        super::view::view_with_losses(&self.0, &self.1)
     }
 
     fn json(&self) -> serde_json::Value {
-        super::report::json(&self.0)
+        let mut v = super::report::json(&self.0);
+        super::report::add_losses(&mut v, &self.1);
+        v
     }
 
     fn text(&self, units: Units) -> String {
-        super::report::text(&self.0, units)
+        super::report::text_with_losses(&self.0, &self.1, units)
     }
 }

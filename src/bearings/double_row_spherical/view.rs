@@ -2,6 +2,7 @@
 //! guide-ring columns), the roller loads against azimuth per row, summary lines, key
 //! outputs and the stiffness block.
 
+use super::losses::LossBreakdown;
 use super::report::{stiffness_lines, stiffness_xz};
 use super::statics::DoubleRowAnalysis;
 use crate::bearings::view::{
@@ -306,4 +307,65 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             us: stiffness_lines(a, Units::Us),
         }],
     }
+}
+
+/// The Losses pane's lines in `units`: one bar per mechanism (length ∝ its share of the
+/// total, 20 cells for the largest), its W and %, then M_fi, M_fo, M and the cage's torque
+/// imbalance, and the guide ring's speed.
+pub fn loss_bars(l: &LossBreakdown, units: Units) -> Vec<String> {
+    let x = &l.losses;
+    let s = &x.shares_pct;
+    let rows = [
+        ("raceway in", x.raceway_inner_w, s.raceway_inner),
+        ("raceway out", x.raceway_outer_w, s.raceway_outer),
+        ("guide ring", x.guide_ring_w, s.guide_ring),
+        ("pockets", x.cage_pockets_w, s.cage_pockets),
+        ("cage land", x.cage_land_w, s.cage_land),
+        ("skew", x.skew_w, s.skew),
+        ("drag (off)", x.drag_w, s.drag),
+    ];
+    let top = rows.iter().map(|r| r.2.abs()).fold(0.0, f64::max);
+    let mut v = vec![format!("Loss by mechanism, total {:.3} W", x.total_w)];
+    for (name, w, p) in rows {
+        let n = if top > 0.0 {
+            (20.0 * p.abs() / top).round() as usize
+        } else {
+            0
+        };
+        v.push(format!(
+            "{name:<11} {w:>9.3} W {p:>6.2} % {}",
+            "█".repeat(n.min(20))
+        ));
+    }
+    let t = Quantity::Moment;
+    let u = t.unit(units);
+    v.push(String::new());
+    v.push(format!(
+        "M_fi {:.4} {u}   M_fo {:.4} {u}   M {:.4} {u}",
+        t.from_si(x.friction_torque_inner_nm, units),
+        t.from_si(x.friction_torque_outer_nm, units),
+        t.from_si(x.friction_torque_nm, units)
+    ));
+    v.push(format!(
+        "cage imbalance {:.4} {u}",
+        t.from_si(x.cage_torque_imbalance_nm, units)
+    ));
+    if let Some(g) = &l.guide_ring {
+        v.push(format!(
+            "guide ring {:.1} rpm",
+            g.speed_rad_s * 30.0 / std::f64::consts::PI
+        ));
+    }
+    v
+}
+
+/// [`view`] with the Losses pane's text block (`texts[1]`).
+pub fn view_with_losses(a: &DoubleRowAnalysis, l: &LossBreakdown) -> View {
+    let mut v = view(a);
+    v.texts.push(TextBlock {
+        title: "losses",
+        si: loss_bars(l, Units::Si),
+        us: loss_bars(l, Units::Us),
+    });
+    v
 }

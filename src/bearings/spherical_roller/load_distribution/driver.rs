@@ -43,6 +43,7 @@ impl Problem {
         };
         let mut system = RollerSystem {
             p: self,
+            sign: self.signs[index],
             cphi,
             u,
             trace,
@@ -483,6 +484,8 @@ pub(super) struct RingState {
 /// the energy as the line search's merit.
 struct RollerSystem<'a> {
     p: &'a Problem,
+    /// The row's frame sign (+1 row 1, −1 the mirrored row 2).
+    sign: f64,
     cphi: f64,
     u: [f64; 2],
     /// The stepper's record of this roller's iterations and the ring iteration they belong to.
@@ -496,7 +499,7 @@ impl NewtonSystem<3> for RollerSystem<'_> {
     /// next iterate's evaluation: one contact sweep per Newton iteration, not two.
     #[inline]
     fn evaluate(&mut self, q: &Vector3<f64>) -> RollerEval {
-        self.p.eval(self.cphi, self.u, q, true)
+        self.p.eval_row(self.sign, self.cphi, self.u, q, true)
     }
 
     #[inline]

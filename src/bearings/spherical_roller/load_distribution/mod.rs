@@ -31,6 +31,7 @@
 
 mod diagnostics;
 mod driver;
+mod float;
 mod problem;
 #[cfg(test)]
 mod tests;
@@ -97,10 +98,12 @@ pub fn gyroscopic_moment(mass: &RollerMass, speeds: &DynamicSpeeds, beta: f64) -
 
 /// The guide ring of a double-row bearing as one unilateral contact per roller: the roller's
 /// inner end (a sphere of radius r_e centred on the roller axis) against a flat face of the
-/// guide ring normal to the row's nominal roller axis. The guide ring sits on the inner ring
-/// between the rows and moves with it (its own axial float is not modelled). Hertz sphere on
-/// plane: F = K·δ^(3/2), K = (4/3)·E*·√r_e (Johnson, Contact Mechanics, eq. 4.22–4.23),
-/// δ = −gap, zero force at a positive gap.
+/// guide ring normal to the row's nominal roller axis. The guide ring sits on the inner ring's
+/// land between the rows: radially it moves with the inner ring, axially it floats (a body of
+/// its own, free to slide on the land), so it carries no axial load into the inner ring; its
+/// axial offset on the ring is the unknown of [`LoadDistribution::guide_offset_m`]. Hertz
+/// sphere on plane: F = K·δ^(3/2), K = (4/3)·E*·√r_e (Johnson, Contact Mechanics,
+/// eq. 4.22–4.23), δ = −gap, zero force at a positive gap.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GuideContact {
     /// Nominal gap along the roller axis between the roller end and the guide ring face
@@ -154,6 +157,8 @@ pub struct SolveOptions {
 pub struct WarmStart {
     pub ring: [f64; 2],
     pub rollers: Vec<[f64; 3]>,
+    /// The floating guide ring's axial offset, m (0 without a guide ring).
+    pub guide_offset_m: f64,
     /// How that solution responds to the inertial loads (absent for hand-made warm starts).
     pub inertial: Option<InertialSensitivity>,
 }
@@ -320,6 +325,11 @@ pub struct LoadDistribution {
     pub axial_deflection_m: f64,
     pub radial_deflection_m: f64,
     pub speeds: DynamicSpeeds,
+    /// The floating guide ring's axial offset s on the inner ring, m, bearing frame (+ toward
+    /// row 1; 0 = centred between the rows; 0 without a guide ring). Not in the single-row
+    /// bearing's JSON.
+    #[serde(skip)]
+    pub guide_offset_m: f64,
     pub roller_mass: RollerMass,
     pub rollers: Vec<RollerResult>,
     /// `mirror[j] = Some(i)` (i < j) when roller j's state is identical to roller i's: the
@@ -352,51 +362,19 @@ pub fn solve(
     let (mut u, mut qs) = p.start(b, options);
     let mut trace = options.trace_roller.map(|r| (p.unique_of(r), Vec::new()));
     let mut stats = SolveStats::default();
-    let (termination, state) = p.solve_ring(b, &mut u, &mut qs, &mut stats, &mut trace, cancel)?;
-    let not_converged = |iterations, residual_n| {
-        unrestrained(b, u).unwrap_or(SolveError::NotConverged {
-            iterations,
-            residual_n,
-            tolerance_n: p.tol,
-        })
+    let state = if p.guide.is_some() {
+        // The floating guide ring: the ring equilibrium at the guide ring's offset, with
+        // the offset balanced around it (starting from the warm start's).
+        p.guide_offset.set(
+            options
+                .warm_start
+                .as_ref()
+                .map_or(0.0, |w| w.guide_offset_m),
+        );
+        p.float_guide(b, &mut u, &mut qs, &mut stats, &mut trace, cancel)?
+    } else {
+        p.ring_equilibrium(b, &mut u, &mut qs, &mut stats, &mut trace, cancel)?
     };
-    match termination {
-        Termination::Converged { .. } => {}
-        Termination::Cancelled { .. } => return Err(SolveError::Cancelled),
-        Termination::NonFinite { .. } => {
-            return Err(SolveError::NonFinite {
-                stage: "ring equilibrium",
-                what: "ring force residual".into(),
-            })
-        }
-        // No acceptable ring step: converged when the residual is within 10³ of the
-        // tolerance (round-off), else the rings have no equilibrium we can reach.
-        Termination::Stalled {
-            iterations,
-            residual,
-        } => {
-            if residual > 1e3 * p.tol {
-                return Err(not_converged(iterations, residual));
-            }
-        }
-        // Out of iterations: accepted within the tolerance. The test is `>`, as it always
-        // was: a NaN residual here would pass (it takes a last accepted ring state with a
-        // finite, decreased energy and a NaN force).
-        Termination::NotConverged {
-            iterations,
-            residual,
-            ..
-        } => {
-            if residual > p.tol {
-                return Err(not_converged(iterations, residual));
-            }
-        }
-        // The shifted Cholesky step always exists: not reached, and not converged if it were.
-        Termination::SingularJacobian { iteration } => {
-            let g = state.g;
-            return Err(not_converged(iteration + 1, g[0].abs().max(g[1].abs())));
-        }
-    }
     // A converged state with the rings more than D/2 apart is outside the model (the rings
     // have separated): report it rather than print nonsense geometry.
     if let Some(e) = unrestrained(b, u) {
@@ -427,6 +405,69 @@ pub fn solve(
     out.stats.wall_time_s = start.elapsed().as_secs_f64();
     out.trace = trace.map(|t| t.1).unwrap_or_default();
     Ok(out)
+}
+
+impl Problem {
+    /// The ring equilibrium (eq. 3.12–3.13) at the problem's current guide ring offset:
+    /// [`Problem::solve_ring`] with its ending read as converged or as a typed error.
+    fn ring_equilibrium(
+        &self,
+        b: &Bearing,
+        u: &mut [f64; 2],
+        qs: &mut Vec<nalgebra::Vector3<f64>>,
+        stats: &mut SolveStats,
+        trace: &mut Option<(usize, Vec<TraceStep>)>,
+        cancel: Option<&AtomicBool>,
+    ) -> Result<driver::RingState, SolveError> {
+        let (termination, state) = self.solve_ring(b, u, qs, stats, trace, cancel)?;
+        let u = *u;
+        let not_converged = |iterations, residual_n| {
+            unrestrained(b, u).unwrap_or(SolveError::NotConverged {
+                iterations,
+                residual_n,
+                tolerance_n: self.tol,
+            })
+        };
+        match termination {
+            Termination::Converged { .. } => {}
+            Termination::Cancelled { .. } => return Err(SolveError::Cancelled),
+            Termination::NonFinite { .. } => {
+                return Err(SolveError::NonFinite {
+                    stage: "ring equilibrium",
+                    what: "ring force residual".into(),
+                })
+            }
+            // No acceptable ring step: converged when the residual is within 10³ of the
+            // tolerance (round-off), else the rings have no equilibrium we can reach.
+            Termination::Stalled {
+                iterations,
+                residual,
+            } => {
+                if residual > 1e3 * self.tol {
+                    return Err(not_converged(iterations, residual));
+                }
+            }
+            // Out of iterations: accepted within the tolerance. The test is `>`, as it always
+            // was: a NaN residual here would pass (it takes a last accepted ring state with a
+            // finite, decreased energy and a NaN force).
+            Termination::NotConverged {
+                iterations,
+                residual,
+                ..
+            } => {
+                if residual > self.tol {
+                    return Err(not_converged(iterations, residual));
+                }
+            }
+            // The shifted Cholesky step always exists: not reached, and not converged if it
+            // were.
+            Termination::SingularJacobian { iteration } => {
+                let g = state.g;
+                return Err(not_converged(iteration + 1, g[0].abs().max(g[1].abs())));
+            }
+        }
+        Ok(state)
+    }
 }
 
 /// Test fixture: the aerospace bearing with no load, no speed and no clearance, solved —

@@ -37,6 +37,10 @@ pub(super) struct Problem {
     pub(super) per_row: (usize, usize),
     /// The guide ring contact, if any.
     pub(super) guide: Option<GuideContact>,
+    /// The guide ring's axial offset s from its centred place on the inner ring, m, bearing
+    /// frame (+ toward row 1): the floating guide ring's unknown, held fixed during one ring
+    /// solve and found by the outer balance of [`Problem::float_guide`].
+    pub(super) guide_offset: std::cell::Cell<f64>,
     pub(super) evals: std::cell::Cell<usize>,
     /// Roller tolerance of the current ring iteration (inexact Newton: loose while the ring
     /// residual is large, the full tolerance at the end).
@@ -244,6 +248,7 @@ impl Problem {
             signs,
             per_row,
             guide: layout.guide,
+            guide_offset: std::cell::Cell::new(0.0),
             evals: std::cell::Cell::new(0),
             roller_tol: std::cell::Cell::new(0.0),
             max_step: 0.1 * g.roller_diameter_m,
@@ -268,8 +273,23 @@ impl Problem {
     /// [`crate::physics::contact::lamina_law::ninth_root`]. Inlined into its callers in
     /// the driver (another codegen unit), where `hessian` is a constant.
     #[inline]
+    #[cfg(test)]
     pub(super) fn eval(
         &self,
+        cphi: f64,
+        u: [f64; 2],
+        q: &Vector3<f64>,
+        hessian: bool,
+    ) -> RollerEval {
+        self.eval_row(1.0, cphi, u, q, hessian)
+    }
+
+    /// [`Problem::eval`] for a roller of the row with frame sign `sign` (+1 row 1, −1 the
+    /// mirrored row 2), which only the guide ring's offset reads.
+    #[inline]
+    pub(super) fn eval_row(
+        &self,
+        sign: f64,
         cphi: f64,
         u: [f64; 2],
         q: &Vector3<f64>,
@@ -290,7 +310,7 @@ impl Problem {
         }
         let mut ev = acc.finish(hessian);
         self.add_inertia_and_cage(&mut ev, q, hessian);
-        self.add_guide(&mut ev, cphi, u, q, pitch, hessian);
+        self.add_guide(&mut ev, sign, cphi, u, q, pitch, hessian);
         ev
     }
 
@@ -309,14 +329,18 @@ impl Problem {
 
     /// The guide ring's gap g, its derivatives along (axial, radial, pitch) of the roller, the
     /// second derivative in pitch and the derivatives along the ring deflection (axial,
-    /// radial) at cos φ = `cphi`, u in the row's frame. g = g₀ + (q − s)·a − c·(cos α − 1)
-    /// with s = (u_a, u_r·cos φ) the inner ring's (and the guide ring's) shift at the roller,
-    /// a the roller axis and c = L/2 − r_e; the force F = K·(−g)^(3/2) acts on the roller along
-    /// +a (away from the bearing's centre plane, which lies on the roller's −a side).
+    /// radial) at cos φ = `cphi`, u in the row's frame (sign `sign`). g = g₀ + (q − s)·a −
+    /// c·(cos α − 1) with s = (u_a + sign·s_g, u_r·cos φ) the guide ring's shift at the
+    /// roller: the inner ring's, plus the guide ring's own axial offset s_g on it (radially
+    /// it sits on the inner ring's land), a the roller axis and c = L/2 − r_e; the force
+    /// F = K·(−g)^(3/2) acts on the roller along +a (away from the bearing's centre plane,
+    /// which lies on the roller's −a side). Within one ring solve s_g is fixed, so the ring
+    /// derivatives are the inner ring's.
     #[inline]
     pub(super) fn guide_gap(
         &self,
         guide: &GuideContact,
+        sign: f64,
         cphi: f64,
         u: [f64; 2],
         q: &Vector3<f64>,
@@ -324,7 +348,8 @@ impl Problem {
     ) -> (f64, Vector3<f64>, f64, Vector2<f64>) {
         let a = self.geom.axis;
         let c = guide.end_centre_offset_m;
-        let s = (q[0] - u[0]) * a[0] + (q[1] - u[1] * cphi) * a[1];
+        let ga = u[0] + sign * self.guide_offset.get();
+        let s = (q[0] - ga) * a[0] + (q[1] - u[1] * cphi) * a[1];
         let gap = guide.gap_m + s - c * pitch.cos_minus_one;
         let cos = 1.0 + pitch.cos_minus_one;
         (
@@ -336,12 +361,12 @@ impl Problem {
     }
 
     /// The guide ring's contact force on the roller, N (≥ 0), u in the row's frame.
-    pub(super) fn guide_force(&self, cphi: f64, u: [f64; 2], q: &Vector3<f64>) -> f64 {
+    pub(super) fn guide_force(&self, sign: f64, cphi: f64, u: [f64; 2], q: &Vector3<f64>) -> f64 {
         let Some(guide) = &self.guide else {
             return 0.0;
         };
         let pitch = crate::bearings::spherical_roller::geometry::Pitch::new(q[2]);
-        let (gap, ..) = self.guide_gap(guide, cphi, u, q, pitch);
+        let (gap, ..) = self.guide_gap(guide, sign, cphi, u, q, pitch);
         if gap >= 0.0 {
             0.0
         } else {
@@ -353,9 +378,11 @@ impl Problem {
     /// the roller's and the ring's unknowns (u in the row's frame). Nothing without a guide
     /// ring, so the single-row bearing's arithmetic is untouched.
     #[inline]
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn add_guide(
         &self,
         ev: &mut RollerEval,
+        sign: f64,
         cphi: f64,
         u: [f64; 2],
         q: &Vector3<f64>,
@@ -365,7 +392,7 @@ impl Problem {
         let Some(guide) = &self.guide else {
             return;
         };
-        let (gap, dq, d2, du) = self.guide_gap(guide, cphi, u, q, pitch);
+        let (gap, dq, d2, du) = self.guide_gap(guide, sign, cphi, u, q, pitch);
         if gap >= 0.0 {
             return;
         }
@@ -479,7 +506,7 @@ impl Problem {
             }
         }
         self.add_inertia_and_cage(&mut ev, q, hessian);
-        self.add_guide(&mut ev, cphi, u, q, pitch, hessian);
+        self.add_guide(&mut ev, 1.0, cphi, u, q, pitch, hessian);
         ev
     }
 
@@ -611,7 +638,8 @@ pub(super) fn assemble(
             .collect();
         let mut ev = acc.finish(false);
         p.add_inertia_and_cage(&mut ev, &q, false);
-        p.add_guide(&mut ev, cphi, u, &q, pitch, false);
+        let sign = p.signs[ku];
+        p.add_guide(&mut ev, sign, cphi, u, &q, pitch, false);
         residuals.roller_force_n = residuals
             .roller_force_n
             .max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
@@ -630,7 +658,7 @@ pub(super) fn assemble(
             cage_force_n: -p.k_cage * s,
             cage_moment_nm: -p.k_tilt * q[2],
             row: row + 1,
-            guide_force_n: p.guide_force(cphi, u, &q),
+            guide_force_n: p.guide_force(sign, cphi, u, &q),
             inner,
             outer,
             laminae,
@@ -641,6 +669,7 @@ pub(super) fn assemble(
         axial_deflection_m: u[0],
         radial_deflection_m: u[1],
         speeds: *speeds,
+        guide_offset_m: p.guide_offset.get(),
         roller_mass: roller_mass(&b.geometry, b.materials.roller.density_kg_m3),
         mirror: (0..rows * z)
             .map(|k| {
@@ -654,6 +683,7 @@ pub(super) fn assemble(
         warm: WarmStart {
             ring: u,
             rollers: qs.iter().map(|q| [q[0], q[1], q[2]]).collect(),
+            guide_offset_m: p.guide_offset.get(),
             inertial: None,
         },
         trace: Vec::new(),

@@ -146,6 +146,7 @@ fn cold_start_saves_work_and_changes_nothing() {
             warm_start: Some(WarmStart {
                 ring: [0.0; 2],
                 rollers: vec![[0.0; 3]; n],
+                guide_offset_m: 0.0,
                 inertial: None,
             }),
             ..SolveOptions::default()
