@@ -135,6 +135,19 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// Double-row spherical roller decks: the osculation optimiser (issue 27): the relative
+    /// radii of `[optimise]` (k_ci = R'_Ci/R_Ci, k_w = R'_W/R_W) that minimise the weighted
+    /// total friction loss over its load cases, on a grid then a Nelder–Mead polish.
+    Optimise {
+        /// Deck file (TOML).
+        deck: PathBuf,
+        /// Points per variable (2–201; default the deck's optimise.grid).
+        #[arg(long, value_name = "N")]
+        grid: Option<usize>,
+        /// Format: text, json (SI) or csv (the grid, SI).
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
 }
 
 /// Load direction of `rollbench losses`.
@@ -233,4 +246,56 @@ pub mod exit {
 pub enum UnitsArg {
     Si,
     Us,
+}
+
+/// `rollbench optimise`: the double-row case's optimiser with `grid` points per variable
+/// (`None`: the deck's), rendered in `format`. Errors carry the exit code: a deck of another
+/// system or a refused setting is invalid input, an optimisation without a result a failed
+/// solve.
+pub fn optimise(
+    case: &dyn crate::bearings::Case,
+    deck: &std::path::Path,
+    grid: Option<usize>,
+    format: Format,
+    cancel: crate::numerics::cancel::Cancel,
+) -> Result<String, (u8, String)> {
+    use crate::bearings::double_row_spherical::{
+        optimise as opt, system::DoubleRowCase, SYSTEM_ID,
+    };
+    let Some(c) = case.as_any().downcast_ref::<DoubleRowCase>() else {
+        return Err((
+            exit::INVALID_INPUT,
+            format!(
+                "{}: `optimise` is for double-row spherical roller decks (type = \"{SYSTEM_ID}\"); this deck is a {}",
+                deck.display(),
+                case.system().title()
+            ),
+        ));
+    };
+    let mut input = c.form.value.clone();
+    if let Some(n) = grid {
+        if !(2..=201).contains(&n) {
+            return Err((
+                exit::USAGE,
+                format!("--grid {n}: points per variable must be 2 to 201"),
+            ));
+        }
+        input.optimise.grid = n;
+    }
+    let o = opt::optimise_losses(&input, &c.form.name, cancel).map_err(|e| {
+        let code = match e {
+            opt::OptimiseError::Refused { .. } => exit::INVALID_INPUT,
+            _ => exit::SOLVE_FAILED,
+        };
+        (code, format!("optimise: {e}"))
+    })?;
+    Ok(match format {
+        Format::Text => opt::report::text(&o, case.units()),
+        Format::Json => {
+            let mut t = serde_json::to_string_pretty(&opt::report::json(&o)).unwrap_or_default();
+            t.push('\n');
+            t
+        }
+        Format::Csv => opt::report::csv(&o),
+    })
 }

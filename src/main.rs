@@ -270,6 +270,35 @@ fn main() -> ExitCode {
             };
             commit(&plan, &[text.as_bytes()])
         }
+        Some(Command::Optimise { deck, grid, format }) => {
+            let case = match load_case(&deck, &cli.set) {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            };
+            let bar = progress_bar();
+            let progress = |f: f64| bar.report(f);
+            let out = rollbench::cli::optimise(
+                case.as_ref(),
+                &deck,
+                grid,
+                format,
+                Cancel::NONE.with_progress(&progress),
+            );
+            bar.finish();
+            match out {
+                Ok(text) => {
+                    print!("{text}");
+                    ExitCode::SUCCESS
+                }
+                Err((code, message)) => {
+                    eprintln!("{message}");
+                    ExitCode::from(code)
+                }
+            }
+        }
         Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
             Ok(_) => {
                 println!("{}: ok", deck.display());

@@ -10,6 +10,7 @@ pub mod deck;
 pub mod input;
 pub mod load_sweep;
 pub mod losses;
+pub mod optimise;
 pub mod report;
 pub mod statics;
 pub mod system;
