@@ -19,6 +19,7 @@
 
 pub mod film;
 mod film_table;
+mod kernel;
 mod model;
 mod spectra;
 #[cfg(test)]
@@ -512,6 +513,8 @@ pub fn simulate(
         phase_sin_cos: (0..m)
             .map(|i| (model.first_azimuth_rad + TAU * i as f64 / m as f64).sin_cos())
             .collect(),
+        phase_sin: Vec::new(),
+        phase_cos: Vec::new(),
         force_n: model.force_n,
         damping_n_s_m: 0.0,
         energy_integral: film.is_none(),
@@ -521,6 +524,7 @@ pub fn simulate(
         fast_film: None,
     };
 
+    (rhs.phase_sin, rhs.phase_cos) = rhs.phase_sin_cos.iter().copied().unzip();
     // The film solve tabulated for loads up to 1 000× the applied force (beyond, and
     // wherever the table does not reach, the Newton solve).
     let load_hi = 1e3 * model.force_n[0].hypot(model.force_n[1]).max(LOAD_FLOOR_N);
@@ -752,6 +756,12 @@ impl Run<'_> {
                 match sol.termination {
                     Termination::Event { index, t: te } => {
                         stats.events += 1;
+                        // Restart with the step the controller proposed after the step
+                        // that straddled the crossing (accepted at this accuracy), not
+                        // the segment's mean nor a fresh search from a small h0.
+                        if sol.h_next > 0.0 && sol.h_next.is_finite() {
+                            h0 = Some(sol.h_next);
+                        }
                         // The side the gap crossed to: the other one than at the
                         // segment's start (as forced there, or as evaluated).
                         let was = events
@@ -847,13 +857,12 @@ fn assemble(
         series.y_m.push(y[1]);
         series.vx_m_s.push(y[2] * rhs.omega_ref);
         series.vy_m_s.push(y[3] * rhs.omega_ref);
-        for i in 0..m {
-            let c = rhs.roller(i, *t, y);
+        rhs.rollers(*t, y, |i, c| {
             min_load = min_load.min(c.load_n);
             series.roller_load_n[i].push(c.load_n);
             series.film_m[i].push(c.film_m);
             series.squeeze_velocity_m_s[i].push(if c.load_n > 0.0 { c.squeeze_m_s } else { 0.0 });
-        }
+        });
         if let Some(e0) = a.e0 {
             drift = drift.max((rhs.energy(*t, y) - e0 - y[4] * rhs.energy_ref).abs());
         }

@@ -339,6 +339,8 @@ fn truck_rhs(interference_m: f64) -> model::Rhs {
         phase_sin_cos: (0..m)
             .map(|i| (TAU * i as f64 / m as f64).sin_cos())
             .collect(),
+        phase_sin: (0..m).map(|i| (TAU * i as f64 / m as f64).sin()).collect(),
+        phase_cos: (0..m).map(|i| (TAU * i as f64 / m as f64).cos()).collect(),
         force_n: [-(1500.0 + 50.0 * 9.81), 0.0],
         damping_n_s_m: 0.0,
         energy_integral: true,
