@@ -147,6 +147,24 @@ impl SpectrumPlan {
     /// The amplitude spectrum of `samples` (exactly [`SpectrumPlan::len`] of them)
     /// sampled every `dt_s` seconds.
     pub fn amplitude(&mut self, samples: &[f64], dt_s: f64) -> Result<Spectrum, SpectrumError> {
+        let mut out = Spectrum {
+            frequency_hz: Vec::new(),
+            amplitude: Vec::new(),
+            resolution_hz: 0.0,
+        };
+        self.amplitude_into(samples, dt_s, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`SpectrumPlan::amplitude`] into `out`, reusing its storage (no allocation once
+    /// `out` has held a spectrum of this length): the window, the transform and the
+    /// magnitudes, nothing planned or allocated per call.
+    pub fn amplitude_into(
+        &mut self,
+        samples: &[f64],
+        dt_s: f64,
+        out: &mut Spectrum,
+    ) -> Result<(), SpectrumError> {
         let n = self.window.len();
         check(samples, dt_s, n)?;
         if samples.len() != n {
@@ -168,34 +186,71 @@ impl SpectrumPlan {
                 needed: n,
             })?;
         // One-sided amplitude of a windowed sine: 2|X_k|/Σw = 4|X_k|/N (Σw = N/2).
+        // |X_k| as √(re² + im²) (a few ns a bin; `hypot` costs several times that and
+        // was most of a 2^16 spectrum's time), `hypot` only where the squares overflow.
         let scale = 4.0 / n as f64;
         let resolution_hz = 1.0 / (n as f64 * dt_s);
-        let mut amplitude: Vec<f64> = self.output.iter().map(|c| c.norm() * scale).collect();
-        if let Some(a0) = amplitude.first_mut() {
+        let bins = self.output.len();
+        out.amplitude.clear();
+        out.amplitude.extend(self.output.iter().map(|c| {
+            let sq = c.re * c.re + c.im * c.im;
+            let norm = if sq.is_finite() {
+                sq.sqrt()
+            } else {
+                c.re.hypot(c.im)
+            };
+            norm * scale
+        }));
+        if let Some(a0) = out.amplitude.first_mut() {
             *a0 = mean.abs();
         }
         // The Nyquist bin of an even record is real and not doubled.
         if n.is_multiple_of(2) {
-            if let Some(last) = amplitude.last_mut() {
+            if let Some(last) = out.amplitude.last_mut() {
                 *last *= 0.5;
             }
         }
-        let frequency_hz = (0..amplitude.len())
-            .map(|k| k as f64 * resolution_hz)
-            .collect();
-        Ok(Spectrum {
-            frequency_hz,
-            amplitude,
-            resolution_hz,
-        })
+        if out.resolution_hz != resolution_hz || out.frequency_hz.len() != bins {
+            out.frequency_hz.clear();
+            out.frequency_hz
+                .extend((0..bins).map(|k| k as f64 * resolution_hz));
+        }
+        out.resolution_hz = resolution_hz;
+        Ok(())
     }
 }
 
+/// Plans kept per thread by [`amplitude_spectrum`] (the dynamics takes two spectra of
+/// one length per run, the workbench re-runs it on every edit).
+const CACHED_PLANS: usize = 4;
+
+thread_local! {
+    /// The last few plans by length, most recent last.
+    static PLANS: std::cell::RefCell<Vec<SpectrumPlan>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// The Hann-windowed one-sided amplitude spectrum of `samples` taken every `dt_s`
-/// seconds (plans a transform for this one call; see [`SpectrumPlan`] to reuse one).
+/// seconds. The plan (transform, window, scratch) of each length is made once per
+/// thread and kept (the last few lengths); see [`SpectrumPlan`] to hold one yourself.
 pub fn amplitude_spectrum(samples: &[f64], dt_s: f64) -> Result<Spectrum, SpectrumError> {
     check(samples, dt_s, MIN_SAMPLES)?;
-    SpectrumPlan::new(samples.len())?.amplitude(samples, dt_s)
+    let n = samples.len();
+    PLANS.with(|cell| {
+        // Not re-entrant, so never borrowed here; should it be, plan afresh.
+        let Ok(mut plans) = cell.try_borrow_mut() else {
+            return SpectrumPlan::new(n)?.amplitude(samples, dt_s);
+        };
+        let mut plan = match plans.iter().position(|p| p.len() == n) {
+            Some(i) => plans.remove(i),
+            None => SpectrumPlan::new(n)?,
+        };
+        let result = plan.amplitude(samples, dt_s);
+        if plans.len() >= CACHED_PLANS {
+            plans.remove(0);
+        }
+        plans.push(plan);
+        result
+    })
 }
 
 /// `sin(πd)/(πd)`, 1 at d = 0.
@@ -267,11 +322,18 @@ pub fn amplitude_at(samples: &[f64], dt_s: f64, frequency_hz: f64) -> Result<f64
     let window = &samples[..n];
     let mean = window.iter().sum::<f64>() / n as f64;
     let w = std::f64::consts::TAU * frequency_hz * dt_s;
+    // cos/sin of w·k: exact at the start of every block of `BLOCK` samples, rotated by
+    // w within it (≤ BLOCK roundings, ~1e-14, instead of a `sin_cos` per sample).
+    const BLOCK: usize = 32;
+    let (sw, cw) = w.sin_cos();
     let (mut a, mut b) = (0.0, 0.0);
-    for (k, &x) in window.iter().enumerate() {
-        let (s, c) = (w * k as f64).sin_cos();
-        a += (x - mean) * c;
-        b += (x - mean) * s;
+    for (block, xs) in window.chunks(BLOCK).enumerate() {
+        let (mut s, mut c) = (w * (block * BLOCK) as f64).sin_cos();
+        for &x in xs {
+            a += (x - mean) * c;
+            b += (x - mean) * s;
+            (s, c) = (s * cw + c * sw, c * cw - s * sw);
+        }
     }
     Ok(2.0 / n as f64 * a.hypot(b))
 }

@@ -20,6 +20,7 @@
 mod dense;
 mod dop853;
 mod explicit;
+mod fixed;
 mod implicit;
 mod problem;
 mod solution;
@@ -30,6 +31,7 @@ use crate::numerics::cancel::Cancel;
 use dense::{brent, Interpolant};
 use dop853::Dop853;
 use explicit::Dopri5;
+pub use fixed::{solve_dop853_fixed, EventSet, FixedSolution, FixedSystem, NoEvents};
 use implicit::Rodas4;
 pub use problem::{Direction, Event, FnEvent, FnSystem, Method, OdeOptions, OdeSystem, Output};
 pub use solution::{EventRecord, OdeError, OdeSolution, OdeStats, Termination};

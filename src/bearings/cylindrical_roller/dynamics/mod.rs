@@ -19,6 +19,7 @@
 
 pub mod film;
 mod film_table;
+mod kernel;
 mod model;
 mod spectra;
 #[cfg(test)]
@@ -28,11 +29,13 @@ pub use film::{FilmLaw, Squeeze, LOAD_FLOOR_N};
 pub use spectra::{LabelledPeak, LabelledSpectrum};
 
 use crate::numerics::cancel::Cancel;
-use crate::numerics::ode::{solve, Event, Method, OdeError, OdeOptions, Output, Termination};
+use crate::numerics::ode::{
+    solve_dop853_fixed, FixedSystem, Method, OdeError, OdeOptions, Termination,
+};
 use crate::numerics::spectrum::{amplitude_at, SpectrumError};
 use film::ContactLaw;
 use film_table::FastFilm;
-use model::{static_equilibrium, ContactEvent, Rhs};
+use model::{static_equilibrium, ContactEvents, Rhs};
 use std::cell::Cell;
 use std::f64::consts::TAU;
 
@@ -510,6 +513,8 @@ pub fn simulate(
         phase_sin_cos: (0..m)
             .map(|i| (model.first_azimuth_rad + TAU * i as f64 / m as f64).sin_cos())
             .collect(),
+        phase_sin: Vec::new(),
+        phase_cos: Vec::new(),
         force_n: model.force_n,
         damping_n_s_m: 0.0,
         energy_integral: film.is_none(),
@@ -519,6 +524,7 @@ pub fn simulate(
         fast_film: None,
     };
 
+    (rhs.phase_sin, rhs.phase_cos) = rhs.phase_sin_cos.iter().copied().unzip();
     // The film solve tabulated for loads up to 1 000× the applied force (beyond, and
     // wherever the table does not reach, the Newton solve).
     let load_hi = 1e3 * model.force_n[0].hypot(model.force_n[1]).max(LOAD_FLOOR_N);
@@ -612,114 +618,37 @@ pub fn simulate(
     };
 
     let s0 = model.initial_state;
-    let mut y: Vec<f64> = vec![s0[0], s0[1], s0[2] / rhs.omega_ref, s0[3] / rhs.omega_ref];
-    if rhs.energy_integral {
-        y.push(0.0);
-    }
-    let e0 = rhs.energy_integral.then(|| rhs.energy(0.0, &y));
-    let mut t = 0.0;
+    let (vx0, vy0) = (s0[2] / rhs.omega_ref, s0[3] / rhs.omega_ref);
     let mut stats = DynamicsStats::default();
-    let mut samples: Vec<(f64, Vec<f64>)> = Vec::with_capacity(count);
-    // Rollers whose event fired at `forced_t`, with the side each crossed to (several
-    // cross at one instant when the load is symmetric about a roller pair).
-    let mut forced: Vec<(usize, f64)> = Vec::new();
-    let mut forced_t = f64::NAN;
-    let mut h0: Option<f64> = None;
-    for chunk in 1..=CHUNKS {
-        let chunk_end = if chunk == CHUNKS {
-            t_end
-        } else {
-            t_end * chunk as f64 / CHUNKS as f64
+    let (samples, e0) = if rhs.energy_integral {
+        let y0 = [s0[0], s0[1], vx0, vy0, 0.0];
+        let e0 = rhs.energy(0.0, &y0);
+        let run = Run {
+            rhs: &rhs,
+            t_end,
+            settle,
+            times: &times,
+            opts: &opts_base,
+            cancel,
         };
-        while t < chunk_end {
-            let mut evs: Vec<ContactEvent<'_>> = (0..m)
-                .map(|i| ContactEvent {
-                    rhs: &rhs,
-                    roller: i,
-                    start: forced.iter().find(|(j, _)| *j == i).map(|&(_, s)| (t, s)),
-                })
-                .collect();
-            let mut ev_refs: Vec<&mut dyn Event> =
-                evs.iter_mut().map(|e| e as &mut dyn Event).collect();
-            // Every sample before t is recorded (a segment records all those up to
-            // where it stops), so the next ones start at samples.len().
-            let first = samples.len();
-            let mut last = first;
-            while last < times.len() && times[last] <= chunk_end {
-                last += 1;
-            }
-            let seg_times = times[first..last].to_vec();
-            let opts = OdeOptions {
-                h0,
-                max_steps: MAX_STEPS
-                    .saturating_sub(stats.steps + stats.rejected)
-                    .max(1),
-                ..opts_base.clone()
-            };
-            let sol = solve(
-                &rhs,
-                t,
-                &y,
-                chunk_end,
-                &opts,
-                &mut ev_refs,
-                Output::Times(seg_times),
-                cancel,
-            )
-            .map_err(|e| match e {
-                OdeError::Cancelled { .. } => DynamicsError::Cancelled,
-                OdeError::MaxSteps { t, .. } => DynamicsError::TooMuchWork {
-                    steps: MAX_STEPS,
-                    t_s: t,
-                },
-                other => DynamicsError::Integration {
-                    t_s: t,
-                    reason: other.to_string(),
-                },
-            })?;
-            stats.steps += sol.stats.steps;
-            stats.rejected += sol.stats.rejected;
-            stats.rhs_evaluations += sol.stats.rhs_evaluations;
-            samples.extend(sol.t.into_iter().zip(sol.y));
-            let h_mean = (sol.t_final - t) / sol.stats.steps.max(1) as f64;
-            if h_mean > 0.0 {
-                h0 = Some(h_mean);
-            }
-            match sol.termination {
-                Termination::Event { index, t: te } => {
-                    stats.events += 1;
-                    // The side the gap crossed to: the other one than at the segment's
-                    // start (as forced there, or as evaluated).
-                    let was = forced
-                        .iter()
-                        .find(|(j, _)| *j == index)
-                        .map_or_else(|| rhs.gap(index, t, &y), |&(_, s)| s);
-                    let sign = if was > 0.0 { -1.0 } else { 1.0 };
-                    if sign < 0.0 && te >= settle {
-                        stats.contact_losses_after_settle += 1;
-                    }
-                    // Simultaneous crossings (within Brent's location error) keep the
-                    // earlier ones forced too.
-                    if !((te - forced_t).abs() <= 1e-9 * te.abs().max(1.0)) {
-                        forced.clear();
-                    }
-                    forced.retain(|(j, _)| *j != index);
-                    forced.push((index, sign));
-                    forced_t = te;
-                    t = te;
-                    y = sol.y_final;
-                }
-                Termination::ReachedEnd => {
-                    forced.clear();
-                    t = chunk_end;
-                    y = sol.y_final;
-                }
-            }
-        }
-        cancel.report(t / t_end);
-    }
+        (run.integrate(y0, &mut stats, |y| *y)?, Some(e0))
+    } else {
+        let y0 = [s0[0], s0[1], vx0, vy0];
+        let run = Run {
+            rhs: &rhs,
+            t_end,
+            settle,
+            times: &times,
+            opts: &opts_base,
+            cancel,
+        };
+        (
+            run.integrate(y0, &mut stats, |y| [y[0], y[1], y[2], y[3], 0.0])?,
+            None,
+        )
+    };
     stats.film_clamps = rhs.clamps.get();
-    samples.truncate(count);
+    let samples: Vec<(f64, [f64; 5])> = times.iter().copied().zip(samples).collect();
 
     assemble(
         model,
@@ -736,6 +665,138 @@ pub fn simulate(
             stats,
         },
     )
+}
+
+/// One simulation's integration: the fixed-size DOP853 path over `CHUNKS` progress
+/// chunks, restarted at every contact loss and regain.
+struct Run<'a> {
+    rhs: &'a Rhs,
+    t_end: f64,
+    settle: f64,
+    times: &'a [f64],
+    opts: &'a OdeOptions,
+    cancel: Cancel<'a>,
+}
+
+impl Run<'_> {
+    /// Integrate from `y0` at t = 0 to `t_end`, returning the states at `times`
+    /// (mapped by `keep` to the stored form) and adding the work to `stats`.
+    fn integrate<const N: usize>(
+        &self,
+        y0: [f64; N],
+        stats: &mut DynamicsStats,
+        keep: impl Fn(&[f64; N]) -> [f64; 5],
+    ) -> Result<Vec<[f64; 5]>, DynamicsError>
+    where
+        Rhs: FixedSystem<N>,
+    {
+        let (rhs, t_end, times) = (self.rhs, self.t_end, self.times);
+        let mut y = y0;
+        let mut t = 0.0;
+        let mut samples: Vec<[f64; 5]> = Vec::with_capacity(times.len());
+        // Rollers whose event fired at `events.t0`, with the side each crossed to
+        // (several cross at one instant when the load is symmetric about a roller pair).
+        let mut events = ContactEvents {
+            rhs,
+            forced: Vec::new(),
+            t0: f64::NAN,
+        };
+        let mut h0: Option<f64> = None;
+        for chunk in 1..=CHUNKS {
+            let chunk_end = if chunk == CHUNKS {
+                t_end
+            } else {
+                t_end * chunk as f64 / CHUNKS as f64
+            };
+            while t < chunk_end {
+                // Every sample before t is recorded (a segment records all those up to
+                // where it stops), so the next ones start at samples.len().
+                let first = samples.len();
+                let mut last = first;
+                while last < times.len() && times[last] <= chunk_end {
+                    last += 1;
+                }
+                let opts = OdeOptions {
+                    h0,
+                    max_steps: MAX_STEPS
+                        .saturating_sub(stats.steps + stats.rejected)
+                        .max(1),
+                    ..self.opts.clone()
+                };
+                events.t0 = t;
+                let sol = solve_dop853_fixed(
+                    rhs,
+                    t,
+                    &y,
+                    chunk_end,
+                    &opts,
+                    &events,
+                    &times[first..last],
+                    &mut |_, y| samples.push(keep(y)),
+                    self.cancel,
+                )
+                .map_err(|e| match e {
+                    OdeError::Cancelled { .. } => DynamicsError::Cancelled,
+                    OdeError::MaxSteps { t, .. } => DynamicsError::TooMuchWork {
+                        steps: MAX_STEPS,
+                        t_s: t,
+                    },
+                    other => DynamicsError::Integration {
+                        t_s: t,
+                        reason: other.to_string(),
+                    },
+                })?;
+                stats.steps += sol.stats.steps;
+                stats.rejected += sol.stats.rejected;
+                stats.rhs_evaluations += sol.stats.rhs_evaluations;
+                let h_mean = (sol.t_final - t) / sol.stats.steps.max(1) as f64;
+                if h_mean > 0.0 {
+                    h0 = Some(h_mean);
+                }
+                match sol.termination {
+                    Termination::Event { index, t: te } => {
+                        stats.events += 1;
+                        // Restart with the step the controller proposed after the step
+                        // that straddled the crossing (accepted at this accuracy), not
+                        // the segment's mean nor a fresh search from a small h0.
+                        if sol.h_next > 0.0 && sol.h_next.is_finite() {
+                            h0 = Some(sol.h_next);
+                        }
+                        // The side the gap crossed to: the other one than at the
+                        // segment's start (as forced there, or as evaluated).
+                        let was = events
+                            .forced
+                            .iter()
+                            .find(|(j, _)| *j == index)
+                            .map_or_else(|| rhs.gap(index, t, &y), |&(_, s)| s);
+                        let sign = if was > 0.0 { -1.0 } else { 1.0 };
+                        if sign < 0.0 && te >= self.settle {
+                            stats.contact_losses_after_settle += 1;
+                        }
+                        // Simultaneous crossings (within Brent's location error) keep
+                        // the earlier ones forced too.
+                        if !((te - events.t0).abs() <= 1e-9 * te.abs().max(1.0))
+                            || events.forced.is_empty()
+                        {
+                            events.forced.clear();
+                        }
+                        events.forced.retain(|(j, _)| *j != index);
+                        events.forced.push((index, sign));
+                        t = te;
+                        y = sol.y_final;
+                    }
+                    Termination::ReachedEnd => {
+                        events.forced.clear();
+                        t = chunk_end;
+                        y = sol.y_final;
+                    }
+                }
+            }
+            self.cancel.report(t / t_end);
+        }
+        samples.truncate(times.len());
+        Ok(samples)
+    }
 }
 
 /// The eigenvalue of the symmetric 2×2 `k` whose eigenvector is closest to x, and the
@@ -760,7 +821,8 @@ struct Assembly {
     fc: f64,
     dt: f64,
     per_cycle: usize,
-    samples: Vec<(f64, Vec<f64>)>,
+    /// (t, (x, y, ẋ/ω_ref, ẏ/ω_ref, q)) with q = 0 without the energy integral.
+    samples: Vec<(f64, [f64; 5])>,
     e0: Option<f64>,
     stats: DynamicsStats,
 }
@@ -795,15 +857,14 @@ fn assemble(
         series.y_m.push(y[1]);
         series.vx_m_s.push(y[2] * rhs.omega_ref);
         series.vy_m_s.push(y[3] * rhs.omega_ref);
-        for i in 0..m {
-            let c = rhs.roller(i, *t, y);
+        rhs.rollers(*t, y, |i, c| {
             min_load = min_load.min(c.load_n);
             series.roller_load_n[i].push(c.load_n);
             series.film_m[i].push(c.film_m);
             series.squeeze_velocity_m_s[i].push(if c.load_n > 0.0 { c.squeeze_m_s } else { 0.0 });
-        }
-        if let (Some(e0), Some(q)) = (a.e0, y.get(4)) {
-            drift = drift.max((rhs.energy(*t, y) - e0 - q * rhs.energy_ref).abs());
+        });
+        if let Some(e0) = a.e0 {
+            drift = drift.max((rhs.energy(*t, y) - e0 - y[4] * rhs.energy_ref).abs());
         }
     }
     let energy_drift_rel = (a.e0.is_some() && model.damping_ratio == 0.0 && energy_scale > 0.0)

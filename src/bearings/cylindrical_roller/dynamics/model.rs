@@ -3,9 +3,11 @@
 
 use super::film::{Contact, ContactLaw};
 use super::film_table::FastFilm;
+use super::kernel::dry_sums_ten_ninths;
 use super::DynamicsError;
-use crate::numerics::ode::{Event, OdeSystem};
-use crate::physics::contact::lamina_law::ninth_root;
+#[cfg(test)]
+use crate::numerics::ode::Event;
+use crate::numerics::ode::{EventSet, FixedSystem, OdeSystem};
 use std::cell::Cell;
 
 /// The model reduced for the hot loop.
@@ -19,6 +21,10 @@ pub(crate) struct Rhs {
     /// (sin, cos) of `phases`: θ_i(t)'s sine and cosine by one rotation of ω_c t's
     /// instead of one `sin_cos` per roller per evaluation.
     pub phase_sin_cos: Vec<(f64, f64)>,
+    /// The same as two arrays (the lane loop of [`super::kernel`]).
+    pub phase_sin: Vec<f64>,
+    /// See `phase_sin`.
+    pub phase_cos: Vec<f64>,
     pub force_n: [f64; 2],
     /// Viscous damping coefficient c = 2ζ√(K_xx M), N·s/m (0 in the seed).
     pub damping_n_s_m: f64,
@@ -54,12 +60,6 @@ impl Rhs {
         (p, p_dot)
     }
 
-    /// Roller `i`'s contact at time `t` in state `y` = (x, y, ẋ, ẏ, …).
-    pub fn roller(&self, i: usize, t: f64, y: &[f64]) -> Contact {
-        let (p, p_dot) = self.approach(i, t, y);
-        self.law.contact(p, p_dot)
-    }
-
     /// Roller `i`'s event function alone ([`Contact::gap_m`] without the film solve).
     pub fn gap(&self, i: usize, t: f64, y: &[f64]) -> f64 {
         let (p, p_dot) = self.approach(i, t, y);
@@ -84,20 +84,34 @@ impl Rhs {
         (f, k)
     }
 
-    /// V = Σ 2k_n δ₊^(n+1)/(n+1), the contacts' potential (film off), J.
+    /// V = Σ 2k_n δ₊^(n+1)/(n+1), the contacts' potential (film off), J. θ_i's sine and
+    /// cosine by rotation, δ^(n+1) = δ·δ^n by [`ContactLaw::power`], as in the hot loop.
     pub fn potential(&self, t: f64, x: f64, y: f64) -> f64 {
         let (k, n) = (self.law.stiffness, self.law.exponent);
-        (0..self.phases.len())
-            .map(|i| {
-                let (s, c) = self.angle(i, t).sin_cos();
-                let d = 0.5 * (x * c + y * s) - self.law.clearance_m;
-                if d > 0.0 {
-                    2.0 * k * d.powf(n + 1.0) / (n + 1.0)
-                } else {
-                    0.0
-                }
-            })
-            .sum()
+        let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
+        let mut v = 0.0;
+        for &(sp, cp) in &self.phase_sin_cos {
+            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+            let d = 0.5 * (x * c + y * s) - self.law.clearance_m;
+            if d > 0.0 {
+                v += 2.0 * k * d * self.law.power(d) / (n + 1.0);
+            }
+        }
+        v
+    }
+
+    /// Every roller's contact at time `t` in state `y` = (x, y, ẋ, ẏ, …), in roller
+    /// order, θ_i's sine and cosine by rotating (sin ω_c t, cos ω_c t) by each roller's
+    /// phase (one `sin_cos` per call, as the hot loop).
+    pub fn rollers(&self, t: f64, y: &[f64], mut each: impl FnMut(usize, Contact)) {
+        let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
+        let (x, yy, vx, vy) = (y[0], y[1], y[2] * self.omega_ref, y[3] * self.omega_ref);
+        for (i, &(sp, cp)) in self.phase_sin_cos.iter().enumerate() {
+            let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+            let p = x * c + yy * s;
+            let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (yy * c - x * s);
+            each(i, self.law.contact(p, p_dot));
+        }
     }
 
     /// E = ½M|v|² + V − F·r (film off), J (issue 25, Validation 3).
@@ -119,6 +133,23 @@ impl OdeSystem for Rhs {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        self.eval(t, y, dydt);
+    }
+}
+
+impl<const N: usize> FixedSystem<N> for Rhs {
+    #[inline]
+    fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N] {
+        let mut out = [0.0; N];
+        self.eval(t, y, &mut out);
+        out
+    }
+}
+
+impl Rhs {
+    /// Eqs. (1)–(3) (and the energy integral's rate) at (t, y) into `dydt`.
+    #[inline(always)]
+    fn eval(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
         let w = self.omega_ref;
         let (vx, vy) = (y[2] * w, y[3] * w);
         let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
@@ -147,22 +178,30 @@ impl OdeSystem for Rhs {
 impl Rhs {
     /// The hot loop of the dry contact (film off): eq. (3) with h = 0 and eq. (2), the
     /// load alone (no stiffness, no `Contact`), θ_i's sine and cosine by rotating
-    /// (sin ω_c t, cos ω_c t) by each roller's phase.
+    /// (sin ω_c t, cos ω_c t) by each roller's phase; n = 10/9 in lanes of four
+    /// ([`super::kernel`]), any other n by `powf`.
     #[inline]
     fn dry_sums(&self, x: f64, y: f64, s0: f64, c0: f64) -> [f64; 3] {
-        let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
         let clearance = self.law.clearance_m;
         let k = self.law.stiffness;
-        let ten_ninths = self.law.exponent == 10.0 / 9.0;
+        if self.law.exponent == 10.0 / 9.0 {
+            return dry_sums_ten_ninths(
+                &self.phase_sin,
+                &self.phase_cos,
+                k,
+                clearance,
+                x,
+                y,
+                s0,
+                c0,
+            );
+        }
+        let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
         for &(sp, cp) in &self.phase_sin_cos {
             let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
             let d = 0.5 * (x * c + y * s) - clearance;
             if d > 0.0 {
-                let load = k * if ten_ninths {
-                    d * ninth_root(d)
-                } else {
-                    d.powf(self.law.exponent)
-                };
+                let load = k * d.powf(self.law.exponent);
                 fx += load * c;
                 fy += load * s;
                 dv += load * (y * c - x * s);
@@ -207,12 +246,14 @@ impl Rhs {
 /// Roller `roller`'s contact loss/regain: the gap crosses 0. At a restart the event
 /// that just fired reads the side it crossed to, so that a root located a hair early
 /// (Brent's 1e-13) is not found again at the restart.
+#[cfg(test)]
 pub(crate) struct ContactEvent<'a> {
     pub rhs: &'a Rhs,
     pub roller: usize,
     pub start: Option<(f64, f64)>,
 }
 
+#[cfg(test)]
 impl Event for ContactEvent<'_> {
     fn value(&self, t: f64, y: &[f64]) -> f64 {
         if let Some((t0, sign)) = self.start {
@@ -234,6 +275,54 @@ impl Event for ContactEvent<'_> {
     }
     fn terminal(&self) -> bool {
         true
+    }
+}
+
+/// Every roller's contact loss/regain as one [`EventSet`] for the fixed-size DOP853
+/// path: [`ContactEvent`]'s functions, with the interference bound (see there) tested
+/// once per step for all rollers rather than once per roller: while it holds (ρ = 5 µm
+/// throughout) the events cost one square root per step.
+pub(crate) struct ContactEvents<'a> {
+    pub rhs: &'a Rhs,
+    /// Rollers whose event fired at `t0` (the segment's start) and the side each
+    /// crossed to.
+    pub forced: Vec<(usize, f64)>,
+    pub t0: f64,
+}
+
+impl ContactEvents<'_> {
+    /// −C − |r|/2: a lower bound of every roller's gap (> 0: none can cross).
+    #[inline]
+    fn lower_bound(&self, y: &[f64]) -> f64 {
+        -self.rhs.law.clearance_m - 0.5 * (y[0] * y[0] + y[1] * y[1]).sqrt()
+    }
+}
+
+impl<const N: usize> EventSet<N> for ContactEvents<'_> {
+    fn len(&self) -> usize {
+        self.rhs.phases.len()
+    }
+    fn values(&self, t: f64, y: &[f64; N], out: &mut [f64]) {
+        let lower = self.lower_bound(y);
+        if lower > 0.0 && (t != self.t0 || self.forced.is_empty()) {
+            out.iter_mut().for_each(|o| *o = lower);
+            return;
+        }
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = EventSet::<N>::value(self, i, t, y);
+        }
+    }
+    fn value(&self, i: usize, t: f64, y: &[f64; N]) -> f64 {
+        if t == self.t0 {
+            if let Some(&(_, sign)) = self.forced.iter().find(|(j, _)| *j == i) {
+                return sign * f64::MIN_POSITIVE;
+            }
+        }
+        let lower = self.lower_bound(y);
+        if lower > 0.0 {
+            return lower;
+        }
+        self.rhs.gap(i, t, y)
     }
 }
 

@@ -1,6 +1,8 @@
 //! Validation of the 2-DOF dynamics (issue 25, Validation 2–4) and its guards.
 
 use super::*;
+use film::ContactLaw;
+use std::cell::Cell;
 use std::sync::atomic::AtomicBool;
 
 fn frozen(interference_m: f64, duration_s: f64) -> DynamicsModel {
@@ -317,5 +319,126 @@ fn a_run_past_the_step_bound_is_refused_up_front() {
         "dynamics.tolerance",
     ] {
         assert!(text.contains(key), "{text}");
+    }
+}
+
+/// The truck bearing's right-hand side (film off, energy integral on) for the
+/// integrator comparisons below.
+fn truck_rhs(interference_m: f64) -> model::Rhs {
+    let m = 12;
+    model::Rhs {
+        law: ContactLaw {
+            stiffness: 2.0e9,
+            exponent: 10.0 / 9.0,
+            clearance_m: -interference_m,
+            film: None,
+        },
+        mass_kg: 50.0,
+        cage_speed_rad_s: 83.26,
+        phases: (0..m).map(|i| TAU * i as f64 / m as f64).collect(),
+        phase_sin_cos: (0..m)
+            .map(|i| (TAU * i as f64 / m as f64).sin_cos())
+            .collect(),
+        phase_sin: (0..m).map(|i| (TAU * i as f64 / m as f64).sin()).collect(),
+        phase_cos: (0..m).map(|i| (TAU * i as f64 / m as f64).cos()).collect(),
+        force_n: [-(1500.0 + 50.0 * 9.81), 0.0],
+        damping_n_s_m: 0.0,
+        energy_integral: true,
+        omega_ref: TAU * 932.0,
+        energy_ref: 1e-2,
+        clamps: Cell::new(0),
+        fast_film: None,
+    }
+}
+
+/// Issue 25, Speed item 1: the fixed-size DOP853 path is the general DOP853 path with
+/// the vectors on the stack, so it must take the same steps and give the same numbers.
+/// Over 0.05 s of the truck bearing (≈ 47 periods of f_bn, 600 output times, released at
+/// rest from 0) with ρ = 5 µm (no event) and ρ = 0 (run to its first contact-loss
+/// event), against `numerics::ode::solve` with one `ContactEvent` per roller: the same
+/// accepted and rejected steps, evaluations and termination, and every output state and
+/// the final state within 1e-12 relative (the arithmetic is the same in the same order,
+/// so the difference measured is 0).
+#[test]
+fn the_fixed_size_dop853_path_matches_the_general_path() {
+    use crate::numerics::ode::{solve, solve_dop853_fixed, Event, Method, OdeOptions, Output};
+    for rho in [5e-6, 0.0] {
+        let rhs = truck_rhs(rho);
+        let opts = OdeOptions {
+            rtol: 1e-8,
+            atol: 1e-8 * 8e-6,
+            method: Method::Dop853,
+            ..OdeOptions::default()
+        };
+        let times: Vec<f64> = (0..600).map(|j| 0.01 + f64::from(j) * 6.5e-5).collect();
+        let y0 = [0.0; 5];
+        let mut evs: Vec<model::ContactEvent<'_>> = (0..12)
+            .map(|i| model::ContactEvent {
+                rhs: &rhs,
+                roller: i,
+                start: None,
+            })
+            .collect();
+        let mut refs: Vec<&mut dyn Event> = evs.iter_mut().map(|e| e as &mut dyn Event).collect();
+        let general = solve(
+            &rhs,
+            0.0,
+            &y0,
+            0.05,
+            &opts,
+            &mut refs,
+            Output::Times(times.clone()),
+            Cancel::NONE,
+        )
+        .unwrap();
+        let events = model::ContactEvents {
+            rhs: &rhs,
+            forced: Vec::new(),
+            t0: 0.0,
+        };
+        let mut out: Vec<(f64, [f64; 5])> = Vec::new();
+        let fixed = solve_dop853_fixed(
+            &rhs,
+            0.0,
+            &y0,
+            0.05,
+            &opts,
+            &events,
+            &times,
+            &mut |t, y| out.push((t, *y)),
+            Cancel::NONE,
+        )
+        .unwrap();
+        eprintln!(
+            "rho {rho:e}: general {:?} {:?}, fixed {:?} {:?}",
+            general.stats, general.termination, fixed.stats, fixed.termination
+        );
+        assert_eq!(general.termination, fixed.termination);
+        assert_eq!(general.stats.steps, fixed.stats.steps);
+        assert_eq!(general.stats.rejected, fixed.stats.rejected);
+        assert_eq!(general.stats.rhs_evaluations, fixed.stats.rhs_evaluations);
+        assert_eq!(general.t_final, fixed.t_final);
+        let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-12 * scale;
+        for (i, (&a, &b)) in general.y_final.iter().zip(&fixed.y_final).enumerate() {
+            assert!(close(a, b, a.abs().max(1e-6)), "y_final[{i}] {a} {b}");
+        }
+        assert_eq!(general.t.len(), out.len());
+        let scale: Vec<f64> = (0..5)
+            .map(|i| general.y.iter().map(|y| y[i].abs()).fold(1e-12, f64::max))
+            .collect();
+        let mut worst: f64 = 0.0;
+        for ((t, y), (tf, yf)) in general.t.iter().zip(&general.y).zip(&out) {
+            assert_eq!(t, tf);
+            for i in 0..5 {
+                worst = worst.max((y[i] - yf[i]).abs() / scale[i]);
+            }
+        }
+        eprintln!("rho {rho:e}: worst output difference {worst:e}");
+        assert!(worst <= 1e-12, "{worst}");
+        if rho == 0.0 {
+            assert!(matches!(fixed.termination, Termination::Event { .. }));
+        } else {
+            assert_eq!(fixed.termination, Termination::ReachedEnd);
+        }
     }
 }
