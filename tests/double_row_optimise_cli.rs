@@ -39,15 +39,15 @@ fn optimise_json_has_the_contract_fields() {
 #[test]
 fn optimise_text_csv_and_refusals() {
     let d = deck("srb_22308.toml");
-    let (code, out, err) = run(&["optimise", &d, "--grid", "2"]);
+    let (code, out, err) = run(&["optimise", &d, "--grid", "3"]);
     assert_eq!(code, 0, "{err}");
     assert!(
         out.contains("OSCULATION OPTIMISER") && out.contains("binding"),
         "{out}"
     );
-    let (code, out, err) = run(&["optimise", &d, "--grid", "2", "--format", "csv"]);
+    let (code, out, err) = run(&["optimise", &d, "--grid", "3", "--format", "csv"]);
     assert_eq!(code, 0, "{err}");
-    assert_eq!(out.lines().count(), 5, "{out}");
+    assert_eq!(out.lines().count(), 10, "{out}");
     assert!(out.starts_with("k_ci,k_w,total_w"), "{out}");
     let (code, _, err) = run(&["optimise", &deck("aerospace.toml")]);
     assert_eq!(code, 1);
