@@ -56,7 +56,9 @@ pub(crate) fn ninth_root_branch_free(x: f64) -> f64 {
     let y2 = y0 * y0;
     let y4 = y2 * y2;
     let y9 = y4 * y4 * y0;
-    y0 * (8.0 * y9 + 10.0 * x) / (10.0 * y9 + 8.0 * x)
+    // Halley's factor as a ratio of terms ≤ 0.9·max(x, y⁹): no overflow near f64::MAX,
+    // no underflow of y₀·(…) near the smallest normals.
+    y0 * ((0.4 * y9 + 0.5 * x) / (0.5 * y9 + 0.4 * x))
 }
 
 /// Rollers per block of the lane loop: one elementwise loop over a block with a run-time
