@@ -40,6 +40,37 @@
 //! `cage_torque_imbalance_nm`: 0 at a cage speed from the cage's torque balance, and the
 //! torque that would accelerate (+) or brake (−) the cage at a measured one.
 //!
+//! # Roller spin
+//! Each roller spins at the rate where the traction moments about its own axis balance
+//! (the quasi-static friction analysis of roller bearings, Harris & Kotzalas, *Advanced
+//! Concepts of Bearing Technology*, 5th ed.: every roller's speed from its friction
+//! moments, not from a kinematic assumption). With m_k = (a × (p_k − c))·ê_θ the roller
+//! surface's speed per unit spin at lamina k (the same arm carries the traction's moment
+//! about the axis), the sliding is v_k(ω_s) = u_k − ω_s·m_k and
+//! M(ω_s) = Σ_k F_k(v_k)·m_k − D_p(ω_s)·(D_W/2)·sgn ω_s over both raceways' loaded laminae,
+//! D_p the pocket's hydrodynamic drag (Martin's film at the roller's net raceway traction;
+//! the breakdown's pocket film also adds the guide-ring end's tangential force, a few % of
+//! it). Each F_k grows with v_k (Newtonian eq. 3, or ATZ: non-decreasing), so
+//! dM/dω_s = −Σ F_k'·m_k² − … ≤ 0: one root (or a flat stretch where every lamina is at its
+//! limiting shear). It is bracketed from the statics' spin (scaled to the cage speed),
+//! expanding the step by 2, and closed by the Illinois false position to
+//! |M| ≤ [`SPIN_MOMENT_TOLERANCE`]·Σ|F_k·m_k|. A roller with no loaded lamina keeps the
+//! statics' spin (nothing drives it but the pocket film; reported). Neglected: the
+//! guide-ring end's friction moment about the roller axis — its contact lies on the axis
+//! but for the roller's tilt, the arm is ≤ 4e-5 m against m_k ≈ 6 mm: μ_fl·Q_end·arm
+//! ≤ 3e-6 N·m on the shipped deck against traction moments of ~1 N·m (`seed_shapes_print`
+//! prints it); the film thickness is the statics' (at the statics'
+//! spin), the spin moving the entrainment by a few %.
+//!
+//! # Cage speed
+//! `cage.speed = "measured"`: the deck's speed, the imbalance reported. `"computed"`: the
+//! root of the cage's torque balance (imbalance 0), bracketed around the statics' §7
+//! estimate within the rings' speeds, with every roller's spin solved inside each
+//! evaluation ([`LossKinematics::balanced_cage`]). The loads stay the statics' (their
+//! centrifugal force used the §7 speed; F_c ∝ ω_c², so a cage speed δ % off moves it by
+//! 2δ %: `centrifugal_cage_speed_rpm` is reported beside `cage_speed_rpm`). The slip
+//! `cage_slip_pct` is against the kinematic speed (App. C, rolling without slip at α⁰).
+//!
 //! # Signs
 //! Every sliding speed and force is along the bearing's rotation (+θ, the direction of a
 //! positive inner-ring speed), sliding = raceway (or ring) surface minus roller surface;
@@ -51,8 +82,9 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use super::input::{CageLand as DeckCageLand, DoubleRowInput, Traction};
+use super::input::{CageLand as DeckCageLand, CageSpeedSource, DoubleRowInput, Traction};
 use super::statics::DoubleRowAnalysis;
+use crate::bearings::spherical_roller::load_distribution::DynamicSpeeds;
 use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
 use crate::physics::kinematics::sliding_velocity;
 use crate::physics::lubrication::cage_film::{
@@ -113,6 +145,9 @@ pub struct RollerLossInput {
     pub roller_end_speed_m_s: f64,
     /// Roller surface speed relative to the cage at the pocket (ω_R·D/2), m/s.
     pub surface_speed_m_s: f64,
+    /// ω_s, the roller's spin about its axis relative to the cage, rad/s (reported; the
+    /// laminae's sliding speeds and the two speeds above already carry it).
+    pub spin_rad_s: f64,
 }
 
 /// Lubricant of the loss model, SI.
@@ -139,6 +174,9 @@ pub struct LossInputs {
     pub outer_speed_rad_s: f64,
     /// ω_c, cage speed (measured or computed), rad/s.
     pub cage_speed_rad_s: f64,
+    /// The kinematic cage speed (App. C: rolling without slip at the free contact angle),
+    /// rad/s: the reference of the reported cage slip.
+    pub kinematic_cage_speed_rad_s: f64,
     /// The guide ring, if present.
     pub guide_ring: Option<GuideRingGeometry>,
     /// A roller in its pocket.
@@ -199,6 +237,12 @@ pub struct Losses {
     pub friction_torque_nm: f64,
     /// Net torque on the cage about the bearing axis, N·m (0 at a balanced cage speed).
     pub cage_torque_imbalance_nm: f64,
+    /// ω_c, the cage speed of the breakdown (measured, or of the cage's torque balance),
+    /// rpm.
+    pub cage_speed_rpm: f64,
+    /// Cage slip against the kinematic speed ω_k (App. C), 100·(ω_k − ω_c)/ω_k, % (0 when
+    /// ω_k = 0).
+    pub cage_slip_pct: f64,
 }
 
 /// One roller's share.
@@ -206,6 +250,9 @@ pub struct Losses {
 pub struct RollerLoss {
     /// Row, 1 or 2.
     pub row: u8,
+    /// ω_s, the roller's spin about its axis relative to the cage, rad/s (its moment
+    /// balance; the statics' spin for a roller with no loaded lamina).
+    pub spin_rad_s: f64,
     /// Σ y·F over both raceways about the contact normal through the roller centre, N·m.
     pub skew_moment_nm: f64,
     /// Inner raceway power (skew part included), W.
@@ -242,6 +289,13 @@ pub struct LossBreakdown {
     pub guide_ring: Option<GuideRingSolution>,
     /// Laminae (both raceways, all rollers) where the printed eq. 3 exceeds μ = 0.2.
     pub eq3_flagged_laminae: usize,
+    /// The land film's torque on the cage, N·m (part of the imbalance).
+    pub cage_land_torque_nm: f64,
+    /// True when the cage speed is the cage's torque balance (deck `speed = "computed"`).
+    pub cage_speed_computed: bool,
+    /// The cage speed the statics' centrifugal force used, rpm (0 when not from a solved
+    /// bearing).
+    pub centrifugal_cage_speed_rpm: f64,
 }
 
 /// Why the loss breakdown cannot be computed.
@@ -275,6 +329,48 @@ pub enum LossError {
         stage: &'static str,
         /// Row, 1 or 2.
         row: usize,
+    },
+    /// A roller's moment balance about its axis could not be bracketed.
+    #[error("roller {roller}: no spin balances the traction moments about its axis (searched up to {spin_rad_s} rad/s, moment still {moment_nm} N·m)")]
+    SpinBracket {
+        /// Roller index (0-based, input order).
+        roller: usize,
+        /// The last spin tried, rad/s.
+        spin_rad_s: f64,
+        /// The moment there, N·m.
+        moment_nm: f64,
+    },
+    /// A roller's moment balance did not close.
+    #[error("roller {roller}: the spin balance did not converge: {moment_nm} N·m left at {spin_rad_s} rad/s (scale {scale_nm} N·m)")]
+    SpinNotConverged {
+        /// Roller index (0-based, input order).
+        roller: usize,
+        /// The last spin, rad/s.
+        spin_rad_s: f64,
+        /// The moment there, N·m.
+        moment_nm: f64,
+        /// Σ|F·m| there, N·m.
+        scale_nm: f64,
+    },
+    /// The cage's torque balance could not be bracketed between the rings' speeds.
+    #[error("cage speed = \"computed\": the cage's torque imbalance keeps its sign from {start_rpm} rpm ({imbalance_start_nm} N·m) to {end_rpm} rpm ({imbalance_end_nm} N·m), the ring speed; no balanced cage speed")]
+    CageBracket {
+        /// The start (the statics' §7 speed), rpm.
+        start_rpm: f64,
+        /// The last speed tried, rpm.
+        end_rpm: f64,
+        /// The imbalance at the start, N·m.
+        imbalance_start_nm: f64,
+        /// The imbalance at the last speed, N·m.
+        imbalance_end_nm: f64,
+    },
+    /// The cage's torque balance did not close.
+    #[error("cage speed = \"computed\": the cage's torque balance did not converge: {imbalance_nm} N·m left at {cage_rpm} rpm")]
+    CageNotConverged {
+        /// The last cage speed, rpm.
+        cage_rpm: f64,
+        /// The imbalance there, N·m.
+        imbalance_nm: f64,
     },
     /// An input outside its range.
     #[error("{name} = {value} is not usable: it must be {allowed}")]
@@ -422,6 +518,7 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         cage_torque += circumferential * 0.5 * dm;
         rollers.push(RollerLoss {
             row: r.row,
+            spin_rad_s: r.spin_rad_s,
             skew_moment_nm: mi + mo,
             inner_w: pi,
             outer_w: po,
@@ -461,13 +558,14 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         land.radial_clearance_m,
         dw_land,
     )?;
-    cage_torque += land_torque_on_cage_nm(
+    let land_torque = land_torque_on_cage_nm(
         eta,
         land.radius_m,
         land.width_m,
         land.radial_clearance_m,
         dw_land,
     )?;
+    cage_torque += land_torque;
 
     let rel = (wi - wo).abs();
     if let Some(f0) = lub.drag_factor {
@@ -511,11 +609,19 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         l.friction_torque_nm = l.total_w / rel;
     }
     l.cage_torque_imbalance_nm = cage_torque;
+    l.cage_speed_rpm = wc * RPM;
+    let wk = inputs.kinematic_cage_speed_rad_s;
+    if wk.is_finite() && wk != 0.0 {
+        l.cage_slip_pct = 100.0 * (wk - wc) / wk;
+    }
     Ok(LossBreakdown {
         losses: l,
         rollers,
         guide_ring: guide,
         eq3_flagged_laminae: flagged,
+        cage_land_torque_nm: land_torque,
+        cage_speed_computed: false,
+        centrifugal_cage_speed_rpm: 0.0,
     })
 }
 
@@ -565,19 +671,426 @@ fn guide_reduced_modulus_pa(input: &DoubleRowInput) -> f64 {
         + (1.0 - ring.poisson_ratio.powi(2)) / ring.youngs_modulus_pa)
 }
 
-/// The loss model's inputs from the solved statics (module notes; issue 27 Model 2–4):
+/// One loaded lamina contact with the speeds factored out. In the cage frame the sliding
+/// speed (`kinematics::sliding_velocity`, raceway minus roller along +θ) is linear in the
+/// ring's speed relative to the cage and in the roller's spin:
+/// v = ring_arm·(ω_ring − ω_c) − spin_arm·ω_s, where spin_arm m = (a × (p − c))·ê_θ is the
+/// roller surface's speed per unit spin at the contact point p, and the same arm carries the
+/// lamina traction's moment about the roller axis (a·((p − c) × F·ê_θ) = F·m).
+#[derive(Debug, Clone)]
+struct LaminaKinematics {
+    /// Load, half-width, length, p₀, film and offset of the statics; the two speeds are
+    /// filled per evaluation.
+    slice: LaminaSlice,
+    /// Sliding per unit (ω_ring − ω_c), m.
+    ring_arm_m: f64,
+    /// m, roller surface speed per unit spin, m.
+    spin_arm_m: f64,
+    /// Distance of the raceway point from the bearing axis, m (entrainment).
+    ring_axis_distance_m: f64,
+    /// Distance of the roller point from the roller axis, m (entrainment).
+    roller_axis_distance_m: f64,
+}
+
+/// One roller's contacts with the speeds factored out.
+#[derive(Debug, Clone)]
+struct RollerKinematics {
+    row: u8,
+    /// Inner, outer raceway.
+    sides: [Vec<LaminaKinematics>; 2],
+    guide_ring_load_n: f64,
+    /// The roller end's guide-ring contact point: speed relative to the cage per unit spin
+    /// along +θ, m (nearly 0: the point lies on the roller axis but for the roller's tilt).
+    end_spin_arm_m: f64,
+}
+
+/// The solved statics reduced to what the loss model reads at any cage speed and roller
+/// spins ([`loss_kinematics`]); [`LossKinematics::inputs_at`] builds the [`LossInputs`].
+#[derive(Debug, Clone)]
+pub struct LossKinematics {
+    rollers: Vec<RollerKinematics>,
+    /// Everything but the rollers (their vector is empty here).
+    common: LossInputs,
+    /// The cage speed and the one roller spin the statics used, rad/s.
+    statics_cage_rad_s: f64,
+    statics_spin_rad_s: f64,
+    /// Whether the deck asks for the cage speed from the cage's torque balance.
+    computed_cage: bool,
+}
+
+/// Tolerance of a roller's moment balance: |M(ω_s)| ≤ this × Σ|F_k·m_k| (plus the pocket
+/// drag's moment), the traction moments' own scale; the bracket is also accepted once it is
+/// narrower than 1e-12 of the spin (a flat stretch of a saturated ATZ law).
+pub const SPIN_MOMENT_TOLERANCE: f64 = 1e-9;
+
+/// Tolerance of the cage's torque balance at a computed cage speed: |imbalance| ≤ this ×
+/// (Σ|F_circ|·d_m/2 + |T_land| + M, M the bearing's friction torque: under a pure axial
+/// load every roller's net traction is nearly 0 at balance, and M keeps the scale). Not tighter: each evaluation re-solves the spins, whose
+/// moment is near-vertical at the root (eq. 3's Newtonian slope η·e^{αp}/h), so the net
+/// traction carries noise of ~1e-7 of its scale.
+pub const CAGE_TORQUE_TOLERANCE: f64 = 1e-6;
+
+/// A roller's moment balance about its own axis at spin `spin` (rad/s, relative to the
+/// cage) and cage speed `wc`: (moment N·m, its scale Σ|F·m| + |pocket moment| N·m, the net
+/// raceway circumferential traction N).
+fn spin_moment(
+    r: &RollerKinematics,
+    roller: usize,
+    common: &LossInputs,
+    wc: f64,
+    spin: f64,
+) -> Result<(f64, f64, f64), LossError> {
+    let lub = &common.lubricant;
+    let ring_w = [common.inner_speed_rad_s, common.outer_speed_rad_s];
+    let (mut m, mut scale, mut circ) = (0.0, 0.0, 0.0);
+    for (k, side) in r.sides.iter().enumerate() {
+        let raceway = if k == 0 { "inner" } else { "outer" };
+        for (j, l) in side.iter().enumerate() {
+            let s = slice_at(l, ring_w[k], wc, spin);
+            let f = lamina_friction(lub.law, &lub.rheology, &s).map_err(|source| {
+                LossError::Lamina {
+                    roller,
+                    raceway,
+                    lamina: j,
+                    source,
+                }
+            })?;
+            m += f.force_n * l.spin_arm_m;
+            scale += (f.force_n * l.spin_arm_m).abs();
+            circ += f.force_n;
+        }
+    }
+    // The pocket's hydrodynamic drag opposes the roller surface's motion relative to the
+    // cage (Martin's film at the pocket force: the given one or this net traction).
+    let rr = common.pocket.roller_radius_m;
+    let p = pocket_film(&common.pocket, lub.rheology.viscosity_pa_s, circ, spin * rr)?;
+    let mp = -p.drag_n * rr * spin.signum();
+    Ok((m + mp, scale + mp.abs(), circ))
+}
+
+/// The lamina at the given speeds: sliding v = ring_arm·(ω_ring − ω_c) − m·ω_s and the
+/// entrainment ½(|(ω_ring − ω_c)·R_ring| + |ω_s·r_roller|) in the cage frame.
+fn slice_at(l: &LaminaKinematics, ring_w: f64, wc: f64, spin: f64) -> LaminaSlice {
+    LaminaSlice {
+        sliding_speed_m_s: l.ring_arm_m * (ring_w - wc) - l.spin_arm_m * spin,
+        rolling_speed_m_s: 0.5
+            * (((ring_w - wc) * l.ring_axis_distance_m).abs()
+                + (spin * l.roller_axis_distance_m).abs()),
+        ..l.slice
+    }
+}
+
+/// A roller's spin from its moment balance (module notes "Roller spin"): the root of the
+/// monotone M(ω_s), bracketed from `guess` and closed by the Illinois false position.
+/// Returns (spin rad/s, residual N·m, scale N·m).
+fn solve_spin(
+    r: &RollerKinematics,
+    roller: usize,
+    common: &LossInputs,
+    wc: f64,
+    guess: f64,
+) -> Result<(f64, f64, f64), LossError> {
+    let eval = |s: f64| spin_moment(r, roller, common, wc, s).map(|(m, sc, _)| (m, sc));
+    let (m0, sc0) = eval(guess)?;
+    if m0.abs() <= SPIN_MOMENT_TOLERANCE * sc0 {
+        return Ok((guess, m0, sc0));
+    }
+    // M falls with ω_s: a positive moment means the root lies above.
+    let dir = if m0 > 0.0 { 1.0 } else { -1.0 };
+    let mut h = 0.05 * guess.abs().max(1.0);
+    let (mut a, mut fa) = (guess, m0);
+    let (mut b, mut fb) = (guess, m0);
+    let mut found = false;
+    for _ in 0..80 {
+        b = guess + dir * h;
+        fb = eval(b)?.0;
+        if fb.signum() != m0.signum() {
+            found = true;
+            break;
+        }
+        a = b;
+        fa = fb;
+        h *= 2.0;
+    }
+    if !found {
+        return Err(LossError::SpinBracket {
+            roller,
+            spin_rad_s: b,
+            moment_nm: fb,
+        });
+    }
+    // Illinois false position on [a, b] with M(a), M(b) of opposite signs.
+    let mut side = 0i8;
+    let (mut s, mut fs, mut scale) = (b, fb, sc0);
+    for _ in 0..200 {
+        s = (a * fb - b * fa) / (fb - fa);
+        if !s.is_finite() || s <= a.min(b) || s >= a.max(b) {
+            s = 0.5 * (a + b);
+        }
+        let (m, sc) = eval(s)?;
+        fs = m;
+        scale = sc;
+        if m.abs() <= SPIN_MOMENT_TOLERANCE * sc || (b - a).abs() <= 1e-12 * s.abs().max(1.0) {
+            return Ok((s, m, sc));
+        }
+        if m.signum() == fb.signum() {
+            b = s;
+            fb = m;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        } else {
+            a = s;
+            fa = m;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Err(LossError::SpinNotConverged {
+        roller,
+        spin_rad_s: s,
+        moment_nm: fs,
+        scale_nm: scale,
+    })
+}
+
+/// One roller's spin at a cage speed: the solved spin and its balance.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RollerSpin {
+    /// ω_s about the roller axis relative to the cage, rad/s.
+    pub spin_rad_s: f64,
+    /// M(ω_s), the residual moment about the roller axis, N·m.
+    pub residual_nm: f64,
+    /// Σ|F_k·m_k| + |pocket moment|, N·m (the residual's scale).
+    pub scale_nm: f64,
+    /// False for a roller with no loaded lamina: it keeps the statics' spin.
+    pub balanced: bool,
+    /// The spins at which the inner / outer contact rolls without sliding at its load
+    /// centroid, Σq·(ring_arm·Δω)/Σq·m, rad/s (`None` for an unloaded contact).
+    pub rolling_spin_inner_rad_s: Option<f64>,
+    /// As `rolling_spin_inner_rad_s`, outer contact.
+    pub rolling_spin_outer_rad_s: Option<f64>,
+}
+
+impl LossKinematics {
+    /// The statics' spin carried to cage speed `wc`: App. C's spin scales with the inner
+    /// ring's speed relative to the cage (as the statics scale it for a measured cage).
+    fn spin_guess(&self, wc: f64) -> f64 {
+        let wi = self.common.inner_speed_rad_s;
+        let d = wi - self.statics_cage_rad_s;
+        if d != 0.0 && (wi - wc).is_finite() {
+            self.statics_spin_rad_s * (wi - wc) / d
+        } else {
+            self.statics_spin_rad_s
+        }
+    }
+
+    /// Each roller's spin at cage speed `wc`, rad/s (module notes "Roller spin").
+    ///
+    /// # Errors
+    /// [`LossError::SpinBracket`] / [`LossError::SpinNotConverged`] with the numbers, or a
+    /// lamina / pocket input error.
+    pub fn spins_at(&self, wc: f64) -> Result<Vec<RollerSpin>, LossError> {
+        let guess = self.spin_guess(wc);
+        let ring_w = [self.common.inner_speed_rad_s, self.common.outer_speed_rad_s];
+        self.rollers
+            .iter()
+            .enumerate()
+            .map(|(k, r)| {
+                let rolling = |side: usize| {
+                    let (mut num, mut den) = (0.0, 0.0);
+                    for l in &r.sides[side] {
+                        num += l.slice.load_n * l.ring_arm_m * (ring_w[side] - wc);
+                        den += l.slice.load_n * l.spin_arm_m;
+                    }
+                    (den != 0.0).then(|| num / den)
+                };
+                let (ri, ro) = (rolling(0), rolling(1));
+                if r.sides.iter().all(Vec::is_empty) {
+                    return Ok(RollerSpin {
+                        spin_rad_s: guess,
+                        residual_nm: 0.0,
+                        scale_nm: 0.0,
+                        balanced: false,
+                        rolling_spin_inner_rad_s: ri,
+                        rolling_spin_outer_rad_s: ro,
+                    });
+                }
+                let (s, m, sc) = solve_spin(r, k, &self.common, wc, guess)?;
+                Ok(RollerSpin {
+                    spin_rad_s: s,
+                    residual_nm: m,
+                    scale_nm: sc,
+                    balanced: true,
+                    rolling_spin_inner_rad_s: ri,
+                    rolling_spin_outer_rad_s: ro,
+                })
+            })
+            .collect()
+    }
+
+    /// The moment about roller `k`'s axis at spin `spin` and cage speed `wc`, N·m (the
+    /// balance [`Self::spins_at`] zeroes; for tests and reports).
+    ///
+    /// # Errors
+    /// As [`Self::spins_at`]; [`LossError::BadInput`] for a roller index out of range.
+    pub fn roller_moment_nm(&self, k: usize, wc: f64, spin: f64) -> Result<f64, LossError> {
+        let r = self.rollers.get(k).ok_or(LossError::BadInput {
+            name: "roller index",
+            value: k as f64,
+            allowed: "below the roller count",
+        })?;
+        spin_moment(r, k, &self.common, wc, spin).map(|(m, _, _)| m)
+    }
+
+    /// The loss inputs at cage speed `wc` with each roller at its spin.
+    ///
+    /// # Errors
+    /// As [`Self::spins_at`].
+    pub fn inputs_at(&self, wc: f64) -> Result<LossInputs, LossError> {
+        let spins = self.spins_at(wc)?;
+        let ring_w = [self.common.inner_speed_rad_s, self.common.outer_speed_rad_s];
+        let mut out = self.common.clone();
+        out.cage_speed_rad_s = wc;
+        out.rollers = self
+            .rollers
+            .iter()
+            .zip(&spins)
+            .map(|(r, sp)| {
+                let s = sp.spin_rad_s;
+                let [inner, outer] = [0, 1].map(|k| {
+                    r.sides[k]
+                        .iter()
+                        .map(|l| slice_at(l, ring_w[k], wc, s))
+                        .collect::<Vec<_>>()
+                });
+                RollerLossInput {
+                    row: r.row,
+                    inner,
+                    outer,
+                    guide_ring_load_n: r.guide_ring_load_n,
+                    pocket_force_n: None,
+                    orbital_speed_rad_s: wc,
+                    roller_end_speed_m_s: r.end_spin_arm_m * s,
+                    surface_speed_m_s: s * self.common.pocket.roller_radius_m,
+                    spin_rad_s: s,
+                }
+            })
+            .collect();
+        Ok(out)
+    }
+
+    /// The cage speed of the cage's torque balance (imbalance 0), rad/s, with the
+    /// breakdown there: a bracket around `start` (expanding by factors, kept between the
+    /// rings' speeds), closed by the Illinois false position; the roller spins are solved
+    /// inside every evaluation.
+    ///
+    /// # Errors
+    /// [`LossError::CageBracket`] when the imbalance keeps its sign up to the ring speeds,
+    /// [`LossError::CageNotConverged`], or the breakdown's errors.
+    pub fn balanced_cage(&self, start: f64) -> Result<(f64, LossBreakdown), LossError> {
+        let wi = self.common.inner_speed_rad_s;
+        let wo = self.common.outer_speed_rad_s;
+        let (lo, hi) = (wi.min(wo), wi.max(wo));
+        let eval = |w: f64| -> Result<(f64, f64, LossBreakdown), LossError> {
+            let b = loss_breakdown(&self.inputs_at(w)?)?;
+            let scale: f64 = b
+                .rollers
+                .iter()
+                .map(|r| r.circumferential_force_n.abs())
+                .sum::<f64>()
+                * 0.5
+                * self.common.pitch_diameter_m
+                + b.cage_land_torque_nm.abs()
+                + b.losses.friction_torque_nm;
+            Ok((b.losses.cage_torque_imbalance_nm, scale, b))
+        };
+        if hi - lo <= 0.0 {
+            let b = loss_breakdown(&self.inputs_at(start)?)?;
+            return Ok((start, b));
+        }
+        let start = start.clamp(lo, hi);
+        let (f0, sc0, b0) = eval(start)?;
+        if f0.abs() <= CAGE_TORQUE_TOLERANCE * sc0 {
+            return Ok((start, b0));
+        }
+        // The net traction drives the cage forward while it lags: the imbalance falls as
+        // the cage speeds up (toward ω_i when ω_i > ω_o).
+        let up = if (f0 > 0.0) == (wi >= wo) { 1.0 } else { -1.0 };
+        let mut h = 0.01 * (hi - lo);
+        let (mut a, mut fa) = (start, f0);
+        let (mut b, mut fb);
+        loop {
+            b = (start + up * h).clamp(lo, hi);
+            fb = eval(b)?.0;
+            if fb.signum() != f0.signum() {
+                break;
+            }
+            if b == lo || b == hi {
+                return Err(LossError::CageBracket {
+                    start_rpm: start * RPM,
+                    end_rpm: b * RPM,
+                    imbalance_start_nm: f0,
+                    imbalance_end_nm: fb,
+                });
+            }
+            a = b;
+            fa = fb;
+            h *= 2.0;
+        }
+        let mut side = 0i8;
+        let mut last = (b, fb);
+        for _ in 0..100 {
+            let mut w = (a * fb - b * fa) / (fb - fa);
+            if !w.is_finite() || w <= a.min(b) || w >= a.max(b) {
+                w = 0.5 * (a + b);
+            }
+            let (f, sc, br) = eval(w)?;
+            last = (w, f);
+            if f.abs() <= CAGE_TORQUE_TOLERANCE * sc {
+                return Ok((w, br));
+            }
+            if (b - a).abs() <= 1e-12 * wi.abs().max(1.0) {
+                break;
+            }
+            if f.signum() == fb.signum() {
+                b = w;
+                fb = f;
+                if side == 1 {
+                    fa *= 0.5;
+                }
+                side = 1;
+            } else {
+                a = w;
+                fa = f;
+                if side == -1 {
+                    fb *= 0.5;
+                }
+                side = -1;
+            }
+        }
+        Err(LossError::CageNotConverged {
+            cage_rpm: last.0 * RPM,
+            imbalance_nm: last.1,
+        })
+    }
+}
+
+const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+/// The statics reduced to the loss model's kinematics (module notes; issue 27 Model 2–4):
 ///
 /// * per loaded lamina of each raceway: its load and width (the statics), the Hertz
-///   half-width (the row's stress stage), p₀ = 2q/(π·b·L), the film (the row's film
-///   stage), the sliding speed along +θ (`kinematics::sliding_velocity`, raceway minus
-///   roller, seed 000 eq. 8.1–8.5) and the entrainment speed ½(|u_ring| + |u_roller|) in
-///   the cage frame, both at the cage speed and roller spin the statics' dynamic loads used
-///   (`DoubleRowAnalysis::dynamic`: the measured cage speed, or the computed one);
-/// * per roller: the guide ring's end load (the statics' unilateral contact), the roller
-///   end's speed at its contact point relative to the cage (ω_s·a × (p − c), nearly 0: the
-///   contact lies on the roller axis but for the roller's tilt), the orbital speed ω_c,
-///   the surface speed ω_s·D_W/2 at the pocket, and the pocket force left to the
-///   breakdown (the roller's net circumferential traction);
+///   half-width (the row's stress stage), p₀ = 2q/(π·b·L), the film (the row's film stage,
+///   at the statics' spin: kept when the spin moves, a film ∝ u^0.67 changing by 2/3 of the
+///   entrainment's relative change), and the two arms of the sliding speed
+///   (`kinematics::sliding_velocity`, raceway minus roller, seed 000 eq. 8.1–8.5);
+/// * per roller: the guide ring's end load (the statics' unilateral contact) and the
+///   end contact point's arm ((a × (p − c))·ê_θ, nearly 0: the contact lies on the roller
+///   axis but for the roller's tilt);
 /// * the lubricant at the measured temperature (Walther), the deck's pressure–viscosity
 ///   and traction law, the ATZ constants the statics' row bearing carries; drag off (the
 ///   seed has none; no deck key yet).
@@ -585,7 +1098,7 @@ fn guide_reduced_modulus_pa(input: &DoubleRowInput) -> f64 {
 /// # Errors
 /// [`LossError::Viscosity`] for an oil outside D341's range, [`LossError::MissingStage`]
 /// if a row's stresses or films are absent.
-pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
+pub fn loss_kinematics(a: &DoubleRowAnalysis) -> Result<LossKinematics, LossError> {
     let input = &a.input;
     let g = &input.geometry;
     let eta = input.try_viscosity_pa_s()?;
@@ -601,9 +1114,7 @@ pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
         Traction::NewtonianEq3 => RacewayTractionLaw::NewtonianEq3,
     };
     let wi = input.operating.inner_speed_rad_s;
-    let ring_w = [wi, 0.0];
     let wc = a.dynamic.cage_rad_s;
-    let spin = a.dynamic.roller_spin_rad_s;
     let beta = g.contact_angle_rad;
     let a0 = [beta.cos(), -beta.sin(), 0.0];
     let half_l = 0.5 * g.roller_length_m;
@@ -635,7 +1146,7 @@ pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
                 r.radial_displacement_m + 0.5 * g.pitch_diameter_m,
                 0.0,
             ];
-            let mut sides: [Vec<LaminaSlice>; 2] = [Vec::new(), Vec::new()];
+            let mut sides: [Vec<LaminaKinematics>; 2] = [Vec::new(), Vec::new()];
             for (i, l) in r.laminae.iter().enumerate() {
                 for (k, side) in sides.iter_mut().enumerate() {
                     let (Some(ct), Some(h)) = (rc.get(i).map(|p| p[k]), hz.get(i).map(|p| p[k]))
@@ -650,48 +1161,44 @@ pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
                     } else {
                         l.outer_point_m
                     };
-                    let v =
-                        sliding_velocity([pt[0], pt[1], 0.0], ring_w[k], wc, centre, axis, spin);
+                    let p = [pt[0], pt[1], 0.0];
                     let strip = HertzStrip {
                         load_n: ct.load_n,
                         half_width_m: h.half_width_m,
                         width_m: ct.width_m,
                     };
-                    let u = 0.5
-                        * (((ring_w[k] - wc) * ct.ring_axis_distance_m).abs()
-                            + (spin * ct.roller_axis_distance_m).abs());
-                    side.push(LaminaSlice {
-                        load_n: ct.load_n,
-                        half_width_m: h.half_width_m,
-                        length_m: ct.width_m,
-                        peak_pressure_pa: strip.peak_pressure_pa(),
-                        rolling_speed_m_s: u,
-                        sliding_speed_m_s: v,
-                        film_m: fl.get(i).and_then(|p| p[k]).unwrap_or(0.0),
-                        axial_offset_m: l.offset_m,
+                    side.push(LaminaKinematics {
+                        slice: LaminaSlice {
+                            load_n: ct.load_n,
+                            half_width_m: h.half_width_m,
+                            length_m: ct.width_m,
+                            peak_pressure_pa: strip.peak_pressure_pa(),
+                            rolling_speed_m_s: 0.0,
+                            sliding_speed_m_s: 0.0,
+                            film_m: fl.get(i).and_then(|p| p[k]).unwrap_or(0.0),
+                            axial_offset_m: l.offset_m,
+                        },
+                        ring_arm_m: sliding_velocity(p, 1.0, 0.0, centre, axis, 0.0),
+                        spin_arm_m: -sliding_velocity(p, 0.0, 0.0, centre, axis, 1.0),
+                        ring_axis_distance_m: ct.ring_axis_distance_m,
+                        roller_axis_distance_m: ct.roller_axis_distance_m,
                     });
                 }
             }
             // The end contact point: the end sphere's centre (L/2 − r_e along −a from the
             // roller centre) less r_e along the face normal a⁰; its speed relative to the
-            // cage is the roller's ω_s·a × (p − c) along +θ (the ring term cancels at a ring
-            // speed equal to the cage's).
+            // cage is ω_s·(a × (p − c))·ê_θ (the ring term cancels at a ring speed equal to
+            // the cage's).
             let end_point = [
                 centre[0] - (half_l - re) * axis[0] - re * a0[0],
                 centre[1] - (half_l - re) * axis[1] - re * a0[1],
                 0.0,
             ];
-            let end_speed = -sliding_velocity(end_point, wc, wc, centre, axis, spin);
-            let [inner, outer] = sides;
-            rollers.push(RollerLossInput {
+            rollers.push(RollerKinematics {
                 row: u8::try_from(row + 1).unwrap_or(u8::MAX),
-                inner,
-                outer,
+                sides,
                 guide_ring_load_n: if with_guide { r.guide_force_n } else { 0.0 },
-                pocket_force_n: None,
-                orbital_speed_rad_s: wc,
-                roller_end_speed_m_s: end_speed,
-                surface_speed_m_s: spin * 0.5 * g.roller_diameter_m,
+                end_spin_arm_m: -sliding_velocity(end_point, 0.0, 0.0, centre, axis, 1.0),
             });
         }
     }
@@ -708,40 +1215,74 @@ pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
         DeckCageLand::GuideRing => (CageLandKind::GuideRing, d.guide_contact_radius_m),
         DeckCageLand::InnerRing => (CageLandKind::InnerRing, d.guide_bore_radius_m),
     };
-    Ok(LossInputs {
+    let kinematic = DynamicSpeeds::app_c_estimate(&a.row_bearing).cage_rad_s;
+    Ok(LossKinematics {
         rollers,
-        inner_speed_rad_s: wi,
-        outer_speed_rad_s: 0.0,
-        cage_speed_rad_s: wc,
-        guide_ring,
-        pocket: PocketGeometry {
-            roller_radius_m: 0.5 * g.roller_diameter_m,
-            length_m: g.roller_length_m,
-            pocket_clearance_m: input.cage.pocket_clearance_m,
+        common: LossInputs {
+            rollers: Vec::new(),
+            inner_speed_rad_s: wi,
+            outer_speed_rad_s: 0.0,
+            cage_speed_rad_s: wc,
+            kinematic_cage_speed_rad_s: kinematic,
+            guide_ring,
+            pocket: PocketGeometry {
+                roller_radius_m: 0.5 * g.roller_diameter_m,
+                length_m: g.roller_length_m,
+                pocket_clearance_m: input.cage.pocket_clearance_m,
+            },
+            cage_land: CageLand {
+                kind,
+                radius_m: radius,
+                width_m: input.guide_ring.width_m,
+                radial_clearance_m: 0.5 * input.cage.pocket_clearance_m,
+            },
+            pitch_diameter_m: g.pitch_diameter_m,
+            lubricant: LossLubricant {
+                rheology,
+                law,
+                density_kg_m3: input.lubricant.density_kg_m3,
+                drag_factor: None,
+            },
         },
-        cage_land: CageLand {
-            kind,
-            radius_m: radius,
-            width_m: input.guide_ring.width_m,
-            radial_clearance_m: 0.5 * input.cage.pocket_clearance_m,
-        },
-        pitch_diameter_m: g.pitch_diameter_m,
-        lubricant: LossLubricant {
-            rheology,
-            law,
-            density_kg_m3: input.lubricant.density_kg_m3,
-            drag_factor: None,
-        },
+        statics_cage_rad_s: wc,
+        statics_spin_rad_s: a.dynamic.roller_spin_rad_s,
+        computed_cage: input.cage.speed == CageSpeedSource::Computed,
     })
 }
 
-/// The loss breakdown of a solved double-row bearing: [`loss_inputs`] then
-/// [`loss_breakdown`]. The signature is stable (the osculation optimiser's objective).
+/// The loss model's inputs at the cage speed the statics used (the measured one, or the
+/// statics' §7 estimate), each roller at the spin of its moment balance
+/// ([`loss_kinematics`] then [`LossKinematics::inputs_at`]).
 ///
 /// # Errors
-/// [`LossError`] naming the stage, roller, raceway, lamina or input at fault.
+/// As [`loss_kinematics`] and [`LossKinematics::inputs_at`].
+pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
+    let k = loss_kinematics(a)?;
+    k.inputs_at(k.statics_cage_rad_s)
+}
+
+/// The loss breakdown of a solved double-row bearing. With `cage.speed = "measured"` at
+/// the measured cage speed (the imbalance reported); with `"computed"` at the cage speed of
+/// the cage's torque balance, bracketed around the statics' §7 estimate (the loads stay the
+/// statics', whose centrifugal force used the §7 speed: `centrifugal_cage_speed_rpm` beside
+/// `cage_speed_rpm` shows the inconsistency). The signature is stable (the osculation
+/// optimiser's objective).
+///
+/// # Errors
+/// [`LossError`] naming the stage, roller, raceway, lamina or input at fault, or the
+/// cage's or a roller's balance that could not be bracketed or closed.
 pub fn losses(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
-    loss_breakdown(&loss_inputs(a)?)
+    let k = loss_kinematics(a)?;
+    let mut b = if k.computed_cage {
+        let (wc, mut b) = k.balanced_cage(k.statics_cage_rad_s)?;
+        b.losses.cage_speed_rpm = wc * RPM;
+        b.cage_speed_computed = true;
+        b
+    } else {
+        loss_breakdown(&k.inputs_at(k.statics_cage_rad_s)?)?
+    };
+    b.centrifugal_cage_speed_rpm = k.statics_cage_rad_s * RPM;
+    Ok(b)
 }
 
 #[cfg(test)]
@@ -796,6 +1337,7 @@ mod tests {
                     orbital_speed_rad_s: wc,
                     roller_end_speed_m_s: 0.02 * speed_scale,
                     surface_speed_m_s: 1.5 * speed_scale,
+                    spin_rad_s: 250.0 * speed_scale,
                 }
             })
             .collect();
@@ -804,6 +1346,7 @@ mod tests {
             inner_speed_rad_s: wi,
             outer_speed_rad_s: 0.0,
             cage_speed_rad_s: wc,
+            kinematic_cage_speed_rad_s: wc,
             guide_ring: Some(GuideRingGeometry {
                 roller_end_radius_m: 0.03,
                 reduced_modulus_pa: 1.26e11,
@@ -906,10 +1449,12 @@ mod tests {
                 orbital_speed_rad_s: 100.0,
                 roller_end_speed_m_s: 0.0,
                 surface_speed_m_s: 2.0,
+                spin_rad_s: 2.0 / 0.006,
             }],
             inner_speed_rad_s: 250.0,
             outer_speed_rad_s: 10.0,
             cage_speed_rad_s: 100.0,
+            kinematic_cage_speed_rad_s: 100.0,
             guide_ring: None,
             pocket: PocketGeometry {
                 roller_radius_m: 0.006,

@@ -200,7 +200,8 @@ const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
 /// The loss breakdown into the JSON report `v` (issue 27 "Outputs"): `losses` {…},
 /// `guide_ring.speed_rpm` (the ring's torque balance; absent without a guide ring) and,
 /// per roller (both rows, in the report's order), `guide_ring_load_n`, `pocket_force_n`
-/// (the roller's force on its pocket along +θ, N) and `skew_moment_nm`.
+/// (the roller's force on its pocket along +θ, N), `skew_moment_nm` and `spin_rad_s` (the
+/// spin of the roller's moment balance about its axis, relative to the cage).
 pub fn add_losses(v: &mut Value, l: &LossBreakdown) {
     let Some(m) = v.as_object_mut() else {
         return;
@@ -221,6 +222,7 @@ pub fn add_losses(v: &mut Value, l: &LossBreakdown) {
                 o.insert("guide_ring_load_n".into(), json!(rl.guide_ring_load_n));
                 o.insert("pocket_force_n".into(), json!(rl.pocket_force_n));
                 o.insert("skew_moment_nm".into(), json!(rl.skew_moment_nm));
+                o.insert("spin_rad_s".into(), json!(rl.spin_rad_s));
             }
         }
     }
@@ -257,6 +259,22 @@ pub fn loss_lines(l: &LossBreakdown, units: Units) -> Vec<String> {
         t.from_si(x.friction_torque_nm, units),
         t.from_si(x.cage_torque_imbalance_nm, units),
     ));
+    v.push(format!(
+        "  cage speed {:.1} rpm ({}), slip {:.2} % against the kinematic speed",
+        x.cage_speed_rpm,
+        if l.cage_speed_computed {
+            "the cage's torque balance"
+        } else {
+            "measured"
+        },
+        x.cage_slip_pct
+    ));
+    if l.cage_speed_computed {
+        v.push(format!(
+            "  the statics' centrifugal loads used {:.1} rpm (the §7 estimate)",
+            l.centrifugal_cage_speed_rpm
+        ));
+    }
     if let Some(g) = &l.guide_ring {
         v.push(format!(
             "  guide ring speed {:.1} rpm (its torque balance)",

@@ -310,8 +310,8 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
 }
 
 /// The Losses pane's lines in `units`: one bar per mechanism (length ∝ its share of the
-/// total, 20 cells for the largest), its W and %, then M_fi, M_fo, M and the cage's torque
-/// imbalance, and the guide ring's speed.
+/// total, 20 cells for the largest), its W and %, then M_fi, M_fo, M, the cage's speed
+/// (measured or balanced), its slip and torque imbalance, and the guide ring's speed.
 pub fn loss_bars(l: &LossBreakdown, units: Units) -> Vec<String> {
     let x = &l.losses;
     let s = &x.shares_pct;
@@ -345,6 +345,16 @@ pub fn loss_bars(l: &LossBreakdown, units: Units) -> Vec<String> {
         t.from_si(x.friction_torque_inner_nm, units),
         t.from_si(x.friction_torque_outer_nm, units),
         t.from_si(x.friction_torque_nm, units)
+    ));
+    v.push(format!(
+        "cage {:.1} rpm ({}), slip {:.2} %",
+        x.cage_speed_rpm,
+        if l.cage_speed_computed {
+            "balanced"
+        } else {
+            "measured"
+        },
+        x.cage_slip_pct,
     ));
     v.push(format!(
         "cage imbalance {:.4} {u}",
