@@ -315,7 +315,7 @@ mod property {
     use super::*;
     use crate::bearings::tapered_roller::contact::ContactEval;
     use proptest::prelude::*;
-    use proptest::test_runner::{Config, TestCaseError, TestRunner};
+    use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
     use std::cell::RefCell;
 
     prop_compose! {
@@ -491,6 +491,34 @@ mod property {
         Ok(())
     }
 
+    /// The CI run's seed: a fixed one, so that a run on a fresh machine draws the same
+    /// cases as the one that was measured (proptest's default seed is random).
+    const SEED: u64 = 0x7a9e_5eed;
+
+    /// `cases` cases from `seed`; `PROPTEST_CASES` and `PROPTEST_RNG_SEED` override them
+    /// (to scale a run up or replay a seed). At most 1 in 50 cases (8 at least) may be
+    /// skipped for a kink (measured: 14 in 21 374 solved cases, 1 in 1 500): a detector
+    /// firing more often than that would be hollowing the property out, and the run
+    /// aborts.
+    fn config(cases: u32, seed: RngSeed) -> Config {
+        let env = Config::default();
+        let cases = if std::env::var_os("PROPTEST_CASES").is_some() {
+            env.cases
+        } else {
+            cases
+        };
+        Config {
+            cases,
+            rng_seed: match env.rng_seed {
+                RngSeed::Fixed(_) => env.rng_seed,
+                RngSeed::Random => seed,
+            },
+            max_global_rejects: (cases / 50).max(8),
+            source_file: Some(file!()),
+            ..env
+        }
+    }
+
     fn run(config: Config) {
         let tally = RefCell::new(Tally::default());
         let seed = config.rng_seed;
@@ -545,16 +573,28 @@ mod property {
     /// of the effective length); largest gap 3.2e-8 (the plain central difference of the
     /// same cases: up to 7.6e-5).
     ///
+    /// Deterministic: the seed is fixed ([`SEED`]). To explore, run the ignored
+    /// `analytic_matches_differences_random_seeds` (a fresh seed each run, printed), or
+    /// this one with `PROPTEST_RNG_SEED=<u64>` and/or `PROPTEST_CASES=<n>`; each prints
+    /// its tally with `--nocapture`.
     #[test]
     fn analytic_matches_differences_or_typed_error() {
-        run(Config {
-            cases: 24,
-            // At most 8 skipped (measured: 1 in 1 500 solved cases): a detector firing
-            // more often would be hollowing the property out, and the run aborts.
-            max_global_rejects: 8,
-            source_file: Some(file!()),
-            ..Config::default()
-        });
+        run(config(24, RngSeed::Fixed(SEED)));
+    }
+
+    /// The same property from a fresh random seed each run, 2 000 cases (about 10 s):
+    /// `cargo test --lib tapered_roller::bearing::tests::property -- --ignored --nocapture`.
+    /// The seed is printed (replay it with `PROPTEST_RNG_SEED`); a failure prints the
+    /// shrunk case and persists it under `proptest-regressions/`.
+    #[test]
+    #[ignore = "random exploration; the fixed-seed run is analytic_matches_differences_or_typed_error"]
+    fn analytic_matches_differences_random_seeds() {
+        use std::hash::{BuildHasher, Hasher};
+        // A per-process random number (std's hasher keys are drawn from the OS).
+        let seed = std::collections::hash_map::RandomState::new()
+            .build_hasher()
+            .finish();
+        run(config(2_000, RngSeed::Fixed(seed)));
     }
 
     /// The kink detector is not hollow. Pure thrust with 2e-4 rad misalignment at rest,
