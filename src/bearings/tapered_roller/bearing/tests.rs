@@ -309,10 +309,14 @@ fn speed_sweep_is_smooth_and_ends_in_a_typed_error() {
     assert!(b.dynamics.centrifugal_force_n > 0.0);
 }
 
+/// The random property: analytic stiffness against re-solved differences over random
+/// bearings. Shared by the fixed-seed run (CI) and the ignored random-seed exploration.
 mod property {
     use super::*;
+    use crate::bearings::tapered_roller::contact::ContactEval;
     use proptest::prelude::*;
-    use proptest::test_runner::Config;
+    use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
+    use std::cell::RefCell;
 
     prop_compose! {
         fn case()(
@@ -351,34 +355,295 @@ mod property {
         }
     }
 
-    proptest! {
-        #![proptest_config(Config { cases: 24, ..Config::default() })]
+    /// Where a roller's reactions have a kink: its state (both races, cup and flange,
+    /// free: eqs. 121–130 take over when the cone lets go), and per contact (cup, cone)
+    /// whether it touches and whether its small/big end is held at the end of the
+    /// effective length (eqs. 52–53: the end's ∂X/∂Δ drops to zero there, and with it the
+    /// contact length's share ∂p/∂L·∂L/∂Δ of every slice's stiffness: the stiffness
+    /// jumps). Between two points with equal signatures every roller's reactions are
+    /// smooth (the flat/crown junction, eq. 54, is the one other kink; the property's
+    /// rollers are fully crowned).
+    type Signature = (RollerState, [bool; 3], [bool; 3]);
 
-        /// Over random geometry, load, speed and misalignment: a converged equilibrium
-        /// (forces balanced to 1e-8 of the thrust, everything finite) whose analytic
-        /// stiffness matches re-solved central differences to 1e-5 of each row's scale,
-        /// or a typed error; never NaN, never a panic. (Measured over 200 cases: 178
-        /// solved, largest gap 1.3e-7; 22 typed errors, all the flanges' centrifugal thrust
-        /// exceeding a light thrust at speed.)
-        #[test]
-        fn analytic_matches_differences_or_typed_error(s in case()) {
-            let b = Bearing::new(&s).unwrap();
-            match b.solve() {
-                Ok(sol) => {
-                    prop_assert!(sol.stiffness.iter().all(|v| v.is_finite()));
-                    let op = &s.operating;
-                    prop_assert!((sol.reaction[2] - op.axial_load_n).abs() < 1e-8 * op.axial_load_n);
-                    prop_assert!((sol.reaction[0] - op.radial_load_n).abs() < 1e-8 * op.axial_load_n);
-                    let fd = b.stiffness_fd(&sol).unwrap();
-                    let diff = fd_difference(&sol.stiffness, &fd, b.geometry.moment_radius_m);
-                    prop_assert!(diff < 1e-5, "gap {diff}");
+    fn signature(b: &Bearing, r: &RollerSolution) -> Signature {
+        let half_le = 0.5 * b.input.geometry.effective_length_m;
+        let v = b.geometry.crown_drop_m;
+        let ends = |e: &ContactEval, theta: f64| {
+            // The limits of eqs. 52–53 at the contact's misalignment; an end clamped
+            // there equals it to round-off of half the effective length.
+            let (s, c) = theta.sin_cos();
+            let (lo, hi) = (-half_le * c + v * s, half_le * c + v * s);
+            let on = e.load_n > 0.0;
+            let at = |x: f64, lim: f64| on && (x - lim).abs() <= 1e-12 * half_le;
+            [on, at(e.extent_m[0], lo), at(e.extent_m[1], hi)]
+        };
+        (
+            r.state,
+            ends(&r.cup, r.theta1_rad),
+            ends(&r.cone, r.theta2_rad),
+        )
+    }
+
+    /// Differences of re-solved reactions about `sol` with the step h of
+    /// [`Bearing::stiffness_fd`] (1e-5 of the largest roller approach, rotations h/R_m).
+    struct Differences {
+        /// Richardson's extrapolation (4·D(h/2) − D(h))/3 of the central differences D:
+        /// their h² truncation cancels, the remainder is O(h⁴).
+        richardson: Matrix5,
+        /// The plain central difference D(h) (reported: its h² error is what failed).
+        central: Matrix5,
+        /// Rollers whose [`Signature`] at x ± h differs from the base point's: a kink
+        /// inside the step (the half steps lie between), where no difference is a
+        /// derivative.
+        kinks: Vec<String>,
+    }
+
+    fn differences(b: &Bearing, sol: &BearingSolution) -> Result<Differences, BearingError> {
+        let dmax = sol.rollers.iter().map(|r| r.1.abs()).fold(1e-9, f64::max);
+        let h = 1e-5 * dmax;
+        let rm = b.geometry.moment_radius_m;
+        let x0 = [
+            sol.displacement_m[0],
+            sol.displacement_m[1],
+            sol.displacement_m[2],
+            sol.rotation_rad[0],
+            sol.rotation_rad[1],
+        ];
+        let base: Vec<Signature> = sol.rollers.iter().map(|r| signature(b, &r.0)).collect();
+        let mut d = [Matrix5::zeros(), Matrix5::zeros()];
+        let mut kinks = Vec::new();
+        for j in 0..5 {
+            let hj = if j < 3 { h } else { h / rm };
+            for (m, step) in [hj, 0.5 * hj].into_iter().enumerate() {
+                let (mut xp, mut xm) = (x0, x0);
+                xp[j] += step;
+                xm[j] -= step;
+                let sp = b.state(&xp, Some(&sol.rollers))?;
+                let sn = b.state(&xm, Some(&sol.rollers))?;
+                if m == 0 {
+                    for (side, st) in [("+", &sp), ("−", &sn)] {
+                        for (q, r) in st.rollers.iter().enumerate() {
+                            let now = signature(b, &r.0);
+                            if now != base[q] {
+                                kinks.push(format!(
+                                    "column {j} {side}h: roller {} {:?} → {now:?}",
+                                    q + 1,
+                                    base[q]
+                                ));
+                            }
+                        }
+                    }
                 }
-                Err(e) => {
-                    let msg = e.to_string();
-                    prop_assert!(!msg.contains("NaN"), "{msg}");
+                for i in 0..5 {
+                    d[m][(i, j)] = (sp.reaction[i] - sn.reaction[i]) / (2.0 * step);
                 }
             }
         }
+        Ok(Differences {
+            richardson: (d[1] * 4.0 - d[0]) / 3.0,
+            central: d[0],
+            kinks,
+        })
+    }
+
+    /// What a run saw (printed with `--nocapture`).
+    #[derive(Default)]
+    struct Tally {
+        solved: usize,
+        typed_errors: usize,
+        skipped: Vec<String>,
+        largest: f64,
+        largest_central: f64,
+    }
+
+    fn check(s: &TaperedInput, tally: &RefCell<Tally>) -> Result<(), TestCaseError> {
+        let b = Bearing::new(s).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let sol = match b.solve() {
+            Ok(sol) => sol,
+            Err(e) => {
+                tally.borrow_mut().typed_errors += 1;
+                let msg = e.to_string();
+                prop_assert!(!msg.contains("NaN"), "{msg}");
+                return Ok(());
+            }
+        };
+        prop_assert!(sol.stiffness.iter().all(|v| v.is_finite()));
+        let op = &s.operating;
+        prop_assert!((sol.reaction[2] - op.axial_load_n).abs() < 1e-8 * op.axial_load_n);
+        prop_assert!((sol.reaction[0] - op.radial_load_n).abs() < 1e-8 * op.axial_load_n);
+        let d = differences(&b, &sol).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        if let Some(first) = d.kinks.first() {
+            tally.borrow_mut().skipped.push(first.clone());
+            return Err(TestCaseError::reject(format!(
+                "a kink inside the difference step: {first}"
+            )));
+        }
+        let rm = b.geometry.moment_radius_m;
+        let gap = fd_difference(&sol.stiffness, &d.richardson, rm);
+        let central = fd_difference(&sol.stiffness, &d.central, rm);
+        {
+            let mut t = tally.borrow_mut();
+            t.solved += 1;
+            t.largest = t.largest.max(gap);
+            t.largest_central = t.largest_central.max(central);
+        }
+        prop_assert!(gap < 1e-5, "gap {gap} (plain central difference {central})");
+        Ok(())
+    }
+
+    /// The CI run's seed: a fixed one, so that a run on a fresh machine draws the same
+    /// cases as the one that was measured (proptest's default seed is random).
+    const SEED: u64 = 0x7a9e_5eed;
+
+    /// `cases` cases from `seed`; `PROPTEST_CASES` and `PROPTEST_RNG_SEED` override them
+    /// (to scale a run up or replay a seed). At most 1 in 50 cases (8 at least) may be
+    /// skipped for a kink (measured: 14 in 21 374 solved cases, 1 in 1 500): a detector
+    /// firing more often than that would be hollowing the property out, and the run
+    /// aborts.
+    fn config(cases: u32, seed: RngSeed) -> Config {
+        let env = Config::default();
+        let cases = if std::env::var_os("PROPTEST_CASES").is_some() {
+            env.cases
+        } else {
+            cases
+        };
+        Config {
+            cases,
+            rng_seed: match env.rng_seed {
+                RngSeed::Fixed(_) => env.rng_seed,
+                RngSeed::Random => seed,
+            },
+            max_global_rejects: (cases / 50).max(8),
+            source_file: Some(file!()),
+            ..env
+        }
+    }
+
+    fn run(config: Config) {
+        let tally = RefCell::new(Tally::default());
+        let seed = config.rng_seed;
+        let cases = config.cases;
+        let mut runner = TestRunner::new(config);
+        let result = runner.run(&case(), |s| check(&s, &tally));
+        let t = tally.borrow();
+        println!(
+            "seed {seed}, {cases} cases: {} solved, {} typed errors, {} skipped for a kink inside the step; largest gap {:.2e} (Richardson), {:.2e} (plain central difference)",
+            t.solved,
+            t.typed_errors,
+            t.skipped.len(),
+            t.largest,
+            t.largest_central
+        );
+        for k in &t.skipped {
+            println!("  skipped: {k}");
+        }
+        if let Err(e) = result {
+            panic!("{e}");
+        }
+    }
+
+    /// Over random geometry, load, speed and misalignment: a converged equilibrium
+    /// (forces balanced to 1e-8 of the thrust, everything finite) whose analytic
+    /// stiffness matches re-solved differences to 1e-5 of each row's scale, or a typed
+    /// error; never NaN, never a panic.
+    ///
+    /// The differences: Richardson's extrapolation of central differences at h and h/2
+    /// (h = 1e-5 of the largest roller approach). Its error is the O(h⁴) remainder plus
+    /// the rollers' convergence noise (their tolerance, 1e-12 of the force scale, over a
+    /// step of 1e-5: ~1e-7 at most); 1e-5 is far above both and far below any modelling
+    /// error of the derivatives (leaving out the contact length's term of Lundberg's
+    /// logarithm alone gives ~1e-2). A case whose step straddles a kink (a roller
+    /// changing state, a contact end reaching or leaving the end of the effective length:
+    /// see [`Signature`]) is skipped and counted: there the stiffness itself jumps and no
+    /// difference is a derivative.
+    ///
+    /// Why: the plain central difference D(h) this test used failed about one run in 50.
+    /// Over 12 000 cases (seeds 1–4 × 3 000, instrumented) it exceeded 1e-5 in 9 of the
+    /// 10 652 solved ones: 7 a contact end crossing the end of the effective length
+    /// inside ±h (off by 4e-5 to 1.6e-3), 1 a roller leaving the cone inside ±h (3.4e-5),
+    /// 1 smooth but truncation-bound (1.17e-5: a cone contact at 1.1e-5 of its cup load;
+    /// the error ∝ h², 1.2e-7 at h/10). The analytic stiffness was never at fault: at
+    /// h/10 every case without a kink inside the step matched to 1.2e-7. (The 1 348
+    /// typed errors: 793 the flanges' centrifugal thrust exceeding a light thrust at
+    /// speed, 551 the radial load beyond what the thrust carries, 4 the ring Newton not
+    /// converging within 60 iterations near that radial limit at speed.)
+    ///
+    /// Measured with this test (`PROPTEST_CASES=3000`, `PROPTEST_RNG_SEED` 1–4): 12 000
+    /// cases, 10 722 solved, 1 278 typed errors, 6 skipped (all a contact end at the end
+    /// of the effective length); largest gap 3.2e-8 (the plain central difference of the
+    /// same cases: up to 7.6e-5).
+    ///
+    /// Deterministic: the seed is fixed ([`SEED`]). To explore, run the ignored
+    /// `analytic_matches_differences_random_seeds` (a fresh seed each run, printed), or
+    /// this one with `PROPTEST_RNG_SEED=<u64>` and/or `PROPTEST_CASES=<n>`; each prints
+    /// its tally with `--nocapture`.
+    #[test]
+    fn analytic_matches_differences_or_typed_error() {
+        run(config(24, RngSeed::Fixed(SEED)));
+    }
+
+    /// The same property from a fresh random seed each run, 2 000 cases (about 10 s):
+    /// `cargo test --lib tapered_roller::bearing::tests::property -- --ignored --nocapture`.
+    /// The seed is printed (replay it with `PROPTEST_RNG_SEED`); a failure prints the
+    /// shrunk case and persists it under `proptest-regressions/`.
+    #[test]
+    #[ignore = "random exploration; the fixed-seed run is analytic_matches_differences_or_typed_error"]
+    fn analytic_matches_differences_random_seeds() {
+        use std::hash::{BuildHasher, Hasher};
+        // A per-process random number (std's hasher keys are drawn from the OS).
+        let seed = std::collections::hash_map::RandomState::new()
+            .build_hasher()
+            .finish();
+        run(config(2_000, RngSeed::Fixed(seed)));
+    }
+
+    /// The kink detector is not hollow. Pure thrust with 2e-4 rad misalignment at rest,
+    /// fully crowned rollers: raising the thrust, the rollers' contacts grow until one
+    /// reaches an end of the effective length. At that thrust (bisected to 1e-13) the
+    /// difference step straddles the change and the detector names it; one grid step
+    /// (×1.25) below, it sees nothing.
+    #[test]
+    fn kink_detector_sees_a_contact_end_reach_the_roller_end() {
+        let at = |fa_lbf: f64| {
+            let mut s = sample(0.0, 0.0);
+            s.geometry.crown =
+                crate::bearings::tapered_roller::input::Crown::Radius(100.0 * INCH_M);
+            s.geometry.flat_length_m = 0.0;
+            s.operating.axial_load_n = fa_lbf * LBF_N;
+            s.operating.misalignment_rad = [0.0, 2e-4];
+            let (b, sol) = solve(&s);
+            let sig: Vec<Signature> = sol.rollers.iter().map(|r| signature(&b, &r.0)).collect();
+            (b, sol, sig)
+        };
+        let mut lo = 200.0;
+        let first = at(lo).2;
+        let mut hi = lo;
+        while at(hi).2 == first {
+            lo = hi;
+            hi *= 1.25;
+            assert!(
+                hi < 30_000.0,
+                "no contact reached a roller end below 30 000 lbf"
+            );
+        }
+        let below = lo;
+        let below_sig = at(below).2;
+        while hi - lo > 1e-13 * hi {
+            let mid = 0.5 * (lo + hi);
+            if at(mid).2 == below_sig {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let (b, sol, _) = at(hi);
+        let d = differences(&b, &sol).unwrap();
+        assert!(!d.kinks.is_empty(), "at {hi} lbf");
+        let (b, sol, _) = at(below);
+        let d = differences(&b, &sol).unwrap();
+        assert!(d.kinks.is_empty(), "at {below} lbf: {:?}", d.kinks);
+        let gap = fd_difference(&sol.stiffness, &d.richardson, b.geometry.moment_radius_m);
+        assert!(gap < 1e-5, "{gap}");
     }
 }
 /// A warm start from a neighbouring solution (the previous point of a speed sweep) gives
