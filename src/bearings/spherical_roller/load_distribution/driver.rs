@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 
 use super::diagnostics::diagnose;
+use super::float::GuideTerms;
 use super::problem::{Problem, RollerEval};
 use super::{InertialSensitivity, SolveOptions, SolveStats, TraceStep};
 use crate::bearings::spherical_roller::Bearing;
@@ -111,6 +112,9 @@ impl Problem {
         let mut g = Vector2::new(-self.load[0], -self.load[1]);
         let mut k = Matrix2::zeros();
         let mut worst = 0.0f64;
+        // The floating guide ring's terms (its third unknown; nothing without a guide ring,
+        // so the single-row bearing's arithmetic is untouched).
+        let mut guide = self.guide.as_ref().map(|_| GuideTerms::new(qs.len()));
         for (j, (&(cphi, mult), q)) in self.unique.iter().zip(qs.iter_mut()).enumerate() {
             let tr = match trace {
                 Some((idx, steps)) if *idx == j => Some((steps, ring_it)),
@@ -157,6 +161,9 @@ impl Problem {
             energy += mult * (ev.energy - 0.5 * ev.g_q.dot(&dq));
             g += mult * (ev.g_u - ev.h_uq * dq);
             // dq/du = −H_qq⁻¹ H_qu: predicts each roller's equilibrium at a trial ring step.
+            if let Some(gt) = guide.as_mut() {
+                self.add_guide_terms(gt, j, cphi, mult, u, q, &factor, &(-x));
+            }
             sens.push(-x);
             // Response to the inertial loads (radial force, pitching moment).
             let e = nalgebra::Matrix3x2::new(0.0, 0.0, 1.0, 0.0, 0.0, 1.0);
@@ -172,6 +179,7 @@ impl Problem {
             inertial_roller,
             inertial_ring,
             worst,
+            guide,
         })
     }
 
@@ -477,6 +485,8 @@ pub(super) struct RingState {
     /// Largest scaled roller residual, before the one-step Newton correction of
     /// `solve_rollers` (which only shrinks it).
     pub(super) worst: f64,
+    /// The floating guide ring's terms (None without a guide ring).
+    pub(super) guide: Option<GuideTerms>,
 }
 
 /// One roller's equilibrium at a fixed ring deflection as a [`NewtonSystem`]: the gradient

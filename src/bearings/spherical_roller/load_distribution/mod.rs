@@ -363,8 +363,8 @@ pub fn solve(
     let mut trace = options.trace_roller.map(|r| (p.unique_of(r), Vec::new()));
     let mut stats = SolveStats::default();
     let state = if p.guide.is_some() {
-        // The floating guide ring: the ring equilibrium at the guide ring's offset, with
-        // the offset balanced around it (starting from the warm start's).
+        // The floating guide ring: its offset a third unknown of the ring Newton (starting
+        // from the warm start's).
         p.guide_offset.set(
             options
                 .warm_start
