@@ -168,7 +168,7 @@ pub fn losses_command(
     format: Format,
 ) -> Result<String, (u8, String)> {
     use crate::bearings::double_row_spherical::load_sweep::{
-        dynamic_rating_n, parse_range, render, torque_point, Direction,
+        dynamic_rating_n, parse_range, render, torque_point_from, Direction,
     };
     use crate::bearings::double_row_spherical::system::DoubleRowCase;
     let Some(dr) = case.as_any().downcast_ref::<DoubleRowCase>() else {
@@ -194,12 +194,14 @@ pub fn losses_command(
         LossDirection::Combined => Direction::Combined,
     };
     let mut points = Vec::with_capacity(values.len());
+    // Each point's statics starts from the previous point's solution (same answers).
+    let mut from = None;
     for (k, x) in values.iter().enumerate() {
         eprintln!("losses: point {}/{} F/C = {x:.4}", k + 1, values.len());
-        points.push(
-            torque_point(input, &dr.form.name, dir, *x, c, None)
-                .map_err(|e| (exit::SOLVE_FAILED, format!("solve failed: {e}")))?,
-        );
+        let (p, next) = torque_point_from(input, &dr.form.name, dir, *x, c, from.as_ref(), None)
+            .map_err(|e| (exit::SOLVE_FAILED, format!("solve failed: {e}")))?;
+        points.push(p);
+        from = Some(next);
     }
     Ok(render(
         &points,

@@ -30,7 +30,9 @@ use serde::Serialize;
 
 use super::input::{CageSpeedSource, DoubleRowInput};
 use crate::bearings::spherical_roller::contacts::RollerContacts;
-use crate::bearings::spherical_roller::load_distribution::{DynamicSpeeds, LoadDistribution};
+use crate::bearings::spherical_roller::load_distribution::{
+    DynamicSpeeds, LoadDistribution, WarmStart,
+};
 use crate::bearings::spherical_roller::pipeline::{self, Analysis, Request};
 use crate::bearings::spherical_roller::{stages, Bearing};
 use crate::bearings::SolveError;
@@ -126,10 +128,45 @@ fn split(ld: &LoadDistribution, row: usize, z: usize) -> LoadDistribution {
     out
 }
 
-/// Solve the double-row bearing.
+/// A solved bearing's state as the start of a neighbouring solve ([`analyse_from`]): the
+/// dynamic speeds its loads were solved with and its unknowns (ring deflection, the guide
+/// ring's offset, each roller's axial, radial and pitch displacement, and their response
+/// to the inertial loads).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StaticsStart {
+    pub speeds: DynamicSpeeds,
+    pub warm: WarmStart,
+}
+
+impl DoubleRowAnalysis {
+    /// This solution as the start of a neighbour's solve.
+    pub fn start(&self) -> StaticsStart {
+        StaticsStart {
+            speeds: self.dynamic,
+            warm: self.combined.warm.clone(),
+        }
+    }
+}
+
+/// Solve the double-row bearing (a cold start: the statics' coarse-roller pre-solve).
 pub fn analyse(
     input: &DoubleRowInput,
     name: &str,
+    cancel: Option<&AtomicBool>,
+) -> Result<DoubleRowAnalysis, SolveError> {
+    analyse_from(input, name, None, cancel)
+}
+
+/// Solve the double-row bearing from `from`, a neighbouring solution (a sweep's previous
+/// point, a grid neighbour): its unknowns and speeds start the fine solve instead of the
+/// coarse pre-solve. Only the path changes: the fine solve and the dynamic-load iteration
+/// still decide convergence to the deck's tolerances, so the answer is the cold one to the
+/// ring tolerance (tested), with fewer lamina evaluations. A start with another roller count
+/// is ignored (cold start).
+pub fn analyse_from(
+    input: &DoubleRowInput,
+    name: &str,
+    from: Option<&StaticsStart>,
     cancel: Option<&AtomicBool>,
 ) -> Result<DoubleRowAnalysis, SolveError> {
     let start = Instant::now();
@@ -162,6 +199,7 @@ pub fn analyse(
         heat: false,
         layout,
         dynamic_speeds,
+        warm_start: from.map(|f| (f.speeds, f.warm.clone())),
         ..Request::default()
     };
     let whole = pipeline::run(&b, &request, cancel)?;
@@ -250,3 +288,7 @@ pub fn analyse(
         wall_time_s: start.elapsed().as_secs_f64(),
     })
 }
+
+#[cfg(test)]
+#[path = "statics_tests.rs"]
+mod tests;

@@ -41,6 +41,12 @@ pub struct Request {
     /// start (with `solver.dynamic_loads = "estimate"` they are used as given: a measured
     /// cage speed).
     pub dynamic_speeds: Option<DynamicSpeeds>,
+    /// Warm start of the load distribution: a previous solution's dynamic speeds and
+    /// unknowns (a neighbouring point of a sweep or a grid). The coarse pre-solve is skipped
+    /// and the dynamic-load iteration starts there (the speeds yield to `dynamic_speeds`
+    /// when those are imposed); the fine solve decides convergence to the deck's tolerances
+    /// as from any start. None (the default): the cold path, unchanged.
+    pub warm_start: Option<(DynamicSpeeds, WarmStart)>,
 }
 
 impl Default for Request {
@@ -54,6 +60,7 @@ impl Default for Request {
             thermal: None,
             layout: Layout::default(),
             dynamic_speeds: None,
+            warm_start: None,
         }
     }
 }
@@ -500,7 +507,9 @@ fn load_stage(
     let coarse = request.presolve && bearing.solver.laminae >= 2 * COARSE_LAMINAE;
     let mut stats = SolveStats::default();
     let mut iterations = 0;
-    let (start, warm) = if coarse {
+    let (start, warm) = if let Some((speeds, w)) = &request.warm_start {
+        (request.dynamic_speeds.unwrap_or(*speeds), Some(w.clone()))
+    } else if coarse {
         let mut c = bearing.clone();
         c.solver.laminae = COARSE_LAMINAE;
         c.solver.force_tolerance = c.solver.force_tolerance.max(COARSE_TOLERANCE);

@@ -104,10 +104,86 @@ pub fn axis(lo: f64, hi: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// An evaluator that starts from a neighbour's state `W` (its solution) when given one and
+/// returns the point's own (None when it solved nothing, e.g. a point that is no bearing).
+pub type WarmEvaluator<'a, D, W> =
+    dyn Fn(&[f64], Option<&W>) -> Result<(Eval<D>, Option<W>), PointError> + Sync + 'a;
+
+/// [`grid_warm`] with warm starts along the grid's rows: the grid is cut into runs along
+/// the last variable (whole rows, or pieces of them when there are fewer rows than twice
+/// the worker threads), the runs are evaluated in parallel, and within a run each point
+/// starts from its neighbour's state (the first cold). The points and their order are
+/// [`grid`]'s; only the evaluator's starts differ.
+pub fn grid_warm<D: Send, W: Send>(
+    lo: &[f64],
+    hi: &[f64],
+    n: usize,
+    eval: &WarmEvaluator<'_, D, W>,
+    cancel: Cancel,
+) -> Result<Vec<GridPoint<D>>, PointError> {
+    let axes: Vec<Vec<f64>> = lo.iter().zip(hi).map(|(a, b)| axis(*a, *b, n)).collect();
+    let dims = axes.len();
+    let total = axes.iter().map(Vec::len).product::<usize>();
+    let last = axes.last().map_or(1, Vec::len).max(1);
+    let rows = total / last;
+    let threads = rayon::current_num_threads().max(1);
+    let pieces = (2 * threads).div_ceil(rows.max(1)).clamp(1, last);
+    let run = last.div_ceil(pieces);
+    let runs: Vec<(usize, usize)> = (0..rows)
+        .flat_map(|r| {
+            (0..last)
+                .step_by(run)
+                .map(move |a| (r * last + a, (r * last + a + run).min((r + 1) * last)))
+        })
+        .collect();
+    let done = AtomicUsize::new(0);
+    let point = |flat: usize, warm: Option<&W>| -> Result<(GridPoint<D>, Option<W>), PointError> {
+        if cancel.is_cancelled() {
+            return Err(PointError::Cancelled);
+        }
+        let mut index = vec![0; dims];
+        let mut rest = flat;
+        for d in (0..dims).rev() {
+            index[d] = rest % axes[d].len();
+            rest /= axes[d].len();
+        }
+        let x: Vec<f64> = index.iter().zip(&axes).map(|(i, a)| a[*i]).collect();
+        let (e, state) = match eval(&x, warm) {
+            Ok((e, w)) => (Ok(e), w),
+            Err(PointError::Failed(m)) => (Err(m), None),
+            Err(PointError::Cancelled) => return Err(PointError::Cancelled),
+        };
+        let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+        cancel.report(k as f64 / total as f64);
+        Ok((GridPoint { index, x, eval: e }, state))
+    };
+    let runs: Vec<Result<Vec<GridPoint<D>>, PointError>> = runs
+        .into_par_iter()
+        .map(|(a, b)| {
+            let mut warm: Option<W> = None;
+            let mut out = Vec::with_capacity(b - a);
+            for flat in a..b {
+                let (p, state) = point(flat, warm.as_ref())?;
+                // A point without a state (failed, or no bearing) leaves the last one.
+                if state.is_some() {
+                    warm = state;
+                }
+                out.push(p);
+            }
+            Ok(out)
+        })
+        .collect();
+    let mut points = Vec::with_capacity(total);
+    for r in runs {
+        points.extend(r?);
+    }
+    Ok(points)
+}
+
 /// Every point of the grid of `n` values per variable over the box [lo, hi], in row-major
 /// order (the last variable fastest), evaluated in parallel; `cancel`'s progress is told
-/// the fraction done. Each point starts its solves cold: see the module docs of
-/// `optimise` (the statics has no warm-start entry).
+/// the fraction done. Each point is evaluated on its own (see [`grid_warm`] for the
+/// warm-started grid).
 pub fn grid<D: Send>(
     lo: &[f64],
     hi: &[f64],
@@ -220,22 +296,43 @@ pub struct Polished<D> {
     pub stopped: String,
 }
 
-struct Penalised<'a, 'b, D> {
-    eval: &'a Evaluator<'b, D>,
+struct Penalised<'a, 'b, D, W> {
+    eval: &'a WarmEvaluator<'b, D, W>,
     lo: &'a [f64],
     hi: &'a [f64],
     scale: f64,
     max_evals: usize,
-    log: RefCell<Log<D>>,
+    log: RefCell<Log<D, W>>,
 }
 
-struct Log<D> {
+struct Log<D, W> {
     evaluations: usize,
     best: Option<(Vec<f64>, Eval<D>)>,
     cancelled: bool,
+    /// The states of the points evaluated so far: each new point starts from the nearest's
+    /// (box-relative distance).
+    states: Vec<(Vec<f64>, W)>,
 }
 
-impl<D: Clone> CostFunction for Penalised<'_, '_, D> {
+impl<D, W> Penalised<'_, '_, D, W> {
+    /// Index of the evaluated point nearest `x` that left a state.
+    fn nearest(&self, log: &Log<D, W>, x: &[f64]) -> Option<usize> {
+        let dist = |y: &[f64]| -> f64 {
+            x.iter()
+                .zip(y)
+                .zip(self.lo.iter().zip(self.hi))
+                .map(|((a, b), (l, h))| ((a - b) / (h - l).abs().max(f64::MIN_POSITIVE)).powi(2))
+                .sum()
+        };
+        log.states
+            .iter()
+            .enumerate()
+            .min_by(|a, b| dist(&a.1 .0).total_cmp(&dist(&b.1 .0)))
+            .map(|(i, _)| i)
+    }
+}
+
+impl<D: Clone, W> CostFunction for Penalised<'_, '_, D, W> {
     type Param = Vec<f64>;
     type Output = f64;
 
@@ -252,17 +349,21 @@ impl<D: Clone> CostFunction for Penalised<'_, '_, D> {
                 c
             })
             .collect();
-        {
+        let e = {
             let log = self.log.borrow();
             if log.evaluations >= self.max_evals {
                 return Err(argmin::core::Error::msg("budget"));
             }
-        }
-        let e = (self.eval)(&x);
+            let near = self.nearest(&log, &x).map(|i| &log.states[i].1);
+            (self.eval)(&x, near)
+        };
         let mut log = self.log.borrow_mut();
         log.evaluations += 1;
         match e {
-            Ok(e) => {
+            Ok((e, state)) => {
+                if let Some(w) = state {
+                    log.states.push((x.clone(), w));
+                }
                 let cost = e.objective + self.scale * PENALTY * (e.violation() + out);
                 let better = log
                     .best
@@ -286,7 +387,7 @@ impl<D: Clone> CostFunction for Penalised<'_, '_, D> {
 /// Nelder–Mead from `start` (feasible, already evaluated as `start_eval`) with an initial
 /// simplex of `step` along each variable (toward the box's inside), at most `max_evals`
 /// evaluations; the penalty's scale is |start objective|. Returns the best feasible point
-/// seen.
+/// seen. Each point is evaluated on its own (see [`polish_warm`]).
 pub fn polish<D: Clone>(
     start: &[f64],
     start_eval: Eval<D>,
@@ -295,6 +396,23 @@ pub fn polish<D: Clone>(
     hi: &[f64],
     max_evals: usize,
     eval: &Evaluator<'_, D>,
+) -> Result<Polished<D>, PointError> {
+    let warm = |x: &[f64], _: Option<&()>| eval(x).map(|e| (e, None));
+    polish_warm(start, start_eval, None, step, lo, hi, max_evals, &warm)
+}
+
+/// [`polish`] with warm starts: each point the simplex visits starts from the state of the
+/// nearest point evaluated so far (`start_state` the start's, if the caller has it).
+#[allow(clippy::too_many_arguments)]
+pub fn polish_warm<D: Clone, W>(
+    start: &[f64],
+    start_eval: Eval<D>,
+    start_state: Option<W>,
+    step: &[f64],
+    lo: &[f64],
+    hi: &[f64],
+    max_evals: usize,
+    eval: &WarmEvaluator<'_, D, W>,
 ) -> Result<Polished<D>, PointError> {
     let scale = start_eval.objective.abs().max(f64::MIN_POSITIVE);
     let mut simplex = vec![start.to_vec()];
@@ -319,6 +437,10 @@ pub fn polish<D: Clone>(
             evaluations: 0,
             best: Some((start.to_vec(), start_eval.clone())),
             cancelled: false,
+            states: start_state
+                .map(|w| (start.to_vec(), w))
+                .into_iter()
+                .collect(),
         }),
     };
     // sd tolerance: the simplex's spread of cost 1e-7 of the objective (below the lamina
@@ -348,7 +470,7 @@ pub fn polish<D: Clone>(
     })
 }
 
-impl<D: Clone> CostFunction for &Penalised<'_, '_, D> {
+impl<D: Clone, W> CostFunction for &Penalised<'_, '_, D, W> {
     type Param = Vec<f64>;
     type Output = f64;
     fn cost(&self, p: &Vec<f64>) -> Result<f64, argmin::core::Error> {
@@ -445,6 +567,36 @@ mod tests {
         assert_eq!(pts.iter().filter(|p| p.eval.is_err()).count(), 2);
         assert_eq!(best_feasible(&pts), Some(2));
         assert_eq!(binding_at(&pts, 2), vec!["solve failed"]);
+    }
+
+    /// The warm grid: the same points in the same order as the plain grid, and each point
+    /// after the first of its run starts from its left neighbour's state (the state here
+    /// is the point's x, so the neighbour is checked exactly); runs never cross a row.
+    #[test]
+    fn warm_grid_starts_each_point_from_its_left_neighbour() {
+        let (lo, hi) = ([-1.0, -1.0], [1.0, 1.0]);
+        let cold = grid(&lo, &hi, 7, &problem, Cancel::NONE).unwrap();
+        let warm_uses = AtomicUsize::new(0);
+        let step = 2.0 / 6.0;
+        let warm = |x: &[f64], from: Option<&Vec<f64>>| {
+            if let Some(f) = from {
+                assert!(
+                    (f[0] - x[0]).abs() < 1e-12 && (x[1] - f[1] - step).abs() < 1e-12,
+                    "{x:?} started from {f:?}"
+                );
+                warm_uses.fetch_add(1, Ordering::Relaxed);
+            }
+            problem(x).map(|e| (e, Some(x.to_vec())))
+        };
+        let pts = grid_warm(&lo, &hi, 7, &warm, Cancel::NONE).unwrap();
+        assert_eq!(pts, cold);
+        // 7 rows of 7, each cut into runs of ⌈7/pieces⌉ (pieces: 2 × threads over 7 rows);
+        // every point but a run's first is warm.
+        let used = warm_uses.load(Ordering::Relaxed);
+        let pieces = (2 * rayon::current_num_threads()).div_ceil(7).clamp(1, 7);
+        let runs_per_row = 7usize.div_ceil(7usize.div_ceil(pieces));
+        assert_eq!(used, 49 - 7 * runs_per_row, "{used} warm starts");
+        assert!(used >= 21, "{used} warm starts");
     }
 
     fn problem1(x: &[f64]) -> Result<Eval<()>, PointError> {

@@ -31,9 +31,11 @@
 //! **Method**: a grid of `grid` values per variable over [1 − r, 1 + r] (r =
 //! `relative_range`), evaluated in parallel (rayon); then Nelder–Mead (argmin) from the
 //! best feasible grid point, constraints by an exact penalty, at most
-//! [`MAX_POLISH_SOLVES`] solves. Every point is solved from the statics' own start (its
-//! coarse-roller presolve): the double-row statics ([`super::statics::analyse`]) takes no
-//! warm start, and neighbours in a parallel grid are not solved in order anyway.
+//! [`MAX_POLISH_SOLVES`] solves. Warm starts ([`super::statics::analyse_from`]): the grid
+//! is solved in runs along its rows, in parallel, each point from its neighbour's solution
+//! (the first of a run from the statics' own coarse pre-solve), and each point of the
+//! polish from the nearest point it has solved; the answers are the cold ones to the ring
+//! tolerance, for fewer lamina evaluations.
 //! At the optimum the lamina noise (the objective with Γ against 2Γ laminae) is reported
 //! beside the improvement, and the sensitivity of the objective to a 0.1 % change of each
 //! radius (central differences, step 1e-3 relative: above the 1e-4 floor a 0.2 % radius
@@ -50,7 +52,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::input::{DoubleRowInput, LoadCase};
-use super::statics::{analyse, DoubleRowAnalysis};
+use super::statics::{analyse, analyse_from, DoubleRowAnalysis, StaticsStart};
 use crate::bearings::SolveError;
 use crate::numerics::cancel::Cancel;
 use crate::physics::lubrication::film;
@@ -380,13 +382,33 @@ impl Problem<'_> {
 
     /// Solve every load case at `k` with `laminae`.
     fn solve_cases(&self, k: &[f64], laminae: usize) -> Result<Vec<CaseMetrics>, PointError> {
+        self.solve_cases_from(k, laminae, None).map(|(m, _)| m)
+    }
+
+    /// [`Problem::solve_cases`] with each case's statics started from `from` (a
+    /// neighbouring point's solutions, one per case, [`analyse_from`]); returns the
+    /// solutions too. A warm start the statics cannot take is retried cold, so a point
+    /// answers what a cold solve answers.
+    fn solve_cases_from(
+        &self,
+        k: &[f64],
+        laminae: usize,
+        from: Option<&[StaticsStart]>,
+    ) -> Result<(Vec<CaseMetrics>, Vec<StaticsStart>), PointError> {
         let mut out = Vec::with_capacity(self.cases.len());
-        for case in &self.cases {
+        let mut starts = Vec::with_capacity(self.cases.len());
+        for (c, case) in self.cases.iter().enumerate() {
             if self.cancel.is_cancelled() {
                 return Err(PointError::Cancelled);
             }
             let b = self.input_at(k, case, laminae);
-            let a = analyse(&b, self.name, self.cancel.flag());
+            let warm = from.and_then(|f| f.get(c));
+            let a = match analyse_from(&b, self.name, warm, self.cancel.flag()) {
+                Err(e) if warm.is_some() && e != SolveError::Cancelled => {
+                    analyse(&b, self.name, self.cancel.flag())
+                }
+                other => other,
+            };
             let n = self.solves.fetch_add(1, Ordering::Relaxed) + 1;
             self.cancel.report(n as f64 / self.planned.max(1) as f64);
             let a = match a {
@@ -406,8 +428,9 @@ impl Problem<'_> {
                 ))
             })?;
             out.push(case_metrics(&a, loss));
+            starts.push(a.start());
         }
-        Ok(out)
+        Ok((out, starts))
     }
 
     fn detail(&self, cases: Vec<CaseMetrics>, nominal: Option<&[CaseMetrics]>) -> PointDetail {
@@ -581,38 +604,48 @@ pub fn optimise(
             .map(|(n, _)| *n)
             .collect(),
     };
-    let eval_at = |k: &[f64], laminae: usize| -> Result<Eval<PointDetail>, PointError> {
+    // A point's evaluation from its neighbour's solutions (grid rows, the polish), returning
+    // its own.
+    type Starts = Vec<StaticsStart>;
+    let eval_from = |k: &[f64],
+                     laminae: usize,
+                     from: Option<&Starts>|
+     -> Result<(Eval<PointDetail>, Option<Starts>), PointError> {
         let b = apply(input, &vars, k);
         let order = order_margins(&b);
         if order.iter().any(|(_, m)| *m <= 0.0) {
             // Not a bearing: no solve, infinitely bad.
             let mut margins = margins(input, &nom_detail, &nominal_cases);
             margins.extend(order);
-            return Ok(Eval {
+            let e = Eval {
                 objective: f64::INFINITY,
                 margins,
                 detail: nom_detail.clone(),
-            });
+            };
+            return Ok((e, None));
         }
-        let cs = p.solve_cases(k, laminae)?;
+        let (cs, starts) = p.solve_cases_from(k, laminae, from.map(Vec::as_slice))?;
         let total = weighted(&cs);
         let d = p.detail(cs, Some(&nominal_cases));
         let mut m = margins(input, &d, &nominal_cases);
         m.extend(order);
-        Ok(Eval {
+        let e = Eval {
             objective: total,
             margins: m,
             detail: d,
-        })
+        };
+        Ok((e, Some(starts)))
     };
+    let eval_at = |k: &[f64], laminae: usize| eval_from(k, laminae, None).map(|(e, _)| e);
     // The engine works in u = k − 1 ∈ [−r, r]: the grid's middle point is u = 0 exactly
     // (−r + 2r·½), so an odd grid holds the nominal bearing bit for bit.
     let to_k = |u: &[f64]| -> Vec<f64> { u.iter().map(|x| 1.0 + x).collect() };
     let eval = |u: &[f64]| eval_at(&to_k(u), laminae);
+    let eval_warm = |u: &[f64], from: Option<&Starts>| eval_from(&to_k(u), laminae, from);
     let r = o.relative_range;
     let lo = vec![-r; vars.len()];
     let hi = vec![r; vars.len()];
-    let points = engine::grid(&lo, &hi, n, &eval, Cancel::from_option(cancel.flag()))
+    let points = engine::grid_warm(&lo, &hi, n, &eval_warm, Cancel::from_option(cancel.flag()))
         .map_err(|_| OptimiseError::Cancelled)?;
     let after_grid = p.solves.load(Ordering::Relaxed);
     let Some(best) = engine::best_feasible(&points) else {
@@ -639,14 +672,15 @@ pub fn optimise(
     };
     let step = (hi[0] - lo[0]) / (n - 1) as f64;
     let budget = MAX_POLISH_SOLVES / cases.len().max(1);
-    let pol = engine::polish(
+    let pol = engine::polish_warm(
         &points[best].x,
         best_eval,
+        None,
         &vec![step; vars.len()],
         &lo,
         &hi,
         budget,
-        &eval,
+        &eval_warm,
     )
     .map_err(|_| OptimiseError::Cancelled)?;
     let after_polish = p.solves.load(Ordering::Relaxed);
