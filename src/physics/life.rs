@@ -70,6 +70,30 @@ pub fn equivalent_roller_load(lamina_loads_n: &[f64]) -> f64 {
     gamma.powf(7.0 / 9.0) * sum.powf(2.0 / 9.0)
 }
 
+/// Eq. 6.1 for laminae of any widths w_l, N: P_e = L^(7/9)·[Σ w_l·(Q_l/w_l)^4.5]^(2/9)
+/// with L = Σ w_l — the product law over line-load slices (moved here from the spherical
+/// roller so that every roller system shares it). For equal widths it is exactly
+/// [`equivalent_roller_load`]'s Γ^(7/9)·(Σ Q_l^4.5)^(2/9).
+pub fn equivalent_roller_load_widths(loads_n: &[f64], widths_m: &[f64]) -> f64 {
+    let uniform = widths_m
+        .windows(2)
+        .all(|p| (p[0] - p[1]).abs() <= 1e-12 * p[0].abs());
+    if uniform {
+        return equivalent_roller_load(loads_n);
+    }
+    let l: f64 = widths_m.iter().sum();
+    let s: f64 = loads_n
+        .iter()
+        .zip(widths_m)
+        .filter(|(q, w)| **q > 0.0 && **w > 0.0)
+        .map(|(q, w)| w * pow_4_5(q / w))
+        .sum();
+    if s <= 0.0 {
+        return 0.0;
+    }
+    l.powf(7.0 / 9.0) * s.powf(2.0 / 9.0)
+}
+
 /// Geometry entering the raceway capacities (seed eq. 6.2), SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CapacityGeometry {

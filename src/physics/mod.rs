@@ -17,3 +17,4 @@ pub mod life;
 pub mod life_point;
 pub mod lubrication;
 pub mod material;
+pub mod rating;

@@ -20,6 +20,7 @@ pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod input;
+pub mod life;
 mod load_conditions;
 pub mod load_distribution;
 pub mod load_track;

@@ -214,6 +214,8 @@ pub fn json(a: &BallAnalysis) -> Value {
         "skid": skid,
         "heat": heat,
         "dynamics": dynamics,
+        // Issue 28: reference and ISO 281 lives, static safety (`life.static_safety`).
+        "life": super::life::life(a).json(),
         // Results beyond the validity of the model: sentences with their numbers (SI).
         "warnings": super::warnings::warnings(a).into_iter().map(|w| w.si).collect::<Vec<_>>(),
         "residuals": {
@@ -431,6 +433,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
             );
         }
     }
+    s.push_str(&super::life::life(a).text());
     s
 }
 

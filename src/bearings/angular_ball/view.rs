@@ -166,6 +166,7 @@ pub fn view(a: &BallAnalysis) -> View {
         .iter()
         .map(|b| b.inner.load_n.max(b.outer.load_n))
         .fold(0.0, f64::max);
+    let life = super::life::life(a);
     let k = |name, value, quantity, role| KeyOutput {
         name,
         label: short_label(name),
@@ -243,6 +244,23 @@ pub fn view(a: &BallAnalysis) -> View {
                 Quantity::Dimensionless,
                 KeyRole::Target,
             ),
+            // Issue 28: the reference (load-distribution) life and ISO 76's s0, guards:
+            // they follow from the loads, which the fidelity knobs do not change.
+            k(
+                "l10_bearing_mrev",
+                life.reference
+                    .as_ref()
+                    .ok()
+                    .and_then(|r| r.l10_bearing_mrev),
+                Quantity::Dimensionless,
+                KeyRole::Guard,
+            ),
+            k(
+                "static_safety",
+                life.iso.static_safety,
+                Quantity::Dimensionless,
+                KeyRole::Guard,
+            ),
         ],
         trace: trace(a),
         thermal: None,
@@ -265,6 +283,8 @@ fn short_label(name: &str) -> &'static str {
         "cage_speed_rpm" => "cage",
         "heat_w" => "heat",
         "skid_threshold_rpm" => "skid",
+        "l10_bearing_mrev" => "L10",
+        "static_safety" => "s0",
         _ => "?",
     }
 }

@@ -19,6 +19,7 @@ pub mod deck;
 pub mod dynamics;
 pub mod geometry;
 pub mod input;
+pub mod life;
 pub mod quasi_static;
 pub mod quasi_static_ribs;
 pub mod report;

@@ -15,6 +15,12 @@ pub fn azimuth_deg(rad: f64) -> f64 {
 
 /// The JSON report.
 pub fn json(a: &CylindricalAnalysis) -> Value {
+    let life = super::life::life(a);
+    let mut warnings = a.warnings.clone();
+    warnings.extend(crate::physics::rating::static_safety_warning(
+        crate::physics::rating::ContactKind::Roller,
+        a.max_pressure_pa(),
+    ));
     let d = &a.derived;
     let q = &a.statics;
     let rollers: Vec<Value> = q
@@ -100,7 +106,9 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
         "min_film_m": a.min_film_m(),
         "max_roller_load_n": a.max_roller_load_n(),
         "max_pressure_pa": a.max_pressure_pa(),
-        "warnings": a.warnings,
+        // Issue 28: reference and ISO 281 lives, static safety (`life.static_safety`).
+        "life": life.json(),
+        "warnings": warnings,
         "stats": {
             "iterations": q.iterations,
             "residual_n": q.residual_n,
@@ -302,7 +310,14 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
     if let Some(t) = &a.tribo {
         s.push_str(&super::report_tribo::text(t, units));
     }
+    s.push_str(&super::life::life(a).text());
     for w in &a.warnings {
+        let _ = writeln!(s, "\nWarning: {w}");
+    }
+    if let Some(w) = crate::physics::rating::static_safety_warning(
+        crate::physics::rating::ContactKind::Roller,
+        a.max_pressure_pa(),
+    ) {
         let _ = writeln!(s, "\nWarning: {w}");
     }
     let _ = writeln!(

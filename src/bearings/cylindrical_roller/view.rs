@@ -252,6 +252,7 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             precision: 3,
         },
     ];
+    let life = super::life::life(a);
     let key = |name, label, value: Option<f64>, quantity, role| KeyOutput {
         name,
         label,
@@ -307,6 +308,21 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             "p_max",
             Some(a.max_pressure_pa()),
             Quantity::Pressure,
+            KeyRole::Guard,
+        ),
+        // Issue 28: the reference life and ISO 76's s0.
+        key(
+            "l10_bearing_mrev",
+            "L10",
+            life.reference.l10_bearing_mrev,
+            Quantity::Dimensionless,
+            KeyRole::Guard,
+        ),
+        key(
+            "static_safety",
+            "s0",
+            life.iso.static_safety,
+            Quantity::Dimensionless,
             KeyRole::Guard,
         ),
     ];
@@ -371,9 +387,14 @@ pub fn view(a: &CylindricalAnalysis) -> View {
         warnings: a
             .warnings
             .iter()
+            .cloned()
+            .chain(crate::physics::rating::static_safety_warning(
+                crate::physics::rating::ContactKind::Roller,
+                a.max_pressure_pa(),
+            ))
             .map(|w| Warning {
                 si: w.clone(),
-                us: w.clone(),
+                us: w,
             })
             .collect(),
         texts: vec![TextBlock {

@@ -23,63 +23,22 @@ use super::losses::losses;
 use super::statics::{analyse, analyse_from, StaticsStart};
 use crate::bearings::SolveError;
 
-/// ISO 281:2007 Table 7, roller bearings: (γ, f_c).
-const FC_TABLE: [(f64, f64); 30] = [
-    (0.01, 52.1),
-    (0.02, 60.8),
-    (0.03, 66.5),
-    (0.04, 70.7),
-    (0.05, 74.1),
-    (0.06, 76.9),
-    (0.07, 79.2),
-    (0.08, 81.2),
-    (0.09, 82.8),
-    (0.10, 84.2),
-    (0.11, 85.4),
-    (0.12, 86.4),
-    (0.13, 87.1),
-    (0.14, 87.7),
-    (0.15, 88.2),
-    (0.16, 88.5),
-    (0.17, 88.7),
-    (0.18, 88.8),
-    (0.19, 88.8),
-    (0.20, 88.7),
-    (0.21, 88.5),
-    (0.22, 88.2),
-    (0.23, 87.9),
-    (0.24, 87.5),
-    (0.25, 87.0),
-    (0.26, 86.4),
-    (0.27, 85.8),
-    (0.28, 85.2),
-    (0.29, 84.5),
-    (0.30, 83.8),
-];
-
 /// The most points one `losses` run accepts (each is a full solve).
 pub const MAX_POINTS: usize = 200;
 
 /// ISO 281's C_r of the deck's bearing, N (module notes). `None` outside Table 7's γ range.
 pub fn dynamic_rating_n(input: &DoubleRowInput) -> Option<f64> {
     let g = &input.geometry;
-    let (d_mm, l_mm, dm_mm) = (
-        g.roller_diameter_m * 1e3,
-        g.effective_length_m * 1e3,
-        g.pitch_diameter_m * 1e3,
-    );
-    let ca = g.contact_angle_rad.cos();
-    let gamma = d_mm * ca / dm_mm;
-    let fc = FC_TABLE.windows(2).find_map(|w| {
-        let ((g0, f0), (g1, f1)) = (w[0], w[1]);
-        (gamma >= g0 && gamma <= g1).then(|| f0 + (f1 - f0) * (gamma - g0) / (g1 - g0))
-    })?;
-    let i = g.rows as f64;
-    Some(
-        1.15 * fc
-            * (i * l_mm * ca).powf(7.0 / 9.0)
-            * (g.roller_count as f64).powf(0.75)
-            * d_mm.powf(29.0 / 27.0),
+    crate::physics::rating::iso_radial_rating_roller(
+        crate::physics::rating::B_M_SPHERICAL_ROLLER,
+        &crate::physics::rating::RollerRatingGeometry {
+            rows: g.rows,
+            roller_count: g.roller_count,
+            roller_diameter_m: g.roller_diameter_m,
+            effective_length_m: g.effective_length_m,
+            pitch_diameter_m: g.pitch_diameter_m,
+            contact_angle_rad: g.contact_angle_rad,
+        },
     )
 }
 

@@ -55,6 +55,13 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
     }
     let k = stiffness_xz(a);
     let ld = &a.combined;
+    let mut life = json!({
+        "l10_bearing_mrev": a.l10_mrev,
+        "l10_bearing_h": a.l10_h,
+        "rows": rows.iter().map(|r| r["life"].clone()).collect::<Vec<_>>(),
+    });
+    // Issue 28: ISO 281 ratings, raceway lives, a_ISO, s0 (added beside, none moved).
+    super::life::life(a).extend_json(&mut life);
     json!({
         "type": SYSTEM_ID,
         "name": a.name,
@@ -87,11 +94,7 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
             "transverse_inertia_kg_m2": ld.roller_mass.transverse_inertia_kg_m2,
         },
         "speeds": a.rows.first().map(|r| serde_json::to_value(&r.speeds).unwrap_or(Value::Null)),
-        "life": {
-            "l10_bearing_mrev": a.l10_mrev,
-            "l10_bearing_h": a.l10_h,
-            "rows": rows.iter().map(|r| r["life"].clone()).collect::<Vec<_>>(),
-        },
+        "life": life,
         "rows": rows,
         "rollers": rollers,
         "max_roller_load_n": a.max_roller_load_n(),
@@ -170,6 +173,7 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         (Some(m), None) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev\n")),
         _ => s.push_str("Bearing L-10: no row loaded\n"),
     }
+    s.push_str(&super::life::life(a).text());
     for (i, row) in a.rows.iter().enumerate() {
         s.push_str(&format!(
             "\n==================== Row {} ====================\n",

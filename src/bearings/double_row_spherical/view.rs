@@ -278,6 +278,24 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             Quantity::Dimensionless,
             KeyRole::Guard,
         ),
+        // Issue 28: the load-distribution life in Mrev and ISO 76's s0.
+        key(
+            "l10_bearing_mrev",
+            "L10",
+            a.l10_mrev,
+            Quantity::Dimensionless,
+            KeyRole::Guard,
+        ),
+        key(
+            "static_safety",
+            "s0",
+            crate::physics::rating::static_safety(
+                crate::physics::rating::ContactKind::Roller,
+                a.max_stress_pa(),
+            ),
+            Quantity::Dimensionless,
+            KeyRole::Guard,
+        ),
     ];
     let st = &a.combined.stats;
     View {
@@ -300,7 +318,16 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             names: ["ring Newton", "roller Newton"],
             wall_time_s: a.wall_time_s,
         },
-        warnings: Vec::new(),
+        warnings: crate::physics::rating::static_safety_warning(
+            crate::physics::rating::ContactKind::Roller,
+            a.max_stress_pa(),
+        )
+        .into_iter()
+        .map(|w| crate::bearings::view::Warning {
+            si: w.clone(),
+            us: w,
+        })
+        .collect(),
         texts: vec![TextBlock {
             title: "stiffness",
             si: stiffness_lines(a, Units::Si),

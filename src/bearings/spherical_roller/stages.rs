@@ -394,23 +394,7 @@ pub fn iso_equivalent_load(b: &Bearing) -> f64 {
 /// L = Σ w_l — the product law over line-load slices. For equal widths it is exactly
 /// eq. 6.1's Γ^(7/9)·(Σ Q_l^4.5)^(2/9) (the library's [`life::equivalent_roller_load`]).
 pub fn equivalent_load(loads_n: &[f64], widths_m: &[f64]) -> f64 {
-    let uniform = widths_m
-        .windows(2)
-        .all(|p| (p[0] - p[1]).abs() <= 1e-12 * p[0].abs());
-    if uniform {
-        return life::equivalent_roller_load(loads_n);
-    }
-    let l: f64 = widths_m.iter().sum();
-    let s: f64 = loads_n
-        .iter()
-        .zip(widths_m)
-        .filter(|(q, w)| **q > 0.0 && **w > 0.0)
-        .map(|(q, w)| w * life::pow_4_5(q / w))
-        .sum();
-    if s <= 0.0 {
-        return 0.0;
-    }
-    l.powf(7.0 / 9.0) * s.powf(2.0 / 9.0)
+    life::equivalent_roller_load_widths(loads_n, widths_m)
 }
 
 /// §6: equivalent loads (eq. 6.1), capacities, mean loads, L-10 (eq. 6.2–6.6), adjustments.

@@ -21,6 +21,7 @@ pub mod contact;
 pub mod deck;
 pub mod geometry;
 pub mod input;
+pub mod life;
 pub mod report;
 pub mod roller;
 pub mod system;

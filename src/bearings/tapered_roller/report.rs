@@ -13,6 +13,7 @@ pub const DAMPING_NOTE: &str = "not computed: the seed (AFAPL-TR-78-6 Part III Â
 
 /// The JSON report.
 pub fn json(a: &Analysis) -> Value {
+    let life = super::life::life(a);
     let b = &a.bearing;
     let rg = &b.geometry;
     let dy = &b.dynamics;
@@ -166,6 +167,15 @@ pub fn json(a: &Analysis) -> Value {
         "rollers": rollers,
         "stiffness": stiffness,
         "damping": DAMPING_NOTE,
+        // Issue 28: reference and ISO 281 lives, static safety (`life.static_safety`),
+        // and the s0 < 1 warning (the system's first).
+        "life": life.json(),
+        "warnings": crate::physics::rating::static_safety_warning(
+            crate::physics::rating::ContactKind::Roller,
+            life.max_contact_stress_pa,
+        )
+        .into_iter()
+        .collect::<Vec<_>>(),
         "residuals": {
             "equilibrium_n": sol.residual_n,
             "roller_max_n": roller_res,
@@ -379,6 +389,14 @@ pub fn text(a: &Analysis, units: Units) -> String {
         let _ = writeln!(s, "{line}");
     }
     let _ = writeln!(s, "\nDamping: {DAMPING_NOTE}.");
+    let life = super::life::life(a);
+    s.push_str(&life.text());
+    if let Some(w) = crate::physics::rating::static_safety_warning(
+        crate::physics::rating::ContactKind::Roller,
+        life.max_contact_stress_pa,
+    ) {
+        let _ = writeln!(s, "\nWarning: {w}");
+    }
     let _ = writeln!(
         s,
         "\nEquilibrium residual {:.3e} {fu} {}; {} distinct roller solves; {:.3} ms",

@@ -292,6 +292,7 @@ pub fn view(a: &Analysis) -> View {
     ];
     // Stiffness key outputs carry N/m, N·m/rad in their names; the unit table has no
     // stiffness quantity yet, so they are marked dimensionless (values SI).
+    let life = super::life::life(a);
     let key = |name, value: f64, quantity, role| KeyOutput {
         name,
         label: match name {
@@ -357,6 +358,21 @@ pub fn view(a: &Analysis) -> View {
             Quantity::Count,
             KeyRole::Info,
         ),
+        // Issue 28: the reference life and ISO 76's s0 (absent values stay absent).
+        KeyOutput {
+            name: "l10_bearing_mrev",
+            label: "L10",
+            value: life.reference.l10_bearing_mrev,
+            quantity: Quantity::Dimensionless,
+            role: KeyRole::Guard,
+        },
+        KeyOutput {
+            name: "static_safety",
+            label: "s0",
+            value: life.iso.static_safety,
+            quantity: Quantity::Dimensionless,
+            role: KeyRole::Guard,
+        },
     ];
     View {
         system: super::SYSTEM_ID,
@@ -379,7 +395,16 @@ pub fn view(a: &Analysis) -> View {
             names: ["bearing Newton", "roller Newton"],
             wall_time_s: a.wall_time_s,
         },
-        warnings: Vec::new(),
+        warnings: crate::physics::rating::static_safety_warning(
+            crate::physics::rating::ContactKind::Roller,
+            life.max_contact_stress_pa,
+        )
+        .into_iter()
+        .map(|w| crate::bearings::view::Warning {
+            si: w.clone(),
+            us: w,
+        })
+        .collect(),
         texts: vec![crate::bearings::view::TextBlock {
             title: "stiffness",
             si: super::report::stiffness_lines(a, crate::units::Units::Si),
