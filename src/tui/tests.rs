@@ -1443,7 +1443,11 @@ fn help_scrolls_to_every_key() {
 #[test]
 fn tui_docs_screens_are_the_snapshots() {
     let root = env!("CARGO_MANIFEST_DIR");
-    for doc in ["README.md", "docs/workbench.md"] {
+    for doc in [
+        "README.md",
+        "docs/workbench.md",
+        "docs/double_row_spherical.md",
+    ] {
         let path = format!("{root}/{doc}");
         let text = std::fs::read_to_string(&path).expect("doc");
         let mut out = String::new();

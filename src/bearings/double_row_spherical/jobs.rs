@@ -676,3 +676,91 @@ pub fn optimise_job(
         }),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn values(m: &HeatMap) -> Vec<Option<f64>> {
+        m.cells
+            .iter()
+            .map(|c| match c {
+                HeatCell::Value(v) | HeatCell::Excluded(_, Some(v)) => Some(*v),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The Optimise pane's map fills in from the objective while the optimiser runs, and
+    /// what it shows of a cell is the optimiser's own weighted total for that grid point:
+    /// every report's cells are the finished grid's values exactly (the same solves,
+    /// summed over the cases in the same order), cells are never taken back, and the
+    /// finished map holds every grid point of the optimisation's grid, the nominal point
+    /// marked at the middle. A 3 × 3 grid (the shipped deck's cases) keeps it short.
+    /// The shipped deck with its `[optimise]` table (three load cases, Λ_min ≥ 2.5).
+    fn shipped() -> DoubleRowInput {
+        use crate::deck::form::Form;
+        let mut f = Form::parse(
+            super::super::system::EXAMPLE_DECK,
+            "srb_22308.toml",
+            &super::super::deck::SCHEMA,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        super::super::deck::optimise_table(&mut f).unwrap_or_else(|e| panic!("{e}"));
+        f.value
+    }
+
+    #[test]
+    fn the_optimise_map_fills_in_with_the_optimisers_values() {
+        let mut b = shipped();
+        b.optimise.grid = 3;
+        let mut reports = Vec::new();
+        let done = optimise_job(&b, "t", Units::Si, Cancel::NONE, &mut |v| {
+            reports.push(v.clone())
+        })
+        .expect("optimises");
+        assert!(done.finished && !reports.is_empty());
+        // The finished map is drawn from the optimisation's own grid entries.
+        let last = &done.heat_maps[0];
+        let want: Vec<Option<f64>> = values(last);
+        assert_eq!(want.len(), 9);
+        assert!(want.iter().all(Option::is_some), "{want:?}");
+        let mut filled = 0;
+        for r in &reports {
+            let got = values(&r.heat_maps[0]);
+            for (g, w) in got.iter().zip(&want) {
+                if let Some(g) = g {
+                    assert_eq!(Some(*g), *w);
+                }
+            }
+            let n = got.iter().flatten().count();
+            assert!(n >= filled, "cells taken back: {n} after {filled}");
+            filled = n;
+        }
+        assert!(last.marks.iter().any(|m| (m.i, m.j) == (1, 1)));
+        assert!(done.notes[0].si.contains("improvement"), "{:?}", done.notes);
+    }
+
+    /// A grid over the optimiser's bound is refused whole, naming `optimise.grid`.
+    #[test]
+    fn an_oversized_grid_is_refused_whole() {
+        let mut b = shipped();
+        b.optimise.grid = 99; // 99² × 3 cases = 29 403 solves
+        let e = optimise_job(&b, "t", Units::Si, Cancel::NONE, &mut |_| {}).expect_err("refused");
+        let text = e.to_string();
+        assert!(
+            text.contains("optimise.grid") && text.contains("20000"),
+            "{text}"
+        );
+    }
+
+    /// Round tops: 1, 2, 2.5, 5 × 10^k.
+    #[test]
+    fn round_tops() {
+        assert_eq!(round_up(4.2), 5.0);
+        assert_eq!(round_up(0.61), 1.0);
+        assert_eq!(round_up(2.0), 2.0);
+        assert_eq!(round_up(0.0), 1.0);
+        assert!((round_up(0.22) - 0.25).abs() < 1e-15);
+    }
+}
