@@ -62,6 +62,16 @@ pub trait FormSystem: Sync + Sized + 'static {
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None
     }
+    /// See [`BearingSystem::run_job`].
+    fn run_job(
+        &self,
+        _n: usize,
+        _case: &dyn Case,
+        _cancel: Cancel<'_>,
+        _report: &mut dyn FnMut(&super::view::JobView),
+    ) -> Option<Result<super::view::JobView, SolveError>> {
+        None
+    }
 
     /// Completes a validated deck (whatever the input takes from the deck's opaque
     /// tables or top-level keys) and derives what the case keeps beside it; run on every
@@ -119,6 +129,16 @@ impl<S: FormSystem> BearingSystem for S {
 
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         FormSystem::fidelity_grid(self)
+    }
+
+    fn run_job(
+        &self,
+        n: usize,
+        case: &dyn Case,
+        cancel: Cancel<'_>,
+        report: &mut dyn FnMut(&super::view::JobView),
+    ) -> Option<Result<super::view::JobView, SolveError>> {
+        FormSystem::run_job(self, n, case, cancel, report)
     }
 
     fn keys_table(&self) -> String {

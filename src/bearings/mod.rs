@@ -154,6 +154,19 @@ pub trait BearingSystem: Sync {
     fn sweep_plan(&self, _n: usize, _case: &dyn Case) -> Option<SweepPlan> {
         None
     }
+    /// Runs job `n` of a [`view::PaneKind::Job`] pane on `case` (a long study: a load
+    /// sweep, an optimisation), telling `report` what it has so far as it goes (each call
+    /// the whole job so far) and returning the finished view; `cancel` stops it (then
+    /// [`SolveError::Cancelled`]). `None` when the system has no such job.
+    fn run_job(
+        &self,
+        _n: usize,
+        _case: &dyn Case,
+        _cancel: Cancel<'_>,
+        _report: &mut dyn FnMut(&view::JobView),
+    ) -> Option<Result<view::JobView, SolveError>> {
+        None
+    }
     /// The fidelity study of `rollbench bench`; `None` when the system has none.
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None

@@ -34,6 +34,8 @@ pub enum Display {
     Speed,
     /// Small velocities (a shaft's vibration velocity): mm/s or in/s.
     SmallSpeed,
+    /// Load ratings and large forces: kN or kip (1000 lbf).
+    LargeForce,
     /// A state stored as its index into these names (the tapered roller's
     /// `both-races`/`cup-and-flange`/`free`): the pane shows the name, CSV the index.
     Choice(&'static [&'static str]),
@@ -63,6 +65,8 @@ impl Display {
             (Display::Speed, Units::Us) => v / FOOT_M,
             (Display::SmallSpeed, Units::Si) => v * 1e3,
             (Display::SmallSpeed, Units::Us) => v / INCH_M,
+            (Display::LargeForce, Units::Si) => v * 1e-3,
+            (Display::LargeForce, Units::Us) => v / LBF_N * 1e-3,
         }
     }
 
@@ -89,6 +93,8 @@ impl Display {
             (Display::Speed, Units::Us) => "ft/s",
             (Display::SmallSpeed, Units::Si) => "mm/s",
             (Display::SmallSpeed, Units::Us) => "in/s",
+            (Display::LargeForce, Units::Si) => "kN",
+            (Display::LargeForce, Units::Us) => "kip",
         }
     }
 
@@ -318,6 +324,10 @@ pub enum PaneKind {
     Thermal,
     /// The equilibrium stepper.
     Stepper,
+    /// Job `n` of the system ([`crate::bearings::BearingSystem::run_job`]): a long study
+    /// (a load sweep, an optimisation) run by the worker while the pane is on screen,
+    /// drawn from the [`JobView`]s it reports as it goes; the next edit cancels it.
+    Job(usize),
 }
 
 /// A pane a bearing system offers: its kind and the title it goes by ("Rollers", "Balls").
@@ -550,6 +560,100 @@ impl Warning {
         match units {
             Units::Si => &self.si,
             Units::Us => &self.us,
+        }
+    }
+}
+
+/// What a cell of a [`HeatMap`] holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HeatCell {
+    /// Not computed yet.
+    Pending,
+    /// A value, SI (the map's [`HeatMap::value`] unit).
+    Value(f64),
+    /// Excluded (an infeasible design point): index into [`HeatMap::excluded`], which
+    /// gives its glyph and why, and its value if it has one (drawn behind the glyph).
+    Excluded(usize, Option<f64>),
+}
+
+/// A marked cell of a [`HeatMap`] (the nominal point, the optimum).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeatMark {
+    /// Column (index into [`HeatMap::xs`]).
+    pub i: usize,
+    /// Row (index into [`HeatMap::ys`]).
+    pub j: usize,
+    /// Its glyph.
+    pub glyph: char,
+    /// What it is (`"nominal"`).
+    pub label: &'static str,
+}
+
+/// A map of a value over a grid of two variables, with excluded cells and marked points
+/// (the optimiser's objective over (k_Ci, k_W)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeatMap {
+    /// Title.
+    pub title: String,
+    /// The first variable (columns), its values in [`HeatMap::xs`], SI.
+    pub x: ChartAxis,
+    /// The second variable (rows, the first row at `ys[0]`, drawn at the bottom).
+    pub y: ChartAxis,
+    /// Column values, ascending.
+    pub xs: Vec<f64>,
+    /// Row values, ascending.
+    pub ys: Vec<f64>,
+    /// The value's label and display unit (`("loss", Display::Power)`), and its decimals.
+    pub value: (&'static str, Display, usize),
+    /// Cells, row by row: `cells[j * xs.len() + i]`.
+    pub cells: Vec<HeatCell>,
+    /// Why cells are excluded: (glyph, reason), indexed by [`HeatCell::Excluded`].
+    pub excluded: Vec<(char, String)>,
+    /// Marked cells, drawn over their cell.
+    pub marks: Vec<HeatMark>,
+}
+
+impl HeatMap {
+    /// The cell at column `i`, row `j`.
+    pub fn cell(&self, i: usize, j: usize) -> HeatCell {
+        self.cells
+            .get(j * self.xs.len() + i)
+            .copied()
+            .unwrap_or(HeatCell::Pending)
+    }
+}
+
+/// What a running or finished job ([`PaneKind::Job`]) shows: its progress, maps, charts
+/// and lines of text, in SI like the rest of the view.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct JobView {
+    /// Work done and planned (solves), for the progress note.
+    pub done: usize,
+    /// Planned.
+    pub total: usize,
+    /// True once the job has finished (all its results in).
+    pub finished: bool,
+    /// What it is doing now (`"grid"`, `"polish"`), or how it ended.
+    pub stage: String,
+    /// Heat maps.
+    pub heat_maps: Vec<HeatMap>,
+    /// Charts.
+    pub charts: Vec<Chart>,
+    /// Result lines (the improvement, what binds), in each unit system.
+    pub notes: Vec<Warning>,
+    /// Points that failed, each a sentence naming the point (never silently skipped), or
+    /// why the job as a whole failed.
+    pub errors: Vec<String>,
+}
+
+impl JobView {
+    /// A job that failed as a whole, with why.
+    pub fn failed(message: String) -> JobView {
+        JobView {
+            finished: true,
+            stage: "failed".into(),
+            errors: vec![message],
+            ..JobView::default()
         }
     }
 }

@@ -70,6 +70,44 @@ fn sweep_sync(app: &mut App, job: &app::SolveJob) {
     }
 }
 
+/// The job's job pane (a Job pane on screen), run inline to the end as the worker runs it,
+/// its last report fed back (its reports before are the same job unfinished). Finished
+/// views are kept per deck text and pane, so the snapshots at several sizes run each job
+/// once.
+fn job_sync(app: &mut App, job: &app::SolveJob) {
+    type Done = Vec<(String, usize, Arc<crate::bearings::view::JobView>)>;
+    static DONE: std::sync::Mutex<Done> = std::sync::Mutex::new(Vec::new());
+    let Some(n) = job.job else { return };
+    let text = job.case.text();
+    let cached = DONE
+        .lock()
+        .expect("cache")
+        .iter()
+        .find(|(t, m, _)| *t == text && *m == n)
+        .map(|(_, _, v)| Arc::clone(v));
+    let view = cached.unwrap_or_else(|| {
+        let v = match job
+            .case
+            .system()
+            .run_job(n, &*job.case, Cancel::NONE, &mut |_| {})
+        {
+            Some(Ok(v)) => v,
+            Some(Err(e)) => crate::bearings::view::JobView::failed(e.to_string()),
+            None => return Arc::new(crate::bearings::view::JobView::failed("no job".into())),
+        };
+        let v = Arc::new(v);
+        DONE.lock()
+            .expect("cache")
+            .push((text.clone(), n, Arc::clone(&v)));
+        v
+    });
+    app.handle(AppEvent::JobProgress {
+        generation: job.generation,
+        pane: n,
+        view,
+    });
+}
+
 /// Feeds every solve command back as a result, like the worker would (but inline).
 fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
     let mut other = Vec::new();
@@ -82,6 +120,7 @@ fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
                     outcome: Ok(Arc::new(a)),
                 });
                 sweep_sync(app, &job);
+                job_sync(app, &job);
                 other.extend(run_sync(app, more));
             }
             c => other.push(c),
@@ -582,6 +621,7 @@ fn job(generation: u64) -> app::SolveJob {
         case: Arc::clone(CASE.get_or_init(|| deck_app().deck.case())),
         detail: Detail::default(),
         sweep: None,
+        job: None,
     }
 }
 
@@ -722,10 +762,16 @@ fn tui_snapshot_shipped_decks() {
             shots.extend(panes.iter().map(|&p| (p, w, h)));
         }
         shots.extend(
-            [Pane::Elements, Pane::Stepper, Pane::Sweep(0)]
-                .into_iter()
-                .filter(|p| panes.contains(p))
-                .map(|p| (p, 200, 50)),
+            [
+                Pane::Elements,
+                Pane::Stepper,
+                Pane::Sweep(0),
+                Pane::Job(0),
+                Pane::Job(1),
+            ]
+            .into_iter()
+            .filter(|p| panes.contains(p))
+            .map(|p| (p, 200, 50)),
         );
         for (pane, w, h) in shots {
             let mut app = App::new(
@@ -754,10 +800,20 @@ fn tui_snapshot_shipped_decks() {
 /// A shipped deck as the snapshots draw it: as shipped, except that a cylindrical
 /// roller deck's dynamics runs 8 shaft revolutions with 3 to settle instead of 100 and
 /// 20 (the panes' layout is the same; the 20 screens of a deck would otherwise each run
-/// the full time simulation in a debug build). The Inputs screens do not reach the
-/// `[dynamics]` group at these sizes.
+/// the full time simulation in a debug build), and the double-row deck's optimiser grid
+/// is 5 × 5 instead of 21 × 21 (the Optimise pane's layout is the same; 1 323 grid
+/// solves would take minutes in a debug build). The Inputs screens do not reach the
+/// `[dynamics]` or `[optimise]` groups at these sizes.
 fn shipped_deck_for_snapshots(path: &std::path::Path) -> DeckDoc {
     let text = std::fs::read_to_string(path).expect("shipped deck reads");
+    if text.contains("type = \"double-row-spherical-roller\"") {
+        let text = text.replace("\ngrid = 21", "\ngrid = 5");
+        assert!(
+            text.contains("\ngrid = 5"),
+            "the optimiser's grid line moved"
+        );
+        return DeckDoc::parse(&text, &path.display().to_string()).expect("shipped deck loads");
+    }
     if !text.contains("type = \"cylindrical-roller\"") {
         return DeckDoc::load(path).expect("shipped deck loads");
     }
@@ -780,6 +836,7 @@ fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
             });
             if solved {
                 sweep_sync(app, &job);
+                job_sync(app, &job);
             }
             run_sync_tolerant(app, more);
         }
@@ -1386,7 +1443,11 @@ fn help_scrolls_to_every_key() {
 #[test]
 fn tui_docs_screens_are_the_snapshots() {
     let root = env!("CARGO_MANIFEST_DIR");
-    for doc in ["README.md", "docs/workbench.md"] {
+    for doc in [
+        "README.md",
+        "docs/workbench.md",
+        "docs/double_row_spherical.md",
+    ] {
         let path = format!("{root}/{doc}");
         let text = std::fs::read_to_string(&path).expect("doc");
         let mut out = String::new();
@@ -1728,4 +1789,182 @@ fn tui_ball_element_chart_lives_on_the_dynamics_pane() {
     assert!(screen.contains("Dynamics · ball 0:"), "{screen}");
     assert!(screen.contains("Btu/hr"), "{screen}");
     assert!(screen.contains("heat Btu/hr"), "{screen}");
+}
+
+// ---------------------------------------------------------------- job panes
+
+/// The shipped double-row deck (as the snapshots draw it: a 5 × 5 optimiser grid).
+fn srb_app(w: u16, h: u16) -> App {
+    let path = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/decks/srb_22308.toml"));
+    let mut app = App::new(
+        shipped_deck_for_snapshots(path),
+        Some(PathBuf::from("decks/srb_22308.toml")),
+    );
+    app.handle(AppEvent::Resize(w, h));
+    app
+}
+
+/// The Torque-vs-load pane's numbers are `load_sweep::torque_point`'s (the `losses`
+/// command's) at the same F/C and direction: the series are read back from the drawn
+/// charts (display units: N·m, and lbf·in in US, 1 lbf·in = 0.0254 m × 4.4482216152605 N
+/// as units.rs defines it) and compared with the function run directly on the deck. The
+/// same function on the same input is deterministic, so SI agrees exactly; US to 1e-12
+/// (one division and one multiplication). Checked too: 10 points per direction at F/C
+/// 0.02..0.2, x = F/C, M_fi and M_fo on one scale, and the line naming C = ISO 281's C_r
+/// in kN.
+#[test]
+fn tui_torque_vs_load_reads_back_load_sweep() {
+    use crate::bearings::double_row_spherical::load_sweep::{
+        dynamic_rating_n, parse_range, torque_point, Direction,
+    };
+    use crate::bearings::double_row_spherical::system::DoubleRowCase;
+    let mut app = srb_app(80, 24);
+    let cmds = app.start();
+    run_sync(&mut app, cmds);
+    let pos = app
+        .panes()
+        .iter()
+        .position(|p| *p == Pane::Job(0))
+        .expect("a Torque vs load pane");
+    assert_eq!(app.pane_title(Pane::Job(0)), "Torque vs load");
+    let cmds = app.handle(ch(char::from_digit(pos as u32 + 1, 10).expect("digit")));
+    let [Command::Solve(job)] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(job.job, Some(0));
+    run_sync(&mut app, cmds);
+    let (_, _, v) = app.job.clone().expect("the job reported");
+    assert!(v.finished && v.errors.is_empty(), "{:?}", v.errors);
+    assert_eq!((v.done, v.total), (30, 30));
+    let case = app.deck.case();
+    let c = case
+        .as_any()
+        .downcast_ref::<DoubleRowCase>()
+        .expect("double-row case");
+    let input = &c.form.value;
+    let c_n = dynamic_rating_n(input).expect("rated");
+    let values = parse_range("0.02:0.2:0.02").expect("range");
+    assert_eq!(values.len(), 10);
+    assert!(
+        v.notes[0]
+            .si
+            .contains(&format!("C = {:.1} kN (ISO 281 C_r)", c_n / 1e3)),
+        "{:?}",
+        v.notes
+    );
+    let (fi, fo) = (
+        view_model::chart_series(&v.charts[0], crate::units::Units::Si),
+        view_model::chart_series(&v.charts[1], crate::units::Units::Si),
+    );
+    let fi_us = view_model::chart_series(&v.charts[0], crate::units::Units::Us);
+    assert_eq!(fi.title, "M_fi against F/C");
+    assert_eq!(fo.title, "M_fo against F/C");
+    assert_eq!(fi.y_label, "M N·m");
+    assert_eq!(fi.y_bounds, fo.y_bounds, "one scale for both");
+    for (d, dir) in Direction::ALL.iter().enumerate() {
+        assert_eq!(fi.series[d].0, dir.name());
+        assert_eq!(fi.series[d].1.len(), values.len());
+        for (k, &f) in values.iter().enumerate() {
+            let p = torque_point(input, &c.form.name, *dir, f, c_n, None).expect("solves");
+            assert_eq!(
+                fi.series[d].1[k],
+                (f, p.friction_torque_inner_nm),
+                "{dir:?} {f}"
+            );
+            assert_eq!(
+                fo.series[d].1[k],
+                (f, p.friction_torque_outer_nm),
+                "{dir:?} {f}"
+            );
+            let lbf_in = fi_us.series[d].1[k].1;
+            assert!(
+                (lbf_in * crate::units::INCH_LBF_N_M / p.friction_torque_inner_nm - 1.0).abs()
+                    < 1e-12,
+                "{lbf_in}"
+            );
+        }
+    }
+}
+
+/// An edit cancels the running job: with the Optimise pane on screen the worker runs the
+/// optimiser (21 × 21 here: it runs for long) and reports it; an edit submits a new solve,
+/// which raises the running job's cancel flag, drops what it reported from the app, and
+/// the old job's later reports are ignored; the new job reports for the new generation.
+#[test]
+fn tui_an_edit_cancels_a_running_job() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/srb_22308.toml");
+    let deck = DeckDoc::load(std::path::Path::new(path)).expect("deck");
+    let mut app = App::new(deck, None);
+    app.handle(AppEvent::Resize(80, 24));
+    app.focus = Pane::Job(1);
+    let (tx, rx) = mpsc::channel();
+    let mut worker = Worker::spawn(tx, session_solver()).expect("spawn");
+    let first = app
+        .start()
+        .into_iter()
+        .find_map(|c| match c {
+            Command::Solve(j) => Some(*j),
+            _ => None,
+        })
+        .expect("a solve");
+    assert_eq!(first.job, Some(1));
+    let g1 = first.generation;
+    worker.submit(first);
+    let flag1 = worker.current_cancel().expect("a flag");
+    // Wait for the first report of the job (after the case's own solve).
+    let wait_job = |g: u64, app: &mut App| loop {
+        let e = rx
+            .recv_timeout(Duration::from_secs(120))
+            .expect("the worker reports");
+        let is_job = matches!(&e, AppEvent::JobProgress { generation, .. } if *generation == g);
+        app.handle(e.clone());
+        if is_job {
+            break e;
+        }
+    };
+    let old = wait_job(g1, &mut app);
+    assert!(app.job.is_some());
+    assert!(!flag1.load(Ordering::Acquire));
+    // An edit on the Inputs pane (the Optimise pane is off screen: its solve asks for
+    // no job) cancels the running job and drops its report.
+    select_field(&mut app, "operating.radial_load");
+    let cmds = type_value(&mut app, "18000");
+    let second = cmds
+        .into_iter()
+        .find_map(|c| match c {
+            Command::Solve(j) => Some(*j),
+            _ => None,
+        })
+        .expect("the edit solves");
+    assert_eq!(second.job, None);
+    assert!(app.job.is_none(), "the old job's report is dropped");
+    worker.submit(second);
+    assert!(
+        flag1.load(Ordering::Acquire),
+        "the running job is cancelled"
+    );
+    // A late report of the old job changes nothing.
+    app.handle(old);
+    assert!(app.job.is_none());
+    // Back on the Optimise pane: the job starts again on the edited deck.
+    let pos = app
+        .panes()
+        .iter()
+        .position(|p| *p == Pane::Job(1))
+        .expect("an Optimise pane");
+    let cmds = app.handle(ch(char::from_digit(pos as u32 + 1, 10).expect("digit")));
+    let [Command::Solve(third)] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(third.job, Some(1));
+    assert!(third.case.text().contains("18000"));
+    let g3 = third.generation;
+    worker.submit((**third).clone());
+    let new = wait_job(g3, &mut app);
+    let AppEvent::JobProgress { view, .. } = new else {
+        unreachable!()
+    };
+    assert!(!view.finished);
+    assert_eq!(app.job.as_ref().map(|j| j.0), Some(g3));
+    drop(worker);
 }

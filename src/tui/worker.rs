@@ -11,7 +11,7 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Arc;
 use std::thread::{self, JoinHandle};
 
-use crate::bearings::view::{Chart, View};
+use crate::bearings::view::{Chart, JobView, View};
 use crate::bearings::{Case, Detail, Session, SolveError};
 use crate::numerics::cancel::Cancel;
 use crate::studies::sweep::run_plan;
@@ -115,6 +115,14 @@ impl Worker {
     }
 }
 
+#[cfg(test)]
+impl Worker {
+    /// The newest job's cancel flag (tests: a submit raises the previous one).
+    pub fn current_cancel(&self) -> Option<Arc<AtomicBool>> {
+        self.last_cancel.clone()
+    }
+}
+
 impl Drop for Worker {
     fn drop(&mut self) {
         if let Some(c) = self.last_cancel.take() {
@@ -151,6 +159,7 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             case,
             detail,
             sweep,
+            job: pane_job,
         } = &job.job;
         // A chart the session streams (the ball's Skid chart) goes to the UI as it grows;
         // a send to a closed UI is noticed after the solve.
@@ -210,5 +219,57 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
                 break;
             }
         }
+        // The job pane on screen: the system's job, its reports sent as they come (at most
+        // one per 50 ms, the last always), its end as a last report; a newer job's submit
+        // raises the flag and the job stops at its next check.
+        if let (true, Some(n)) = (solved, *pane_job) {
+            if run_job(&**case, n, *generation, &job.cancel, &events) {
+                break;
+            }
+        }
     }
+}
+
+/// Runs job `n` of `case`'s system for solve `generation`, sending its reports as
+/// [`AppEvent::JobProgress`]; true when the UI is gone.
+fn run_job(
+    case: &dyn Case,
+    n: usize,
+    generation: u64,
+    cancel: &AtomicBool,
+    events: &Sender<AppEvent>,
+) -> bool {
+    let send = |view: JobView| {
+        events
+            .send(AppEvent::JobProgress {
+                generation,
+                pane: n,
+                view: Arc::new(view),
+            })
+            .is_err()
+    };
+    let mut gone = false;
+    let mut last: Option<std::time::Instant> = None;
+    let mut report = |v: &JobView| {
+        let due = last.is_none_or(|t| t.elapsed() >= std::time::Duration::from_millis(50));
+        if (due || v.finished) && !cancel.load(Ordering::Acquire) {
+            gone |= send(v.clone());
+            last = Some(std::time::Instant::now());
+        }
+    };
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        case.system()
+            .run_job(n, case, Cancel::new(cancel), &mut report)
+    }));
+    if gone || cancel.load(Ordering::Acquire) {
+        return gone; // superseded: its results are stale
+    }
+    let last_view = match outcome {
+        Ok(None) => return false,
+        Ok(Some(Ok(view))) => view,
+        Ok(Some(Err(SolveError::Cancelled))) => return false,
+        Ok(Some(Err(e))) => JobView::failed(e.to_string()),
+        Err(p) => JobView::failed(format!("the job panicked: {}", panic_text(p.as_ref()))),
+    };
+    send(last_view)
 }

@@ -8,6 +8,7 @@
 
 pub mod deck;
 pub mod input;
+pub mod jobs;
 pub mod life;
 pub mod load_sweep;
 pub mod losses;

@@ -5,8 +5,8 @@ use super::deck::SCHEMA;
 use super::input::DoubleRowInput;
 use super::losses::{losses, LossBreakdown};
 use super::statics::{analyse, DoubleRowAnalysis};
-use crate::bearings::view::{PaneKind, PaneSpec, View};
-use crate::bearings::{FormSystem, RunOptions, Solution, SystemCase};
+use crate::bearings::view::{JobView, PaneKind, PaneSpec, View};
+use crate::bearings::{Case, FormSystem, RunOptions, Solution, SolveError, SystemCase};
 use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
@@ -49,7 +49,7 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 5] = [
+        const PANES: [PaneSpec; 7] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -70,12 +70,40 @@ impl FormSystem for DoubleRowSpherical {
                 kind: PaneKind::Text(1),
                 title: "Losses",
             },
+            PaneSpec {
+                kind: PaneKind::Job(0),
+                title: "Torque vs load",
+            },
+            PaneSpec {
+                kind: PaneKind::Job(1),
+                title: "Optimise",
+            },
         ];
         &PANES
     }
 
     fn example_deck(&self) -> &'static str {
         EXAMPLE_DECK
+    }
+
+    /// Job 0 the Torque-vs-load sweep, job 1 the optimiser ([`super::jobs`]).
+    fn run_job(
+        &self,
+        n: usize,
+        case: &dyn Case,
+        cancel: Cancel<'_>,
+        report: &mut dyn FnMut(&JobView),
+    ) -> Option<Result<JobView, SolveError>> {
+        let case = case.as_any().downcast_ref::<DoubleRowCase>()?;
+        let (input, name, units) = (&case.form.value, &case.form.name, case.form.units);
+        let restate = |e: SolveError| e.in_units(units);
+        match n {
+            0 => Some(super::jobs::torque_vs_load(input, name, cancel, report).map_err(restate)),
+            1 => Some(super::jobs::optimise_job(
+                input, name, units, cancel, report,
+            )),
+            _ => None,
+        }
     }
 
     /// The `[optimise]` table into the input.

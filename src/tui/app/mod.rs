@@ -62,6 +62,16 @@ pub enum AppEvent {
         /// The points solved so far.
         progress: Arc<PlanProgress>,
     },
+    /// The worker's job of pane `Job(pane)` for solve `generation` reported what it has
+    /// so far (the whole job so far; `view.finished` once it is done).
+    JobProgress {
+        /// Job generation.
+        generation: u64,
+        /// The job pane's index.
+        pane: usize,
+        /// The job so far.
+        view: Arc<crate::bearings::view::JobView>,
+    },
     /// The solver sent chart `chart_index` of job `generation` as it grows (a stage
     /// still running, e.g. the ball's skidding search; [`crate::bearings::Session::solve_streaming`]).
     ChartProgress {
@@ -100,6 +110,8 @@ pub struct SolveJob {
     pub detail: Detail,
     /// The sweep pane on screen (`PaneKind::Sweep(n)`), solved after the case.
     pub sweep: Option<usize>,
+    /// The job pane on screen (`PaneKind::Job(n)`), run after the case.
+    pub job: Option<usize>,
 }
 
 impl std::fmt::Debug for SolveJob {
@@ -109,6 +121,7 @@ impl std::fmt::Debug for SolveJob {
             .field("system", &self.case.system().id())
             .field("detail", &self.detail)
             .field("sweep", &self.sweep)
+            .field("job", &self.job)
             .finish()
     }
 }
@@ -118,6 +131,7 @@ impl PartialEq for SolveJob {
         self.generation == other.generation
             && self.detail == other.detail
             && self.sweep == other.sweep
+            && self.job == other.job
             && self.case.system().id() == other.case.system().id()
             && self.case.text() == other.case.text()
     }
@@ -259,6 +273,12 @@ pub struct App {
     pub last_sweep: Option<usize>,
     /// The newest sweep progress: (generation, pane index, points so far).
     pub sweep: Option<(u64, usize, Arc<PlanProgress>)>,
+    /// The job pane the last submitted solve was asked to run.
+    pub last_job: Option<usize>,
+    /// The newest job report of the current generation: (generation, pane index, the job
+    /// so far); dropped when a new solve is submitted (it was of another deck or is
+    /// started again).
+    pub job: Option<(u64, usize, Arc<crate::bearings::view::JobView>)>,
     /// The chart the running solve is filling: (generation, chart index, chart so far);
     /// drawn in place of the last solution's while that solve runs.
     pub streamed: Option<(u64, usize, Arc<crate::bearings::view::Chart>)>,
@@ -321,6 +341,8 @@ impl App {
             last_request: Detail::default(),
             last_sweep: None,
             sweep: None,
+            last_job: None,
+            job: None,
             streamed: None,
             solve: SolveState::Idle,
             view: None,
@@ -380,11 +402,11 @@ impl App {
         self.size.0 >= WIDE.0 && self.size.1 >= WIDE.1
     }
 
-    /// The pane the wide layout's chart slot shows: the focused chart, text or sweep
+    /// The pane the wide layout's chart slot shows: the focused chart, text, sweep or job
     /// pane, else the first chart.
     pub fn chart_slot(&self) -> Pane {
         match self.focus {
-            p @ (Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_)) => p,
+            p @ (Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_)) => p,
             _ => Pane::Chart(0),
         }
     }
@@ -399,7 +421,9 @@ impl App {
                 Pane::Stepper => {
                     self.focus == Pane::Stepper || !self.panes().contains(&Pane::Thermal)
                 }
-                Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) => self.chart_slot() == pane,
+                Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => {
+                    self.chart_slot() == pane
+                }
                 _ => true,
             }
         } else {
@@ -495,6 +519,16 @@ impl App {
             } => {
                 if generation == self.generation {
                     self.streamed = Some((generation, chart_index, chart));
+                }
+                Vec::new()
+            }
+            AppEvent::JobProgress {
+                generation,
+                pane,
+                view,
+            } => {
+                if generation == self.generation {
+                    self.job = Some((generation, pane, view));
                 }
                 Vec::new()
             }

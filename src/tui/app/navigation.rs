@@ -27,7 +27,7 @@ impl App {
             (cur as isize).saturating_add(by).clamp(0, len as isize - 1) as usize
         };
         match self.focus {
-            Pane::Text(_) | Pane::Sweep(_) => Vec::new(),
+            Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
             Pane::Inputs => {
                 self.input_sel = step(self.input_sel, self.fields.len());
                 Vec::new()

@@ -1,4 +1,4 @@
-//! What to ask the solver and when: the detail and sweep the visible panes need, a new
+//! What to ask the solver and when: the detail, sweep and job the visible panes need, a new
 //! solve job ([`App::submit`]'s generation bump), re-solving when a pane comes into view
 //! that needs more than the last job gave, and the chart the running job streams. Apart
 //! because it is the one place that builds a solve job and decides what it asks for.
@@ -43,16 +43,29 @@ impl App {
         })
     }
 
+    /// The job pane on screen, if any (the worker runs a job only for a visible pane).
+    pub fn wanted_job(&self) -> Option<usize> {
+        self.panes().into_iter().find_map(|p| match p {
+            Pane::Job(n) if self.visible(p) => Some(n),
+            _ => None,
+        })
+    }
+
     pub(super) fn submit(&mut self) -> Command {
         self.generation += 1;
         self.last_request = self.wanted_request();
         self.last_sweep = self.wanted_sweep();
+        self.last_job = self.wanted_job();
+        // The worker cancels the running job with this submit: what it reported is of the
+        // old deck (or starts over), so it is dropped.
+        self.job = None;
         self.solve = SolveState::Running;
         Command::Solve(Box::new(SolveJob {
             generation: self.generation,
             case: self.deck.case(),
             detail: self.last_request,
             sweep: self.last_sweep,
+            job: self.last_job,
         }))
     }
 
@@ -64,7 +77,9 @@ impl App {
         let need_thermal = want.transient && !have.transient;
         let want_sweep = self.wanted_sweep();
         let need_sweep = want_sweep.is_some() && want_sweep != self.last_sweep;
-        if need_trace || need_thermal || need_sweep {
+        let want_job = self.wanted_job();
+        let need_job = want_job.is_some() && want_job != self.last_job;
+        if need_trace || need_thermal || need_sweep || need_job {
             vec![self.submit()]
         } else {
             Vec::new()

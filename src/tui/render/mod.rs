@@ -6,13 +6,16 @@
 //! top; the wide layout's slots), the palette and what every pane shares (its bordered
 //! block and title, the notes for a missing or stale solution). Each pane is drawn in
 //! its own file, the chrome around them in theirs, so that a change to one pane touches
-//! one file: `inputs`, `elements`, `chart`, `sweep`, `thermal`, `stepper`, `text`;
+//! one file: `inputs`, `elements`, `chart`, `sweep`, `job` (with `heatmap`), `thermal`,
+//! `stepper`, `text`;
 //! `header`, `status`, `overlays`.
 
 mod chart;
 mod elements;
 mod header;
+mod heatmap;
 mod inputs;
+mod job;
 mod overlays;
 mod status;
 mod stepper;
@@ -46,7 +49,14 @@ const OUTER: Color = Color::Yellow;
 const DIM: Color = Color::DarkGray;
 
 /// Series colours, in series order.
-const SERIES_COLOURS: [Color; 4] = [INNER, OUTER, Color::Green, Color::Magenta];
+const SERIES_COLOURS: [Color; 6] = [
+    INNER,
+    OUTER,
+    Color::Green,
+    Color::Magenta,
+    Color::LightRed,
+    Color::LightBlue,
+];
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
@@ -171,6 +181,7 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
         Pane::Stepper => render_stepper(app, area, buf),
         Pane::Text(n) => render_text(app, n, area, buf),
         Pane::Sweep(n) => render_sweep(app, n, area, buf),
+        Pane::Job(n) => job::render_job(app, n, area, buf),
     }
 }
 

@@ -129,7 +129,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
-                Pane::Text(_) | Pane::Sweep(_) => Vec::new(),
+                Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
                 Pane::Inputs => v(&[
                     "jk move",
                     "Enter edit",
