@@ -40,6 +40,17 @@ fn measured() -> DoubleRowInput {
     b
 }
 
+/// The shipped deck computes its cage speed (the measured 1200 rpm is incompatible with its
+/// loads: the deck header), and is otherwise the example (`deck::tests`).
+#[test]
+fn shipped_deck_computes_the_cage_speed() {
+    let b = shipped();
+    assert_eq!(b.cage.speed, CageSpeedSource::Computed);
+    let m = measured();
+    assert_eq!(b.cage.measured_speed_rad_s, m.cage.measured_speed_rad_s);
+    assert_eq!(b.operating.radial_load_n, m.operating.radial_load_n);
+}
+
 /// The shipped deck (computed cage speed) at the loads (N).
 fn with_loads(fr: f64, fa: f64) -> DoubleRowInput {
     let mut b = shipped();
