@@ -137,7 +137,8 @@ use crate::physics::lubrication::guide_ring::{
     guide_ring_balance, EndContactInput, GuideRingError, GuideRingGeometry, GuideRingSolution,
 };
 use crate::physics::lubrication::lamina_friction::{
-    lamina_friction, FilmRheology, LaminaFrictionError, LaminaSlice, RacewayTractionLaw,
+    lamina_friction, lamina_friction_and_slope, FilmRheology, LaminaFrictionError, LaminaSlice,
+    RacewayTractionLaw,
 };
 use crate::physics::lubrication::traction::HertzStrip;
 use crate::physics::lubrication::walther::WaltherError;
@@ -776,36 +777,89 @@ fn spin_moment(
     wc: f64,
     spin: f64,
 ) -> Result<(f64, f64, f64), LossError> {
+    spin_moment_and_slope(r, roller, common, wc, spin, false).map(|(m, sc, c, _)| (m, sc, c))
+}
+
+#[cfg(test)]
+thread_local! {
+    /// (spin solves, moment evaluations, lamina evaluations) on this thread: the cost
+    /// counts `losses_stage_cost_print` reports.
+    pub(super) static SPIN_COUNTS: std::cell::Cell<(usize, usize, usize)> =
+        const { std::cell::Cell::new((0, 0, 0)) };
+}
+
+/// [`spin_moment`] and, with `want_slope`, dM/dω_s (N·m·s): the laminae's part is
+/// −Σ F_k'(v_k)·m_k² exactly (v_k = u_k − m_k·ω_s, F' from
+/// [`lamina_friction_and_slope`]); the pocket's drag depends on ω_s directly and through
+/// the net traction and the yaw moment (dcirc/dω_s = −Σ F_k'·m_k, dyaw/dω_s =
+/// −Σ y_k·F_k'·m_k), taken as one directional difference of the two pocket formulas
+/// (closed forms, no lamina evaluated) — a slope for Newton's step only, so its accuracy
+/// sets the convergence rate, never the root.
+fn spin_moment_and_slope(
+    r: &RollerKinematics,
+    roller: usize,
+    common: &LossInputs,
+    wc: f64,
+    spin: f64,
+    want_slope: bool,
+) -> Result<(f64, f64, f64, f64), LossError> {
     let lub = &common.lubricant;
     let ring_w = [common.inner_speed_rad_s, common.outer_speed_rad_s];
     let (mut m, mut scale, mut circ, mut yaw) = (0.0, 0.0, 0.0, 0.0);
+    let (mut dm, mut dcirc, mut dyaw) = (0.0, 0.0, 0.0);
+    #[cfg(test)]
+    let mut laminae = 0usize;
     for (k, side) in r.sides.iter().enumerate() {
         let raceway = if k == 0 { "inner" } else { "outer" };
         for (j, l) in side.iter().enumerate() {
             let s = slice_at(l, ring_w[k], wc, spin);
-            let f = lamina_friction(lub.law, &lub.rheology, &s).map_err(|source| {
-                LossError::Lamina {
-                    roller,
-                    raceway,
-                    lamina: j,
-                    source,
-                }
+            let (f, slope) = if want_slope {
+                lamina_friction_and_slope(lub.law, &lub.rheology, &s)
+            } else {
+                lamina_friction(lub.law, &lub.rheology, &s).map(|f| (f, 0.0))
+            }
+            .map_err(|source| LossError::Lamina {
+                roller,
+                raceway,
+                lamina: j,
+                source,
             })?;
+            #[cfg(test)]
+            {
+                laminae += 1;
+            }
             m += f.force_n * l.spin_arm_m;
             scale += (f.force_n * l.spin_arm_m).abs();
             circ += f.force_n;
             yaw += f.skew_moment_nm;
+            dm -= slope * l.spin_arm_m * l.spin_arm_m;
+            dcirc -= slope * l.spin_arm_m;
+            dyaw -= slope * l.spin_arm_m * s.axial_offset_m;
         }
     }
+    #[cfg(test)]
+    SPIN_COUNTS.with(|c| {
+        let (a, b, n) = c.get();
+        c.set((a, b + 1, n + laminae));
+    });
     // The pocket's hydrodynamic drag opposes the roller surface's motion relative to the
     // cage (Martin's film at the pocket force: the given one or this net traction), and so
     // does the drag its skew reaction adds (module notes "Skew").
     let rr = common.pocket.roller_radius_m;
     let eta = lub.rheology.viscosity_pa_s;
-    let p = pocket_film(&common.pocket, eta, circ, spin * rr)?;
-    let sk = pocket_skew_reaction(&common.pocket, eta, yaw, spin * rr)?;
-    let mp = -(p.drag_n + sk.drag_n) * rr * spin.signum();
-    Ok((m + mp, scale + mp.abs(), circ))
+    let pocket = |spin: f64, circ: f64, yaw: f64| -> Result<f64, LossError> {
+        let p = pocket_film(&common.pocket, eta, circ, spin * rr)?;
+        let sk = pocket_skew_reaction(&common.pocket, eta, yaw, spin * rr)?;
+        Ok(-(p.drag_n + sk.drag_n) * rr * spin.signum())
+    };
+    let mp = pocket(spin, circ, yaw)?;
+    if want_slope {
+        // One-sided, away from ω_s = 0 (the drag's sign flips there).
+        let d = 1e-7 * spin.abs().max(1.0) * if spin < 0.0 { -1.0 } else { 1.0 };
+        let mp_d = pocket(spin + d, circ + d * dcirc, yaw + d * dyaw)?;
+        dm += (mp_d - mp) / d;
+    }
+    Ok((m + mp, scale + mp.abs(), circ, dm))
 }
 
 /// The lamina at the given speeds: sliding v = ring_arm·(ω_ring − ω_c) − m·ω_s and the
@@ -821,12 +875,133 @@ fn slice_at(l: &LaminaKinematics, ring_w: f64, wc: f64, spin: f64) -> LaminaSlic
 }
 
 /// A roller's spin from its moment balance (module notes "Roller spin"): the root of the
-/// monotone M(ω_s), bracketed from `guess` (first step `step`) and closed by the Illinois
-/// false position. Returns (spin rad/s, residual N·m, scale N·m, spread N): the spread is
-/// the change of the roller's net circumferential traction across the final bracket when
-/// the bracket's width stopped the search (M near-vertical there: a lamina on eq. 3's
-/// Newtonian branch at the rolling point), 0 when the residual did.
+/// monotone M(ω_s) by a safeguarded Newton. Each evaluation also gives the analytic slope
+/// dM/dω_s ([`spin_moment_and_slope`]); on eq. 3's Newtonian branch the lamina force is
+/// linear in v, so Newton lands on a rolling point's near-vertical stretch in one step,
+/// where the Illinois false position it replaces crawled at bisection speed. Newton steps
+/// from `guess` toward the root until M changes sign (the bracket; where the slope is no
+/// use, bracket expansion from step `step`, doubling); inside the bracket a Newton step
+/// that leaves it, or a bracket that did not halve in two steps, falls back to bisection
+/// (Brent's safeguard), so the bracket always closes. Stops when |M| ≤
+/// [`SPIN_MOMENT_TOLERANCE`]·Σ|F·m| or when the bracket is below 1e-12·max(|ω_s|, 1):
+/// M is then vertical to round-off (a lamina on the Newtonian branch exactly at its
+/// rolling point, slope η·e^{αp}·A/h·m² ~ 1e15 N·m·s and more), the root is known to
+/// that width, and the spread below says what it leaves in the traction.
+/// Returns (spin rad/s, residual N·m, scale N·m, spread N): the spread is the change of
+/// the roller's net circumferential traction across the final bracket when the bracket's
+/// width stopped the search, 0 when the residual did.
 fn solve_spin(
+    r: &RollerKinematics,
+    roller: usize,
+    common: &LossInputs,
+    wc: f64,
+    guess: f64,
+    step: f64,
+) -> Result<(f64, f64, f64, f64), LossError> {
+    #[cfg(test)]
+    SPIN_COUNTS.with(|c| {
+        let (a, b, n) = c.get();
+        c.set((a + 1, b, n));
+    });
+    let eval = |s: f64| spin_moment_and_slope(r, roller, common, wc, s, true);
+    let (m0, sc0, c0, d0) = eval(guess)?;
+    if m0.abs() <= SPIN_MOMENT_TOLERANCE * sc0 {
+        return Ok((guess, m0, sc0, 0.0));
+    }
+    // M falls with ω_s: a positive moment means the root lies above.
+    let dir = if m0 > 0.0 { 1.0 } else { -1.0 };
+    let mut h = if step.is_finite() && step > 0.0 {
+        step
+    } else {
+        0.05 * guess.abs().max(1.0)
+    };
+    // Bracket: from the last point on the guess's side, Newton's step when it points
+    // toward the root (a falling M), else the expanding step.
+    let (mut a, mut fa, mut ca, mut da) = (guess, m0, c0, d0);
+    let (mut b, mut fb, mut cb, mut db);
+    let mut tries = 0;
+    loop {
+        let newton = a - fa / da;
+        b = if da < 0.0 && newton.is_finite() && (newton - a) * dir > 0.0 {
+            // A little past Newton's point, so a convex stretch still crosses.
+            a + (newton - a) * 1.0001
+        } else {
+            a + dir * h
+        };
+        (fb, _, cb, db) = {
+            let (m, sc, c, d) = eval(b)?;
+            if m.abs() <= SPIN_MOMENT_TOLERANCE * sc {
+                return Ok((b, m, sc, 0.0));
+            }
+            (m, sc, c, d)
+        };
+        if fb.signum() != m0.signum() {
+            break;
+        }
+        tries += 1;
+        if tries >= 80 {
+            return Err(LossError::SpinBracket {
+                roller,
+                spin_rad_s: b,
+                moment_nm: fb,
+            });
+        }
+        h = h.max((b - a).abs()) * 2.0;
+        (a, fa, ca, da) = (b, fb, cb, db);
+    }
+    // [a, b] brackets the root; (x, fx, dx) is the latest point, Newton's base.
+    let (mut x, mut fx, mut dx) = (b, fb, db);
+    let mut widths = [f64::INFINITY; 2];
+    let (mut s, mut fs, mut scale) = (b, fb, sc0);
+    for _ in 0..200 {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let width = hi - lo;
+        let newton = x - fx / dx;
+        let inside = dx < 0.0 && newton.is_finite() && newton > lo && newton < hi;
+        // widths[1] is the bracket two steps ago (∞ at first).
+        s = if inside && (width <= 0.5 * widths[1] || widths[1].is_infinite()) {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        widths = [width, widths[0]];
+        let (m, sc, c, d) = eval(s)?;
+        fs = m;
+        scale = sc;
+        if m.abs() <= SPIN_MOMENT_TOLERANCE * sc {
+            return Ok((s, m, sc, 0.0));
+        }
+        if m.signum() == fb.signum() {
+            b = s;
+            fb = m;
+            cb = c;
+        } else {
+            a = s;
+            fa = m;
+            ca = c;
+        }
+        if (b - a).abs() <= 1e-12 * s.abs().max(1.0) {
+            return Ok((
+                s,
+                m,
+                sc,
+                (ca - cb).abs().max((c - ca).abs()).max((c - cb).abs()),
+            ));
+        }
+        (x, fx, dx) = (s, m, d);
+    }
+    let _ = fa;
+    Err(LossError::SpinNotConverged {
+        roller,
+        spin_rad_s: s,
+        moment_nm: fs,
+        scale_nm: scale,
+    })
+}
+
+/// The Illinois false position the Newton replaced, kept as the tests' reference.
+#[cfg(test)]
+fn solve_spin_illinois(
     r: &RollerKinematics,
     roller: usize,
     common: &LossInputs,
@@ -916,6 +1091,16 @@ fn solve_spin(
     })
 }
 
+/// A spin root finder's signature ([`solve_spin`]): (spin, residual, scale, spread).
+type SpinSolver = fn(
+    &RollerKinematics,
+    usize,
+    &LossInputs,
+    f64,
+    f64,
+    f64,
+) -> Result<(f64, f64, f64, f64), LossError>;
+
 /// One roller's spin at a cage speed: the solved spin and its balance.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct RollerSpin {
@@ -970,6 +1155,21 @@ impl LossKinematics {
         wc: f64,
         warm: Option<&[(f64, f64)]>,
     ) -> Result<Vec<RollerSpin>, LossError> {
+        self.spins_with(wc, warm, solve_spin)
+    }
+
+    /// The spins by the Illinois false position the Newton replaced (tests' reference).
+    #[cfg(test)]
+    pub(super) fn spins_illinois(&self, wc: f64) -> Result<Vec<RollerSpin>, LossError> {
+        self.spins_with(wc, None, solve_spin_illinois)
+    }
+
+    fn spins_with(
+        &self,
+        wc: f64,
+        warm: Option<&[(f64, f64)]>,
+        solver: SpinSolver,
+    ) -> Result<Vec<RollerSpin>, LossError> {
         let guess = self.spin_guess(wc);
         let ring_w = [self.common.inner_speed_rad_s, self.common.outer_speed_rad_s];
         self.rollers
@@ -1003,7 +1203,7 @@ impl LossKinematics {
                     (None, None, None) => (guess, 0.05 * guess.abs()),
                 };
                 let step = step.max(1e-9 * g.abs()).max(1e-12);
-                let (s, m, sc, spread) = solve_spin(r, k, &self.common, wc, g, step)?;
+                let (s, m, sc, spread) = solver(r, k, &self.common, wc, g, step)?;
                 Ok(RollerSpin {
                     spin_rad_s: s,
                     residual_nm: m,
