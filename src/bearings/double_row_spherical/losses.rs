@@ -92,8 +92,9 @@
 //! where every lamina is at its limiting shear); D_s follows |M_s(ω_s)|, which need not be
 //! monotone, but it is a small part of the moment and the bracketed root is checked by
 //! evaluating the balance afresh (`roller_spin_closes_its_moment_balance`). It is bracketed from the statics' spin (scaled to the cage speed),
-//! expanding the step by 2, and closed by the Illinois false position to
-//! |M| ≤ [`SPIN_MOMENT_TOLERANCE`]·Σ|F_k·m_k|. A roller with no loaded lamina keeps the
+//! by Newton steps on the analytic slope dM/dω_s (or an expanding step), and closed by a
+//! safeguarded Newton (bisection when the step leaves the bracket or the bracket stalls)
+//! to |M| ≤ [`SPIN_MOMENT_TOLERANCE`]·Σ|F_k·m_k| (`solve_spin`). A roller with no loaded lamina keeps the
 //! statics' spin (nothing drives it but the pocket film; reported). Neglected: the
 //! guide-ring end's friction moment about the roller axis — its contact lies on the axis
 //! but for the roller's tilt, the arm is ≤ 4e-5 m against m_k ≈ 6 mm: μ_fl·Q_end·arm
