@@ -109,7 +109,9 @@
 //! Illinois, with every roller's spin solved inside each evaluation, warm-started from
 //! the previous cage speeds' spins ([`LossKinematics::balanced_cage`]); accepted within
 //! [`CAGE_TORQUE_TOLERANCE`] of its scale or the torque's resolution
-//! ([`LossBreakdown::cage_torque_noise_nm`]). The loads stay the statics' (their
+//! ([`LossBreakdown::cage_torque_noise_nm`]), or, where the torque steps across the balance
+//! (ATZ laminae at their rolling points), once the speed is bracketed to
+//! [`CAGE_SPEED_RESOLUTION`] of the ring speed, the step reported as the resolution. The loads stay the statics' (their
 //! centrifugal force used the §7 speed; F_c ∝ ω_c², so a cage speed δ % off moves it by
 //! 2δ %: `centrifugal_cage_speed_rpm` is reported beside `cage_speed_rpm`). The slip
 //! `cage_slip_pct` is against the kinematic speed (App. C, rolling without slip at α⁰).
@@ -352,7 +354,9 @@ pub struct LossBreakdown {
     /// rollers of their net traction's spread across the spin's final bracket (a lamina on
     /// eq. 3's Newtonian branch at its rolling point makes the spin balance near-vertical)
     /// times d_m/2; the balance is accepted within the larger of it and
-    /// [`CAGE_TORQUE_TOLERANCE`] of the torque's scale. 0 at a measured cage speed.
+    /// [`CAGE_TORQUE_TOLERANCE`] of the torque's scale; where the torque steps across the
+    /// balance (the speed bracketed to [`CAGE_SPEED_RESOLUTION`]) it is at least the step.
+    /// 0 at a measured cage speed.
     pub cage_torque_noise_nm: f64,
 }
 
@@ -1400,7 +1404,9 @@ impl LossKinematics {
                 imbalance_end_nm: fb,
             });
         }
-        // Illinois false position on [a, b], T(a)·T(b) < 0.
+        // Illinois false position on [a, b], T(a)·T(b) < 0. `ta`, `tb` keep the true
+        // imbalances at the ends (Illinois halves `fa`, `fb`).
+        let (mut ta, mut tb) = (fa, fb);
         let mut side = 0i8;
         let mut last = (b, fb);
         for _ in 0..100 {
@@ -1408,17 +1414,27 @@ impl LossKinematics {
             if !w.is_finite() || w <= a.min(b) || w >= a.max(b) {
                 w = 0.5 * (a + b);
             }
-            let (f, tol, br) = eval(w)?;
+            let (f, tol, mut br) = eval(w)?;
             last = (w, f);
             if f.abs() <= tol {
                 return Ok((w, br));
             }
-            if (b - a).abs() <= 1e-12 * wi.abs().max(1.0) {
-                break;
+            // The torque jumps across the balance: under the ATZ law a lamina at its rolling
+            // point switches its limiting shear (e^{αp} ≈ 1e17 at 2 GPa makes the Newtonian
+            // stretch vanishingly narrow), so T(ω_c) steps by up to ≈ 1.4 N·m across 1e-9 rad/s.
+            // Every speed inside such a step is a balance of the model; once the bracket is
+            // below 1e-9 of the ring speed the cage speed is known to that, and the step
+            // across the bracket is the torque's resolution, reported as
+            // `cage_torque_noise_nm`.
+            if (b - a).abs() <= CAGE_SPEED_RESOLUTION * wi.abs().max(wo.abs()).max(1.0) {
+                let jump = (ta - tb).abs().max(f.abs());
+                br.cage_torque_noise_nm = br.cage_torque_noise_nm.max(jump);
+                return Ok((w, br));
             }
             if f.signum() == fb.signum() {
                 b = w;
                 fb = f;
+                tb = f;
                 if side == 1 {
                     fa *= 0.5;
                 }
@@ -1426,6 +1442,7 @@ impl LossKinematics {
             } else {
                 a = w;
                 fa = f;
+                ta = f;
                 if side == -1 {
                     fb *= 0.5;
                 }
@@ -1440,6 +1457,11 @@ impl LossKinematics {
 }
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+/// The computed cage speed's resolution, relative to the faster ring: where the cage torque
+/// steps across its balance (see [`LossKinematics::balanced_cage`]) the speed is accepted
+/// once bracketed this closely, the step reported as `cage_torque_noise_nm`.
+pub const CAGE_SPEED_RESOLUTION: f64 = 1e-9;
 
 /// The statics reduced to the loss model's kinematics (module notes; issue 27 Model 2–4):
 ///
