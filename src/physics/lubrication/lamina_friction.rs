@@ -184,6 +184,31 @@ pub fn lamina_friction(
     rheology: &FilmRheology,
     slice: &LaminaSlice,
 ) -> Result<LaminaFriction, LaminaFrictionError> {
+    friction_and_slope(law, rheology, slice, false).map(|(f, _)| f)
+}
+
+/// [`lamina_friction`] and the slope ∂F/∂v_sl of its force, N/(m/s), at the same slice
+/// (the sliding speed's derivative, everything else held). Eq. 3 as printed is linear in
+/// v: the slope is η·e^{α·p̄}·A/h. Under ATZ only the Newtonian pieces of the strip depend
+/// on v, linearly (`TractionModel::lamina_traction_and_slope`). The spin balance of the
+/// double-row losses uses it for its Newton step.
+///
+/// # Errors
+/// As [`lamina_friction`].
+pub fn lamina_friction_and_slope(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    slice: &LaminaSlice,
+) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
+    friction_and_slope(law, rheology, slice, true)
+}
+
+fn friction_and_slope(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    slice: &LaminaSlice,
+    want_slope: bool,
+) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
     let q = check("load_n", slice.load_n, false)?;
     let b = check("half_width_m", slice.half_width_m, false)?;
     let l = check("length_m", slice.length_m, false)?;
@@ -208,7 +233,7 @@ pub fn lamina_friction(
     // stress, and with η = 0 there is none to cap (without this the ATZ branch would read
     // a zero film as "no film, limited stress").
     if expected == 0.0 || rheology.viscosity_pa_s == 0.0 {
-        return Ok(LaminaFriction::default());
+        return Ok((LaminaFriction::default(), 0.0));
     }
     if law == RacewayTractionLaw::NewtonianEq3 && h == 0.0 && v != 0.0 {
         // Eq. 3 divides by the film: a sliding lamina without one has no finite force.
@@ -219,12 +244,27 @@ pub fn lamina_friction(
                 "positive for the printed eq. 3 (traction = \"newtonian-eq3\") at a sliding lamina",
         });
     }
-    let force = match law {
-        RacewayTractionLaw::NewtonianEq3 => eq3_slice_force_n(rheology, slice),
-        RacewayTractionLaw::Atz => rheology.atz().lamina_traction(&strip, v, h).force_n,
+    let (force, slope) = match law {
+        RacewayTractionLaw::NewtonianEq3 => {
+            let unit = LaminaSlice {
+                sliding_speed_m_s: 1.0,
+                ..*slice
+            };
+            let slope = if want_slope {
+                eq3_slice_force_n(rheology, &unit)
+            } else {
+                0.0
+            };
+            (eq3_slice_force_n(rheology, slice), slope)
+        }
+        RacewayTractionLaw::Atz if want_slope => {
+            let (t, slope) = rheology.atz().lamina_traction_and_slope(&strip, v, h);
+            (t.force_n, slope)
+        }
+        RacewayTractionLaw::Atz => (rheology.atz().lamina_traction(&strip, v, h).force_n, 0.0),
     };
     let mu = force.abs() / q;
-    Ok(LaminaFriction {
+    let friction = LaminaFriction {
         force_n: force,
         power_w: force * v,
         skew_moment_nm: y * force,
@@ -232,7 +272,8 @@ pub fn lamina_friction(
         slide_roll_ratio: if u != 0.0 { v / u } else { 0.0 },
         exceeds_newtonian_bound: law == RacewayTractionLaw::NewtonianEq3
             && (mu > EQ3_MU_FLAG || mu.is_nan()),
-    })
+    };
+    Ok((friction, slope))
 }
 
 #[cfg(test)]
@@ -364,6 +405,47 @@ mod tests {
     }
 
     /// Serde names of the deck's `traction` key.
+    /// The slope against a central difference of the force, for both laws on a lamina
+    /// whose strip is Newtonian (20 N, α·p₀ = 8.5) and mixed (100 N, α·p₀ = 42: limited
+    /// centre, Newtonian edges):
+    /// step 1e-6 relative, so the difference's truncation (∝ h², the law smooth away from
+    /// a kink crossing) and round-off (1e-16/1e-6) sit near 1e-9; tolerance 1e-6 relative.
+    /// At v = 0 the slope is the Newtonian limit, checked against a small-v difference.
+    #[test]
+    fn slope_matches_central_difference() {
+        let rh = oil();
+        for law in [RacewayTractionLaw::Atz, RacewayTractionLaw::NewtonianEq3] {
+            for (q, v) in [
+                (20.0, 1e-5),
+                (20.0, -1.5),
+                (100.0, -3e-4),
+                (100.0, 0.01),
+                (100.0, 0.2),
+            ] {
+                let s = slice(q, v);
+                let (f, slope) = lamina_friction_and_slope(law, &rh, &s).unwrap();
+                assert_eq!(f, lamina_friction(law, &rh, &s).unwrap());
+                let d = 1e-6 * v.abs();
+                let at = |x: f64| lamina_friction(law, &rh, &slice(q, x)).unwrap().force_n;
+                let fd = (at(v + d) - at(v - d)) / (2.0 * d);
+                assert!(
+                    (slope - fd).abs() <= 1e-6 * fd.abs().max(1e-12),
+                    "{law:?} v {v}: slope {slope} vs central difference {fd}"
+                );
+            }
+            let (_, s0) = lamina_friction_and_slope(law, &rh, &slice(20.0, 0.0)).unwrap();
+            let tiny = 1e-9;
+            let f = lamina_friction(law, &rh, &slice(20.0, tiny))
+                .unwrap()
+                .force_n;
+            assert!(
+                (s0 - f / tiny).abs() <= 1e-6 * s0,
+                "{law:?}: {s0} vs {}",
+                f / tiny
+            );
+        }
+    }
+
     #[test]
     fn law_names() {
         let s = serde_json::to_string(&RacewayTractionLaw::NewtonianEq3).expect("ser");

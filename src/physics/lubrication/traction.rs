@@ -258,10 +258,59 @@ impl TractionModel {
         sliding_velocity_m_s: f64,
         film_thickness_m: f64,
     ) -> LaminaTraction {
+        self.lamina_traction_parts(contact, sliding_velocity_m_s, film_thickness_m)
+            .0
+    }
+
+    /// [`TractionModel::lamina_traction`] and its slope ∂F/∂v, N/(m/s). On a Newtonian
+    /// piece τ_N ∝ |v| at fixed p, so that piece's share of F is linear in v; the limited
+    /// pieces (τ_tr, μ·p) do not depend on v, and the law is continuous at its kinks, so
+    /// the kinks' motion with v adds no boundary term (Leibniz): ∂F/∂v = 2·w·b·I_N/|v|
+    /// with I_N the Newtonian pieces' integral, exact to the quadrature. At v = 0 the
+    /// whole strip is Newtonian (τ_N → 0 below τ_tr): the slope is the Newtonian
+    /// integral over [0, π/2] per unit speed. h ≤ 0 (limited stress only) has slope 0.
+    pub fn lamina_traction_and_slope(
+        &self,
+        contact: &HertzStrip,
+        sliding_velocity_m_s: f64,
+        film_thickness_m: f64,
+    ) -> (LaminaTraction, f64) {
+        let v = sliding_velocity_m_s;
+        let p0 = contact.peak_pressure_pa();
+        if v == 0.0 && p0 > 0.0 && film_thickness_m.is_finite() {
+            let i = match *self {
+                TractionModel::Ehd { .. } => self.newtonian_piece(
+                    p0,
+                    1.0,
+                    film_thickness_m,
+                    (0.0, 1.0, 0.0),
+                    (std::f64::consts::FRAC_PI_2, 0.0),
+                ),
+                TractionModel::Constant { .. } => 0.0,
+            };
+            let slope = 2.0 * contact.width_m * contact.half_width_m * i;
+            return (LaminaTraction::default(), slope);
+        }
+        let (t, newtonian) = self.lamina_traction_parts(contact, v, film_thickness_m);
+        let slope = if v.is_finite() && v != 0.0 {
+            2.0 * contact.width_m * contact.half_width_m * newtonian / v.abs()
+        } else {
+            0.0
+        };
+        (t, slope)
+    }
+
+    /// The force and heat, and the Newtonian pieces' share of the φ-integral (Pa).
+    fn lamina_traction_parts(
+        &self,
+        contact: &HertzStrip,
+        sliding_velocity_m_s: f64,
+        film_thickness_m: f64,
+    ) -> (LaminaTraction, f64) {
         let p0 = contact.peak_pressure_pa();
         let v = sliding_velocity_m_s;
         if p0 <= 0.0 || !v.is_finite() || v == 0.0 {
-            return LaminaTraction::default();
+            return (LaminaTraction::default(), 0.0);
         }
         let h = if film_thickness_m.is_finite() {
             film_thickness_m
@@ -311,12 +360,17 @@ impl TractionModel {
             }
         };
         let mut integral = 0.0;
+        let mut newtonian = 0.0;
         let mut start = at(0);
         for (i, r) in branch[..n].iter().enumerate() {
             let end = at(i + 1);
             let ((a, ca, sa), (b, cb, sb)) = (start, end);
             integral += match *r {
-                Regime::Newtonian => self.newtonian_piece(p0, v, h, (a, ca, sa), (b, cb)),
+                Regime::Newtonian => {
+                    let piece = self.newtonian_piece(p0, v, h, (a, ca, sa), (b, cb));
+                    newtonian += piece;
+                    piece
+                }
                 Regime::Transition(tau) => tau * (sb - sa),
                 Regime::Coulomb(mu) => {
                     // ∫cos²φ dφ = φ/2 + sin φ·cos φ/2
@@ -326,10 +380,13 @@ impl TractionModel {
             start = end;
         }
         let force = 2.0 * contact.width_m * contact.half_width_m * integral * v.signum();
-        LaminaTraction {
-            force_n: force,
-            heat_w: (force * v).abs(),
-        }
+        (
+            LaminaTraction {
+                force_n: force,
+                heat_w: (force * v).abs(),
+            },
+            newtonian,
+        )
     }
 
     /// ∫_a^b τ_N(p₀ cos φ)·cos φ dφ on a Newtonian piece by composite 8-point
