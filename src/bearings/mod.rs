@@ -13,6 +13,7 @@
 )]
 
 pub mod angular_ball;
+pub mod answer;
 pub mod cylindrical_roller;
 pub mod double_row_spherical;
 pub mod error;

@@ -36,6 +36,18 @@ pub enum Display {
     SmallSpeed,
     /// Load ratings and large forces: kN or kip (1000 lbf).
     LargeForce,
+    /// Rotational speeds: rpm in both systems.
+    Rpm,
+    /// Frequencies: Hz in both systems.
+    Frequency,
+    /// Lives in millions of revolutions: Mrev in both systems.
+    Mrev,
+    /// Lives in hours: h in both systems.
+    Hours,
+    /// Temperatures, given in °C (as the key outputs keep them): °C or °F.
+    Temperature,
+    /// Durations: s in both systems.
+    Seconds,
     /// A state stored as its index into these names (the tapered roller's
     /// `both-races`/`cup-and-flange`/`free`): the pane shows the name, CSV the index.
     Choice(&'static [&'static str]),
@@ -67,6 +79,16 @@ impl Display {
             (Display::SmallSpeed, Units::Us) => v / INCH_M,
             (Display::LargeForce, Units::Si) => v * 1e-3,
             (Display::LargeForce, Units::Us) => v / LBF_N * 1e-3,
+            (
+                Display::Rpm
+                | Display::Frequency
+                | Display::Mrev
+                | Display::Hours
+                | Display::Seconds,
+                _,
+            ) => v,
+            (Display::Temperature, Units::Si) => v,
+            (Display::Temperature, Units::Us) => v * 1.8 + 32.0,
         }
     }
 
@@ -95,6 +117,13 @@ impl Display {
             (Display::SmallSpeed, Units::Us) => "in/s",
             (Display::LargeForce, Units::Si) => "kN",
             (Display::LargeForce, Units::Us) => "kip",
+            (Display::Rpm, _) => "rpm",
+            (Display::Frequency, _) => "Hz",
+            (Display::Mrev, _) => "Mrev",
+            (Display::Hours, _) => "h",
+            (Display::Seconds, _) => "s",
+            (Display::Temperature, Units::Si) => "°C",
+            (Display::Temperature, Units::Us) => "°F",
         }
     }
 
@@ -309,6 +338,8 @@ pub struct Summary {
 pub enum PaneKind {
     /// The deck's inputs, editable.
     Inputs,
+    /// The bearing-level answer at a glance ([`View::answer`]).
+    Summary,
     /// The element table ([`View::screen_table`]).
     Elements,
     /// Bearing chart `n` of [`View::charts`]; chart 0 also has, per element, its detail
@@ -521,6 +552,120 @@ pub struct View {
     pub warnings: Vec<Warning>,
     /// Preformatted blocks (e.g. a stiffness matrix with its units), in each unit system.
     pub texts: Vec<TextBlock>,
+    /// The bearing-level answer the Summary pane shows, in order.
+    pub answer: Vec<AnswerLine>,
+}
+
+/// What an [`AnswerLine`] holds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnswerValue {
+    /// A number, SI (temperatures in °C), in the line's display unit on screen.
+    Number(f64),
+    /// A name (the largest friction mechanism).
+    Name(String),
+    /// Not computed or not defined here, and why (shown in place of the number).
+    Absent(String),
+}
+
+/// One line of the Summary pane: a bearing-level result, where it occurs, and where the
+/// JSON report holds it, so a test reads every line on screen back against the report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AnswerLine {
+    /// The group it is shown under (`"Life"`, `"Contact"`).
+    pub section: &'static str,
+    /// Label without the unit (`"L10 reference"`).
+    pub label: &'static str,
+    /// The value.
+    pub value: AnswerValue,
+    /// Display unit of a number.
+    pub display: Display,
+    /// Decimals shown (significant figures for [`Display::Mrev`] and [`Display::Hours`],
+    /// whose values span decades).
+    pub precision: usize,
+    /// Where it occurs (`"roller 3, inner"`), if it is one element's.
+    pub place: Option<String>,
+    /// The JSON report's field it is read from: a pointer (`/life/l10_bearing_mrev`), or
+    /// `max`/`min` of pointers with `*` over an array's entries
+    /// (`max /rollers/*/inner/max_stress_pa /rollers/*/outer/max_stress_pa`); a scale
+    /// factor after `×` when the report's unit differs (`/speeds/cage_rad_s ×9.549…`).
+    /// Empty: shown only (a name).
+    pub json: &'static str,
+}
+
+impl AnswerLine {
+    /// A number (or, when `value` is `None`, absent for `why`).
+    pub fn number(
+        section: &'static str,
+        label: &'static str,
+        value: Option<f64>,
+        display: Display,
+        precision: usize,
+        json: &'static str,
+        why: &str,
+    ) -> AnswerLine {
+        AnswerLine {
+            section,
+            label,
+            value: match value {
+                Some(v) if v.is_finite() => AnswerValue::Number(v),
+                Some(_) => AnswerValue::Absent("not finite".into()),
+                None => AnswerValue::Absent(why.to_string()),
+            },
+            display,
+            precision,
+            place: None,
+            json,
+        }
+    }
+
+    /// A name.
+    pub fn name(section: &'static str, label: &'static str, name: String) -> AnswerLine {
+        AnswerLine {
+            section,
+            label,
+            value: AnswerValue::Name(name),
+            display: Display::Plain,
+            precision: 0,
+            place: None,
+            json: "",
+        }
+    }
+
+    /// This line, said to occur at `place`.
+    pub fn at(mut self, place: Option<String>) -> AnswerLine {
+        self.place = place;
+        self
+    }
+
+    /// The value as shown in `units`: the number with its unit, the name, or
+    /// `— (why)`.
+    pub fn shown(&self, units: Units) -> String {
+        match &self.value {
+            AnswerValue::Number(v) => {
+                let x = self.display.convert(*v, units);
+                let text = match self.display {
+                    Display::Mrev | Display::Hours => significant(x, self.precision),
+                    _ => format!("{x:.*}", self.precision),
+                };
+                match self.display.unit(units) {
+                    "" => text,
+                    u => format!("{text} {u}"),
+                }
+            }
+            AnswerValue::Name(n) => n.clone(),
+            AnswerValue::Absent(why) => format!("— ({why})"),
+        }
+    }
+}
+
+/// `x` to `digits` significant figures, without an exponent (lives of 0.02 to 10⁷ Mrev).
+pub fn significant(x: f64, digits: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor() as i64;
+    let decimals = (digits as i64 - 1 - magnitude).max(0) as usize;
+    format!("{x:.decimals$}")
 }
 
 /// Lines a system formats itself, once per unit system (a matrix whose cells have

@@ -17,6 +17,8 @@ pub mod view_model;
 pub mod worker;
 
 #[cfg(test)]
+mod summary_tests;
+#[cfg(test)]
 mod tests;
 
 use std::collections::VecDeque;

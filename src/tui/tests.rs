@@ -431,7 +431,7 @@ fn tui_thermal_pane_requests_transient_only_when_visible() {
     assert!(!app.last_request.transient);
     assert_eq!(app.last_request.trace_element, None);
     // the aerospace deck has no [thermal] table: nothing extra requested
-    let cmds = app.handle(ch('4'));
+    let cmds = app.handle(ch('5'));
     assert_eq!(app.focus, Pane::Thermal);
     assert_eq!(app.wanted_request().transient, app.deck.has_thermal());
     if !app.deck.has_thermal() {
@@ -723,7 +723,14 @@ fn tui_event_loop_end_to_end_on_test_backend() {
         let tx = tx.clone();
         move || {
             std::thread::sleep(Duration::from_millis(200)); // let the first solve land
-            for ev in [key(KeyCode::Tab), ch('j'), ch('j'), ch('q')] {
+                                                            // Inputs → Summary → Rollers, then two rollers down.
+            for ev in [
+                key(KeyCode::Tab),
+                key(KeyCode::Tab),
+                ch('j'),
+                ch('j'),
+                ch('q'),
+            ] {
                 let _ = tx.send(ev);
             }
         }
@@ -804,7 +811,7 @@ fn tui_snapshot_shipped_decks() {
 /// is 5 × 5 instead of 21 × 21 (the Optimise pane's layout is the same; 1 323 grid
 /// solves would take minutes in a debug build). The Inputs screens do not reach the
 /// `[dynamics]` or `[optimise]` groups at these sizes.
-fn shipped_deck_for_snapshots(path: &std::path::Path) -> DeckDoc {
+pub(super) fn shipped_deck_for_snapshots(path: &std::path::Path) -> DeckDoc {
     let text = std::fs::read_to_string(path).expect("shipped deck reads");
     if text.contains("type = \"double-row-spherical-roller\"") {
         let text = text.replace("\ngrid = 21", "\ngrid = 5");
@@ -1046,7 +1053,7 @@ fn tui_event_loop_survives_solver_panic() {
         let tx = tx.clone();
         move || {
             std::thread::sleep(Duration::from_millis(300));
-            for ev in [key(KeyCode::Tab), ch('q')] {
+            for ev in [key(KeyCode::Tab), key(KeyCode::Tab), ch('q')] {
                 let _ = tx.send(ev);
             }
         }

@@ -14,6 +14,7 @@
 )]
 
 pub mod analysis;
+pub mod answer;
 mod contacts;
 pub mod deck;
 pub mod dynamics;

@@ -85,10 +85,14 @@ impl FormSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 6] = [
+        const PANES: [PaneSpec; 7] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Summary,
+                title: "Summary",
             },
             PaneSpec {
                 kind: PaneKind::Elements,

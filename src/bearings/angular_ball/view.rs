@@ -272,6 +272,7 @@ pub fn view(a: &BallAnalysis) -> View {
         },
         warnings: super::warnings::warnings(a),
         texts: Vec::new(),
+        answer: super::answer::answer(a, &life),
     }
 }
 

@@ -91,10 +91,14 @@ impl FormSystem for CylindricalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 9] = [
+        const PANES: [PaneSpec; 10] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Summary,
+                title: "Summary",
             },
             PaneSpec {
                 kind: PaneKind::Elements,

@@ -402,5 +402,6 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             si: super::report::stiffness_lines(a, Units::Si),
             us: super::report::stiffness_lines(a, Units::Us),
         }],
+        answer: super::answer::answer(a, &life),
     }
 }

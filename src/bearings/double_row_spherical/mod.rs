@@ -6,6 +6,7 @@
 //! [`Layout`](crate::bearings::spherical_roller::load_distribution::Layout)); this folder
 //! holds the deck, the assembly of the two rows and the wiring.
 
+pub mod answer;
 pub mod deck;
 pub mod input;
 pub mod jobs;

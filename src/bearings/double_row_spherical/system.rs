@@ -49,10 +49,14 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 7] = [
+        const PANES: [PaneSpec; 8] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Summary,
+                title: "Summary",
             },
             PaneSpec {
                 kind: PaneKind::Elements,

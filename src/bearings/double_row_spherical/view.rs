@@ -333,6 +333,7 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             si: stiffness_lines(a, Units::Si),
             us: stiffness_lines(a, Units::Us),
         }],
+        answer: super::answer::answer(a, None),
     }
 }
 
@@ -404,5 +405,24 @@ pub fn view_with_losses(a: &DoubleRowAnalysis, l: &LossBreakdown) -> View {
         si: loss_bars(l, Units::Si),
         us: loss_bars(l, Units::Us),
     });
+    v.answer = super::answer::answer(a, Some(l));
+    // Issue 28: the bearing's friction torque and loss as key outputs (sweeps, bench).
+    for (name, label, value, quantity) in [
+        (
+            "friction_torque_nm",
+            "M",
+            l.losses.friction_torque_nm,
+            Quantity::Moment,
+        ),
+        ("total_loss_w", "loss", l.losses.total_w, Quantity::Power),
+    ] {
+        v.key_outputs.push(KeyOutput {
+            name,
+            label,
+            value: Some(value),
+            quantity,
+            role: KeyRole::Guard,
+        });
+    }
     v
 }

@@ -2,6 +2,7 @@
 //! (A. K. Aggarwal, NASA CR-191182, 1993; seed 000): lamina load distribution with
 //! centrifugal and gyroscopic loads, stresses, EHD film, life, speeds, heat.
 
+pub mod answer;
 pub mod contacts;
 pub mod converged;
 pub mod deck;

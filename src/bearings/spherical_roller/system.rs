@@ -67,10 +67,14 @@ impl FormSystem for SphericalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 5] = [
+        const PANES: [PaneSpec; 6] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
+            },
+            PaneSpec {
+                kind: PaneKind::Summary,
+                title: "Summary",
             },
             PaneSpec {
                 kind: PaneKind::Elements,

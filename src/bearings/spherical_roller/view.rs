@@ -396,6 +396,7 @@ pub fn view(a: &Analysis) -> View {
         },
         warnings: super::warnings::warnings(a),
         texts: Vec::new(),
+        answer: super::answer::answer(a),
     }
 }
 
@@ -545,7 +546,7 @@ fn trace(a: &Analysis) -> Option<Trace> {
 }
 
 /// The §10 network's temperatures, when the deck has one.
-fn thermal(a: &Analysis) -> Option<ThermalResults> {
+pub(super) fn thermal(a: &Analysis) -> Option<ThermalResults> {
     let th = a.thermal.as_ref()?;
     Some(ThermalResults {
         steady: th
@@ -686,6 +687,22 @@ fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
             "Thot",
             hottest_temperature_c,
             Quantity::Temperature,
+            KeyRole::Guard,
+        ),
+        // Issue 28: the friction torque (heat over the relative speed: judged with it)
+        // and ISO 76's static safety beside the life.
+        k(
+            "friction_torque_nm",
+            "M",
+            a.friction.as_ref().map(|f| f.heat.friction_torque_nm),
+            Quantity::Moment,
+            KeyRole::Guard,
+        ),
+        k(
+            "static_safety",
+            "s0",
+            super::answer::static_safety_of(a),
+            Quantity::Dimensionless,
             KeyRole::Guard,
         ),
     ]

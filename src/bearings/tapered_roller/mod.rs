@@ -16,6 +16,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod answer;
 pub mod bearing;
 pub mod contact;
 pub mod deck;

@@ -410,5 +410,6 @@ pub fn view(a: &Analysis) -> View {
             si: super::report::stiffness_lines(a, crate::units::Units::Si),
             us: super::report::stiffness_lines(a, crate::units::Units::Us),
         }],
+        answer: super::answer::answer(a, &life),
     }
 }

@@ -295,6 +295,8 @@ pub struct App {
     pub step: usize,
     /// Thermal node chosen for the sparkline (`None`: the hottest).
     pub thermal_node: Option<usize>,
+    /// The Summary pane's first line shown (it scrolls when its lines do not fit).
+    pub summary_scroll: usize,
     /// One-line message for the status bar (saved, errors).
     pub message: Option<String>,
     /// The last error (a failed open, save or solve), whole, one message per line: the
@@ -350,6 +352,7 @@ impl App {
             chart_laminae: false,
             step: 0,
             thermal_node: None,
+            summary_scroll: 0,
             message: None,
             error: None,
             quit: false,
@@ -406,7 +409,8 @@ impl App {
     /// pane, else the first chart.
     pub fn chart_slot(&self) -> Pane {
         match self.focus {
-            p @ (Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_)) => p,
+            p
+            @ (Pane::Summary | Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_)) => p,
             _ => Pane::Chart(0),
         }
     }
@@ -421,7 +425,7 @@ impl App {
                 Pane::Stepper => {
                     self.focus == Pane::Stepper || !self.panes().contains(&Pane::Thermal)
                 }
-                Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => {
+                Pane::Summary | Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => {
                     self.chart_slot() == pane
                 }
                 _ => true,

@@ -28,6 +28,13 @@ impl App {
         };
         match self.focus {
             Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
+            Pane::Summary => {
+                // The renderer clamps to what is left below the pane's last line.
+                self.summary_scroll = (self.summary_scroll as isize)
+                    .saturating_add(by)
+                    .clamp(0, 10_000) as usize;
+                Vec::new()
+            }
             Pane::Inputs => {
                 self.input_sel = step(self.input_sel, self.fields.len());
                 Vec::new()

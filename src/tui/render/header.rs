@@ -1,7 +1,7 @@
 //! The header line: the pane tabs (numbered, the focused one highlighted, the hidden ones
 //! dim) and, on the right, the deck's file, its unsaved mark and the display units. Apart
-//! because its fitting rules (which details to drop, when the tabs shrink to numbers) are
-//! its own.
+//! because its fitting rules (which details to drop, when the tabs close up to one space,
+//! when they shrink to numbers) are its own.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -36,8 +36,13 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         ));
         Line::from(r)
     };
-    let tabs = |compact: bool| {
+    // 0: full labels, 1: full labels one space apart, 2: numbers (the focused one titled).
+    let tabs = |tightness: u8| {
+        let compact = tightness == 2;
         let mut spans = Vec::new();
+        if tightness == 1 {
+            spans.push(Span::raw(" "));
+        }
         if wide && !compact {
             spans.push(Span::styled(
                 " rollbench ",
@@ -50,6 +55,8 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         for (i, p) in app.panes().iter().enumerate() {
             let label = if compact && *p != app.focus {
                 format!(" {} ", i + 1)
+            } else if tightness == 1 {
+                format!("{}:{} ", i + 1, app.pane_title(*p))
             } else {
                 format!(" {}:{} ", i + 1, app.pane_title(*p))
             };
@@ -71,8 +78,8 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     details.push(String::new());
     let mut choice = None;
-    'outer: for compact in [false, true] {
-        let t = tabs(compact);
+    'outer: for tightness in [0, 1, 2] {
+        let t = tabs(tightness);
         for d in &details {
             let r = right(d.clone());
             if t.width() + 1 + r.width() <= area.width as usize {
@@ -81,7 +88,7 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             }
         }
     }
-    let (t, r) = choice.unwrap_or_else(|| (tabs(true), Line::default()));
+    let (t, r) = choice.unwrap_or_else(|| (tabs(2), Line::default()));
     t.render(area, buf);
     let w = (r.width() as u16).min(area.width);
     if w > 0 {

@@ -19,6 +19,7 @@ mod job;
 mod overlays;
 mod status;
 mod stepper;
+mod summary;
 mod sweep;
 mod text;
 mod thermal;
@@ -178,6 +179,7 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
         Pane::Elements => render_rollers(app, area, buf),
         Pane::Chart(n) => render_load(app, n, area, buf),
         Pane::Thermal => render_thermal(app, area, buf),
+        Pane::Summary => summary::render_summary(app, area, buf),
         Pane::Stepper => render_stepper(app, area, buf),
         Pane::Text(n) => render_text(app, n, area, buf),
         Pane::Sweep(n) => render_sweep(app, n, area, buf),

@@ -151,6 +151,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
                 }
                 Pane::Stepper => vec!["hl step".into(), "PgUp/PgDn ±10".into(), format!("jk {el}")],
                 Pane::Thermal => v(&["jk node", "g/G first/last"]),
+                Pane::Summary => v(&["jk scroll"]),
             };
             if matches!(app.focus, Pane::Elements | Pane::Chart(_))
                 && app.panes().contains(&Pane::Stepper)

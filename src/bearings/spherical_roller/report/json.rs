@@ -157,10 +157,15 @@ pub fn to_value(a: &Analysis) -> Value {
     );
     doc.insert("rollers".into(), Value::Array(rollers));
     if let Some(li) = &a.life {
-        doc.insert(
-            "life".into(),
-            serde_json::to_value(li.result).unwrap_or(Value::Null),
-        );
+        let mut life = serde_json::to_value(li.result).unwrap_or(Value::Null);
+        // ISO 76's s0 from the largest contact stress (issue 28), beside seed 000's lives.
+        if let Value::Object(m) = &mut life {
+            m.insert(
+                "static_safety".into(),
+                json!(super::super::answer::static_safety_of(a)),
+            );
+        }
+        doc.insert("life".into(), life);
     }
     if let Some(th) = &a.thermal {
         doc.insert(
