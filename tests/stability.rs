@@ -158,8 +158,9 @@ fn valid(b: &Bearing) -> Option<Bearing> {
 }
 
 /// JSON keys whose value may legitimately be null (Option fields): lives of an unloaded
-/// raceway, films of unloaded laminae, the transient that was not requested.
-const NULLABLE: [&str; 13] = [
+/// raceway, films of unloaded laminae, the transient that was not requested, the static
+/// safety of a bearing with no contact stress (infinite).
+const NULLABLE: [&str; 14] = [
     "infinite_life_reason",
     "l10_inner_mrev",
     "l10_outer_mrev",
@@ -173,6 +174,7 @@ const NULLABLE: [&str; 13] = [
     "outer_film_m",
     "transient",
     "transient_heat_w",
+    "static_safety",
 ];
 
 /// Every number finite and every null at a nullable key (serde_json writes NaN/inf as
