@@ -1371,13 +1371,13 @@ impl LossKinematics {
             if f.abs() <= tol {
                 return Ok((w, br));
             }
-            // The torque jumps across the balance: under the ATZ law a lamina at its rolling
-            // point switches its limiting shear (e^{αp} ≈ 1e17 at 2 GPa makes the Newtonian
-            // stretch vanishingly narrow), so T(ω_c) steps by up to ≈ 1.4 N·m across 1e-9 rad/s.
-            // Every speed inside such a step is a balance of the model; once the bracket is
-            // below 1e-9 of the ring speed the cage speed is known to that, and the step
-            // across the bracket is the torque's resolution, reported as
-            // `cage_torque_noise_nm`.
+            // A guard: before the ATZ law was regularised at its rolling point
+            // (`lamina_friction` module notes) T(ω_c) stepped by up to ≈ 1.4 N·m across
+            // 1e-9 rad/s (a lamina switching its limiting shear, e^{αp} ≈ 1e17 at 2 GPa);
+            // now such a step is a chord over |v| < v_reg, steep but resolved (noise 0 on
+            // the shipped deck). Should T still step, once the bracket is below 1e-9 of the
+            // ring speed the cage speed is known to that, and the step across the bracket is
+            // the torque's resolution, reported as `cage_torque_noise_nm`.
             if (b - a).abs() <= CAGE_SPEED_RESOLUTION * wi.abs().max(wo.abs()).max(1.0) {
                 let jump = (ta - tb).abs().max(f.abs());
                 br.cage_torque_noise_nm = br.cage_torque_noise_nm.max(jump);
