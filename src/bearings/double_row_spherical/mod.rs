@@ -14,6 +14,7 @@ pub mod load_sweep;
 pub mod losses;
 pub mod optimise;
 pub mod report;
+pub mod skew;
 pub mod statics;
 pub mod system;
 pub mod view;
