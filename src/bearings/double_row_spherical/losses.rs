@@ -32,7 +32,8 @@
 //! n = a × ê_θ (normal to the roller axis a in the meridian plane), which turns the roller
 //! axis out of the meridian plane. Where the two raceways' contact angles differ under load
 //! the two contacts' sliding fields along the roller differ, and M_s ≠ 0. The roller is held
-//! by reaction forces at its pocket and at its guide-ring end; its skew loss is the
+//! by reaction forces at its pocket and at its guide-ring end. In [`losses`] (the default)
+//! it does not skew (ψ = 0) and its skew loss is the
 //! dissipation of those reactions (`skew_w`), a new friction at contacts the other terms
 //! do not load:
 //! * **pocket**: the couple w(y) = 12·M_s·y/L³ along the pocket contact, each half a Martin
@@ -61,6 +62,41 @@
 //! mirrored frame keeps a torque's axial component). The drags' own torque on the cage
 //! (forces along n at the pocket faces, arm D_W/2) is neglected with the net-force pocket
 //! drag's (≤ D·D_W/2·cos α ≈ 2e-3 N·m per roller).
+//!
+//! With [`losses_skewed`] (srb-skew; not the default, see its doc) the roller **skews**
+//! until its pocket and guide ring hold it (`skew.rs`): a skew ψ about n makes each raceway lamina slide axially
+//! at v_a = ψ·ω_s·m (m the spin arm), so the lamina's traction (the law's force at
+//! |v| = √(v_θ² + v_a²), along v) turns partly axial; the raceways' yaw moment
+//! M_s(ψ) = Σ y·F_θ falls where the law saturates, and the axial tractions' sum N along the
+//! roller axis presses the roller's end on the guide ring when it points at it
+//! (Q = max(0, −N)); that end touches the ring off the roller axis by δ = (r_e − L/2)·ψ, so
+//! the ring's normal force has the restoring yaw moment M_g = −δ·Q. ψ solves
+//! M_s(ψ) + M_g(ψ) = 0 within the pocket play |ψ| ≤ c_p/L, else the pocket stops it at
+//! ±c_p/L and reacts the rest h = M_s + M_g. The skew's loss (`skew_w`) is
+//! * the raceways' axial sliding dissipation Σ F_a·v_a (the lamina's F·|v| splits exactly
+//!   into F_θ·v_θ, booked to the raceway terms, and F_a·v_a, booked here), and
+//! * the pocket's reaction h as the couple w(y) = 12·h·y/L³ along the pocket contact, each
+//!   half a Martin film (`cage_film::pocket_skew_reaction`: F_s = 3|h|/(2L) per half, loss
+//!   over the unloaded films), at the roller's surface speed ω_s·D_W/2.
+//!
+//! The guide ring (`guide_ring_w`) carries the statics' (centrifugal) end loads plus the
+//! skew's; the floating ring passes no axial load to the inner ring, so the row pressing it
+//! less receives the difference of the rows' sums, shared by its rollers
+//! ([`skew_end_loads`]). A skewed roller's end contact slides across the ring's face at
+//! ω_s·δ beside its circumferential sliding (`guide_ring`: the traction along the whole
+//! sliding vector). Without skew input (`RollerLossInput::skew = None`) ψ = 0 and every
+//! term is the unskewed one (`hand_built_case`).
+//!
+//! Neglected couplings (sizes printed by `losses_tests::skew_couplings_print`):
+//! * the statics: the lamina normal loads are the statics' at ψ = 0; the skew's end load Q
+//!   and the axial tractions' pitch couple (±ρ·F_a at the two raceways) would shift them;
+//! * the spins: each roller's spin is solved at ψ = 0 (the spin balance's tractions are
+//!   F(v_θ)); at ψ the circumferential tractions F_θ are smaller, which leaves a residual
+//!   moment about the roller axis;
+//! * the ring's yaw share −M_g·a_r about the bearing axis (the off-axis normal force) is
+//!   not in the guide ring's torque balance; the cage receives the pocket's share h·a_r;
+//! * the end contact's traction about the skew axis (arm L/2) and its radial traction about
+//!   the roller axis (arm δ) are not in the yaw or spin balances.
 //!
 //! # Torques
 //! M_fi, M_fo (`friction_torque_inner_nm`, `friction_torque_outer_nm`) are the loss at the
@@ -128,6 +164,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::input::{CageLand as DeckCageLand, CageSpeedSource, DoubleRowInput, Traction};
+use super::skew::{roller_skew, RollerSkew, SkewGeometry};
 use super::statics::DoubleRowAnalysis;
 use crate::bearings::spherical_roller::load_distribution::DynamicSpeeds;
 use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
@@ -199,6 +236,21 @@ pub struct RollerLossInput {
     /// roller at contact angle α): the axial component of its skew axis n = a × ê_θ, so its
     /// yaw reaction M_s·n has the torque M_s·a_r about the bearing axis on the cage.
     pub skew_axis_axial_component: f64,
+    /// The roller surface's circumferential speed ω_s·m at each lamina (inner, outer; the
+    /// laminae's order), m/s: what a skew ψ turns into the axial sliding ψ·ω_s·m
+    /// (`skew.rs`). `None`: the roller does not skew (the pocket reacts its yaw moment at
+    /// ψ = 0).
+    #[serde(default)]
+    pub skew: Option<RollerSkewSpeeds>,
+}
+
+/// The roller surface's circumferential speed ω_s·m per lamina, m/s (module notes "Skew").
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RollerSkewSpeeds {
+    /// Inner raceway laminae, m/s.
+    pub inner_m_s: Vec<f64>,
+    /// Outer raceway laminae, m/s.
+    pub outer_m_s: Vec<f64>,
 }
 
 /// Lubricant of the loss model, SI.
@@ -330,6 +382,25 @@ pub struct RollerLoss {
     pub guide_ring_load_n: f64,
     /// Laminae where the printed eq. 3 exceeds μ = 0.2.
     pub eq3_flagged_laminae: usize,
+    /// ψ, the roller's skew angle, rad (`skew.rs`; 0 without skew input).
+    pub skew_angle_rad: f64,
+    /// M_s(0), the raceways' yaw moment of the unskewed roller, N·m.
+    pub unskewed_skew_moment_nm: f64,
+    /// M_g, the guide ring's yaw moment on the roller (its off-axis end contact), N·m.
+    pub skew_ring_moment_nm: f64,
+    /// The yaw moment the pocket reacts, N·m (M_s(ψ) + M_g; 0 to the search's tolerance
+    /// when the ring holds the skew).
+    pub skew_pocket_moment_nm: f64,
+    /// N, the raceways' net axial traction on the roller along its axis (+ away from the
+    /// guide ring), N.
+    pub skew_axial_traction_n: f64,
+    /// The skew's end load on the guide ring (max(0, −N), plus this roller's share of the
+    /// other row's excess through the floating ring), N; `guide_ring_load_n` is the
+    /// statics' (centrifugal) end load, and the end contact carries their sum.
+    pub skew_guide_ring_load_n: f64,
+    /// Σ F_a·v_a, the raceways' axial sliding dissipation (inner + outer), W (part of
+    /// `skew_w`).
+    pub skew_raceway_w: f64,
 }
 
 /// The breakdown with its details.
@@ -446,31 +517,6 @@ pub enum LossError {
     },
 }
 
-/// Power of one raceway contact with the roller-centre yaw moment and net force:
-/// (power W, moment N·m, force N, flagged laminae).
-fn contact_losses(
-    law: RacewayTractionLaw,
-    rheology: &FilmRheology,
-    laminae: &[LaminaSlice],
-    roller: usize,
-    raceway: &'static str,
-) -> Result<(f64, f64, f64, usize), LossError> {
-    let (mut power, mut moment, mut force, mut flagged) = (0.0, 0.0, 0.0, 0usize);
-    for (j, s) in laminae.iter().enumerate() {
-        let r = lamina_friction(law, rheology, s).map_err(|source| LossError::Lamina {
-            roller,
-            raceway,
-            lamina: j,
-            source,
-        })?;
-        power += r.power_w;
-        moment += r.skew_moment_nm;
-        force += r.force_n;
-        flagged += usize::from(r.exceeds_newtonian_bound);
-    }
-    Ok((power, moment, force, flagged))
-}
-
 fn finite(name: &'static str, value: f64) -> Result<f64, LossError> {
     if value.is_finite() {
         Ok(value)
@@ -512,17 +558,28 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         });
     }
 
-    // Guide ring first: its speed sets the end contacts and, for a guide-ring land, the cage
+    // Each roller's skew first (`skew.rs`): it sets the raceway tractions and the end loads.
+    let skews = roller_skews(inputs)?;
+    let skew_end = skew_end_loads(inputs, &skews);
+    let end_offset = inputs.guide_ring.as_ref().map_or(0.0, |g| {
+        g.roller_end_radius_m - 0.5 * inputs.pocket.length_m
+    });
+
+    // Guide ring next: its speed sets the end contacts and, for a guide-ring land, the cage
     // land's relative speed.
     let guide = match &inputs.guide_ring {
         Some(g) => {
             let ends: Vec<EndContactInput> = inputs
                 .rollers
                 .iter()
-                .map(|r| EndContactInput {
-                    load_n: r.guide_ring_load_n,
+                .zip(&skews)
+                .zip(&skew_end)
+                .map(|((r, sk), &q)| EndContactInput {
+                    load_n: r.guide_ring_load_n + q,
                     roller_end_speed_m_s: r.roller_end_speed_m_s,
                     orbital_speed_rad_s: r.orbital_speed_rad_s,
+                    // The off-axis end point δ = (r_e − L/2)·ψ swept by the spin.
+                    radial_sliding_m_s: r.spin_rad_s * end_offset * sk.skew_rad,
                 })
                 .collect();
             Some(guide_ring_balance(g, lub.law, rh, wi, &ends)?)
@@ -535,10 +592,15 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
     let (mut inner_total, mut outer_total, mut flagged) = (0.0, 0.0, 0usize);
     let mut cage_torque = 0.0;
     for (k, r) in inputs.rollers.iter().enumerate() {
-        let (pi, mi, fi, ni) = contact_losses(lub.law, rh, &r.inner, k, "inner")?;
-        let (po, mo, fo, no) = contact_losses(lub.law, rh, &r.outer, k, "outer")?;
-        let yaw = mi + mo;
-        let skew = pocket_skew_reaction(&inputs.pocket, eta, yaw, r.surface_speed_m_s)?;
+        let sk = &skews[k];
+        let (i, o) = (&sk.inner, &sk.outer);
+        let (pi, fi, ni) = (i.rolling_power_w, i.circumferential_n, i.flagged);
+        let (po, fo, no) = (o.rolling_power_w, o.circumferential_n, o.flagged);
+        let yaw = sk.yaw_moment_nm();
+        // The pocket reacts what the ring does not (all of it at ψ = 0).
+        let pocket_yaw = sk.pocket_moment_nm;
+        let skew = pocket_skew_reaction(&inputs.pocket, eta, pocket_yaw, r.surface_speed_m_s)?;
+        let raceway_skew = i.skew_power_w + o.skew_power_w;
         let end = guide.as_ref().and_then(|g| g.contacts.get(k)).copied();
         let (end_w, end_f) = end.map_or((0.0, 0.0), |c| (c.power_w, c.force_on_roller_n));
         let circumferential = fi + fo + end_f;
@@ -548,17 +610,17 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
         outer_total += po;
         l.raceway_inner_w += pi;
         l.raceway_outer_w += po;
-        l.skew_w += skew.power_w;
+        l.skew_w += skew.power_w + raceway_skew;
         l.cage_pockets_w += pocket.power_w;
         flagged += ni + no;
-        cage_torque += circumferential * 0.5 * dm + yaw * r.skew_axis_axial_component;
+        cage_torque += circumferential * 0.5 * dm + pocket_yaw * r.skew_axis_axial_component;
         rollers.push(RollerLoss {
             row: r.row,
             spin_rad_s: r.spin_rad_s,
             skew_moment_nm: yaw,
             inner_w: pi,
             outer_w: po,
-            skew_w: skew.power_w,
+            skew_w: skew.power_w + raceway_skew,
             skew_reaction_force_n: skew.half_force_n,
             guide_ring_end_w: end_w,
             pocket_w: pocket.power_w,
@@ -567,6 +629,13 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
             pocket_force_n: pocket_force,
             guide_ring_load_n: r.guide_ring_load_n,
             eq3_flagged_laminae: ni + no,
+            skew_angle_rad: sk.skew_rad,
+            unskewed_skew_moment_nm: sk.unskewed_yaw_moment_nm,
+            skew_ring_moment_nm: sk.ring_moment_nm,
+            skew_pocket_moment_nm: pocket_yaw,
+            skew_axial_traction_n: sk.axial_traction_n,
+            skew_guide_ring_load_n: skew_end[k],
+            skew_raceway_w: raceway_skew,
         });
     }
     if let Some(g) = &guide {
@@ -663,6 +732,104 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
     })
 }
 
+/// Each roller at its skew (`skew.rs`): ψ_max = c_p/L from the pocket, the end contact's
+/// offset per unit skew r_e − L/2 from the guide ring (none without one). A roller without
+/// skew input is evaluated at ψ = 0 (its laminae as given).
+///
+/// # Errors
+/// [`LossError::Lamina`] naming the roller, raceway and lamina; [`LossError::BadInput`]
+/// when a roller's skew speeds do not match its laminae.
+fn roller_skews(inputs: &LossInputs) -> Result<Vec<RollerSkew>, LossError> {
+    let lub = &inputs.lubricant;
+    let l = inputs.pocket.length_m;
+    let on = SkewGeometry {
+        max_skew_rad: if l > 0.0 {
+            inputs.pocket.pocket_clearance_m / l
+        } else {
+            0.0
+        },
+        end_offset_per_rad_m: inputs
+            .guide_ring
+            .as_ref()
+            .map(|g| g.roller_end_radius_m - 0.5 * l),
+    };
+    let off = SkewGeometry {
+        max_skew_rad: 0.0,
+        ..on
+    };
+    let none: &[f64] = &[];
+    inputs
+        .rollers
+        .iter()
+        .enumerate()
+        .map(|(k, r)| {
+            let (geometry, speeds) = match &r.skew {
+                Some(sp) => {
+                    if sp.inner_m_s.len() != r.inner.len() || sp.outer_m_s.len() != r.outer.len() {
+                        return Err(LossError::BadInput {
+                            name: "roller skew speeds (one per lamina)",
+                            value: sp.inner_m_s.len() as f64,
+                            allowed: "as many as the roller's laminae",
+                        });
+                    }
+                    (&on, [sp.inner_m_s.as_slice(), sp.outer_m_s.as_slice()])
+                }
+                None => (&off, [none, none]),
+            };
+            roller_skew(
+                lub.law,
+                &lub.rheology,
+                geometry,
+                [&r.inner, &r.outer],
+                speeds,
+            )
+            .map_err(|e| LossError::Lamina {
+                roller: k,
+                raceway: if e.raceway == 0 { "inner" } else { "outer" },
+                lamina: e.lamina,
+                source: e.source,
+            })
+        })
+        .collect()
+}
+
+/// The skew's end loads on the guide ring, N per roller (module notes "Skew"): each
+/// roller's max(0, −N) from [`roller_skew`]; the guide ring floats (it passes no axial load
+/// to the inner ring, `float.rs`), so the row that presses less receives the difference of
+/// the two rows' sums (both rows' end forces act along mirrored axes, so the sums compare
+/// directly), shared equally by that row's rollers (the ring is rigid; which of their ends
+/// it meets first is not resolved). 0 without a guide ring.
+fn skew_end_loads(inputs: &LossInputs, skews: &[RollerSkew]) -> Vec<f64> {
+    let mut q: Vec<f64> = skews.iter().map(|s| s.guide_ring_load_n).collect();
+    if inputs.guide_ring.is_none() {
+        q.iter_mut().for_each(|x| *x = 0.0);
+        return q;
+    }
+    let sum = |row: u8, q: &[f64]| -> (f64, usize) {
+        inputs
+            .rollers
+            .iter()
+            .zip(q)
+            .filter(|(r, _)| r.row == row)
+            .fold((0.0, 0), |(s, n), (_, &x)| (s + x, n + 1))
+    };
+    let ((s1, n1), (s2, n2)) = (sum(1, &q), sum(2, &q));
+    let (row, excess, n) = if s1 > s2 {
+        (2, s1 - s2, n2)
+    } else {
+        (1, s2 - s1, n1)
+    };
+    if excess > 0.0 && n > 0 {
+        let share = excess / n as f64;
+        for (r, x) in inputs.rollers.iter().zip(q.iter_mut()) {
+            if r.row == row {
+                *x += share;
+            }
+        }
+    }
+    q
+}
+
 // ------------------------------------------------------------------ wiring to the statics
 
 /// The guide ring and the cage land of the double-row deck, derived from its geometry
@@ -756,6 +923,8 @@ pub struct LossKinematics {
     statics_spin_rad_s: f64,
     /// Whether the deck asks for the cage speed from the cage's torque balance.
     computed_cage: bool,
+    /// Whether the rollers skew (`skew.rs`; [`losses_skewed`]): off in [`losses`].
+    with_skew: bool,
 }
 
 /// Tolerance of a roller's moment balance: |M(ω_s)| ≤ this × Σ|F_k·m_k| (plus the pocket
@@ -1129,6 +1298,12 @@ pub struct RollerSpin {
 }
 
 impl LossKinematics {
+    /// The same kinematics with the rollers' skew on ([`losses_skewed`]).
+    pub fn skewed(mut self) -> Self {
+        self.with_skew = true;
+        self
+    }
+
     /// The statics' spin carried to cage speed `wc`: App. C's spin scales with the inner
     /// ring's speed relative to the cage (as the statics scale it for a measured cage).
     fn spin_guess(&self, wc: f64) -> f64 {
@@ -1273,6 +1448,10 @@ impl LossKinematics {
                     surface_speed_m_s: s * self.common.pocket.roller_radius_m,
                     spin_rad_s: s,
                     skew_axis_axial_component: r.skew_axis_axial_component,
+                    skew: self.with_skew.then(|| RollerSkewSpeeds {
+                        inner_m_s: r.sides[0].iter().map(|l| l.spin_arm_m * s).collect(),
+                        outer_m_s: r.sides[1].iter().map(|l| l.spin_arm_m * s).collect(),
+                    }),
                 }
             })
             .collect();
@@ -1682,6 +1861,7 @@ pub fn loss_kinematics(a: &DoubleRowAnalysis) -> Result<LossKinematics, LossErro
         statics_cage_rad_s: wc,
         statics_spin_rad_s: a.dynamic.roller_spin_rad_s,
         computed_cage: input.cage.speed == CageSpeedSource::Computed,
+        with_skew: false,
     })
 }
 
@@ -1707,7 +1887,23 @@ pub fn loss_inputs(a: &DoubleRowAnalysis) -> Result<LossInputs, LossError> {
 /// [`LossError`] naming the stage, roller, raceway, lamina or input at fault, or the
 /// cage's or a roller's balance that could not be bracketed or closed.
 pub fn losses(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
-    let k = loss_kinematics(a)?;
+    losses_of(loss_kinematics(a)?)
+}
+
+/// [`losses`] with the loaded rollers' skew (`skew.rs`, module notes "Skew"): each roller at
+/// the skew its yaw balance allows, the axial tractions' end loads on the guide ring.
+/// Not the default: on the shipped deck nearly every loaded roller runs to the pocket's
+/// stop ψ = c_p/L (the raceways' self-guidance needs a skew degree of freedom of the
+/// statics), the skew's loss is 33–52 % of the total and the spins, solved at ψ = 0, are off
+/// their balance by 12–15 % of the traction moments (`losses_tests::skew_couplings_print`).
+///
+/// # Errors
+/// As [`losses`].
+pub fn losses_skewed(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
+    losses_of(loss_kinematics(a)?.skewed())
+}
+
+fn losses_of(k: LossKinematics) -> Result<LossBreakdown, LossError> {
     let mut b = if k.computed_cage {
         let (wc, mut b) = k.balanced_cage(k.statics_cage_rad_s)?;
         b.losses.cage_speed_rpm = wc * RPM;
@@ -1774,6 +1970,7 @@ mod tests {
                     surface_speed_m_s: 1.5 * speed_scale,
                     spin_rad_s: 250.0 * speed_scale,
                     skew_axis_axial_component: -0.2,
+                    skew: None,
                 }
             })
             .collect();
@@ -1888,6 +2085,7 @@ mod tests {
                 surface_speed_m_s: 2.0,
                 spin_rad_s: 2.0 / 0.006,
                 skew_axis_axial_component: -0.2,
+                skew: None,
             }],
             inner_speed_rad_s: 250.0,
             outer_speed_rad_s: 10.0,

@@ -15,6 +15,7 @@ pub mod load_sweep;
 pub mod losses;
 pub mod optimise;
 pub mod report;
+pub mod skew;
 pub mod statics;
 pub mod system;
 pub mod view;

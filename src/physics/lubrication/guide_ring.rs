@@ -120,6 +120,12 @@ pub struct EndContactInput {
     pub roller_end_speed_m_s: f64,
     /// ω_c, the roller's orbital (cage) speed, rad/s.
     pub orbital_speed_rad_s: f64,
+    /// The roller end's sliding across the ring's face, normal to the circumferential
+    /// direction, m/s (a skewed roller's end touches the ring off its axis by δ and its
+    /// spin sweeps that point radially at ω_s·δ; 0 for a contact on the axis). The traction
+    /// acts along the whole sliding vector (module notes "Off-axis contact").
+    #[serde(default)]
+    pub radial_sliding_m_s: f64,
 }
 
 /// Result of one end contact at a given ring speed.
@@ -131,11 +137,14 @@ pub struct EndContact {
     pub max_pressure_pa: f64,
     /// Central film, m.
     pub film_m: f64,
-    /// Ring minus roller end speed, m/s.
+    /// Ring minus roller end speed, m/s (circumferential).
     pub sliding_speed_m_s: f64,
+    /// The sliding across the face (the input's `radial_sliding_m_s`), m/s.
+    #[serde(default)]
+    pub radial_sliding_m_s: f64,
     /// Traction on the roller along the bearing's rotation, N.
     pub force_on_roller_n: f64,
-    /// |F·v|, W.
+    /// |F|·|v| over the whole sliding vector (circumferential and radial), W.
     pub power_w: f64,
 }
 
@@ -277,9 +286,21 @@ pub fn end_contact(
     let u_ring = (ring_speed_rad_s - input.orbital_speed_rad_s) * r;
     let u_roller = input.roller_end_speed_m_s;
     let v = u_ring - u_roller;
+    let vr = input.radial_sliding_m_s;
+    if !vr.is_finite() {
+        return Err(GuideRingError::BadInput {
+            name: "radial_sliding_m_s",
+            value: vr,
+            allowed: "finite",
+        });
+    }
+    // The traction's magnitude is the law's at |v| (isotropic shear), along v; on the axis
+    // (v_r = 0) the signed circumferential speed itself, exactly as before the skew.
+    let speed = if vr == 0.0 { v } else { v.hypot(vr) };
     if q == 0.0 {
         return Ok(EndContact {
             sliding_speed_m_s: v,
+            radial_sliding_m_s: vr,
             ..EndContact::default()
         });
     }
@@ -304,29 +325,40 @@ pub fn end_contact(
         value: rheology.pressure_viscosity_pa_inv,
         allowed: "finite and not negative",
     })?;
-    let force = if rheology.viscosity_pa_s <= 0.0 || v == 0.0 {
+    let magnitude = if rheology.viscosity_pa_s <= 0.0 || speed == 0.0 {
         0.0
     } else {
         match law {
-            RacewayTractionLaw::Atz => circular_contact_traction_n(&rheology.atz(), a, p0, v, film),
+            RacewayTractionLaw::Atz => {
+                circular_contact_traction_n(&rheology.atz(), a, p0, speed, film)
+            }
             RacewayTractionLaw::NewtonianEq3 => {
                 if film <= 0.0 {
-                    return Err(GuideRingError::NoFilm { sliding_m_s: v });
+                    return Err(GuideRingError::NoFilm { sliding_m_s: speed });
                 }
                 let area = std::f64::consts::PI * a * a;
-                rheology.viscosity_pa_s * (rheology.pressure_viscosity_pa_inv * q / area).exp() * v
+                rheology.viscosity_pa_s
+                    * (rheology.pressure_viscosity_pa_inv * q / area).exp()
+                    * speed
                     / film
                     * area
             }
         }
+    };
+    // Its circumferential component (on the axis the force itself, sign included).
+    let force = if vr == 0.0 || speed == 0.0 {
+        magnitude
+    } else {
+        magnitude * v / speed
     };
     Ok(EndContact {
         radius_m: a,
         max_pressure_pa: p0,
         film_m: film,
         sliding_speed_m_s: v,
+        radial_sliding_m_s: vr,
         force_on_roller_n: force,
-        power_w: (force * v).abs(),
+        power_w: (magnitude * speed).abs(),
     })
 }
 
@@ -555,6 +587,7 @@ mod tests {
                 load_n: 0.0,
                 roller_end_speed_m_s: 0.0,
                 orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
             };
             13
         ];
@@ -567,6 +600,7 @@ mod tests {
                 load_n: 50.0 + 10.0 * k as f64,
                 roller_end_speed_m_s: 0.05,
                 orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
             })
             .collect();
         let s = guide_ring_balance(&ring(), RacewayTractionLaw::Atz, &oil(), wi, &loaded)
@@ -603,6 +637,7 @@ mod tests {
             load_n: 120.0,
             roller_end_speed_m_s: 0.2,
             orbital_speed_rad_s: 150.0,
+            radial_sliding_m_s: 0.0,
         };
         let c = end_contact(&g, &h, RacewayTractionLaw::Atz, &oil(), &inp, 300.0).expect("contact");
         let u_ring = 150.0 * 0.031;
@@ -639,6 +674,7 @@ mod tests {
                 load_n: 60.0,
                 roller_end_speed_m_s: u,
                 orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
             };
             13
         ];
@@ -652,6 +688,45 @@ mod tests {
         );
     }
 
+    /// Off the roller axis (a skewed roller's end, module notes "Off-axis contact"): the
+    /// traction is the circle's at the whole sliding speed |v| = √(v_θ² + v_r²) (built here
+    /// from `circular_contact_traction_n` on the on-axis contact's own radius, pressure
+    /// and film, which v_r does not change), its circumferential component F·v_θ/|v|, and
+    /// the power F·|v| (1e-13). A radial sliding adds loss and lowers the circumferential
+    /// force (the saturating law shares its magnitude).
+    #[test]
+    fn off_axis_end_slides_along_the_whole_vector() {
+        let g = ring();
+        let h = end_contact_model(&g).expect("model");
+        let on = EndContactInput {
+            load_n: 60.0,
+            roller_end_speed_m_s: 0.0,
+            orbital_speed_rad_s: 150.0,
+            radial_sliding_m_s: 0.0,
+        };
+        let off = EndContactInput {
+            radial_sliding_m_s: -0.3,
+            ..on
+        };
+        let c0 = end_contact(&g, &h, RacewayTractionLaw::Atz, &oil(), &on, 160.0).expect("on");
+        let c1 = end_contact(&g, &h, RacewayTractionLaw::Atz, &oil(), &off, 160.0).expect("off");
+        let v = 10.0 * 0.031;
+        assert!((c0.sliding_speed_m_s - v).abs() < 1e-15);
+        assert_eq!(c0.film_m, c1.film_m);
+        let s = v.hypot(0.3);
+        let mag = circular_contact_traction_n(
+            &oil().atz(),
+            c0.radius_m,
+            c0.max_pressure_pa,
+            s,
+            c0.film_m,
+        );
+        assert!((c1.force_on_roller_n - mag * v / s).abs() <= 1e-13 * mag);
+        assert!((c1.power_w - mag * s).abs() <= 1e-13 * c1.power_w);
+        assert!(c1.power_w > c0.power_w && c1.force_on_roller_n < c0.force_on_roller_n);
+        assert!(c1.force_on_roller_n > 0.0);
+    }
+
     /// η = 0: no traction, no bore torque, no loss (and no error).
     #[test]
     fn inviscid_is_lossless() {
@@ -662,6 +737,7 @@ mod tests {
                 load_n: 80.0,
                 roller_end_speed_m_s: 0.1,
                 orbital_speed_rad_s: 150.0,
+                radial_sliding_m_s: 0.0,
             };
             4
         ];
