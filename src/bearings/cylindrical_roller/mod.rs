@@ -15,6 +15,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod contact;
 pub mod deck;
 pub mod dynamics;
 pub mod geometry;
