@@ -283,7 +283,7 @@ pub fn contact_command(
     };
     let study = contact_study(&c.form.value, &options, |done, total, pos| {
         if done < total && total > 1 {
-            eprintln!("contact: position {}/{total} ({pos}°)", done + 1);
+            eprintln!("contact: position {}/{total} ({pos:.1}°)", done + 1);
         }
     })
     .map_err(|e| {

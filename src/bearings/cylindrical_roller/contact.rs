@@ -551,3 +551,97 @@ pub fn text(study: &ContactStudy) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn options(positions: &[f64]) -> ContactOptions {
+        ContactOptions {
+            positions_deg: positions.to_vec(),
+            inlet: InletChoice::Flooded,
+            model: ContactModel::LineEhl,
+        }
+    }
+
+    /// Tipei and finite-line are refused as not built, never answered with a number.
+    #[test]
+    fn unbuilt_models_are_refused() {
+        let input = CylindricalInput::truck();
+        for (inlet, model) in [
+            (InletChoice::Tipei, ContactModel::LineEhl),
+            (InletChoice::Both, ContactModel::LineEhl),
+            (InletChoice::Flooded, ContactModel::FiniteLineEhl),
+        ] {
+            let o = ContactOptions {
+                inlet,
+                model,
+                ..options(&[0.0])
+            };
+            let e = contact_study(&input, &o, |_, _, _| {}).unwrap_err();
+            assert!(matches!(e, ContactError::NotBuilt(_)), "{e}");
+            assert!(e.to_string().contains("not built yet"));
+        }
+    }
+
+    /// The truck bearing from its quasi-statics (dynamics off): the roller at the load
+    /// line carries the largest load; its contact is an EHL film with the load balanced,
+    /// a pressure peak near Hertz (p_max/p_H within 0.8–1.3: a piezoviscous contact at
+    /// ≈ 1 GPa), a film between 0.01 and 10 µm, and the seed's friction band's order
+    /// (µ below 0.1); the JSON carries the contract's fields and a profile per node.
+    #[test]
+    fn truck_contact_from_the_quasi_statics() {
+        let mut input = CylindricalInput::truck();
+        input.dynamics.revolutions = 0;
+        let s = contact_study(&input, &options(&[0.0]), |_, _, _| {}).unwrap();
+        assert_eq!(s.load_source, "quasi-static");
+        let r = &s.rows[0];
+        assert!(r.load_n > 0.0);
+        let sol = &r.solution;
+        assert!(sol.load_balance_residual.abs() <= 0.005);
+        let ratio = sol.max_pressure_pa / sol.hertz_max_pressure_pa;
+        assert!((0.8..1.3).contains(&ratio), "p_max/p_H {ratio}");
+        assert!(sol.central_film_m > 1e-8 && sol.central_film_m < 1e-5);
+        assert!(r.friction_coefficient > 0.0 && r.friction_coefficient < 0.1);
+        assert!(
+            (r.power_loss_w - (r.boundary_friction_n + r.viscous_friction_n) * s.sliding_m_s.abs())
+                .abs()
+                < 1e-9 * r.power_loss_w.max(1.0)
+        );
+        let v = json(&s);
+        for key in [
+            "position_deg",
+            "inlet",
+            "model",
+            "load_n",
+            "inlet_distance_m",
+            "central_film_m",
+            "min_film_m",
+            "lambda",
+            "max_pressure_pa",
+            "asperity_load_n",
+            "boundary_friction_n",
+            "viscous_friction_n",
+            "friction_coefficient",
+            "power_loss_w",
+            "max_temperature_c",
+            "iterations",
+            "load_balance_residual",
+        ] {
+            assert!(v["contact"][0].get(key).is_some(), "{key}");
+        }
+        for key in [
+            "x_m",
+            "pressure_pa",
+            "hertz_pressure_pa",
+            "film_m",
+            "temperature_c",
+        ] {
+            assert_eq!(
+                v["contact"][0]["profile"][key].as_array().map(|a| a.len()),
+                Some(CONTACT_NODES),
+                "{key}"
+            );
+        }
+    }
+}
