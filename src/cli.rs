@@ -114,6 +114,24 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
     },
+    /// Cylindrical roller decks: the roller–inner race contact solved as line-contact EHL
+    /// at cage positions (issue 26, seed 003 Table 3): pressure, film, friction per position.
+    Contact {
+        /// Deck file (TOML), `type = "cylindrical-roller"`.
+        deck: PathBuf,
+        /// Cage position, deg (repeatable; default: the deck's contact.positions).
+        #[arg(long = "position", value_name = "DEG", allow_negative_numbers = true)]
+        position: Vec<f64>,
+        /// Inlet: flooded (4.5 Hertz half-widths), tipei (starved meniscus) or both.
+        #[arg(long, value_enum, default_value_t = ContactInletArg::Flooded)]
+        inlet: ContactInletArg,
+        /// Contact model.
+        #[arg(long, value_enum, default_value_t = ContactModelArg::LineEhl)]
+        model: ContactModelArg,
+        /// Format: text (Table 3 layout), json (SI, with profiles) or csv (SI).
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
     /// Solve a deck at every value of one key (no transient): one row of key outputs per point.
     Sweep {
         /// Deck file (TOML).
@@ -212,6 +230,81 @@ pub fn losses_command(
     ))
 }
 
+/// `rollbench contact --inlet`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ContactInletArg {
+    Flooded,
+    Tipei,
+    Both,
+}
+
+/// `rollbench contact --model`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ContactModelArg {
+    LineEhl,
+    FiniteLineEhl,
+}
+
+/// `rollbench contact`: the cylindrical case's contact study (library:
+/// `bearings::cylindrical_roller::contact`), progress on standard error. Errors carry the
+/// exit code: another system's deck is invalid input, a model or inlet not built yet is
+/// [`exit::UNSUPPORTED`], a solve without an answer a failed solve.
+pub fn contact_command(
+    case: &dyn crate::bearings::Case,
+    positions_deg: &[f64],
+    inlet: ContactInletArg,
+    model: ContactModelArg,
+    format: Format,
+) -> Result<String, (u8, String)> {
+    use crate::bearings::cylindrical_roller::contact::{
+        contact_study, csv, json, text, ContactError, ContactModel, ContactOptions, InletChoice,
+    };
+    use crate::bearings::cylindrical_roller::{system::CylindricalCase, SYSTEM_ID};
+    let Some(c) = case.as_any().downcast_ref::<CylindricalCase>() else {
+        return Err((
+            exit::INVALID_INPUT,
+            format!(
+                "contact: the contact study is for cylindrical roller decks (type = \"{SYSTEM_ID}\"); this deck is a {}",
+                case.system().title()
+            ),
+        ));
+    };
+    let options = ContactOptions {
+        positions_deg: positions_deg.to_vec(),
+        inlet: match inlet {
+            ContactInletArg::Flooded => InletChoice::Flooded,
+            ContactInletArg::Tipei => InletChoice::Tipei,
+            ContactInletArg::Both => InletChoice::Both,
+        },
+        model: match model {
+            ContactModelArg::LineEhl => ContactModel::LineEhl,
+            ContactModelArg::FiniteLineEhl => ContactModel::FiniteLineEhl,
+        },
+    };
+    let study = contact_study(&c.form.value, &options, |done, total, pos| {
+        if done < total && total > 1 {
+            eprintln!("contact: position {}/{total} ({pos:.1}°)", done + 1);
+        }
+    })
+    .map_err(|e| {
+        let code = match e {
+            ContactError::NotBuilt(_) => exit::UNSUPPORTED,
+            ContactError::Input(_) => exit::INVALID_INPUT,
+            ContactError::Dynamics(_) | ContactError::Solve { .. } => exit::SOLVE_FAILED,
+        };
+        (code, format!("contact: {e}"))
+    })?;
+    Ok(match format {
+        Format::Text => text(&study),
+        Format::Json => {
+            let mut t = serde_json::to_string_pretty(&json(&study)).unwrap_or_default();
+            t.push('\n');
+            t
+        }
+        Format::Csv => csv(&study),
+    })
+}
+
 /// Formats of the validate and bench tables.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum TableFormat {
@@ -239,6 +332,9 @@ pub mod exit {
     pub const SOLVE_FAILED: u8 = 2;
     /// `validate`: a reference case is outside its tolerance.
     pub const VALIDATION_FAILED: u8 = 3;
+    /// A model or option this build does not have yet (`contact --inlet tipei`,
+    /// `--model finite-line-ehl`): the message says what exists.
+    pub const UNSUPPORTED: u8 = 4;
     /// Command-line usage error (unknown option or value, `--set` where it means nothing).
     pub const USAGE: u8 = 64;
 }

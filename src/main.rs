@@ -380,6 +380,31 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Some(Command::Contact {
+            deck,
+            position,
+            inlet,
+            model,
+            format,
+        }) => {
+            let case = match load_case(&deck, &cli.set) {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(exit::INVALID_INPUT);
+                }
+            };
+            match rollbench::cli::contact_command(case.as_ref(), &position, inlet, model, format) {
+                Ok(text) => {
+                    print!("{text}");
+                    ExitCode::SUCCESS
+                }
+                Err((code, e)) => {
+                    eprintln!("{e}");
+                    ExitCode::from(code)
+                }
+            }
+        }
         Some(Command::Sweep {
             deck,
             set_range,

@@ -16,6 +16,7 @@
 
 pub mod analysis;
 pub mod answer;
+pub mod contact;
 pub mod deck;
 pub mod dynamics;
 pub mod geometry;
