@@ -161,11 +161,13 @@ pub fn answer(a: &DoubleRowAnalysis, losses: Option<&LossBreakdown>) -> Vec<Answ
         .combined
         .rollers
         .iter()
-        .filter(|r| r.inner.normal_load_n > 0.0 || r.outer.normal_load_n > 0.0)
+        // The load zone: the inner contact carries load (every outer contact carries at
+        // least the roller's centrifugal force at speed).
+        .filter(|r| r.inner.normal_load_n > 0.0)
         .count();
     out.push(AnswerLine::name(
         ELEMENTS,
-        "loaded rollers",
+        "in the load zone",
         format!("{loaded} of {} (both rows)", a.combined.rollers.len()),
     ));
     out

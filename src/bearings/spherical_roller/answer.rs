@@ -165,11 +165,13 @@ pub fn answer(a: &Analysis) -> Vec<AnswerLine> {
         .load
         .rollers
         .iter()
-        .filter(|r| r.inner.normal_load_n > 0.0 || r.outer.normal_load_n > 0.0)
+        // The load zone: the inner contact carries load (every outer contact carries at
+        // least the roller's centrifugal force at speed).
+        .filter(|r| r.inner.normal_load_n > 0.0)
         .count();
     out.push(AnswerLine::name(
         ELEMENTS,
-        "loaded rollers",
+        "in the load zone",
         format!("{loaded} of {}", a.load.rollers.len()),
     ));
     out
