@@ -11,6 +11,7 @@
 )]
 
 pub mod contact;
+pub mod ehl;
 pub mod heat;
 pub mod kinematics;
 pub mod life;
