@@ -549,9 +549,9 @@ pub fn solve_film_temperature(
                 rho: f.lubricant.density_kg_m3(p, tm),
                 dpdx: dpdx[i],
             };
-            for j in 0..nz {
+            for (j, m) in mflux[i].iter_mut().enumerate() {
                 let z = zeta(j) * h;
-                mflux[i][j] = cols[i].rho * velocity(&cols[i], h, z, h * dzeta, u1, u2) * h * dzeta;
+                *m = cols[i].rho * velocity(&cols[i], h, z, h * dzeta, u1, u2) * h * dzeta;
             }
         }
     };
@@ -739,6 +739,9 @@ pub fn solve_film_temperature(
     ))
 }
 
+/// The face mass fluxes of a column (west, east, vertical), returning its imbalance.
+type FaceFluxes<'a> = dyn Fn(&[Vec<f64>], usize, &mut [f64], &mut [f64], &mut [f64]) -> f64 + 'a;
+
 /// The per-node and total heat of a converged field.
 #[allow(clippy::too_many_arguments)]
 fn account(
@@ -751,7 +754,7 @@ fn account(
     lower: &Option<SolidGrid>,
     upper: &Option<SolidGrid>,
     sweeps: usize,
-    faces: &dyn Fn(&[Vec<f64>], usize, &mut [f64], &mut [f64], &mut [f64]) -> f64,
+    faces: &FaceFluxes<'_>,
 ) -> ThermalSolution {
     let n = f.x_m.len();
     let nz = opt.film_cells;
