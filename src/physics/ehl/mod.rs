@@ -8,6 +8,11 @@
 //!   the squeeze term, the film with elastic deflection, Houpert viscosity (10),
 //!   Dowson–Higginson density (11), Swift–Stieber cavitation, the load balance (46); a
 //!   coupled semismooth Newton on (p, h₀).
+//! - `tipei`: Tipei's counter-flow inlet and outlet distances (eqs. 14–22).
+//! - `thermal`: the energy equation across the film with the solids as moving half-spaces
+//!   (eqs. 23–34), and the viscosity ↔ temperature iteration hook.
+//! - `friction`: the contact friction, Greenwood–Tripp boundary plus limited viscous shear,
+//!   node by node (eqs. 35–42).
 //!
 //! SI throughout; the solver works internally in Hertz-scaled variables (documented in
 //! `line`).
@@ -21,5 +26,8 @@
 // loops say that more plainly than zipped iterators.
 #![allow(clippy::needless_range_loop)]
 
+pub mod friction;
 pub mod kernel;
 pub mod line;
+pub mod thermal;
+pub mod tipei;
