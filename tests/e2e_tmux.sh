@@ -76,7 +76,10 @@ wait_for "Inputs [US]"
 wait_for "solved in"
 wait_for "Roller count Z"
 
-# 2. Tab to the Rollers table; j j selects roller 3; Enter opens its stepper.
+# 2. Tab to the Summary (the bearing-level answer), Tab to the Rollers table; j j selects
+#    roller 3; Enter opens its stepper.
+keys Tab
+wait_for "L10 reference"
 keys Tab
 wait_for "Qi lbf"
 wait_for "337.5"
@@ -121,7 +124,7 @@ wait_for "Inputs [US]"
 
 # 5b. Thermal pane: the node walk of issue 15 (j j k k k k G G k Home End) keeps a node
 #     selected and on screen; G shows the last node (oil_cavity) in the list.
-keys 4
+keys 5
 wait_for "(hottest)"
 keys j j k k k k G G k Home End
 wait_for "bedplate: 86.0"
@@ -176,7 +179,7 @@ tm new-session -d -s trb -x 80 -y 24 \
 TARGET="trb"
 wait_for "Inputs [US]"
 wait_for "solved in"
-keys 5
+keys 6
 wait_for "21/21 points"
 wait_for "Cone speed"
 wait_for "50000"
@@ -186,7 +189,7 @@ keys C o n e Space s p e e d Enter
 keys Enter
 keys End BSpace BSpace BSpace BSpace BSpace BSpace BSpace 8 0 0 0 Enter
 wait_for "8000 rpm"
-keys 5
+keys 6
 wait_for "21/21 points"
 wait_for "20000"
 absent "50000"
@@ -204,7 +207,7 @@ tm new-session -d -s ball -x 80 -y 24 \
 TARGET="ball"
 wait_for "Inputs [SI]"
 wait_for "solved in"
-keys 2
+keys 3
 wait_for "Balls"
 keys j j
 keys Enter
@@ -215,7 +218,7 @@ keys l
 wait_for "step 2/"
 # The Skid pane: the threshold in the title and marked; an edit re-solves it (a lower
 # preload skids earlier) with the pane on screen (the streamed chart, then the solution).
-keys 3
+keys 4
 wait_for "Skid · skidding from 9780 rpm"
 wait_for "threshold"
 keys 1
@@ -224,7 +227,7 @@ keys A x i a l Space l o a d Enter
 keys Enter
 keys End BSpace BSpace BSpace BSpace BSpace BSpace 8 0 0 Enter
 wait_for "800 N"
-keys 3
+keys 4
 wait_for "Skid · skidding from"
 wait_for "threshold"
 absent "9780 rpm"
