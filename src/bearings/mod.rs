@@ -18,6 +18,7 @@ pub mod cylindrical_roller;
 pub mod double_row_spherical;
 pub mod error;
 pub mod form_system;
+pub mod friction;
 pub mod spherical_roller;
 pub mod tapered_roller;
 pub mod view;

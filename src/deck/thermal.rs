@@ -13,7 +13,7 @@
 //! fixed_temperature = 80.0 # °C | °F              (makes the node fixed)
 //! limit = 230.0            # °C | °F
 //! air_capacity = 5.0       # J/K | Btu/°F          (oil nodes after loss of oil)
-//! heat = ["inner_contacts"] # inner_contacts | outer_contacts | rollers | cage_rails | viscous_drag
+//! heat = ["inner_contacts"] # inner_contacts | outer_contacts | rollers | cage_rails | viscous_drag | flanges | guide_ring
 //!
 //! [[thermal.links]]
 //! name = "ir-shaft"        # optional, default "from-to"

@@ -36,16 +36,22 @@ pub enum HeatMechanism {
     CageRails,
     /// Viscous drag (churning) heat, released in the oil.
     ViscousDrag,
+    /// Roller-end / flange (rib) sliding heat (tapered and cylindrical rollers).
+    Flanges,
+    /// Guide-ring heat (the double-row spherical roller's floating guide ring).
+    GuideRing,
 }
 
 impl HeatMechanism {
     /// All mechanisms, in a fixed order.
-    pub const ALL: [HeatMechanism; 5] = [
+    pub const ALL: [HeatMechanism; 7] = [
         HeatMechanism::InnerContacts,
         HeatMechanism::OuterContacts,
         HeatMechanism::Rollers,
         HeatMechanism::CageRails,
         HeatMechanism::ViscousDrag,
+        HeatMechanism::Flanges,
+        HeatMechanism::GuideRing,
     ];
 
     /// The deck / message spelling.
@@ -56,6 +62,8 @@ impl HeatMechanism {
             HeatMechanism::Rollers => "rollers",
             HeatMechanism::CageRails => "cage_rails",
             HeatMechanism::ViscousDrag => "viscous_drag",
+            HeatMechanism::Flanges => "flanges",
+            HeatMechanism::GuideRing => "guide_ring",
         }
     }
 }
@@ -75,6 +83,10 @@ pub enum HeatSource {
     CageRails,
     /// Viscous drag (churning), released in the oil (eq. 9.6).
     ViscousDrag,
+    /// Roller-end / flange (rib) sliding contacts.
+    Flanges,
+    /// The guide ring's contacts (roller ends, ring bore).
+    GuideRing,
 }
 
 impl HeatSource {
@@ -85,6 +97,8 @@ impl HeatSource {
             HeatSource::OuterContacts => "outer_contacts_w",
             HeatSource::CageRails => "cage_rails_w",
             HeatSource::ViscousDrag => "viscous_drag_w",
+            HeatSource::Flanges => "flanges_w",
+            HeatSource::GuideRing => "guide_ring_w",
         }
     }
 
@@ -95,6 +109,8 @@ impl HeatSource {
             HeatSource::OuterContacts => HeatMechanism::OuterContacts,
             HeatSource::CageRails => HeatMechanism::CageRails,
             HeatSource::ViscousDrag => HeatMechanism::ViscousDrag,
+            HeatSource::Flanges => HeatMechanism::Flanges,
+            HeatSource::GuideRing => HeatMechanism::GuideRing,
         }
     }
 

@@ -1,0 +1,158 @@
+//! A bearing's friction by mechanism, the same object for every system (issue 28 item 4):
+//! JSON `friction` {`torque_nm`, `power_w`, `by_mechanism` {name: W}} and the heat sources
+//! the thermal network receives.
+//!
+//! The power identity is the check every system's friction must pass: the mechanisms'
+//! powers add up to the total, and the total is the friction torque times the rings'
+//! relative speed, `P = M·|ω_i − ω_o|` (a bearing's friction torque is *defined* as the
+//! torque whose power at the relative speed equals the dissipated power).
+
+use serde_json::{json, Map, Value};
+
+use crate::thermal::{HeatInput, HeatSource};
+
+/// One friction mechanism's dissipated power.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mechanism {
+    /// JSON key under `by_mechanism` (snake_case, a contract once shipped), e.g.
+    /// `"inner_raceway_rolling"`, `"flange_sliding"`, `"spin"`, `"viscous_drag"`.
+    pub name: &'static str,
+    /// Dissipated power, W (≥ 0).
+    pub power_w: f64,
+    /// Where the thermal network releases this heat; `None`: not bound to a node kind
+    /// (the system says why in its docs).
+    pub heat: Option<HeatSource>,
+}
+
+/// A bearing's friction: the torque at the rings' relative speed and its mechanisms.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionBreakdown {
+    /// Friction torque, N·m: total power / |ω_i − ω_o|.
+    pub torque_nm: f64,
+    /// |ω_i − ω_o|, rad/s (the speed the torque is referred to).
+    pub relative_speed_rad_s: f64,
+    /// The mechanisms, in the order the system lists them (the JSON keeps that order).
+    pub mechanisms: Vec<Mechanism>,
+}
+
+impl FrictionBreakdown {
+    /// The breakdown of `mechanisms` at the relative speed `relative_speed_rad_s`; the
+    /// torque follows from the power identity (0 N·m at standstill).
+    pub fn from_mechanisms(relative_speed_rad_s: f64, mechanisms: Vec<Mechanism>) -> Self {
+        let speed = relative_speed_rad_s.abs();
+        let power: f64 = mechanisms.iter().map(|m| m.power_w).sum();
+        let torque_nm = if speed > 0.0 { power / speed } else { 0.0 };
+        Self {
+            torque_nm,
+            relative_speed_rad_s: speed,
+            mechanisms,
+        }
+    }
+
+    /// Total dissipated power, W: the sum of the mechanisms.
+    pub fn power_w(&self) -> f64 {
+        self.mechanisms.iter().map(|m| m.power_w).sum()
+    }
+
+    /// Power of the mechanism named `name`, W (0 if absent).
+    pub fn mechanism_w(&self, name: &str) -> f64 {
+        self.mechanisms
+            .iter()
+            .filter(|m| m.name == name)
+            .map(|m| m.power_w)
+            .sum()
+    }
+
+    /// `(name, W)` pairs, for [`super::answer::largest_mechanism`].
+    pub fn pairs(&self) -> Vec<(&'static str, f64)> {
+        self.mechanisms
+            .iter()
+            .map(|m| (m.name, m.power_w))
+            .collect()
+    }
+
+    /// Relative residual of the power identity |Σ P − M·Δω| / max(Σ P, tiny).
+    pub fn power_identity_residual(&self) -> f64 {
+        let p = self.power_w();
+        let scale = p.abs().max(f64::MIN_POSITIVE);
+        if self.relative_speed_rad_s > 0.0 {
+            (p - self.torque_nm * self.relative_speed_rad_s).abs() / scale
+        } else {
+            0.0
+        }
+    }
+
+    /// The heat the thermal network receives: each bound mechanism's power at its source.
+    pub fn heat_input(&self) -> HeatInput {
+        self.mechanisms
+            .iter()
+            .filter_map(|m| m.heat.map(|s| (s, m.power_w)))
+            .fold(HeatInput::new(), |h, (s, w)| h.with(s, w))
+    }
+
+    /// JSON `friction`: {`torque_nm`, `power_w`, `relative_speed_rad_s`, `by_mechanism`}.
+    pub fn json(&self) -> Value {
+        let mut by = Map::new();
+        for m in &self.mechanisms {
+            let w = by.get(m.name).and_then(Value::as_f64).unwrap_or(0.0) + m.power_w;
+            by.insert(m.name.to_string(), json!(w));
+        }
+        json!({
+            "torque_nm": self.torque_nm,
+            "power_w": self.power_w(),
+            "relative_speed_rad_s": self.relative_speed_rad_s,
+            "by_mechanism": Value::Object(by),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample() -> FrictionBreakdown {
+        FrictionBreakdown::from_mechanisms(
+            -100.0,
+            vec![
+                Mechanism {
+                    name: "inner_raceway",
+                    power_w: 30.0,
+                    heat: Some(HeatSource::InnerContacts),
+                },
+                Mechanism {
+                    name: "outer_raceway",
+                    power_w: 50.0,
+                    heat: Some(HeatSource::OuterContacts),
+                },
+                Mechanism {
+                    name: "viscous_drag",
+                    power_w: 20.0,
+                    heat: None,
+                },
+            ],
+        )
+    }
+
+    #[test]
+    fn the_torque_is_the_power_over_the_relative_speed() {
+        let f = sample();
+        // 100 W at |−100| rad/s: 1 N·m exactly (binary-exact operands).
+        assert_eq!(f.power_w(), 100.0);
+        assert_eq!(f.torque_nm, 1.0);
+        assert_eq!(f.power_identity_residual(), 0.0);
+        let rest = FrictionBreakdown::from_mechanisms(0.0, f.mechanisms.clone());
+        assert_eq!(rest.torque_nm, 0.0);
+    }
+
+    #[test]
+    fn the_json_and_the_heat_carry_every_bound_mechanism() {
+        let f = sample();
+        let j = f.json();
+        assert_eq!(j["by_mechanism"]["outer_raceway"], 50.0);
+        assert_eq!(j["power_w"], 100.0);
+        let h = f.heat_input();
+        // The unbound drag is not released anywhere: 80 W of 100 W reach the network.
+        assert_eq!(h.total_w(), 80.0);
+        assert_eq!(h.watts(HeatSource::OuterContacts), 50.0);
+    }
+}
