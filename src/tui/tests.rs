@@ -1791,6 +1791,30 @@ fn tui_ball_element_chart_lives_on_the_dynamics_pane() {
     assert!(screen.contains("c chart"), "{screen}");
     app.handle(ch('c'));
     assert!(app.chart_laminae);
+    // Issue 30 item 1: ω_t (rad/s) and the heat (W) were drawn on one "ω_t rad/s · heat"
+    // axis running 0–100 while ω_t ran −354…0: now two panels, one unit each, each axis
+    // fitting its own data.
+    let screen = draw(&app, 80, 24).backend().to_string();
+    assert!(!screen.contains("· heat"), "{screen}");
+    assert!(screen.contains("heat W"), "{screen}");
+    assert!(screen.contains("ω_t rad/s"), "{screen}");
+    let view = app.view.as_deref().expect("solved");
+    let chart = &view.element_charts[app.roller_sel];
+    let panels = view_model::chart_panels(chart, crate::units::Units::Si);
+    assert_eq!(panels.len(), 2);
+    for p in &panels {
+        for (name, pts) in &p.series {
+            for &(x, y) in pts {
+                assert!(
+                    (p.y_bounds[0]..=p.y_bounds[1]).contains(&y)
+                        && (p.x_bounds[0]..=p.x_bounds[1]).contains(&x),
+                    "{name} ({x}, {y}) outside {:?} × {:?}",
+                    p.x_bounds,
+                    p.y_bounds
+                );
+            }
+        }
+    }
     app.handle(ch('u'));
     let screen = draw(&app, 80, 24).backend().to_string();
     assert!(screen.contains("Dynamics · ball 0:"), "{screen}");

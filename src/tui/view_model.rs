@@ -404,6 +404,63 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
     }
 }
 
+/// Chart `c` in display units `u` as panels sharing one x axis, one per y unit (issue 30
+/// item 1: one unit per axis): the axis's own series first, then each series carrying
+/// its own [`Display`] (the ball's heat beside its ω_t) in a panel whose y axis is that
+/// series' quantity and unit. Every panel's x bounds are the whole chart's, so the
+/// panels line up; a chart with one unit is one panel, equal to [`chart_series`].
+pub fn chart_panels(c: &Chart, u: Units) -> Vec<ChartSeries> {
+    let whole = chart_series(c, u);
+    let mut groups: Vec<Option<Display>> = Vec::new();
+    for s in &c.series {
+        // A series whose own display is the axis's is on the axis.
+        let key = s.display.filter(|d| *d != c.y.display);
+        if !groups.contains(&key) {
+            groups.push(key);
+        }
+    }
+    if groups.len() <= 1 {
+        return vec![whole];
+    }
+    groups
+        .iter()
+        .enumerate()
+        .map(|(k, key)| {
+            let members = c
+                .series
+                .iter()
+                .filter(|s| s.display.filter(|d| *d != c.y.display) == *key);
+            let sub = Chart {
+                title: String::new(),
+                title_us: None,
+                x: c.x.clone(),
+                y: match key {
+                    None => c.y.clone(),
+                    // The panel's axis is named after its (first) series, in its unit.
+                    Some(d) => crate::bearings::view::ChartAxis {
+                        label: members.clone().next().map_or("", |s| s.name),
+                        display: *d,
+                        bounds: None,
+                    },
+                },
+                series: members
+                    .map(|s| crate::bearings::view::Series {
+                        display: None,
+                        ..s.clone()
+                    })
+                    .collect(),
+                per_element: c.per_element,
+            };
+            let mut p = chart_series(&sub, u);
+            p.x_bounds = whole.x_bounds;
+            if k == 0 {
+                p.title = whole.title.clone();
+            }
+            p
+        })
+        .collect()
+}
+
 /// A sweep pane's chart in display units `u`: each output against the swept key (the
 /// key's own unit), divided by its value at the first solved point when the plan
 /// normalises; with the x of the plan's marker (the first point where the marker output
@@ -824,7 +881,7 @@ mod fit_title_tests {
 
 #[cfg(test)]
 mod series_display_tests {
-    use super::chart_series;
+    use super::{chart_panels, chart_series};
     use crate::bearings::view::{Chart, ChartAxis, Display, Series};
     use crate::units::{Units, BTU_PER_HOUR_PER_WATT};
 
@@ -899,5 +956,62 @@ mod series_display_tests {
         assert_eq!(us.series[0], ("ω_t rad/s".to_string(), vec![(1.0, 100.0)]));
         assert_eq!(us.series[1].0, "heat Btu/hr");
         assert_eq!(us.series[1].1, vec![(1.0, 10.0 * BTU_PER_HOUR_PER_WATT)]);
+    }
+
+    /// Two units make two panels on one x axis (issue 30 item 1): the ω_t panel's axis
+    /// is the chart's (−500…0 fits −354), the heat panel's axis is "heat W" (0…50 fits
+    /// 40), each holds only its own series, both span the whole chart's x (0…2000 for
+    /// data to 1839); one unit stays one panel equal to `chart_series`.
+    #[test]
+    fn two_units_are_two_panels_on_one_x_axis() {
+        let c = Chart {
+            title: "t".into(),
+            title_us: None,
+            x: ChartAxis {
+                label: "orbit deg",
+                display: Display::Plain,
+                bounds: None,
+            },
+            y: ChartAxis {
+                label: "ω_t rad/s",
+                display: Display::Plain,
+                bounds: None,
+            },
+            series: vec![
+                Series {
+                    name: "ω_t rad/s",
+                    points: vec![(0.0, 0.0), (1839.0, -354.0)],
+                    display: None,
+                },
+                Series {
+                    name: "heat",
+                    points: vec![(0.0, 0.0), (900.0, 40.0)],
+                    display: Some(Display::Power),
+                },
+            ],
+            per_element: false,
+        };
+        let p = chart_panels(&c, Units::Si);
+        assert_eq!(p.len(), 2);
+        assert_eq!(p[0].y_label, "ω_t rad/s");
+        assert_eq!(p[0].y_bounds, [-500.0, 0.0]);
+        assert_eq!(p[0].series.len(), 1);
+        assert_eq!(p[0].title, "t");
+        assert_eq!(p[1].y_label, "heat W");
+        assert_eq!(p[1].y_bounds, [0.0, 50.0]);
+        assert_eq!(
+            p[1].series,
+            vec![("heat".to_string(), vec![(0.0, 0.0), (900.0, 40.0)])]
+        );
+        assert_eq!(p[0].x_bounds, [0.0, 2000.0]);
+        assert_eq!(p[1].x_bounds, [0.0, 2000.0]);
+        let us = chart_panels(&c, Units::Us);
+        assert_eq!(us[1].y_label, "heat Btu/hr");
+        let mut one = c.clone();
+        one.series.truncate(1);
+        assert_eq!(
+            chart_panels(&one, Units::Si),
+            vec![chart_series(&one, Units::Si)]
+        );
     }
 }

@@ -555,7 +555,7 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
                 bounds: None,
             },
             y: ChartAxis {
-                label: "ω_t rad/s · heat",
+                label: "ω_t rad/s",
                 display: Display::Plain,
                 bounds: None,
             },

@@ -4,7 +4,7 @@
 //! (series colours, axes, labels).
 
 use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Rect};
+use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::Line;
@@ -68,7 +68,12 @@ pub(super) fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         pane_block(app, pane, "").render(area, buf);
         return;
     };
-    let s = view_model::chart_series(c, app.display_units);
+    // One panel per y unit (issue 30 item 1), stacked on one x axis.
+    let panels = view_model::chart_panels(c, app.display_units);
+    let Some(s) = panels.first() else {
+        pane_block(app, pane, "").render(area, buf);
+        return;
+    };
     // The title in what the border leaves (2 corners, 2 spaces, the pane's name, " · "
     // and the stale note), clause by clause: never a cut number.
     let stale = stale_note(app);
@@ -81,26 +86,70 @@ pub(super) fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         format!(" · {title}{stale}")
     };
     let block = pane_block(app, pane, &extra);
-    let mut datasets = series_datasets(&s);
-    let marked: Vec<(f64, f64)> = if c.per_element {
-        s.series
-            .iter()
-            .filter_map(|(_, v)| v.get(app.roller_sel).copied())
-            .collect()
-    } else {
-        Vec::new()
-    };
-    if !marked.is_empty() {
+    let marked: Vec<Vec<(f64, f64)>> = panels
+        .iter()
+        .map(|p| {
+            if c.per_element {
+                p.series
+                    .iter()
+                    .filter_map(|(_, v)| v.get(app.roller_sel).copied())
+                    .collect()
+            } else {
+                Vec::new()
+            }
+        })
+        .collect();
+    let mark_name = format!("{} {}", app.element_name(), app.element_number());
+    if panels.len() == 1 {
+        draw_chart(s, with_marks(s, &marked[0], &mark_name), block, area, buf);
+        return;
+    }
+    // Several units: the pane's border once, the panels stacked inside it, each with its
+    // own y axis and legend; the series keep their colours across panels.
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let rows = Layout::vertical(vec![Constraint::Fill(1); panels.len()]).split(inner);
+    let mut colour = 0;
+    for ((p, m), r) in panels.iter().zip(&marked).zip(rows.iter()) {
+        let datasets = with_marks(p, m, &mark_name)
+            .into_iter()
+            .enumerate()
+            .map(|(k, d)| {
+                if k < p.series.len() {
+                    d.style(
+                        Style::default().fg(SERIES_COLOURS
+                            .get(colour + k)
+                            .copied()
+                            .unwrap_or(Color::White)),
+                    )
+                } else {
+                    d
+                }
+            })
+            .collect();
+        colour += p.series.len();
+        draw_chart(p, datasets, Block::default(), *r, buf);
+    }
+}
+
+/// `p`'s series and, when `m` holds points, the selected element's marks named `name`.
+fn with_marks<'a>(
+    p: &'a view_model::ChartSeries,
+    m: &'a [(f64, f64)],
+    name: &str,
+) -> Vec<Dataset<'a>> {
+    let mut datasets = series_datasets(p);
+    if !m.is_empty() {
         datasets.push(
             Dataset::default()
-                .name(format!("{} {}", app.element_name(), app.element_number()))
+                .name(name.to_string())
                 .marker(Marker::Block)
                 .graph_type(GraphType::Scatter)
                 .style(Style::default().fg(Color::White))
-                .data(&marked),
+                .data(m),
         );
     }
-    draw_chart(&s, datasets, block, area, buf);
+    datasets
 }
 
 /// One line per series of `s`, in the series colours.
