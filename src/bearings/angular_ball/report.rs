@@ -322,7 +322,10 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
             o.kinematics.spin_to_roll,
             i.kinematics.rolling_speed_m_s,
             o.kinematics.rolling_speed_m_s,
-            b.heat_w,
+            // Race control's spin heat (2-7), not `b.heat_w`, which a dynamics method
+            // replaces by its own (issue 30 item 4: the column read 52.863 W, the
+            // time-simulated heat, where race control gives 12.244 W).
+            i.spin_heat_w + o.spin_heat_w,
             i.central_film_m.unwrap_or(0.0) * 1e6,
             o.central_film_m.unwrap_or(0.0) * 1e6,
         );

@@ -1125,3 +1125,40 @@ fn run_refuses_a_simulation_past_its_bound_up_front() {
     assert!(e.contains("dynamics.orbits (now 1000)"), "{e}");
     assert!(e.contains("geometry.ball_count (now 20"), "{e}");
 }
+
+/// Issue 30 item 4: the text report's RACE CONTROL table shows race control's heat per
+/// ball (its spin heat, eq. 2-7) even when a time simulation replaced the ball's heat by
+/// its own (the column read the simulated 52.863 W where race control gives 12.244 W).
+/// Read back from the text: the table's `H W` column sums to `race_control_heat_w`
+/// within the printed rounding (20 balls × 0.0005 W).
+#[test]
+fn race_control_table_shows_race_control_heat() {
+    let a = analyse(&case(9_500.0, Method::TimeSimulation), Cancel::NONE).unwrap();
+    let text = crate::bearings::angular_ball::report::text(&a, crate::units::Units::Si);
+    let table = text
+        .split("RACE CONTROL")
+        .nth(1)
+        .expect("a RACE CONTROL table");
+    let mut lines = table.lines().skip(1);
+    let header = lines.next().expect("header");
+    assert!(header.contains(" H W "), "{header}");
+    // The heat is the 11th number of each row (#, cage, ωsi, ωso, roll i, roll o, s/r i,
+    // s/r o, u i, u o, H).
+    let heat: f64 = lines
+        .take(a.balls.len())
+        .map(|l| {
+            let cells: Vec<f64> = l
+                .split_whitespace()
+                .map(|c| c.parse::<f64>().expect("a number"))
+                .collect();
+            cells[10]
+        })
+        .sum();
+    assert!(
+        (heat - a.race_control_heat_w).abs() <= 0.0005 * a.balls.len() as f64,
+        "table {heat} W vs race control {} W (simulated {} W)",
+        a.race_control_heat_w,
+        a.total_heat_w
+    );
+    assert!(a.total_heat_w > 2.0 * a.race_control_heat_w);
+}
