@@ -66,9 +66,10 @@ pub enum Command {
     },
     /// List every key `--set` accepts, with its units and allowed range.
     Keys {
-        /// Bearing system (the deck's `type`).
-        #[arg(long = "type", value_name = "TYPE", default_value = crate::bearings::DEFAULT_SYSTEM)]
-        r#type: String,
+        /// Bearing system (the deck's `type`); without it, the default system's keys
+        /// (spherical-roller), said on standard error.
+        #[arg(long = "type", value_name = "TYPE")]
+        r#type: Option<String>,
     },
     /// Run time against error over laminae × force tolerance (default: every deck in decks/).
     Bench {

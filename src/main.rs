@@ -342,20 +342,30 @@ fn main() -> ExitCode {
                 exit::VALIDATION_FAILED
             })
         }
-        Some(Command::Keys { r#type }) => match bearings::system(&r#type) {
-            Some(system) => {
-                print!("{}", system.keys_table());
-                ExitCode::SUCCESS
+        Some(Command::Keys { r#type }) => {
+            match bearings::system(r#type.as_deref().unwrap_or(bearings::DEFAULT_SYSTEM)) {
+                Some(system) => {
+                    if r#type.is_none() {
+                        // Issue 30 item 17: the table alone read as if it were every key.
+                        eprintln!(
+                        "keys of the {} system (no --type given); the others: rollbench keys --type TYPE, TYPE one of {}",
+                        system.id(),
+                        bearings::known_types()
+                    );
+                    }
+                    print!("{}", system.keys_table());
+                    ExitCode::SUCCESS
+                }
+                None => {
+                    eprintln!(
+                        "--type {}: unknown bearing system (known: {})",
+                        r#type.as_deref().unwrap_or_default(),
+                        bearings::known_types()
+                    );
+                    ExitCode::from(exit::USAGE)
+                }
             }
-            None => {
-                eprintln!(
-                    "--type {}: unknown bearing system (known: {})",
-                    r#type,
-                    bearings::known_types()
-                );
-                ExitCode::from(exit::USAGE)
-            }
-        },
+        }
         Some(Command::Losses {
             deck,
             direction,

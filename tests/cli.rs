@@ -360,12 +360,23 @@ fn exit_codes_have_one_meaning_each() {
         "{err}"
     );
     assert!(!err.contains("needs an axial load"), "{err}");
-    let (code, out, _) = run_args(&["keys"]);
+    let (code, out, err) = run_args(&["keys"]);
     assert_eq!(code, Some(0));
     assert!(
         out.contains("solver.force_tolerance") && out.contains("thermal."),
         "{out}"
     );
+    // Issue 30 item 17: without --type it says whose keys these are and how to get the
+    // others (on standard error: the table on standard output is unchanged for scripts).
+    assert!(
+        err.contains("spherical-roller")
+            && err.contains("--type")
+            && err.contains("tapered-roller"),
+        "{err}"
+    );
+    let (code, _, err) = run_args(&["keys", "--type", "spherical-roller"]);
+    assert_eq!(code, Some(0));
+    assert!(err.is_empty(), "{err}");
 }
 
 /// A loaded bearing whose rings do not turn relative to each other has an infinite life
