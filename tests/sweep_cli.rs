@@ -353,3 +353,29 @@ fn warm_start_gives_the_cold_answers_to_the_solver_tolerance() {
         }
     }
 }
+
+/// Issue 30 item 6: the columns never depend on which points solved. A tapered sweep at
+/// 42 500 rpm (every point fails: exit 3) printed `operating.inner_speed [rpm],failure`
+/// where a solved sweep has the key outputs too, and its JSON points lost their keys: now
+/// the CSV header is the solved sweep's, and the JSON points carry the same keys (null).
+#[test]
+fn an_all_failed_sweep_keeps_its_columns() {
+    let t = deck("trb_afapl.toml");
+    let range = |v: &str| format!("operating.inner_speed={v}:{v}:1");
+    let (code, ok_csv, err) = run(&["sweep", &t, "--set-range", &range("1000"), "--format", "csv"]);
+    assert_eq!(code, 0, "{err}");
+    let (code, bad_csv, err) = run(&["sweep", &t, "--set-range", &range("42500"), "--format", "csv"]);
+    assert_ne!(code, 0, "42 500 rpm solved after all: {bad_csv}");
+    let header = |csv: &str| csv.lines().next().unwrap_or("").to_string();
+    assert_eq!(header(&bad_csv), header(&ok_csv), "{err}");
+    assert!(header(&ok_csv).split(',').count() > 2, "{ok_csv}");
+    let (_, ok_json, _) = run(&["sweep", &t, "--set-range", &range("1000"), "--format", "json"]);
+    let (_, bad_json, _) = run(&["sweep", &t, "--set-range", &range("42500"), "--format", "json"]);
+    let keys = |j: &serde_json::Value| -> Vec<String> {
+        j["points"][0]
+            .as_object()
+            .map(|m| m.keys().cloned().collect())
+            .unwrap_or_default()
+    };
+    assert_eq!(keys(&parse(&bad_json)), keys(&parse(&ok_json)));
+}

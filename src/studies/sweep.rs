@@ -292,13 +292,18 @@ pub struct Sweep {
     pub points: Vec<Point>,
     /// How the points were started.
     pub start: Start,
+    /// The key outputs of the unmodified deck, solved once only when every point failed,
+    /// so that the columns do not depend on which points solved (issue 30 item 6); empty
+    /// otherwise, or when the deck itself fails too.
+    pub base_columns: Vec<&'static str>,
 }
 
 impl Sweep {
     /// The key-output columns: every name any point has, in the order the first solved
-    /// point lists them (all points of one system list the same names).
+    /// point lists them (all points of one system list the same names); when no point
+    /// solved, the unmodified deck's ([`Sweep::base_columns`]).
     pub fn columns(&self) -> Vec<&'static str> {
-        let mut names: Vec<&'static str> = Vec::new();
+        let mut names: Vec<&'static str> = self.base_columns.clone();
         for p in &self.points {
             for o in &p.outputs {
                 if !names.contains(&o.name) {
@@ -522,6 +527,18 @@ pub fn run(
     if let Some(b) = bar {
         b.finish_and_clear();
     }
+    // Every point failed: the columns come from the deck as given (one more solve, the
+    // cost of one point), so a script reading the CSV or JSON sees the same columns as
+    // on any other day, empty or null in every row.
+    let base_columns = if points.iter().all(|p| p.outputs.is_empty()) {
+        solve_point(f64::NAN, String::new(), case, &mut None)
+            .outputs
+            .iter()
+            .map(|o| o.name)
+            .collect()
+    } else {
+        Vec::new()
+    };
     Ok(Sweep {
         key: range.key,
         unit,
@@ -529,6 +546,7 @@ pub fn run(
         deck: case.name().to_string(),
         points,
         start,
+        base_columns,
     })
 }
 
@@ -938,6 +956,7 @@ mod tests {
             system: "test",
             deck: "deck".into(),
             start: Start::Warm,
+            base_columns: Vec::new(),
             points: vec![
                 Point {
                     value: 1000.0,
