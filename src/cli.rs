@@ -128,6 +128,11 @@ pub enum Command {
         /// Contact model.
         #[arg(long, value_enum, default_value_t = ContactModelArg::LineEhl)]
         model: ContactModelArg,
+        /// Solve the film energy equation (seed eqs. 23–34): viscosity at the film's own
+        /// temperature, max_temperature_c and the temperature profile; without it the
+        /// film is isothermal at the inlet temperature (faster).
+        #[arg(long)]
+        thermal: bool,
         /// Format: text (Table 3 layout), json (SI, with profiles) or csv (SI).
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
@@ -254,6 +259,7 @@ pub fn contact_command(
     positions_deg: &[f64],
     inlet: ContactInletArg,
     model: ContactModelArg,
+    thermal: bool,
     format: Format,
 ) -> Result<String, (u8, String)> {
     use crate::bearings::cylindrical_roller::contact::{
@@ -280,6 +286,7 @@ pub fn contact_command(
             ContactModelArg::LineEhl => ContactModel::LineEhl,
             ContactModelArg::FiniteLineEhl => ContactModel::FiniteLineEhl,
         },
+        thermal,
     };
     let study = contact_study(&c.form.value, &options, |done, total, pos| {
         if done < total && total > 1 {
@@ -290,7 +297,12 @@ pub fn contact_command(
         let code = match e {
             ContactError::NotBuilt(_) => exit::UNSUPPORTED,
             ContactError::Input(_) => exit::INVALID_INPUT,
-            ContactError::Dynamics(_) | ContactError::Solve { .. } => exit::SOLVE_FAILED,
+            ContactError::Dynamics(_)
+            | ContactError::Solve { .. }
+            | ContactError::Thermal { .. }
+            | ContactError::Tipei { .. }
+            | ContactError::TipeiNotConverged { .. }
+            | ContactError::Friction { .. } => exit::SOLVE_FAILED,
         };
         (code, format!("contact: {e}"))
     })?;
