@@ -301,7 +301,6 @@ pub fn contact_command(
             | ContactError::Solve { .. }
             | ContactError::Thermal { .. }
             | ContactError::Tipei { .. }
-            | ContactError::TipeiNotConverged { .. }
             | ContactError::Friction { .. } => exit::SOLVE_FAILED,
         };
         (code, format!("contact: {e}"))
