@@ -343,8 +343,8 @@ pub mod exit {
     pub const SOLVE_FAILED: u8 = 2;
     /// `validate`: a reference case is outside its tolerance.
     pub const VALIDATION_FAILED: u8 = 3;
-    /// A model or option this build does not have yet (`contact --inlet tipei`,
-    /// `--model finite-line-ehl`): the message says what exists.
+    /// A model or option this build does not have yet (`contact --model finite-line-ehl`):
+    /// the message says what exists.
     pub const UNSUPPORTED: u8 = 4;
     /// Command-line usage error (unknown option or value, `--set` where it means nothing).
     pub const USAGE: u8 = 64;

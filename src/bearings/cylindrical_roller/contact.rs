@@ -422,9 +422,16 @@ impl Setup<'_> {
             ..CouplingOptions::default()
         };
         let coupled = thermal_iteration(solve, &film, &ThermalOptions::default(), &coupling)
-            .map_err(|source| ContactError::Thermal {
-                position_deg: pos,
-                source,
+            .map_err(|source| match source {
+                // Isothermal (one solve) the message names the line solver alone.
+                CouplingError::Solver { source, .. } if !self.thermal => ContactError::Solve {
+                    position_deg: pos,
+                    source,
+                },
+                source => ContactError::Thermal {
+                    position_deg: pos,
+                    source,
+                },
             })?;
         let Some(solution) = last else {
             return Err(ContactError::Input(format!(
