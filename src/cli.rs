@@ -129,6 +129,11 @@ pub enum Command {
         /// Contact model.
         #[arg(long, value_enum, default_value_t = ContactModelArg::LineEhl)]
         model: ContactModelArg,
+        /// Solve the film energy equation (seed eqs. 23–34): viscosity at the film's own
+        /// temperature, max_temperature_c and the temperature profile; without it the
+        /// film is isothermal at the inlet temperature (faster).
+        #[arg(long)]
+        thermal: bool,
         /// Format: text (Table 3 layout), json (SI, with profiles) or csv (SI).
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
@@ -255,6 +260,7 @@ pub fn contact_command(
     positions_deg: &[f64],
     inlet: ContactInletArg,
     model: ContactModelArg,
+    thermal: bool,
     format: Format,
 ) -> Result<String, (u8, String)> {
     use crate::bearings::cylindrical_roller::contact::{
@@ -281,6 +287,7 @@ pub fn contact_command(
             ContactModelArg::LineEhl => ContactModel::LineEhl,
             ContactModelArg::FiniteLineEhl => ContactModel::FiniteLineEhl,
         },
+        thermal,
     };
     let study = contact_study(&c.form.value, &options, |done, total, pos| {
         if done < total && total > 1 {
@@ -291,7 +298,11 @@ pub fn contact_command(
         let code = match e {
             ContactError::NotBuilt(_) => exit::UNSUPPORTED,
             ContactError::Input(_) => exit::INVALID_INPUT,
-            ContactError::Dynamics(_) | ContactError::Solve { .. } => exit::SOLVE_FAILED,
+            ContactError::Dynamics(_)
+            | ContactError::Solve { .. }
+            | ContactError::Thermal { .. }
+            | ContactError::Tipei { .. }
+            | ContactError::Friction { .. } => exit::SOLVE_FAILED,
         };
         (code, format!("contact: {e}"))
     })?;
@@ -333,8 +344,8 @@ pub mod exit {
     pub const SOLVE_FAILED: u8 = 2;
     /// `validate`: a reference case is outside its tolerance.
     pub const VALIDATION_FAILED: u8 = 3;
-    /// A model or option this build does not have yet (`contact --inlet tipei`,
-    /// `--model finite-line-ehl`): the message says what exists.
+    /// A model or option this build does not have yet (`contact --model finite-line-ehl`):
+    /// the message says what exists.
     pub const UNSUPPORTED: u8 = 4;
     /// Command-line usage error (unknown option or value, `--set` where it means nothing).
     pub const USAGE: u8 = 64;

@@ -395,6 +395,7 @@ fn main() -> ExitCode {
             position,
             inlet,
             model,
+            thermal,
             format,
         }) => {
             let case = match load_case(&deck, &cli.set) {
@@ -404,7 +405,14 @@ fn main() -> ExitCode {
                     return ExitCode::from(exit::INVALID_INPUT);
                 }
             };
-            match rollbench::cli::contact_command(case.as_ref(), &position, inlet, model, format) {
+            match rollbench::cli::contact_command(
+                case.as_ref(),
+                &position,
+                inlet,
+                model,
+                thermal,
+                format,
+            ) {
                 Ok(text) => {
                     print!("{text}");
                     ExitCode::SUCCESS

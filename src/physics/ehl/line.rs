@@ -891,31 +891,6 @@ fn finish(
     }
 }
 
-/// Viscous (Couette) friction per unit length of an isothermal solution, N/m:
-/// ∫ min(η|Δu|/h, τ_L(p)) dx over the film, with τ_L the limiting shear stress at the
-/// node's pressure (Pa). A stand-in for ehl-thermal's friction module until it lands:
-/// the Couette shear of the sliding speed only (the Poiseuille part, h/2·dp/dx, cancels
-/// between the two surfaces' mean and is left out as in the seed's eq. for τ_v).
-pub fn viscous_friction_isothermal(
-    solution: &LineEhlSolution,
-    sliding_m_s: f64,
-    limiting_shear_pa: impl Fn(f64) -> f64,
-) -> f64 {
-    let x = &solution.x_m;
-    let n = x.len();
-    let tau = |i: usize| {
-        let h = solution.film_m[i];
-        if !(h > 0.0) {
-            return limiting_shear_pa(solution.pressure_pa[i]).max(0.0);
-        }
-        let newtonian = solution.viscosity_pa_s[i] * sliding_m_s.abs() / h;
-        newtonian.min(limiting_shear_pa(solution.pressure_pa[i]).max(0.0))
-    };
-    (1..n)
-        .map(|i| 0.5 * (tau(i) + tau(i - 1)) * (x[i] - x[i - 1]))
-        .sum()
-}
-
 #[cfg(test)]
 #[path = "line_tests.rs"]
 mod tests;

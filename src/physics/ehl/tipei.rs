@@ -70,7 +70,8 @@
 //! film (seed step 3: the inlet from the estimated h_c, iterated with the solver). A
 //! thinner film gives a shorter inlet (m_i ∝ √h_c, tested monotone) and a thick enough
 //! film puts the meniscus beyond the flooded 4–5 Hertz half-widths (starvation vanishes,
-//! tested). Truck bearing (R_zx ≈ 5 mm, h_c ≈ 0.4 µm, k = 1): m_i ≈ 0.21 mm ≈ 4 b.
+//! tested). At R_zx ≈ 5 mm, h_c ≈ 0.4 µm, k = 1: m_i ≈ 0.21 mm. The truck contact's
+//! solved film is thinner (h_c ≈ 0.16 µm, k = 0.83, b ≈ 95 µm): m_i ≈ 131 µm ≈ 1.4 b.
 
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
