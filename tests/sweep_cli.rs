@@ -362,15 +362,43 @@ fn warm_start_gives_the_cold_answers_to_the_solver_tolerance() {
 fn an_all_failed_sweep_keeps_its_columns() {
     let t = deck("trb_afapl.toml");
     let range = |v: &str| format!("operating.inner_speed={v}:{v}:1");
-    let (code, ok_csv, err) = run(&["sweep", &t, "--set-range", &range("1000"), "--format", "csv"]);
+    let (code, ok_csv, err) = run(&[
+        "sweep",
+        &t,
+        "--set-range",
+        &range("1000"),
+        "--format",
+        "csv",
+    ]);
     assert_eq!(code, 0, "{err}");
-    let (code, bad_csv, err) = run(&["sweep", &t, "--set-range", &range("42500"), "--format", "csv"]);
+    let (code, bad_csv, err) = run(&[
+        "sweep",
+        &t,
+        "--set-range",
+        &range("42500"),
+        "--format",
+        "csv",
+    ]);
     assert_ne!(code, 0, "42 500 rpm solved after all: {bad_csv}");
     let header = |csv: &str| csv.lines().next().unwrap_or("").to_string();
     assert_eq!(header(&bad_csv), header(&ok_csv), "{err}");
     assert!(header(&ok_csv).split(',').count() > 2, "{ok_csv}");
-    let (_, ok_json, _) = run(&["sweep", &t, "--set-range", &range("1000"), "--format", "json"]);
-    let (_, bad_json, _) = run(&["sweep", &t, "--set-range", &range("42500"), "--format", "json"]);
+    let (_, ok_json, _) = run(&[
+        "sweep",
+        &t,
+        "--set-range",
+        &range("1000"),
+        "--format",
+        "json",
+    ]);
+    let (_, bad_json, _) = run(&[
+        "sweep",
+        &t,
+        "--set-range",
+        &range("42500"),
+        "--format",
+        "json",
+    ]);
     let keys = |j: &serde_json::Value| -> Vec<String> {
         j["points"][0]
             .as_object()

@@ -1999,3 +1999,28 @@ fn tui_an_edit_cancels_a_running_job() {
     assert_eq!(app.job.as_ref().map(|j| j.0), Some(g3));
     drop(worker);
 }
+
+/// Issue 30 item 16: at 60 columns the tab bar showed bare numbers (` 1  2:Rollers  3  4
+/// 5`); now every pane's tab keeps at least the first two characters of its title (the
+/// focused one whole) while the file and the units still show, at 60×20 and 80×24.
+#[test]
+fn tui_tabs_name_every_pane_at_60_columns() {
+    for (w, h) in [(60, 20), (80, 24)] {
+        let app = solved_app(Pane::Inputs, w, h);
+        let screen = draw(&app, w, h).backend().to_string();
+        let header = screen.lines().next().unwrap_or("").to_string();
+        for (i, p) in app.panes().iter().enumerate() {
+            let short: String = app.pane_title(*p).chars().take(2).collect();
+            assert!(
+                header.contains(&format!("{}:{short}", i + 1)),
+                "{w}×{h}: pane {} ({}) unnamed in {header:?}",
+                i + 1,
+                app.pane_title(*p)
+            );
+        }
+        assert!(
+            header.contains("aerospace.toml") && header.contains("US"),
+            "{header:?}"
+        );
+    }
+}

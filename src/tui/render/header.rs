@@ -36,14 +36,17 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         ));
         Line::from(r)
     };
-    // 0: full labels, 1: full labels one space apart, 2: numbers (the focused one titled).
-    let tabs = |tightness: u8| {
+    // Tightness 0: full labels; 1: full labels one space apart; 2: numbers (the focused
+    // one titled). `abbrev` = Some(k) shortens the other titles to their first k
+    // characters (issue 30 item 16: at 60 columns the tabs were bare numbers, ` 1  2:Rollers
+    // 3  4  5`, and no pane said what it was).
+    let tabs = |tightness: u8, abbrev: Option<usize>| {
         let compact = tightness == 2;
         let mut spans = Vec::new();
         if tightness == 1 {
             spans.push(Span::raw(" "));
         }
-        if wide && !compact {
+        if wide && !compact && abbrev.is_none() {
             spans.push(Span::styled(
                 " rollbench ",
                 Style::default()
@@ -53,12 +56,15 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             ));
         }
         for (i, p) in app.panes().iter().enumerate() {
+            let title = app.pane_title(*p);
             let label = if compact && *p != app.focus {
                 format!(" {} ", i + 1)
+            } else if let (Some(k), false) = (abbrev, *p == app.focus) {
+                format!("{}:{} ", i + 1, title.chars().take(k).collect::<String>())
             } else if tightness == 1 {
-                format!("{}:{} ", i + 1, app.pane_title(*p))
+                format!("{}:{title} ", i + 1)
             } else {
-                format!(" {}:{} ", i + 1, app.pane_title(*p))
+                format!(" {}:{title} ", i + 1)
             };
             let style = if *p == app.focus {
                 Style::default().fg(Color::Black).bg(Color::White)
@@ -78,8 +84,14 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     details.push(String::new());
     let mut choice = None;
-    'outer: for tightness in [0, 1, 2] {
-        let t = tabs(tightness);
+    // Full labels, then one space apart, then the others' titles cut to 6…2 characters,
+    // then numbers.
+    let modes = [(0, None), (1, None)]
+        .into_iter()
+        .chain((2..=6).rev().map(|k| (1, Some(k))))
+        .chain(std::iter::once((2, None)));
+    'outer: for (tightness, abbrev) in modes {
+        let t = tabs(tightness, abbrev);
         for d in &details {
             let r = right(d.clone());
             if t.width() + 1 + r.width() <= area.width as usize {
@@ -88,7 +100,7 @@ pub(super) fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             }
         }
     }
-    let (t, r) = choice.unwrap_or_else(|| (tabs(2), Line::default()));
+    let (t, r) = choice.unwrap_or_else(|| (tabs(2, None), Line::default()));
     t.render(area, buf);
     let w = (r.width() as u16).min(area.width);
     if w > 0 {
