@@ -105,7 +105,11 @@ pub fn answer(a: &Analysis, life: &TaperedLife) -> Vec<AnswerLine> {
         f.map(|f| f.torque_nm),
         Display::Moment,
         4,
-        if f.is_some() { "/friction/torque_nm" } else { "" },
+        if f.is_some() {
+            "/friction/torque_nm"
+        } else {
+            ""
+        },
         &why,
     ));
     if let Some(f) = f {
@@ -118,13 +122,13 @@ pub fn answer(a: &Analysis, life: &TaperedLife) -> Vec<AnswerLine> {
             "/friction/power_w",
             "",
         ));
-        let names: Vec<(&str, f64)> = f
-            .mechanisms
-            .iter()
-            .map(|m| (m.name, m.power_w))
-            .collect();
+        let names: Vec<(&str, f64)> = f.mechanisms.iter().map(|m| (m.name, m.power_w)).collect();
         if let Some(name) = largest_mechanism(&names) {
-            out.push(AnswerLine::name(FRICTION, "largest", name.replace('_', " ")));
+            out.push(AnswerLine::name(
+                FRICTION,
+                "largest",
+                name.replace('_', " "),
+            ));
         }
     }
     match &a.thermal {

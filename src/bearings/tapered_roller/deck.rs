@@ -546,7 +546,10 @@ mod tests {
             .with(crate::thermal::HeatSource::InnerContacts, 1.0)
             .with(crate::thermal::HeatSource::OuterContacts, 1.0)
             .with(crate::thermal::HeatSource::Flanges, 1.0);
-        model.network.node_heat_w(&heat).unwrap_or_else(|e| panic!("{e}"));
+        model
+            .network
+            .node_heat_w(&heat)
+            .unwrap_or_else(|e| panic!("{e}"));
     }
 
     /// The lubricant is optional and its absence is kept through a unit conversion: the
@@ -558,7 +561,8 @@ mod tests {
         let dry = Form::parse(DECK, "trb_afapl.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
         assert!(!dry.value.lubricant.is_given());
         let si = dry.converted(Units::Si);
-        let back = Form::parse(&si.to_toml_string(), "si.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        let back =
+            Form::parse(&si.to_toml_string(), "si.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
         assert!(!back.value.lubricant.is_given());
         let t = template(&SCHEMA, Units::Us);
         let f = Form::parse(&t, "template.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
@@ -577,7 +581,8 @@ mod tests {
         let us = Form::parse(&si.to_toml_string(), "si.toml", &SCHEMA)
             .unwrap_or_else(|e| panic!("{e}"))
             .converted(Units::Us);
-        let again = Form::parse(&us.to_toml_string(), "us.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        let again =
+            Form::parse(&us.to_toml_string(), "us.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
         let a = &again.value.lubricant;
         assert!((a.viscosity_pa_s / l.viscosity_pa_s - 1.0).abs() < 1e-12);
         assert!((a.inlet_temperature_k / l.inlet_temperature_k - 1.0).abs() < 1e-12);

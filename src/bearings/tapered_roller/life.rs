@@ -109,7 +109,10 @@ pub fn life(a: &Analysis) -> TaperedLife {
         Some(Err(e)) => (Err(e.to_string()), Err(e.to_string())),
         Some(Ok(t)) => (
             Ok(t.viscosity_pa_s / a.bearing.input.lubricant.density_kg_m3),
-            Ok((t.min_race[0].map(|m| m.lambda), t.min_race[1].map(|m| m.lambda))),
+            Ok((
+                t.min_race[0].map(|m| m.lambda),
+                t.min_race[1].map(|m| m.lambda),
+            )),
         ),
     };
     let iso = rating::iso_life(&IsoLifeInputs {

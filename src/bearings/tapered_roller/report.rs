@@ -42,7 +42,9 @@ pub fn json(a: &Analysis) -> Value {
                             "stress_pa": sl.stress_pa,
                         });
                         // Issue 28 item 2: the slice's film and friction, when lubricated.
-                        if let (Some(f), Some(o)) = (films.and_then(|f| f.get(k)), v.as_object_mut()) {
+                        if let (Some(f), Some(o)) =
+                            (films.and_then(|f| f.get(k)), v.as_object_mut())
+                        {
                             o.insert("entrainment_m_s".into(), json!(f.entrainment_m_s));
                             o.insert("sliding_m_s".into(), json!(f.sliding_m_s));
                             o.insert("central_film_m".into(), json!(f.central_film_m));
@@ -600,14 +602,19 @@ fn lubrication_text(a: &Analysis, units: Units) -> String {
                     s,
                     "  {:<16} {:>9.2} {tu}{}",
                     n.name,
-                    Quantity::Temperature.from_si(n.temperature_c + crate::units::CELSIUS_ZERO_K, units),
+                    Quantity::Temperature
+                        .from_si(n.temperature_c + crate::units::CELSIUS_ZERO_K, units),
                     if n.fixed { " (fixed)" } else { "" }
                 );
             }
             if let Some(tr) = &th.transient {
                 for n in &tr.nodes {
                     if let Some(tl) = n.time_to_limit_s {
-                        let _ = writeln!(s, "  loss of oil: {} reaches its limit after {tl:.1} s", n.name);
+                        let _ = writeln!(
+                            s,
+                            "  loss of oil: {} reaches its limit after {tl:.1} s",
+                            n.name
+                        );
                     }
                 }
             }

@@ -155,7 +155,12 @@ impl FormSystem for TaperedRoller {
         // lbf and inches like the other systems' (issue 24 item 15).
         let mut a = analyse(&case.form.value, &case.form.name)
             .map_err(|e| restate_si(&e.to_string(), case.form.units))?;
-        with_thermal(&mut a, case.derived.as_ref(), !options.skip_transient, &cancel);
+        with_thermal(
+            &mut a,
+            case.derived.as_ref(),
+            !options.skip_transient,
+            &cancel,
+        );
         Ok(Box::new(TaperedSolution(a)))
     }
 

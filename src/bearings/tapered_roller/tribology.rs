@@ -303,8 +303,8 @@ fn run(a: &Analysis) -> Result<Tribology, TribologyError> {
                 let load = s.load_n_m * width;
                 let rolling_w = rolling_force_n(&fi, width) * ue.abs();
                 let area = 2.0 * s.half_width_m * width;
-                let sliding_w = mixed_force_n(lub, &rough, eta, es, load, area, hc, sliding)
-                    * sliding.abs();
+                let sliding_w =
+                    mixed_force_n(lub, &rough, eta, es, load, area, hc, sliding) * sliding.abs();
                 SliceFilm {
                     x_m: x,
                     entrainment_m_s: ue,
@@ -357,9 +357,9 @@ fn run(a: &Analysis) -> Result<Tribology, TribologyError> {
                 power_w: 0.0,
             });
         }
-        let c = hertz
-            .solve(load)
-            .map_err(|e| TribologyError(format!("roller end / rib contact at {load:.4e} N: {e}")))?;
+        let c = hertz.solve(load).map_err(|e| {
+            TribologyError(format!("roller end / rib contact at {load:.4e} N: {e}"))
+        })?;
         let pf = PointFilmInputs {
             viscosity_pa_s: eta,
             pressure_viscosity_pa_inv: lub.pressure_viscosity_pa_inv,
@@ -394,7 +394,12 @@ fn run(a: &Analysis) -> Result<Tribology, TribologyError> {
 
     let mut rollers = Vec::with_capacity(a.slices.len());
     for (q, [cup, cone]) in a.slices.iter().enumerate() {
-        let load = a.solution.rollers.get(q).map(|r| r.0.flange_n).unwrap_or(0.0);
+        let load = a
+            .solution
+            .rollers
+            .get(q)
+            .map(|r| r.0.flange_n)
+            .unwrap_or(0.0);
         rollers.push(RollerFilm {
             cup: race(cup, true),
             cone: race(cone, false),

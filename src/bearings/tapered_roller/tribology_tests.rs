@@ -98,7 +98,12 @@ fn flange_friction_zero_loses_exactly_the_flange_term() {
     let (_, zero) = solved(&input);
     assert!(film.friction.mechanism_w(FLANGE_SLIDING) > 0.0);
     assert_eq!(zero.friction.mechanism_w(FLANGE_SLIDING), 0.0);
-    for (a, b) in film.friction.mechanisms.iter().zip(&zero.friction.mechanisms) {
+    for (a, b) in film
+        .friction
+        .mechanisms
+        .iter()
+        .zip(&zero.friction.mechanisms)
+    {
         if a.name != FLANGE_SLIDING {
             assert_eq!(a, b);
         }
@@ -135,13 +140,16 @@ fn slice_film_matches_the_formulas() {
     let u = a.bearing.dynamics.roller_spin_rad_s * rho;
     let (r1, r2) = (rho / tt.cos(), r_i / (g.cup_angle_rad - 2.0 * tt).cos());
     let r = r1 * r2 / (r1 + r2);
-    let e = 2.0 * 1.0
-        / ((1.0 - 0.3 * 0.3) / g_e(&a) + (1.0 - 0.3 * 0.3) / g_e(&a));
+    let e = 2.0 * 1.0 / ((1.0 - 0.3 * 0.3) / g_e(&a) + (1.0 - 0.3 * 0.3) / g_e(&a));
     let eta = lub.viscosity_pa_s
         * (-lub.temperature_viscosity_k_inv
             * (lub.inlet_temperature_k - lub.reference_temperature_k))
             .exp();
-    let (uu, gg, ww) = (eta * u / (e * r), lub.pressure_viscosity_pa_inv * e, sl.load_n_m / (e * r));
+    let (uu, gg, ww) = (
+        eta * u / (e * r),
+        lub.pressure_viscosity_pa_inv * e,
+        sl.load_n_m / (e * r),
+    );
     let dh = 2.65 * r * uu.powf(0.70) * gg.powf(0.54) * ww.powf(-0.13);
     let ph = 2.922 * r * uu.powf(0.692) * gg.powf(0.470) * ww.powf(-0.166);
     let f = &t.rollers[0].cone[k];
