@@ -345,4 +345,26 @@ mod tests {
             .collect();
         assert!(states.contains(&"both-races") && states.contains(&"cup-and-flange"));
     }
+
+    /// The lubricated deck's network balances: heat out = heat in to 1e-9 (a linear solve
+    /// of four free nodes: round-off), and the heat in is the friction's power (every
+    /// mechanism is bound to a node).
+    #[test]
+    fn lubricated_thermal_network_balances() {
+        let deck = include_str!("../../../decks/trb_afapl_lubricated.toml");
+        let case = SYSTEM
+            .load(deck, "trb_afapl_lubricated.toml", &[])
+            .unwrap();
+        let mut session = BearingSystem::session(&SYSTEM);
+        let sol = session
+            .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
+            .unwrap();
+        let j = sol.json();
+        let th = &j["thermal"]["steady"];
+        let qin = th["heat_in_w"].as_f64().unwrap();
+        let qout = th["heat_out_w"].as_f64().unwrap();
+        assert!((qin - qout).abs() <= 1e-9 * qin, "{qin} {qout}");
+        let p = j["friction"]["power_w"].as_f64().unwrap();
+        assert!((qin / p - 1.0).abs() < 1e-12, "{qin} {p}");
+    }
 }
