@@ -352,9 +352,7 @@ mod tests {
     #[test]
     fn lubricated_thermal_network_balances() {
         let deck = include_str!("../../../decks/trb_afapl_lubricated.toml");
-        let case = SYSTEM
-            .load(deck, "trb_afapl_lubricated.toml", &[])
-            .unwrap();
+        let case = SYSTEM.load(deck, "trb_afapl_lubricated.toml", &[]).unwrap();
         let mut session = BearingSystem::session(&SYSTEM);
         let sol = session
             .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
