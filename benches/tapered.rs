@@ -88,5 +88,26 @@ fn session_sweep(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, load_case, speed_sweep, session_sweep);
+/// Issue 28's speed budget: the whole analysis of Load Condition 2 (21 slices, 19 distinct
+/// rollers) without and with a lubricant (film per slice and at the rib, friction by
+/// mechanism): the ratio of the two medians is the added stages' cost.
+fn lubrication(c: &mut Criterion) {
+    let dry = case(21, 700.0);
+    let mut wet = dry;
+    wet.lubricant.viscosity_pa_s = 0.0248;
+    wet.lubricant.inlet_temperature_k = 366.48;
+    for (name, input) in [("dry", dry), ("lubricated", wet)] {
+        c.bench_function(&format!("tapered_lc2_analysis_{name}"), |b| {
+            b.iter(|| {
+                rollbench::bearings::tapered_roller::analysis::analyse(
+                    std::hint::black_box(&input),
+                    "bench",
+                )
+                .unwrap_or_else(|e| panic!("{e}"))
+            })
+        });
+    }
+}
+
+criterion_group!(benches, load_case, speed_sweep, session_sweep, lubrication);
 criterion_main!(benches);

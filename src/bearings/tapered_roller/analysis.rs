@@ -26,6 +26,10 @@ pub struct Analysis {
     pub slices: Vec<[Vec<SliceResult>; 2]>,
     /// Wall time of the solve, s.
     pub wall_time_s: f64,
+    /// Film, Λ and friction by mechanism (issue 28 items 3–4): `None` without a lubricant.
+    pub tribology: Option<Result<super::tribology::Tribology, super::tribology::TribologyError>>,
+    /// The thermal network's answer, when the deck has a `[thermal]` and a lubricant.
+    pub thermal: Option<Result<super::thermal::ThermalOut, String>>,
 }
 
 impl Analysis {
@@ -150,15 +154,20 @@ pub fn analyse_from(
         m.cone.eval(r.delta2_m, r.theta2_rad, Some(&mut cone))?;
         slices.push([cup, cone]);
     }
-    Ok(Analysis {
+    let mut a = Analysis {
         name: name.to_string(),
         bearing,
         solution,
         stiffness,
         stiffness_fd,
         slices,
-        wall_time_s: t0.elapsed().as_secs_f64(),
-    })
+        wall_time_s: 0.0,
+        tribology: None,
+        thermal: None,
+    };
+    a.tribology = super::tribology::tribology(&a);
+    a.wall_time_s = t0.elapsed().as_secs_f64();
+    Ok(a)
 }
 
 #[cfg(test)]

@@ -42,7 +42,7 @@ const CUP: [FieldSpec<TaperedInput>; 5] =
 const CONE: [FieldSpec<TaperedInput>; 5] =
     material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
 
-static FIELDS: [FieldSpec<TaperedInput>; 50] = [
+static FIELDS: [FieldSpec<TaperedInput>; 63] = [
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
         get: |t| t.geometry.roller_count as f64,
@@ -239,6 +239,74 @@ static FIELDS: [FieldSpec<TaperedInput>; 50] = [
         get: |t| t.pedestal.stiffness[4],
         set: |t, v| t.pedestal.stiffness[4] = v,
     },
+    // [lubricant] (issue 28 item 3): optional; viscosity "none" (the default) keeps the
+    // dry answer of loads, stresses, stiffness and life without κ. Key names and meanings
+    // are the cylindrical deck's.
+    FieldSpec {
+        meta: meta("lubricant.viscosity", "lubricant", "Viscosity η₀", Quantity::Viscosity, FieldKind::RealOr("none"), (0.0, true), (1e3, false), Presence::Default(f64::NAN), "dynamic viscosity at the reference temperature and ambient pressure, or \"none\" for no lubricant (no film, friction or heat); a MIL-PRF-23699 turbine oil: 0.0248 Pa·s at 40 °C"),
+        get: |t| t.lubricant.viscosity_pa_s,
+        set: |t, v| t.lubricant.viscosity_pa_s = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.reference_temperature", "lubricant", "Reference temperature T₀", Quantity::Temperature, REAL, (223.15, false), (573.15, false), Presence::Default(313.15), "temperature at which lubricant.viscosity is given"),
+        get: |t| t.lubricant.reference_temperature_k,
+        set: |t, v| t.lubricant.reference_temperature_k = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.pressure_viscosity", "lubricant", "Pressure-viscosity α", Quantity::PressureViscosity, REAL, (0.0, false), (1e-6, false), Presence::Default(1.1e-8), "pressure-viscosity coefficient (polyol-ester turbine oil ≈ 1.1e-8 1/Pa)"),
+        get: |t| t.lubricant.pressure_viscosity_pa_inv,
+        set: |t, v| t.lubricant.pressure_viscosity_pa_inv = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.temperature_viscosity", "lubricant", "Temperature-viscosity β", Quantity::PerDegreeCelsius, REAL, (0.0, false), (1.0, false), Presence::Default(0.0268), "temperature-viscosity coefficient, η = η₀·exp(−β(T − T₀))"),
+        get: |t| t.lubricant.temperature_viscosity_k_inv,
+        set: |t, v| t.lubricant.temperature_viscosity_k_inv = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.density", "lubricant", "Density ρ₀", Quantity::Density, REAL, (0.0, true), (1e5, false), Presence::Default(990.0), "lubricant density at the inlet"),
+        get: |t| t.lubricant.density_kg_m3,
+        set: |t, v| t.lubricant.density_kg_m3 = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.inlet_temperature", "lubricant", "Inlet temperature", Quantity::Temperature, REAL, (223.15, false), (573.15, false), Presence::Default(313.15), "lubricant inlet temperature: the films' and the friction's viscosity"),
+        get: |t| t.lubricant.inlet_temperature_k,
+        set: |t, v| t.lubricant.inlet_temperature_k = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.boundary_friction", "lubricant", "Boundary friction µ_b", Quantity::Dimensionless, REAL, (0.0, false), (1.0, false), Presence::Default(0.1), "friction coefficient of the asperity contacts (mixed lubrication)"),
+        get: |t| t.lubricant.boundary_friction,
+        set: |t, v| t.lubricant.boundary_friction = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.limiting_shear", "lubricant", "Limiting shear τ₀", Quantity::Pressure, REAL, (0.0, false), (1e9, false), Presence::Default(2.3e6), "atmospheric limiting shear stress, τ_L = τ₀ + γp"),
+        get: |t| t.lubricant.limiting_shear_pa,
+        set: |t, v| t.lubricant.limiting_shear_pa = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.limiting_shear_slope", "lubricant", "Limiting shear slope γ", Quantity::Dimensionless, REAL, (0.0, false), (1.0, false), Presence::Default(0.047), "pressure coefficient of the limiting shear τ_L = τ₀ + γp"),
+        get: |t| t.lubricant.limiting_shear_slope,
+        set: |t, v| t.lubricant.limiting_shear_slope = v,
+    },
+    FieldSpec {
+        meta: meta("lubricant.flange_friction", "lubricant", "Flange friction µ_f", Quantity::Dimensionless, FieldKind::RealOr("film"), (0.0, false), (1.0, false), Presence::Default(f64::NAN), "roller-end/flange friction coefficient, or \"film\" to take it from the flange film (mixed boundary/viscous)"),
+        get: |t| t.lubricant.flange_friction,
+        set: |t, v| t.lubricant.flange_friction = v,
+    },
+    FieldSpec {
+        meta: meta("surfaces.composite_rms", "surfaces", "Composite roughness σ", Quantity::Roughness, REAL, (0.0, true), (1e-4, false), Presence::Default(0.15e-6), "composite rms roughness of roller and race (and roller end and flange)"),
+        get: |t| t.surfaces.composite_rms_m,
+        set: |t, v| t.surfaces.composite_rms_m = v,
+    },
+    FieldSpec {
+        meta: meta("surfaces.roughness_parameter", "surfaces", "Roughness parameter ξβσ", Quantity::Dimensionless, REAL, (0.0, true), (10.0, false), Presence::Default(0.055), "Greenwood–Tripp roughness parameter (asperity density × radius × σ)"),
+        get: |t| t.surfaces.roughness_parameter,
+        set: |t, v| t.surfaces.roughness_parameter = v,
+    },
+    FieldSpec {
+        meta: meta("surfaces.asperity_slope", "surfaces", "Asperity slope σ/β", Quantity::Dimensionless, REAL, (0.0, true), (1.0, false), Presence::Default(1e-3), "roughness over asperity tip radius"),
+        get: |t| t.surfaces.asperity_slope,
+        set: |t, v| t.surfaces.asperity_slope = v,
+    },
 ];
 
 /// Rules across keys: the roller must fit inside the pitch circle and the flat inside the
@@ -276,10 +344,96 @@ fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
     v
 }
 
+/// The template's `[thermal]` section: a small working network, commented out (remove the
+/// leading `# ` of its lines to use it; `decks/trb_afapl_lubricated.toml` has one). Every
+/// heat source of the tapered bearing (`inner_contacts`, `outer_contacts`, `rollers`,
+/// `flanges`) must go to a node. A test uncomments it and builds it.
+pub const THERMAL_NOTE: &str =
+    "[thermal]  # optional: a lumped thermal network (seed 000 §10), steady state and
+# loss-of-oil transient, fed by the friction by mechanism (needs [lubricant]). A small
+# working example follows; uncomment it to use it.
+# [thermal]
+# units = \"si\"    # °C, J/K, W/K, m, m², kg/s, whatever the deck's units
+#
+# [[thermal.nodes]]
+# name = \"cone\"
+# capacity = 400.0            # J/K
+# limit = 200.0               # °C: the transient reports when it is reached
+# heat = [\"inner_contacts\", \"flanges\"]
+#
+# [[thermal.nodes]]
+# name = \"cup\"
+# capacity = 600.0
+# heat = [\"outer_contacts\"]
+#
+# [[thermal.nodes]]
+# name = \"rollers\"
+# capacity = 150.0
+# heat = [\"rollers\"]
+#
+# [[thermal.nodes]]
+# name = \"oil_in\"
+# role = \"oil\"
+# fixed_temperature = 93.0    # °C
+#
+# [[thermal.nodes]]
+# name = \"oil_cavity\"
+# role = \"oil\"
+# capacity = 100.0
+# air_capacity = 5.0          # J/K once the oil is lost
+#
+# [[thermal.links]]
+# from = \"oil_in\"
+# to = \"oil_cavity\"
+# kind = \"mass_transport\"
+# mass_flow = 0.06            # kg/s
+# specific_heat = 2000.0      # J/(kg·K)
+#
+# [[thermal.links]]
+# from = \"oil_cavity\"
+# to = \"cone\"
+# kind = \"convection\"
+# h = 3000.0                  # W/(m²·K)
+# area = 0.01                 # m²
+# h_loss_of_oil = 60.0
+#
+# [[thermal.links]]
+# from = \"oil_cavity\"
+# to = \"cup\"
+# kind = \"convection\"
+# h = 3000.0
+# area = 0.012
+# h_loss_of_oil = 60.0
+#
+# [[thermal.links]]
+# from = \"oil_cavity\"
+# to = \"rollers\"
+# kind = \"convection\"
+# h = 3000.0
+# area = 0.006
+# h_loss_of_oil = 60.0
+#
+# [thermal.transient]
+# duration = 300.0            # s
+# step = 0.5
+# integrator = \"implicit\"
+# scenario = \"loss_of_oil\"
+# oil_node = \"oil_cavity\"";
+
+/// The template's comment lines beyond the fields'.
+pub const TEMPLATE_NOTES: crate::deck::form::TemplateNotes = crate::deck::form::TemplateNotes {
+    name: "",
+    group_notes: &[
+        ("lubricant", "Optional table. viscosity = \"none\" (the default): no lubricant, so no film, friction or heat. The other values are a MIL-PRF-23699-type turbine oil's (decks/trb_afapl_lubricated.toml cites them)."),
+        ("surfaces", "Optional table: roughness for the film parameter Λ and the mixed friction."),
+    ],
+    opaque_notes: &[("thermal", THERMAL_NOTE)],
+};
+
 /// The tapered roller deck's schema.
 pub static SCHEMA: Schema<TaperedInput> = Schema {
     system: SYSTEM_ID,
-    groups: &["geometry", "materials", "operating", "solver", "pedestal"],
+    groups: &["geometry", "materials", "operating", "solver", "pedestal", "lubricant", "surfaces", "thermal"],
     required_groups: &["geometry", "materials", "operating"],
     fields: &FIELDS,
     material_bodies: &["roller", "cup", "cone"],
@@ -295,11 +449,11 @@ pub static SCHEMA: Schema<TaperedInput> = Schema {
             _ => t.materials.cone = m,
         },
     }),
-    opaque_tables: &[],
+    opaque_tables: &["thermal"],
     defaults: TaperedInput::afapl_sample,
     cross_checks: cross,
     template_header: "rollbench tapered roller bearing deck (seed 004: AFAPL-TR-78-6 Part III, tapered roller bearing stiffness with centrifugal effects)",
-    template_notes: crate::deck::form::TemplateNotes::NONE,
+    template_notes: TEMPLATE_NOTES,
 };
 
 #[cfg(test)]
@@ -363,5 +517,74 @@ mod tests {
             .map(|i| i + 1)
             .unwrap_or(0);
         assert!(e.contains(&format!("bad.toml:{line}:")), "{e}");
+    }
+
+    const LUBRICATED: &str = include_str!("../../../decks/trb_afapl_lubricated.toml");
+
+    /// The template's commented `[thermal]` example works: uncommented, the deck reads,
+    /// its network builds and (with a lubricant set) every tapered heat source is bound.
+    #[test]
+    fn template_thermal_example_is_a_working_network() {
+        let t = template(&SCHEMA, Units::Si);
+        let start = t.find("# [thermal]\n").expect("the example");
+        let (head, tail) = t.split_at(start);
+        let example: String = tail
+            .lines()
+            .map(|l| {
+                l.strip_prefix("# ")
+                    .or_else(|| l.strip_prefix('#'))
+                    .unwrap_or(l)
+            })
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let text = format!("{head}{example}").replace("viscosity = \"none\"", "viscosity = 0.0248");
+        let f = Form::parse(&text, "t.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        assert!(f.value.lubricant.is_given());
+        let model = f.thermal_model().unwrap_or_else(|e| panic!("{e}"));
+        let model = model.expect("a network");
+        let heat = crate::thermal::HeatInput::new()
+            .with(crate::thermal::HeatSource::InnerContacts, 1.0)
+            .with(crate::thermal::HeatSource::OuterContacts, 1.0)
+            .with(crate::thermal::HeatSource::Flanges, 1.0);
+        model
+            .network
+            .node_heat_w(&heat)
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    /// The lubricant is optional and its absence is kept through a unit conversion: the
+    /// template and the published deck have none (viscosity "none"); the lubricated deck
+    /// reads to the cited SI values (0.0248 Pa·s, 1.1e-8 1/Pa, 93.3 °C, 0.15 µm: 1e-3, the
+    /// deck's four-digit conversions) and survives a US → SI → US round trip (1e-12).
+    #[test]
+    fn lubricant_is_optional_and_converts() {
+        let dry = Form::parse(DECK, "trb_afapl.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!dry.value.lubricant.is_given());
+        let si = dry.converted(Units::Si);
+        let back =
+            Form::parse(&si.to_toml_string(), "si.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!back.value.lubricant.is_given());
+        let t = template(&SCHEMA, Units::Us);
+        let f = Form::parse(&t, "template.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!f.value.lubricant.is_given());
+        let wet = Form::parse(LUBRICATED, "l.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        let l = &wet.value.lubricant;
+        for (x, want) in [
+            (l.viscosity_pa_s, 0.0248),
+            (l.pressure_viscosity_pa_inv, 1.1e-8),
+            (l.inlet_temperature_k - 273.15, 93.33),
+            (wet.value.surfaces.composite_rms_m, 0.1524e-6),
+        ] {
+            assert!((x / want - 1.0).abs() < 1e-3, "{x} {want}");
+        }
+        let si = wet.converted(Units::Si);
+        let us = Form::parse(&si.to_toml_string(), "si.toml", &SCHEMA)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .converted(Units::Us);
+        let again =
+            Form::parse(&us.to_toml_string(), "us.toml", &SCHEMA).unwrap_or_else(|e| panic!("{e}"));
+        let a = &again.value.lubricant;
+        assert!((a.viscosity_pa_s / l.viscosity_pa_s - 1.0).abs() < 1e-12);
+        assert!((a.inlet_temperature_k / l.inlet_temperature_k - 1.0).abs() < 1e-12);
     }
 }

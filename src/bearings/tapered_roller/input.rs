@@ -158,6 +158,99 @@ pub struct TaperedInput {
     pub solver: Solver,
     /// The pedestal the cup sits in (seed 004 eq. 9).
     pub pedestal: Pedestal,
+    /// The lubricant (issue 28 item 3); `viscosity_pa_s` NaN (the deck's `"none"`): no
+    /// lubricant, no film, no friction, no heat.
+    pub lubricant: Lubricant,
+    /// The surfaces' roughness.
+    pub surfaces: Surfaces,
+}
+
+/// The lubricant and the friction laws' constants, SI (issue 28 item 3). The key names
+/// are the cylindrical deck's where the meaning is the same.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lubricant {
+    /// η₀, dynamic viscosity at `reference_temperature_k` and ambient pressure, Pa·s;
+    /// NaN: the deck has no lubricant (`lubricant.viscosity = "none"`, the default).
+    pub viscosity_pa_s: f64,
+    /// T₀, the temperature at which η₀ is given, K.
+    pub reference_temperature_k: f64,
+    /// α, pressure–viscosity coefficient, 1/Pa.
+    pub pressure_viscosity_pa_inv: f64,
+    /// β, temperature–viscosity coefficient, 1/K: η(T) = η₀·exp(−β(T − T₀)).
+    pub temperature_viscosity_k_inv: f64,
+    /// ρ, density at the inlet, kg/m³ (the kinematic viscosity of ISO 281's κ).
+    pub density_kg_m3: f64,
+    /// Inlet (supply) temperature, K: the film's and the friction's temperature.
+    pub inlet_temperature_k: f64,
+    /// µ_b, boundary friction coefficient of the asperity contacts (mixed lubrication).
+    pub boundary_friction: f64,
+    /// τ₀, atmospheric limiting shear stress, Pa (τ_L = τ₀ + γ·p).
+    pub limiting_shear_pa: f64,
+    /// γ, pressure coefficient of the limiting shear stress.
+    pub limiting_shear_slope: f64,
+    /// The roller-end/flange friction coefficient: NaN (`"film"`, the default) takes it
+    /// from the flange film (mixed boundary/viscous); a number imposes it.
+    pub flange_friction: f64,
+}
+
+/// Surface roughness, SI (the cylindrical deck's `[surfaces]` keys).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Surfaces {
+    /// σ, composite RMS roughness √(σ₁² + σ₂²) of roller and race (and flange), m.
+    pub composite_rms_m: f64,
+    /// ξβσ, Greenwood–Tripp roughness parameter.
+    pub roughness_parameter: f64,
+    /// σ/β, Greenwood–Tripp asperity slope measure.
+    pub asperity_slope: f64,
+}
+
+impl Lubricant {
+    /// True when the deck gives a lubricant.
+    pub fn is_given(&self) -> bool {
+        self.viscosity_pa_s.is_finite()
+    }
+
+    /// η at `temperature_k`, Pa·s (Barus in temperature: η₀·exp(−β(T − T₀))).
+    pub fn viscosity_at_pa_s(&self, temperature_k: f64) -> f64 {
+        self.viscosity_pa_s
+            * (-self.temperature_viscosity_k_inv * (temperature_k - self.reference_temperature_k))
+                .exp()
+    }
+
+    /// η at the inlet temperature, Pa·s.
+    pub fn inlet_viscosity_pa_s(&self) -> f64 {
+        self.viscosity_at_pa_s(self.inlet_temperature_k)
+    }
+}
+
+impl Default for Lubricant {
+    /// No lubricant (η₀ NaN); the other constants are a MIL-PRF-23699-type polyol-ester
+    /// turbine oil's (see `decks/trb_afapl_lubricated.toml` for their sources), ready for
+    /// a deck that sets only `lubricant.viscosity`.
+    fn default() -> Self {
+        Lubricant {
+            viscosity_pa_s: f64::NAN,
+            reference_temperature_k: 313.15,
+            pressure_viscosity_pa_inv: 1.1e-8,
+            temperature_viscosity_k_inv: 0.0268,
+            density_kg_m3: 990.0,
+            inlet_temperature_k: 313.15,
+            boundary_friction: 0.1,
+            limiting_shear_pa: 2.3e6,
+            limiting_shear_slope: 0.047,
+            flange_friction: f64::NAN,
+        }
+    }
+}
+
+impl Default for Surfaces {
+    fn default() -> Self {
+        Surfaces {
+            composite_rms_m: 0.15e-6,
+            roughness_parameter: 0.055,
+            asperity_slope: 1e-3,
+        }
+    }
 }
 
 /// The pedestal's stiffness in the coordinates of the 5×5 matrix (x, y, z, θx, θy), SI
@@ -226,6 +319,8 @@ impl TaperedInput {
             },
             solver: Solver::default(),
             pedestal: Pedestal::default(),
+            lubricant: Lubricant::default(),
+            surfaces: Surfaces::default(),
         }
     }
 }

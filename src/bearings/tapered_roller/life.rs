@@ -11,8 +11,8 @@
 //!
 //! **ISO 281.** C_r with α = the cup angle, L_we = the deck's effective length, the mean
 //! roller diameter; P by Table 9's single-row form (e = 1.5·tan α; X = 0.4, Y = 0.4·cot α
-//! above e). **No κ and no a_ISO**: the tapered deck has no lubricant inputs yet (issue 28
-//! item 3); they are absent with that reason, not made up. **Static safety**
+//! above e). **κ and a_ISO** from the deck's lubricant at the inlet temperature (ν = η/ρ);
+//! a deck without `[lubricant]` has neither, with that reason, not made up. **Static safety**
 //! s0 = (4 000 MPa/p_max)² over every slice of both raceways.
 
 use super::analysis::Analysis;
@@ -25,11 +25,13 @@ use crate::physics::rating::{
 
 /// Why the tapered system has no κ, a_ISO or Λ.
 pub const NO_LUBRICANT: &str =
-    "the tapered deck has no lubricant inputs yet (issue 28 item 3): no film, no Λ, no κ, no a_ISO";
+    "the deck gives no lubricant (lubricant.viscosity = \"none\"): no film, no Λ, no κ, no a_ISO";
 
 /// Everything the life stage adds to a tapered analysis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TaperedLife {
+    /// Λ of the thinnest loaded cone and cup slice, or why there is none.
+    pub lambdas: Result<(Option<f64>, Option<f64>), String>,
     /// The load-distribution life.
     pub reference: ReferenceLifeNumbers,
     /// ISO 281 / ISO 76 numbers.
@@ -101,6 +103,18 @@ pub fn life(a: &Analysis) -> TaperedLife {
         contact_angle_rad: g.cup_angle_rad,
     };
     let max_p = max_contact_stress_pa(a);
+    // κ from the inlet viscosity (ν = η/ρ) when the deck gives a lubricant (issue 28).
+    let (kinematic, lambdas) = match &a.tribology {
+        None => (Err(NO_LUBRICANT.to_string()), Err(NO_LUBRICANT.to_string())),
+        Some(Err(e)) => (Err(e.to_string()), Err(e.to_string())),
+        Some(Ok(t)) => (
+            Ok(t.viscosity_pa_s / a.bearing.input.lubricant.density_kg_m3),
+            Ok((
+                t.min_race[0].map(|m| m.lambda),
+                t.min_race[1].map(|m| m.lambda),
+            )),
+        ),
+    };
     let iso = rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Roller,
         rating: rating::iso_radial_rating_roller(rating::B_M_TAPERED_ROLLER, &rg).ok_or_else(
@@ -121,11 +135,12 @@ pub fn life(a: &Analysis) -> TaperedLife {
         static_rating: Ok(rating::iso_static_radial_rating_roller(&rg)),
         pitch_diameter_m: g.pitch_diameter_m,
         relative_speed_rpm: (wi - wo).abs() * 30.0 / std::f64::consts::PI,
-        kinematic_viscosity_m2_s: Err(NO_LUBRICANT.to_string()),
+        kinematic_viscosity_m2_s: kinematic.clone(),
         contamination_factor: rating::DEFAULT_CONTAMINATION_FACTOR,
         max_contact_stress_pa: max_p,
     });
     TaperedLife {
+        lambdas,
         reference,
         iso,
         max_contact_stress_pa: max_p,
@@ -135,11 +150,7 @@ pub fn life(a: &Analysis) -> TaperedLife {
 impl TaperedLife {
     /// The JSON `life` object ([`rating::life_json`]): Λ absent with its reason.
     pub fn json(&self) -> serde_json::Value {
-        let mut v = rating::life_json(
-            &Ok(self.reference),
-            &Err(NO_LUBRICANT.to_string()),
-            &self.iso,
-        );
+        let mut v = rating::life_json(&Ok(self.reference), &self.lambdas, &self.iso);
         if let Some(m) = v.as_object_mut() {
             m.insert(
                 "capacity_factor".into(),

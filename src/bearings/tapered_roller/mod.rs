@@ -26,6 +26,8 @@ pub mod life;
 pub mod report;
 pub mod roller;
 pub mod system;
+pub mod thermal;
+pub mod tribology;
 pub mod view;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the

@@ -14,6 +14,7 @@ pub const DAMPING_NOTE: &str = "not computed: the seed (AFAPL-TR-78-6 Part III �
 /// The JSON report.
 pub fn json(a: &Analysis) -> Value {
     let life = super::life::life(a);
+    let trib = a.tribology.as_ref().and_then(|t| t.as_ref().ok());
     let b = &a.bearing;
     let rg = &b.geometry;
     let dy = &b.dynamics;
@@ -26,22 +27,37 @@ pub fn json(a: &Analysis) -> Value {
             let (c, s) = b.azimuth[q];
             let [cup, cone] = &a.slices[q];
             // Each race's slices lie on its own contact extent.
-            let slices: Vec<Value> = [("outer", cup), ("inner", cone)]
+            let film = trib.map(|t| &t.rollers[q]);
+            let films = [film.map(|f| &f.cup[..]), film.map(|f| &f.cone[..])];
+            let slices: Vec<Value> = [("outer", cup, films[0]), ("inner", cone, films[1])]
                 .iter()
-                .flat_map(|(race, list)| {
-                    list.iter().map(move |sl| {
-                        json!({
+                .flat_map(|(race, list, films)| {
+                    list.iter().enumerate().map(move |(k, sl)| {
+                        let mut v = json!({
                             "race": race,
                             "x_m": sl.x_m,
                             "intrusion_m": sl.intrusion_m,
                             "load_n_m": sl.load_n_m,
                             "half_width_m": sl.half_width_m,
                             "stress_pa": sl.stress_pa,
-                        })
+                        });
+                        // Issue 28 item 2: the slice's film and friction, when lubricated.
+                        if let (Some(f), Some(o)) =
+                            (films.and_then(|f| f.get(k)), v.as_object_mut())
+                        {
+                            o.insert("entrainment_m_s".into(), json!(f.entrainment_m_s));
+                            o.insert("sliding_m_s".into(), json!(f.sliding_m_s));
+                            o.insert("central_film_m".into(), json!(f.central_film_m));
+                            o.insert("min_film_m".into(), json!(f.min_film_m));
+                            o.insert("lambda".into(), json!(f.lambda));
+                            o.insert("rolling_w".into(), json!(f.rolling_w));
+                            o.insert("sliding_w".into(), json!(f.sliding_w));
+                        }
+                        v
                     })
                 })
                 .collect();
-            json!({
+            let mut v = json!({
                 "index": q + 1,
                 "azimuth_deg": s.atan2(c).to_degrees().rem_euclid(360.0),
                 "state": r.state.as_str(),
@@ -65,7 +81,19 @@ pub fn json(a: &Analysis) -> Value {
                 "iterations": r.iterations,
                 "residual_n": r.residual_n,
                 "slices": slices,
-            })
+            });
+            if let (Some(f), Some(o)) = (film, v.as_object_mut()) {
+                let min = |s: &[super::tribology::SliceFilm]| {
+                    s.iter()
+                        .map(|x| x.min_film_m)
+                        .filter(|h| *h > 0.0)
+                        .reduce(f64::min)
+                };
+                o.insert("flange".into(), json!(f.flange));
+                o.insert("min_film_outer_m".into(), json!(min(&f.cup)));
+                o.insert("min_film_inner_m".into(), json!(min(&f.cone)));
+            }
+            v
         })
         .collect();
     let matrix = |k: &super::bearing::Matrix5| -> Vec<Vec<f64>> {
@@ -131,7 +159,7 @@ pub fn json(a: &Analysis) -> Value {
         .map(|r| r.0.iterations)
         .max()
         .unwrap_or(0);
-    json!({
+    let mut out = json!({
         "type": super::SYSTEM_ID,
         "name": a.name,
         "method": "AFAPL-TR-78-6 Part III (seed 004): flange-guided tapered rollers, Lundberg line-contact slices, centrifugal and gyroscopic loads, 5×5 stiffness",
@@ -187,7 +215,71 @@ pub fn json(a: &Analysis) -> Value {
             "slices": b.input.solver.slices,
             "wall_time_s": a.wall_time_s,
         },
-    })
+    });
+    if let Some(o) = out.as_object_mut() {
+        for (k, v) in lubrication_json(a) {
+            o.insert(k.into(), v);
+        }
+    }
+    out
+}
+
+/// The JSON's `film`, `friction` and `thermal` (issue 28 items 2–5): the numbers when the
+/// deck gives a lubricant, else `film.reason` and `friction: null`.
+fn lubrication_json(a: &Analysis) -> Vec<(&'static str, Value)> {
+    let mut out = Vec::new();
+    match &a.tribology {
+        None => {
+            out.push(("film", json!({ "reason": super::life::NO_LUBRICANT })));
+            out.push(("friction", Value::Null));
+        }
+        Some(Err(e)) => {
+            out.push(("film", json!({ "reason": e.to_string() })));
+            out.push(("friction", Value::Null));
+        }
+        Some(Ok(t)) => {
+            let at = |m: Option<super::tribology::FilmMin>| {
+                m.map(|m| {
+                    json!({
+                        "min_film_m": m.film_m,
+                        "lambda": m.lambda,
+                        "roller": m.roller + 1,
+                        "contact": m.contact,
+                        "slice": m.slice,
+                    })
+                })
+            };
+            let flange_mu = t
+                .rollers
+                .iter()
+                .filter(|r| r.flange.load_n > 0.0)
+                .map(|r| r.flange.friction_coefficient)
+                .reduce(f64::max);
+            out.push((
+                "film",
+                json!({
+                    "viscosity_pa_s": t.viscosity_pa_s,
+                    "inlet_temperature_k": a.bearing.input.lubricant.inlet_temperature_k,
+                    "composite_rms_m": a.bearing.input.surfaces.composite_rms_m,
+                    "min_film_m": t.min.map(|m| m.film_m),
+                    "min_lambda": t.min.map(|m| m.lambda),
+                    "min": at(t.min),
+                    "min_inner": at(t.min_race[0]),
+                    "min_outer": at(t.min_race[1]),
+                    "flange_friction_coefficient_max": flange_mu,
+                    "flange_sliding_m_s": t.rollers.first().map(|r| r.flange.sliding_m_s),
+                    "flange_entrainment_m_s": t.rollers.first().map(|r| r.flange.entrainment_m_s),
+                }),
+            ));
+            out.push(("friction", t.friction.json()));
+        }
+    }
+    match &a.thermal {
+        Some(Ok(th)) => out.push(("thermal", th.json())),
+        Some(Err(e)) => out.push(("thermal", json!({ "error": e }))),
+        None => {}
+    }
+    out
 }
 
 /// The stiffness matrix in `units` (rows F_x … M_y, columns x … θ_y, each block in its
@@ -399,6 +491,7 @@ pub fn text(a: &Analysis, units: Units) -> String {
     ) {
         let _ = writeln!(s, "\nWarning: {w}");
     }
+    s.push_str(&lubrication_text(a, units));
     let _ = writeln!(
         s,
         "\nEquilibrium residual {:.3e} {fu} {}; {} distinct roller solves; {:.3} ms",
@@ -411,5 +504,127 @@ pub fn text(a: &Analysis, units: Units) -> String {
         sol.unique_rollers,
         a.wall_time_s * 1e3
     );
+    s
+}
+
+/// The text report's FILM, FRICTION and THERMAL sections in `units` (issue 28 item 6).
+fn lubrication_text(a: &Analysis, units: Units) -> String {
+    let mut s = String::new();
+    let t = match &a.tribology {
+        None => {
+            let _ = writeln!(s, "\nFilm and friction: {}.", super::life::NO_LUBRICANT);
+            return s;
+        }
+        Some(Err(e)) => {
+            let _ = writeln!(s, "\nFilm and friction: not computed: {e}.");
+            return s;
+        }
+        Some(Ok(t)) => t,
+    };
+    let rough = Quantity::Roughness;
+    let (ru, mu, pu) = (
+        rough.unit(units),
+        Quantity::Moment.unit(units),
+        Quantity::Power.unit(units),
+    );
+    let _ = writeln!(
+        s,
+        "\nFILM (inlet {:.1} {}, viscosity {:.4e} {})",
+        Quantity::Temperature.from_si(a.bearing.input.lubricant.inlet_temperature_k, units),
+        Quantity::Temperature.unit(units),
+        Quantity::Viscosity.from_si(t.viscosity_pa_s, units),
+        Quantity::Viscosity.unit(units)
+    );
+    for (label, m) in [
+        ("thinnest", t.min),
+        ("cone raceway", t.min_race[0]),
+        ("cup raceway", t.min_race[1]),
+    ] {
+        match m {
+            Some(m) => {
+                let _ = writeln!(
+                    s,
+                    "  {label:<13} h_min = {:.3} {ru}  Lambda = {:.2}  at roller {}, {}{}",
+                    rough.from_si(m.film_m, units),
+                    m.lambda,
+                    m.roller + 1,
+                    m.contact,
+                    if m.contact == "flange" {
+                        String::new()
+                    } else {
+                        format!(" slice {}", m.slice + 1)
+                    }
+                );
+            }
+            None => {
+                let _ = writeln!(s, "  {label:<13} no loaded contact");
+            }
+        }
+    }
+    if let Some(r) = t.rollers.iter().find(|r| r.flange.load_n > 0.0) {
+        let f = &r.flange;
+        let _ = writeln!(
+            s,
+            "  roller end / rib: sliding {:.3} m/s, entraining {:.3} m/s, h_min = {:.3} {ru}, Lambda = {:.2}, mu = {:.4}, k = {:.3}",
+            f.sliding_m_s,
+            f.entrainment_m_s,
+            rough.from_si(f.min_film_m, units),
+            f.lambda,
+            f.friction_coefficient,
+            f.ellipticity
+        );
+    }
+    let f = &t.friction;
+    let _ = writeln!(
+        s,
+        "\nFRICTION  torque {:.4} {mu}  power {:.1} {pu}  at {:.1} rad/s",
+        Quantity::Moment.from_si(f.torque_nm, units),
+        Quantity::Power.from_si(f.power_w(), units),
+        f.relative_speed_rad_s
+    );
+    for m in &f.mechanisms {
+        let _ = writeln!(
+            s,
+            "  {:<24} {:>12.3} {pu}",
+            m.name,
+            Quantity::Power.from_si(m.power_w, units)
+        );
+    }
+    match &a.thermal {
+        Some(Ok(th)) => {
+            let tu = Quantity::Temperature.unit(units);
+            let _ = writeln!(
+                s,
+                "\nTHERMAL (steady; heat in {:.1} {pu}, balance {:.2e} W)",
+                Quantity::Power.from_si(th.steady.heat_in_w, units),
+                th.steady.balance_w
+            );
+            for n in &th.steady.nodes {
+                let _ = writeln!(
+                    s,
+                    "  {:<16} {:>9.2} {tu}{}",
+                    n.name,
+                    Quantity::Temperature
+                        .from_si(n.temperature_c + crate::units::CELSIUS_ZERO_K, units),
+                    if n.fixed { " (fixed)" } else { "" }
+                );
+            }
+            if let Some(tr) = &th.transient {
+                for n in &tr.nodes {
+                    if let Some(tl) = n.time_to_limit_s {
+                        let _ = writeln!(
+                            s,
+                            "  loss of oil: {} reaches its limit after {tl:.1} s",
+                            n.name
+                        );
+                    }
+                }
+            }
+        }
+        Some(Err(e)) => {
+            let _ = writeln!(s, "\nTHERMAL: {e}");
+        }
+        None => {}
+    }
     s
 }

@@ -14,6 +14,7 @@ use crate::bearings::{
 use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
+use crate::thermal::ThermalModel;
 use crate::units::{restate_si, Units};
 
 /// The shipped example deck: the seed's §3.1 sample.
@@ -40,7 +41,7 @@ pub static SYSTEM: TaperedRoller = TaperedRoller;
 
 impl FormSystem for TaperedRoller {
     type Input = TaperedInput;
-    type Derived = ();
+    type Derived = Option<ThermalModel>;
 
     fn registered() -> &'static Self {
         &SYSTEM
@@ -94,7 +95,7 @@ impl FormSystem for TaperedRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 6] = [
+        const PANES: [PaneSpec; 7] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -119,6 +120,10 @@ impl FormSystem for TaperedRoller {
                 kind: PaneKind::Sweep(0),
                 title: "Sweep",
             },
+            PaneSpec {
+                kind: PaneKind::Thermal,
+                title: "Thermal",
+            },
         ];
         &PANES
     }
@@ -127,13 +132,20 @@ impl FormSystem for TaperedRoller {
         EXAMPLE_DECK
     }
 
-    fn prepare(_form: &mut Form<TaperedInput>) -> Result<(), DeckErrors> {
-        Ok(())
+    /// The deck's `[thermal]` network built (errors name node, link and field).
+    fn prepare(form: &mut Form<TaperedInput>) -> Result<Option<ThermalModel>, DeckErrors> {
+        form.thermal_model()
+    }
+
+    fn has_transient(case: &TaperedCase) -> bool {
+        case.derived
+            .as_ref()
+            .is_some_and(|_| case.form.value.lubricant.is_given())
     }
 
     fn solve(
         case: &TaperedCase,
-        _options: RunOptions,
+        options: RunOptions,
         cancel: Cancel,
     ) -> Result<Box<dyn Solution>, String> {
         if cancel.is_cancelled() {
@@ -141,9 +153,15 @@ impl FormSystem for TaperedRoller {
         }
         // The errors are worded in SI deep in the solver; a US deck's user reads them in
         // lbf and inches like the other systems' (issue 24 item 15).
-        analyse(&case.form.value, &case.form.name)
-            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| restate_si(&e.to_string(), case.form.units))
+        let mut a = analyse(&case.form.value, &case.form.name)
+            .map_err(|e| restate_si(&e.to_string(), case.form.units))?;
+        with_thermal(
+            &mut a,
+            case.derived.as_ref(),
+            !options.skip_transient,
+            &cancel,
+        );
+        Ok(Box::new(TaperedSolution(a)))
     }
 
     fn fidelity(input: &TaperedInput) -> Option<Fidelity> {
@@ -157,6 +175,18 @@ impl FormSystem for TaperedRoller {
         input.solver.slices = f.resolution;
         input.solver.force_tolerance = f.tolerance;
         true
+    }
+}
+
+/// Solve the deck's thermal network on `a` (when the deck has one and a lubricant).
+fn with_thermal(a: &mut Analysis, model: Option<&ThermalModel>, transient: bool, cancel: &Cancel) {
+    if let Some(m) = model {
+        if a.bearing.input.lubricant.is_given() {
+            let cancelled = || cancel.is_cancelled();
+            a.thermal = Some(super::thermal::solve(a, m, transient, &cancelled));
+        } else {
+            a.thermal = Some(Err("thermal network: the deck has no lubricant (lubricant.viscosity = \"none\"), so no friction heat to feed it".to_string()));
+        }
     }
 }
 
@@ -213,7 +243,7 @@ impl Session for TaperedSession {
     fn solve(
         &mut self,
         case: &dyn Case,
-        _detail: Detail,
+        detail: Detail,
         cancel: &Cancel,
     ) -> Result<Box<dyn Solution>, SolveError> {
         let case = TaperedCase::of(case)?;
@@ -221,12 +251,14 @@ impl Session for TaperedSession {
             return Err(SolveError::Cancelled);
         }
         // The same message as `Case::solve`, so a sweep reads alike through either.
-        self.analyse(&case.form.value, &case.form.name)
-            .map(|a| Box::new(TaperedSolution(a)) as Box<dyn Solution>)
+        let mut a = self
+            .analyse(&case.form.value, &case.form.name)
             .map_err(|e| SolveError::Stage {
                 stage: SYSTEM_ID,
                 message: restate_si(&e.to_string(), case.form.units),
-            })
+            })?;
+        with_thermal(&mut a, case.derived.as_ref(), detail.transient, cancel);
+        Ok(Box::new(TaperedSolution(a)))
     }
 }
 
@@ -312,5 +344,25 @@ mod tests {
             .map(|r| r["state"].as_str().unwrap())
             .collect();
         assert!(states.contains(&"both-races") && states.contains(&"cup-and-flange"));
+    }
+
+    /// The lubricated deck's network balances: heat out = heat in to 1e-9 (a linear solve
+    /// of four free nodes: round-off), and the heat in is the friction's power (every
+    /// mechanism is bound to a node).
+    #[test]
+    fn lubricated_thermal_network_balances() {
+        let deck = include_str!("../../../decks/trb_afapl_lubricated.toml");
+        let case = SYSTEM.load(deck, "trb_afapl_lubricated.toml", &[]).unwrap();
+        let mut session = BearingSystem::session(&SYSTEM);
+        let sol = session
+            .solve(case.as_ref(), Detail::default(), &Cancel::NONE)
+            .unwrap();
+        let j = sol.json();
+        let th = &j["thermal"]["steady"];
+        let qin = th["heat_in_w"].as_f64().unwrap();
+        let qout = th["heat_out_w"].as_f64().unwrap();
+        assert!((qin - qout).abs() <= 1e-9 * qin, "{qin} {qout}");
+        let p = j["friction"]["power_w"].as_f64().unwrap();
+        assert!((qin / p - 1.0).abs() < 1e-12, "{qin} {p}");
     }
 }

@@ -145,6 +145,26 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
     ),
 ];
 
+/// A CSV-only column (the Rollers pane keeps its width).
+const fn csv_col(key: &'static str, q: Quantity) -> Column {
+    Column {
+        key,
+        quantity: q,
+        csv: Some(CsvStyle::Scientific),
+        screen: None,
+    }
+}
+
+/// Columns added to the `rollers` table when the deck gives a lubricant (issue 28): the
+/// thinnest loaded slice film on each raceway, and the rib contact's film, µ and power.
+pub const FILM_COLUMNS: [Column; 5] = [
+    csv_col("min_film_outer_m", Quantity::Length),
+    csv_col("min_film_inner_m", Quantity::Length),
+    csv_col("flange_min_film_m", Quantity::Length),
+    csv_col("flange_friction_coefficient", Quantity::Dimensionless),
+    csv_col("flange_power_w", Quantity::Dimensionless),
+];
+
 /// The states' names, by code (the JSON's `rollers[].state`).
 pub const STATE_NAMES: [&str; 3] = ["both-races", "cup-and-flange", "free"];
 
@@ -160,6 +180,7 @@ fn state_code(s: super::roller::RollerState) -> f64 {
 /// The view of a solved case.
 pub fn view(a: &Analysis) -> View {
     let sol = &a.solution;
+    let trib = a.tribology.as_ref().and_then(|t| t.as_ref().ok());
     let rows: Vec<Vec<Option<f64>>> = sol
         .rollers
         .iter()
@@ -183,9 +204,30 @@ pub fn view(a: &Analysis) -> View {
             ]
             .into_iter()
             .map(Some)
+            .chain(trib.into_iter().flat_map(|t| {
+                let f = &t.rollers[q];
+                let min = |s: &[super::tribology::SliceFilm]| {
+                    s.iter()
+                        .map(|x| x.min_film_m)
+                        .filter(|h| *h > 0.0)
+                        .reduce(f64::min)
+                };
+                let loaded = f.flange.load_n > 0.0;
+                [
+                    min(&f.cup),
+                    min(&f.cone),
+                    loaded.then_some(f.flange.min_film_m),
+                    loaded.then_some(f.flange.friction_coefficient),
+                    Some(f.flange.power_w),
+                ]
+            }))
             .collect()
         })
         .collect();
+    let mut columns = ROLLER_COLUMNS.to_vec();
+    if trib.is_some() {
+        columns.extend(FILM_COLUMNS);
+    }
     let azimuth = |q: usize| {
         let (c, s) = a.bearing.azimuth[q];
         s.atan2(c).to_degrees().rem_euclid(360.0)
@@ -309,7 +351,7 @@ pub fn view(a: &Analysis) -> View {
         quantity,
         role,
     };
-    let key_outputs = vec![
+    let mut key_outputs = vec![
         key(
             "axial_displacement_m",
             sol.displacement_m[2],
@@ -374,11 +416,21 @@ pub fn view(a: &Analysis) -> View {
             role: KeyRole::Guard,
         },
     ];
+    // Issue 28: the friction torque, judged by `bench` (only with a lubricant).
+    if let Some(t) = trib {
+        key_outputs.push(KeyOutput {
+            name: "friction_torque_nm",
+            label: "M",
+            value: Some(t.friction.torque_nm),
+            quantity: Quantity::Moment,
+            role: KeyRole::Target,
+        });
+    }
     View {
         system: super::SYSTEM_ID,
         tables: vec![Table {
             id: "rollers",
-            columns: ROLLER_COLUMNS.to_vec(),
+            columns,
             rows,
         }],
         charts: vec![load_chart],
@@ -387,7 +439,10 @@ pub fn view(a: &Analysis) -> View {
         summary,
         key_outputs,
         trace: None,
-        thermal: None,
+        thermal: match &a.thermal {
+            Some(Ok(th)) => Some(th.view()),
+            _ => None,
+        },
         stats: SolveStats {
             iterations: sol.iterations,
             // The final roller solves (each a Newton on its contact approaches).
