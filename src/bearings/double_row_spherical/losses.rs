@@ -87,6 +87,10 @@
 //! sliding vector). Without skew input (`RollerLossInput::skew = None`) ψ = 0 and every
 //! term is the unskewed one (`hand_built_case`).
 //!
+//! [`kellstrom`] (srb-kellstrom; opt-in, [`kellstrom::losses_self_guided`]) adds the
+//! roller's response to its axial tractions, the axial walk, solved with the yaw balance;
+//! its module notes say what it finds on the shipped deck and what it still holds.
+//!
 //! Neglected couplings (sizes printed by `losses_tests::skew_couplings_print`):
 //! * the statics: the lamina normal loads are the statics' at ψ = 0; the skew's end load Q
 //!   and the axial tractions' pitch couple (±ρ·F_a at the two raceways) would shift them;
