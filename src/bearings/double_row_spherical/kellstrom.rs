@@ -264,9 +264,9 @@ pub fn settle(
     let tol = TRACTION_LOAD_TOLERANCE * q_ref;
     let mut loads = start.to_vec();
     let mut state = resolve(base, &loads)?;
-    let mut resolves = 1;
     let (mut worst, mut change) = (0usize, 0.0f64);
-    for _ in 0..MAX_FIXED_POINT {
+    // `resolves` re-solves so far: the first above, one more per step below.
+    for resolves in 1..=MAX_FIXED_POINT {
         let k = loss_kinematics(&state)?;
         let ys = yaw_at(&k, wc, spins, psi)?;
         (worst, change) = (0, 0.0);
@@ -284,7 +284,6 @@ pub fn settle(
         }
         loads = ys.iter().map(|y| y.load).collect();
         state = resolve(base, &loads)?;
-        resolves += 1;
     }
     Err(LossError::SelfGuidanceNotConverged {
         roller: worst + 1,
