@@ -87,6 +87,10 @@
 //! sliding vector). Without skew input (`RollerLossInput::skew = None`) ψ = 0 and every
 //! term is the unskewed one (`hand_built_case`).
 //!
+//! [`kellstrom`] (srb-kellstrom; opt-in, [`kellstrom::losses_self_guided`]) adds the
+//! roller's response to its axial tractions, the axial walk, solved with the yaw balance;
+//! its module notes say what it finds on the shipped deck and what it still holds.
+//!
 //! Neglected couplings (sizes printed by `losses_tests::skew_couplings_print`):
 //! * the statics: the lamina normal loads are the statics' at ψ = 0; the skew's end load Q
 //!   and the axial tractions' pitch couple (±ρ·F_a at the two raceways) would shift them;
@@ -164,7 +168,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::input::{CageLand as DeckCageLand, CageSpeedSource, DoubleRowInput, Traction};
-use super::skew::{roller_skew, RollerSkew, SkewGeometry};
+use super::skew::{roller_skew, roller_skew_at, RollerSkew, SkewGeometry};
 use super::statics::DoubleRowAnalysis;
 use crate::bearings::spherical_roller::load_distribution::DynamicSpeeds;
 use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
@@ -251,6 +255,12 @@ pub struct RollerSkewSpeeds {
     pub inner_m_s: Vec<f64>,
     /// Outer raceway laminae, m/s.
     pub outer_m_s: Vec<f64>,
+    /// The skew solved with the roller's balance (`[cage] skew = "self-guided"`,
+    /// `kellstrom`), rad: the breakdown evaluates the roller at this ψ (the pocket reacts
+    /// the yaw balance's residual, the guide ring's end load is the statics' own) instead
+    /// of searching ψ with the loads held. `None`: searched (`skew.rs`).
+    #[serde(default)]
+    pub prescribed_skew_rad: Option<f64>,
 }
 
 /// Lubricant of the loss model, SI.
@@ -504,6 +514,28 @@ pub enum LossError {
         cage_rpm: f64,
         /// The imbalance there, N·m.
         imbalance_nm: f64,
+    },
+    /// The roller balance with the skew's tractions (`[cage] skew = "self-guided"`) did not
+    /// converge for a roller.
+    #[error("cage skew = \"self-guided\": roller {roller} ({what}) did not converge: {residual} left against a tolerance of {tolerance} after {iterations} iterations")]
+    SelfGuidanceNotConverged {
+        /// Roller index (1-based over both rows).
+        roller: usize,
+        /// Which balance: the yaw moment (N·m), the traction loads' fixed point (N) or the
+        /// roller's meridian equilibrium (N).
+        what: &'static str,
+        /// What was left.
+        residual: f64,
+        /// Its tolerance.
+        tolerance: f64,
+        /// Iterations spent.
+        iterations: usize,
+    },
+    /// The roller re-solve with the skew's tractions left the model.
+    #[error("cage skew = \"self-guided\": re-solving the rollers with their tractions failed ({what}); set cage.skew = \"pocket\" to compute the losses without it")]
+    SelfGuidanceStatics {
+        /// What failed.
+        what: &'static str,
     },
     /// An input outside its range.
     #[error("{name} = {value} is not usable: it must be {allowed}")]
@@ -776,13 +808,24 @@ fn roller_skews(inputs: &LossInputs) -> Result<Vec<RollerSkew>, LossError> {
                 }
                 None => (&off, [none, none]),
             };
-            roller_skew(
-                lub.law,
-                &lub.rheology,
-                geometry,
-                [&r.inner, &r.outer],
-                speeds,
-            )
+            match r.skew.as_ref().and_then(|sp| sp.prescribed_skew_rad) {
+                Some(psi) => roller_skew_at(
+                    lub.law,
+                    &lub.rheology,
+                    geometry,
+                    [&r.inner, &r.outer],
+                    speeds,
+                    psi,
+                    r.guide_ring_load_n,
+                ),
+                None => roller_skew(
+                    lub.law,
+                    &lub.rheology,
+                    geometry,
+                    [&r.inner, &r.outer],
+                    speeds,
+                ),
+            }
             .map_err(|e| LossError::Lamina {
                 roller: k,
                 raceway: if e.raceway == 0 { "inner" } else { "outer" },
@@ -895,6 +938,12 @@ struct LaminaKinematics {
     ring_axis_distance_m: f64,
     /// Distance of the roller point from the roller axis, m (entrainment).
     roller_axis_distance_m: f64,
+    /// The contact point minus the roller centre, (axial, radial) in the row's frame, m:
+    /// the arm of an axial traction's pitch moment (`kellstrom`).
+    arm_m: [f64; 2],
+    /// The unit tangent of the contact in the meridian plane (normal to the lamina's
+    /// contact normal, along +a): the direction of an axial traction (`kellstrom`).
+    tangent: [f64; 2],
 }
 
 /// One roller's contacts with the speeds factored out.
@@ -1421,7 +1470,7 @@ impl LossKinematics {
     }
 
     /// The loss inputs at cage speed `wc` with the rollers at `spins`.
-    fn inputs_with(&self, wc: f64, spins: &[RollerSpin]) -> LossInputs {
+    pub(super) fn inputs_with(&self, wc: f64, spins: &[RollerSpin]) -> LossInputs {
         let ring_w = [self.common.inner_speed_rad_s, self.common.outer_speed_rad_s];
         let mut out = self.common.clone();
         out.cage_speed_rad_s = wc;
@@ -1451,6 +1500,7 @@ impl LossKinematics {
                     skew: self.with_skew.then(|| RollerSkewSpeeds {
                         inner_m_s: r.sides[0].iter().map(|l| l.spin_arm_m * s).collect(),
                         outer_m_s: r.sides[1].iter().map(|l| l.spin_arm_m * s).collect(),
+                        prescribed_skew_rad: None,
                     }),
                 }
             })
@@ -1795,6 +1845,20 @@ pub fn loss_kinematics(a: &DoubleRowAnalysis) -> Result<LossKinematics, LossErro
                         spin_arm_m: -sliding_velocity(p, 0.0, 0.0, centre, axis, 1.0),
                         ring_axis_distance_m: ct.ring_axis_distance_m,
                         roller_axis_distance_m: ct.roller_axis_distance_m,
+                        arm_m: [p[0] - centre[0], p[1] - centre[1]],
+                        tangent: {
+                            let n = if k == 0 {
+                                l.inner_normal
+                            } else {
+                                l.outer_normal
+                            };
+                            let t = [n[1], -n[0]];
+                            if t[0] * axis[0] + t[1] * axis[1] >= 0.0 {
+                                t
+                            } else {
+                                [-t[0], -t[1]]
+                            }
+                        },
                     });
                 }
             }
@@ -1902,6 +1966,11 @@ pub fn losses(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
 pub fn losses_skewed(a: &DoubleRowAnalysis) -> Result<LossBreakdown, LossError> {
     losses_of(loss_kinematics(a)?.skewed())
 }
+
+/// The loaded rollers' self-guidance: skew and axial walk with each roller's balance
+/// (`[cage] skew = "self-guided"`).
+#[path = "kellstrom.rs"]
+pub mod kellstrom;
 
 fn losses_of(k: LossKinematics) -> Result<LossBreakdown, LossError> {
     let mut b = if k.computed_cage {

@@ -316,6 +316,50 @@ pub fn roller_skew(
     Ok(best)
 }
 
+/// A roller at a given skew ψ (solved elsewhere with its loads: `[cage] skew =
+/// "self-guided"`, `losses::kellstrom`): the tractions at ψ, the guide ring's yaw moment
+/// M_g = −(r_e − L/2)·ψ·Q with Q = `end_load_n` (the statics' end load, which already holds
+/// the axial tractions' push), and the pocket's share h = M_s(ψ) + M_g (the yaw balance's
+/// residual inside the play; what the pocket stops at |ψ| = ψ_max). `unskewed_yaw_moment_nm`
+/// is M_s at ψ = 0 on the same laminae; `guide_ring_load_n` is 0 (no end load beyond the
+/// statics'). ψ = 0 is exactly the unskewed roller.
+///
+/// # Errors
+/// [`SkewLaminaError`] naming the raceway and lamina whose traction failed.
+pub fn roller_skew_at(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    geometry: &SkewGeometry,
+    laminae: [&[LaminaSlice]; 2],
+    roller_speeds: [&[f64]; 2],
+    psi: f64,
+    end_load_n: f64,
+) -> Result<RollerSkew, SkewLaminaError> {
+    let [i0, o0] = contacts_at(law, rheology, laminae, roller_speeds, 0.0)?;
+    let m0 = i0.yaw_moment_nm + o0.yaw_moment_nm;
+    let [inner, outer] = if psi == 0.0 {
+        [i0, o0]
+    } else {
+        contacts_at(law, rheology, laminae, roller_speeds, psi)?
+    };
+    let mg = geometry
+        .end_offset_per_rad_m
+        .map_or(0.0, |off| -off * psi * end_load_n.max(0.0));
+    let psi_max = geometry.max_skew_rad;
+    Ok(RollerSkew {
+        skew_rad: psi,
+        unskewed_yaw_moment_nm: m0,
+        ring_moment_nm: mg,
+        pocket_moment_nm: inner.yaw_moment_nm + outer.yaw_moment_nm + mg,
+        axial_traction_n: inner.axial_n + outer.axial_n,
+        guide_ring_load_n: 0.0,
+        inner,
+        outer,
+        pocket_limited: psi_max > 0.0 && psi.abs() >= psi_max * (1.0 - 1e-12),
+        evaluations: if psi == 0.0 { 1 } else { 2 },
+    })
+}
+
 /// The skew search stops when |h(ψ)| ≤ this × |M_s(0)| (or the bracket is below 1e-12 of
 /// ψ_max).
 pub const SKEW_MOMENT_TOLERANCE: f64 = 1e-9;

@@ -116,7 +116,7 @@ pub fn combine_l10(rows: &[Option<f64>]) -> Option<f64> {
 }
 
 /// Rollers `row` (0-based) of a multi-row load distribution as a single-row one.
-fn split(ld: &LoadDistribution, row: usize, z: usize) -> LoadDistribution {
+pub(super) fn split(ld: &LoadDistribution, row: usize, z: usize) -> LoadDistribution {
     let range = row * z..(row + 1) * z;
     let mut out = ld.clone();
     out.rollers = ld.rollers[range.clone()].to_vec();

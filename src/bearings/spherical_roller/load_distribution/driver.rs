@@ -23,7 +23,7 @@ impl Problem {
     /// damped Newton ([`Newton`]) on [`RollerSystem`]. A line search that stalls with the
     /// residual within 10³ of the tolerance, or a budget that runs out within it, still
     /// counts as converged; `q` is left where Newton left it either way.
-    fn solve_roller(
+    pub(super) fn solve_roller(
         &self,
         index: usize,
         cphi: f64,

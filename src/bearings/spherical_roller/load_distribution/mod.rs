@@ -407,6 +407,104 @@ pub fn solve(
     Ok(out)
 }
 
+/// Re-solve every roller of a solved load distribution `ld` with an extra generalised load
+/// on it, the ring deflection and the floating guide ring's offset held at `ld`'s: the
+/// roller balance of the double row's self-guided skew (issue 27; `double_row_spherical`'s
+/// `losses::kellstrom`). `extra[r]` is roller r's load (all rows, `ld.rollers`' order) in its
+/// row's frame: (axial force N, radial force N, pitch moment N·m), the pitch moment positive
+/// where it turns the roller axis as a positive `tilt_rad` does. It is held constant during
+/// the roller's Newton (energy −e·q), so the caller iterates it with the state it depends on.
+/// A roller whose load is exactly zero keeps `ld`'s state bit for bit (no solve). Mirrored
+/// rollers (`ld.mirror`) take their representative's state: their loads must mirror too,
+/// and only the representative's is read. The single-row bearing never calls this.
+///
+/// # Errors
+/// [`SolveError::RollerNotConverged`] naming the roller (1-based over all rows), its
+/// residual and the tolerance; [`SolveError::NonFinite`]; [`SolveError::Stage`] when
+/// `extra` does not hold one load per roller of `ld`.
+pub fn resolve_rollers_with_loads(
+    b: &Bearing,
+    layout: Layout,
+    ld: &LoadDistribution,
+    extra: &[[f64; 3]],
+) -> Result<LoadDistribution, SolveError> {
+    let p = Problem::with_layout(b, &ld.speeds, b.solver.force_tolerance, layout);
+    p.guide_offset.set(ld.guide_offset_m);
+    let z = b.geometry.roller_count;
+    let u = [ld.axial_deflection_m, ld.radial_deflection_m];
+    let mut qs: Vec<nalgebra::Vector3<f64>> = ld
+        .warm
+        .rollers
+        .iter()
+        .map(|q| nalgebra::Vector3::new(q[0], q[1], q[2]))
+        .collect();
+    if qs.len() != p.unique.len() || extra.len() != ld.rollers.len() {
+        return Err(SolveError::Stage {
+            stage: "roller re-solve with tractions",
+            message: format!(
+                "{} loads given for {} rollers ({} unique states for {} in the problem)",
+                extra.len(),
+                ld.rollers.len(),
+                qs.len(),
+                p.unique.len()
+            ),
+        });
+    }
+    let (_, per_row) = p.per_row;
+    let mut iterations = 0;
+    let mut worst_force = ld.residuals.roller_force_n;
+    let mut worst_moment = ld.residuals.roller_moment_nm;
+    for (ku, q) in qs.iter_mut().enumerate() {
+        // The representative of unique roller ku: row ku / n, roller j = ku % n (unique_index
+        // maps j ≤ Z/2 to itself).
+        let r = (ku / per_row) * z + ku % per_row;
+        let e = extra[r];
+        if e == [0.0; 3] {
+            continue;
+        }
+        p.extra_load
+            .set(Some(nalgebra::Vector3::new(e[0], e[1], e[2])));
+        p.roller_tol.set(p.tol);
+        let cphi = p.unique[ku].0;
+        let solved = p.solve_roller(ku, cphi, p.local_u(ku, u), q, &mut iterations, None);
+        p.extra_load.set(None);
+        let ev = solved.map_err(|e| match e {
+            SolveError::RollerNotConverged {
+                iterations,
+                residual,
+                tolerance,
+                ..
+            } => SolveError::RollerNotConverged {
+                roller: r + 1,
+                iterations,
+                residual,
+                tolerance,
+            },
+            other => other,
+        })?;
+        worst_force = worst_force.max(ev.g_q[0].abs().max(ev.g_q[1].abs()));
+        worst_moment = worst_moment.max(ev.g_q[2].abs());
+    }
+    let mut out = assemble(b, &p, u, &qs, ld.residuals, &ld.speeds);
+    // assemble's roller residuals leave the extra loads out: the solves' own residuals.
+    out.residuals.roller_force_n = worst_force;
+    out.residuals.roller_moment_nm = worst_moment;
+    // Rollers whose load was zero keep ld's results exactly (assemble recomputes them from
+    // the same state, which is the same arithmetic; copied to be certain).
+    for (k, r) in out.rollers.iter_mut().enumerate() {
+        let rep = ld.mirror.get(k).copied().flatten().unwrap_or(k);
+        if extra.get(rep).is_some_and(|e| *e == [0.0; 3]) {
+            *r = ld.rollers[k].clone();
+        }
+    }
+    out.mirror = ld.mirror.clone();
+    out.stats = ld.stats;
+    out.stats.roller_iterations += iterations;
+    out.stats.lamina_evaluations += p.evals.get();
+    out.warm.inertial = ld.warm.inertial.clone();
+    Ok(out)
+}
+
 impl Problem {
     /// The ring equilibrium (eq. 3.12–3.13) at the problem's current guide ring offset:
     /// [`Problem::solve_ring`] with its ending read as converged or as a typed error.

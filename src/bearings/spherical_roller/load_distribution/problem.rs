@@ -50,6 +50,10 @@ pub(super) struct Problem {
     /// Scale of the roller unknowns (axial, radial, pitch) in the Newton step: pitch by
     /// l_ref so the three unknowns have comparable units.
     pub(super) scale: Vector3<f64>,
+    /// An extra generalised load (axial, radial, pitch) on the roller being solved, N, N, N·m:
+    /// the raceway tractions of a skewed roller ([`super::resolve_rollers_with_loads`]).
+    /// `None` in every load-distribution solve, so their arithmetic is untouched.
+    pub(super) extra_load: std::cell::Cell<Option<Vector3<f64>>>,
 }
 
 /// Scalar sums of one roller's energy, gradient and Hessian blocks (upper triangles).
@@ -253,6 +257,7 @@ impl Problem {
             roller_tol: std::cell::Cell::new(0.0),
             max_step: 0.1 * g.roller_diameter_m,
             scale: Vector3::new(1.0, 1.0, 1.0 / l_ref),
+            extra_load: std::cell::Cell::new(None),
         }
     }
 
@@ -423,6 +428,11 @@ impl Problem {
         let f = self.f_ext();
         ev.energy -= f.dot(q);
         ev.g_q -= f;
+        if let Some(e) = self.extra_load.get() {
+            // A constant load: energy −e·q (the tractions held fixed within one solve).
+            ev.energy -= e.dot(q);
+            ev.g_q -= e;
+        }
         // Cage pocket: springs on the position along the roller axis and on pitch.
         let a = self.geom.axis;
         let s = q[0] * a[0] + q[1] * a[1];
