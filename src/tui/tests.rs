@@ -2050,8 +2050,11 @@ fn tui_contact_pane_reads_back_contact_json() {
         }
     }
     // The charts: the most loaded position's p (and Hertz) and h, from its profile.
+    // The flooded row of the most loaded position (its Tipei row has the same load but
+    // its own grid): the charts' first series.
     let top = rows
         .iter()
+        .filter(|r| r["inlet"] == "flooded")
         .max_by(|a, b| {
             let w = |r: &serde_json::Value| r["load_n"].as_f64().unwrap_or(f64::NAN);
             w(a).total_cmp(&w(b))
