@@ -298,7 +298,8 @@ pub fn contact_command(
         let code = match e {
             ContactError::NotBuilt(_) => exit::UNSUPPORTED,
             ContactError::Input(_) => exit::INVALID_INPUT,
-            ContactError::Dynamics(_)
+            ContactError::Cancelled
+            | ContactError::Dynamics(_)
             | ContactError::Solve { .. }
             | ContactError::Thermal { .. }
             | ContactError::Tipei { .. }

@@ -2021,6 +2021,113 @@ fn tui_tabs_name_every_pane_at_60_columns() {
         assert!(
             header.contains("aerospace.toml") && header.contains("US"),
             "{header:?}"
+
+/// The cylindrical Contact pane (issue 26) shows what `rollbench contact --format json`
+/// gives for the same deck: the shipped truck deck on its quasi-statics
+/// (`dynamics.revolutions = 0`) with `contact.inlet = "both"`, the pane's job run as the
+/// worker runs it, each Table-3 line of the pane (SI) read back and compared with the
+/// JSON entry of the same position and inlet to half a unit of the last digit shown
+/// (W 1 N, h 0.001 µm, p 1 MPa, f 0.01 N, µ 1e-4, loss 0.1 W); the charts are of the
+/// most loaded position, p and the Hertz pressure from its JSON profile.
+#[test]
+fn tui_contact_pane_reads_back_contact_json() {
+    use crate::cli::{contact_command, ContactInletArg, ContactModelArg, Format};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/decks/crb_truck.toml");
+    let text = std::fs::read_to_string(path)
+        .expect("deck")
+        .replace("\nrevolutions = 100", "\nrevolutions = 0")
+        .replace("\n[contact]\n", "\n[contact]\ninlet = \"both\"\n");
+    assert!(text.contains("\nrevolutions = 0") && text.contains("inlet = \"both\""));
+    let deck = DeckDoc::parse(&text, "decks/crb_truck.toml").expect("deck loads");
+    let mut app = App::new(deck, None);
+    app.handle(AppEvent::Resize(200, 50));
+    let cmds = app.start();
+    run_sync(&mut app, cmds);
+    assert_eq!(app.pane_title(Pane::Job(0)), "Contact");
+    app.focus = Pane::Job(0);
+    let cmds = app.handle(AppEvent::Resize(200, 50));
+    run_sync(&mut app, cmds);
+    let (_, _, v) = app.job.clone().expect("the Contact job reported");
+    assert!(v.finished && v.errors.is_empty(), "{:?}", v.errors);
+    let case = app.deck.case();
+    let json = contact_command(
+        &*case,
+        &[],
+        ContactInletArg::Both,
+        ContactModelArg::LineEhl,
+        false,
+        Format::Json,
+    )
+    .expect("contact solves");
+    let j: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let rows = j["contact"].as_array().expect("rows");
+    assert_eq!(rows.len(), 6, "3 positions × 2 inlets");
+    let lines: Vec<&str> = v.notes.iter().map(|n| n.si.as_str()).collect();
+    assert_eq!(lines.len(), 2 + rows.len(), "{lines:?}");
+    assert!(lines[0].contains("film µm") && lines[0].contains("pressure MPa"));
+    for (row, line) in rows.iter().zip(&lines[2..]) {
+        let t: Vec<&str> = line.split_whitespace().collect();
+        let num = |k: usize| t[k].parse::<f64>().expect("a number");
+        let f = |key: &str| row[key].as_f64().expect(key);
+        // The deck's degrees went through radians: equal to a rounding, shown whole.
+        assert!((num(0) - f("position_deg")).abs() <= 0.5, "{line}");
+        let inlet = if row["inlet"] == "flooded" {
+            "flood"
+        } else {
+            "tipei"
+        };
+        assert_eq!(t[1], inlet, "{line}");
+        for (k, key, scale, half) in [
+            (2, "load_n", 1.0, 0.5),
+            (3, "central_film_m", 1e6, 5e-4),
+            (4, "min_film_m", 1e6, 5e-4),
+            (5, "max_pressure_pa", 1e-6, 0.5),
+            (6, "boundary_friction_n", 1.0, 5e-3),
+            (7, "viscous_friction_n", 1.0, 5e-3),
+            (8, "friction_coefficient", 1.0, 5e-5),
+            (9, "power_loss_w", 1.0, 5e-2),
+        ] {
+            let want = f(key) * scale;
+            assert!(
+                (num(k) - want).abs() <= half * (1.0 + 1e-9),
+                "{key}: shown {} vs json {want} ({line})",
+                t[k]
+            );
+        }
+    }
+    // The charts: the most loaded position's p (and Hertz) and h, from its profile.
+    // The flooded row of the most loaded position (its Tipei row has the same load but
+    // its own grid): the charts' first series.
+    let top = rows
+        .iter()
+        .filter(|r| r["inlet"] == "flooded")
+        .max_by(|a, b| {
+            let w = |r: &serde_json::Value| r["load_n"].as_f64().unwrap_or(f64::NAN);
+            w(a).total_cmp(&w(b))
+        })
+        .expect("a row");
+    let profile = &top["profile"];
+    let (p, h) = (&v.charts[0], &v.charts[1]);
+    assert_eq!(p.series[0].name, "p flooded");
+    assert_eq!(p.series[2].name, "Hertz");
+    assert_eq!(h.series[1].name, "h Tipei");
+    let xs = profile["x_m"].as_array().expect("x");
+    assert_eq!(p.series[0].points.len(), xs.len());
+    // serde_json's text round trip is exact to an ulp or so: 1e-12 relative.
+    let same = |a: f64, b: &serde_json::Value| {
+        let b = b.as_f64().expect("a number");
+        (a - b).abs() <= 1e-12 * b.abs()
+    };
+    for (i, (x, pv)) in p.series[0].points.iter().enumerate() {
+        assert!(same(*x, &xs[i]), "x {i}");
+        assert!(same(*pv, &profile["pressure_pa"][i]), "p {i}");
+        assert!(
+            same(p.series[2].points[i].1, &profile["hertz_pressure_pa"][i]),
+            "p_H {i}"
+        );
+        assert!(
+            same(h.series[0].points[i].1, &profile["film_m"][i]),
+            "h {i}"
         );
     }
 }

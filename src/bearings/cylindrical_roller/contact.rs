@@ -132,6 +132,9 @@ pub enum ContactError {
         /// The inlet's error.
         source: TipeiError,
     },
+    /// Cancelled by the caller (the workbench: a newer edit).
+    #[error("contact: cancelled")]
+    Cancelled,
     /// The friction integral's inputs were out of range.
     #[error("contact at cage position {position_deg}°: {source}")]
     Friction {
@@ -224,9 +227,16 @@ fn loads(
     input: &CylindricalInput,
     derived: &Derived,
     positions: &[f64],
+    cancel: Cancel<'_>,
 ) -> Result<Loads, ContactError> {
     if input.dynamics.revolutions > 0 {
-        let t = tribodynamics(input, derived, Cancel::NONE)?;
+        let t = tribodynamics(input, derived, cancel).map_err(|e| {
+            if cancel.is_cancelled() {
+                ContactError::Cancelled
+            } else {
+                ContactError::Dynamics(e)
+            }
+        })?;
         let s = &t.dynamics.series;
         let dt = s.dt_s;
         let n = s.t_s.len();
@@ -267,8 +277,13 @@ fn loads(
             at,
         })
     } else {
-        let a = analyse(input, "contact", &Cancel::NONE)
-            .map_err(|e| ContactError::Input(format!("contact: the quasi-statics failed: {e}")))?;
+        let a = analyse(input, "contact", &cancel).map_err(|e| {
+            if cancel.is_cancelled() {
+                ContactError::Cancelled
+            } else {
+                ContactError::Input(format!("contact: the quasi-statics failed: {e}"))
+            }
+        })?;
         let rollers = &a.statics.rollers;
         if rollers.is_empty() {
             return Err(ContactError::Input("no rollers".to_string()));
@@ -520,11 +535,30 @@ impl Setup<'_> {
     }
 }
 
-/// Solve the contact at each position (progress on `progress(done, total)`).
+/// Solve the contact at each position (progress on `progress(done, total, position_deg)`).
 pub fn contact_study(
     input: &CylindricalInput,
     options: &ContactOptions,
     mut progress: impl FnMut(usize, usize, f64),
+) -> Result<ContactStudy, ContactError> {
+    contact_study_cancellable(input, options, Cancel::NONE, &mut |done, total, pos, _| {
+        progress(done, total, pos)
+    })
+}
+
+/// What [`contact_study_cancellable`] tells as it goes: (positions done, positions,
+/// the next position in deg — NaN at the end —, the rows so far).
+pub type ContactProgress<'a> = &'a mut dyn FnMut(usize, usize, f64, &[ContactRow]);
+
+/// [`contact_study`] that `cancel` stops (between positions and in the dynamics:
+/// [`ContactError::Cancelled`]), telling `progress(done, total, position_deg, rows so far)`
+/// before each position and at the end (the workbench's Contact pane draws the rows as
+/// they come).
+pub fn contact_study_cancellable(
+    input: &CylindricalInput,
+    options: &ContactOptions,
+    cancel: Cancel<'_>,
+    progress: ContactProgress<'_>,
 ) -> Result<ContactStudy, ContactError> {
     if options.model == ContactModel::FiniteLineEhl {
         return Err(ContactError::NotBuilt("--model finite-line-ehl"));
@@ -551,7 +585,7 @@ pub fn contact_study(
         )));
     }
     let derived = derive(input);
-    let loads = loads(input, &derived, &positions)?;
+    let loads = loads(input, &derived, &positions, cancel)?;
     let m = &input.materials;
     let e_star = reduced_modulus(elastic(&m.roller), elastic(&m.inner));
     let u = derived.entrainment_speed_m_s;
@@ -574,7 +608,10 @@ pub fn contact_study(
     let mut warm: Option<LineEhlSolution> = None;
     let total = positions.len();
     for (i, (&pos, &(load, approach, previous))) in positions.iter().zip(&loads.at).enumerate() {
-        progress(i, total, pos);
+        progress(i, total, pos, &rows);
+        if cancel.is_cancelled() {
+            return Err(ContactError::Cancelled);
+        }
         if !(load > 0.0) {
             return Err(ContactError::Input(format!(
                 "contact at cage position {pos}°: the roller is unloaded (W_i = {load:.3} N); no EHL contact to solve"
@@ -601,7 +638,7 @@ pub fn contact_study(
             rows.push(setup.row(pos, "tipei", load, approach, m_i, f)?);
         }
     }
-    progress(total, total, f64::NAN);
+    progress(total, total, f64::NAN, &rows);
     Ok(ContactStudy {
         load_source: loads.source,
         thermal: options.thermal,
@@ -925,6 +962,86 @@ mod tests {
         }
     }
 
+    /// The line problem of the truck's flooded inner contact at load `load_n`, isothermal
+    /// at the inlet temperature, steady.
+    fn truck_problem(input: &CylindricalInput, load_n: f64) -> LineEhlProblem {
+        let derived = derive(input);
+        let m = &input.materials;
+        let e_star = reduced_modulus(elastic(&m.roller), elastic(&m.inner));
+        let (rr, len) = (derived.inner_reduced_radius_m, derived.effective_length_m);
+        let b = (8.0 * (load_n / len) * rr / (std::f64::consts::PI * 2.0 * e_star)).sqrt();
+        LineEhlProblem {
+            radius_m: rr,
+            reduced_modulus_pa: e_star,
+            entrainment_m_s: derived.entrainment_speed_m_s,
+            sliding_m_s: input.contact.sliding_speed_m_s,
+            load_per_length_n_m: load_n / len,
+            rheology: houpert(input),
+            x_inlet_m: -FLOODED_INLET_HALF_WIDTHS * b,
+            x_outlet_m: OUTLET_HALF_WIDTHS * b,
+            nodes: CONTACT_NODES,
+            squeeze: None,
+            temperature_k: None,
+            max_iterations: 100,
+            tolerance: 1e-8,
+        }
+    }
+
+    /// Speed (issue 26): the fast path — the chord method with a warm start's factors
+    /// reused — and the reference path — Newton with the exact Jacobian factorised every
+    /// iteration — reach the same root on the truck contact: cold at 0°, then warm at
+    /// 30° from 0°'s solution (the step along the cycle that reuses the factors), and the
+    /// fast path factorises less. Tolerance 1e-6 of p_H and of h: each path stops when
+    /// its step is below 1e-8 (of p_H, of h_c) while contracting at a rate ≤ 0.5, so each
+    /// is within ~1e-8 of the root; 1e-6 leaves a margin of 50 for the conditioning.
+    #[test]
+    fn chord_path_agrees_with_the_reference_path_on_the_truck_contact() {
+        use crate::physics::ehl::line::{solve_line_ehl_with, NewtonStrategy};
+        let mut input = CylindricalInput::truck();
+        input.dynamics.revolutions = 0;
+        let derived = derive(&input);
+        let loads = loads(&input, &derived, &[0.0, 30.0], Cancel::NONE).unwrap();
+        let (w0, w30) = (loads.at[0].0, loads.at[1].0);
+        assert!(w0 > 0.0 && w30 > 0.0 && w0 != w30, "{w0} {w30}");
+        let agree = |fast: &LineEhlSolution, full: &LineEhlSolution| {
+            let p_h = full.hertz_max_pressure_pa;
+            let dp = fast
+                .pressure_pa
+                .iter()
+                .zip(&full.pressure_pa)
+                .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()))
+                / p_h;
+            let dh = fast
+                .film_m
+                .iter()
+                .zip(&full.film_m)
+                .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()))
+                / full.central_film_m;
+            assert!(dp <= 1e-6, "pressure differs by {dp:e} of p_H");
+            assert!(dh <= 1e-6, "film differs by {dh:e} of h_c");
+        };
+        let p0 = truck_problem(&input, w0);
+        let fast0 = solve_line_ehl_with(&p0, None, NewtonStrategy::Chord).unwrap();
+        let full0 = solve_line_ehl_with(&p0, None, NewtonStrategy::Full).unwrap();
+        agree(&fast0, &full0);
+        assert!(fast0.factorisations < full0.factorisations);
+        let p30 = truck_problem(&input, w30);
+        let fast30 = solve_line_ehl_with(&p30, Some(&fast0), NewtonStrategy::Chord).unwrap();
+        let full30 = solve_line_ehl_with(&p30, None, NewtonStrategy::Full).unwrap();
+        agree(&fast30, &full30);
+        eprintln!(
+            "cold: chord {} steps / {} LU, full {} / {}; warm: chord {} / {}, full (cold) {} / {}",
+            fast0.iterations,
+            fast0.factorisations,
+            full0.iterations,
+            full0.factorisations,
+            fast30.iterations,
+            fast30.factorisations,
+            full30.iterations,
+            full30.factorisations
+        );
+    }
+
     /// Issue 26 Validation 3: Tipei's meniscus (eqs. 14–22) starves the truck contact at
     /// every position — thinner central and minimum films and more friction than the
     /// flooded inlet — and the inlet reported is Tipei's for the flooded central film
@@ -1139,7 +1256,7 @@ mod tests {
         let mut input = CylindricalInput::truck();
         input.dynamics.revolutions = 0;
         let derived = derive(&input);
-        let loads = loads(&input, &derived, &[0.0]).unwrap();
+        let loads = loads(&input, &derived, &[0.0], Cancel::NONE).unwrap();
         let load = loads.at[0].0;
         let m = &input.materials;
         let e_star = reduced_modulus(elastic(&m.roller), elastic(&m.inner));

@@ -415,18 +415,19 @@ pub static SCHEMA: Schema<CylindricalInput> = Schema {
         group_notes: &[],
         opaque_notes: &[(
             "contact",
-            "[contact] (optional): sliding_speed = 0.589 (m/s in both unit systems; default: Table 3's 23.95 W / 40.67 N), positions = [0, 30, 60] (cage angles in deg for the contact report)",
+            "[contact] (optional): sliding_speed = 0.589 (m/s in both unit systems; default: Table 3's 23.95 W / 40.67 N), positions = [0, 30, 60] (cage angles in deg for the contact report), inlet = \"flooded\" (the Contact pane's inlets: flooded, tipei or both)",
         )],
     },
 };
 
 /// The keys of `[contact]`.
-pub const CONTACT_KEYS: &[&str] = &["sliding_speed", "positions"];
+pub const CONTACT_KEYS: &[&str] = &["sliding_speed", "positions", "inlet"];
 
 /// Reads the deck's `[contact]` table into `form.value.contact`: `sliding_speed` (ΔU,
 /// m/s in both unit systems, 0 ≤ ΔU ≤ 1 000; default Table 3's power over force, 23.95 W /
 /// 40.67 N = 0.589 m/s) and `positions` (cage angles in deg, 1–360 finite numbers,
-/// default [0, 30, 60]). Errors name the key with file:line.
+/// default [0, 30, 60]) and `inlet` (the Contact pane's: "flooded", "tipei" or "both",
+/// default flooded). Errors name the key with file:line.
 pub fn contact_table(form: &mut Form<CylindricalInput>) -> Result<(), DeckErrors> {
     let defaults = CylindricalInput::truck().contact;
     let Some(table) = form.opaque.get("contact").cloned() else {
@@ -440,7 +441,7 @@ pub fn contact_table(form: &mut Form<CylindricalInput>) -> Result<(), DeckErrors
         return Err(DeckError::UnknownKey {
             location: loc(form, other),
             key: format!("contact.{other}"),
-            hint: " (allowed: sliding_speed, positions)".into(),
+            hint: " (allowed: sliding_speed, positions, inlet)".into(),
         }
         .into());
     }
@@ -491,6 +492,24 @@ pub fn contact_table(form: &mut Form<CylindricalInput>) -> Result<(), DeckErrors
             .into());
         }
         contact.positions_rad = list.iter().map(|a| a.to_radians()).collect();
+    }
+    if let Some(raw) = table.get("inlet") {
+        use super::contact::InletChoice;
+        contact.inlet = match raw.as_str() {
+            Some("flooded") => InletChoice::Flooded,
+            Some("tipei") => InletChoice::Tipei,
+            Some("both") => InletChoice::Both,
+            _ => {
+                return Err(DeckError::WrongType {
+                    location: loc(form, "inlet"),
+                    key: "contact.inlet".into(),
+                    value: raw.to_string(),
+                    expected: "\"flooded\", \"tipei\" or \"both\" (the Contact pane's inlets)"
+                        .into(),
+                }
+                .into())
+            }
+        };
     }
     form.value.contact = contact;
     Ok(())

@@ -182,6 +182,9 @@ pub struct ContactReport {
     pub sliding_speed_m_s: f64,
     /// Cage angles reported, rad.
     pub positions_rad: Vec<f64>,
+    /// The inlet(s) the workbench's Contact pane solves (`contact.inlet`: flooded,
+    /// tipei or both; default flooded). `rollbench contact` takes `--inlet` instead.
+    pub inlet: super::contact::InletChoice,
 }
 
 /// Solver settings of the lamina solve.
@@ -303,6 +306,7 @@ impl CylindricalInput {
             contact: ContactReport {
                 sliding_speed_m_s: DEFAULT_SLIDING_SPEED_M_S,
                 positions_rad: vec![0.0, 30f64.to_radians(), 60f64.to_radians()],
+                inlet: super::contact::InletChoice::Flooded,
             },
             solver: Solver {
                 slices: 21,

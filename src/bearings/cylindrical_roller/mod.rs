@@ -17,6 +17,7 @@
 pub mod analysis;
 pub mod answer;
 pub mod contact;
+pub mod contact_job;
 pub mod deck;
 pub mod dynamics;
 pub mod geometry;

@@ -6,7 +6,7 @@ use super::deck::SCHEMA;
 use super::input::CylindricalInput;
 use super::quasi_static::{QuasiStatic, QuasiStaticError};
 use super::SYSTEM_ID;
-use crate::bearings::view::{PaneKind, PaneSpec, View};
+use crate::bearings::view::{JobView, PaneKind, PaneSpec, View};
 use crate::bearings::{
     Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
     SweepPlan, SystemCase,
@@ -90,8 +90,27 @@ impl FormSystem for CylindricalRoller {
         })
     }
 
+    /// Job 0 the Contact pane ([`super::contact_job`]): the line-EHL contact study of the
+    /// deck's `contact.positions` and `contact.inlet`.
+    fn run_job(
+        &self,
+        n: usize,
+        case: &dyn Case,
+        cancel: Cancel<'_>,
+        report: &mut dyn FnMut(&JobView),
+    ) -> Option<Result<JobView, SolveError>> {
+        let case = case.as_any().downcast_ref::<CylindricalCase>()?;
+        match n {
+            0 => Some(
+                super::contact_job::contact_job(&case.form.value, cancel, report)
+                    .map_err(|e| e.in_units(case.form.units)),
+            ),
+            _ => None,
+        }
+    }
+
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 10] = [
+        const PANES: [PaneSpec; 11] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -131,6 +150,10 @@ impl FormSystem for CylindricalRoller {
             PaneSpec {
                 kind: PaneKind::Sweep(0),
                 title: "Sweep",
+            },
+            PaneSpec {
+                kind: PaneKind::Job(0),
+                title: "Contact",
             },
         ];
         &PANES

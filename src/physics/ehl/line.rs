@@ -30,7 +30,10 @@
 //! where holding P = 0 leaves the flow wanting a negative pressure), with H₀ as the extra
 //! unknown closed by the load balance. The Jacobian is exact: the Reynolds rows carry the
 //! dependence on every pressure through ε(H) and ρ̄H with H through the dense kernel.
-//! Dense LU with partial pivoting; a backtracking line search on the residual norm.
+//! Dense LU with partial pivoting; a backtracking line search on the residual norm. By
+//! default the LU is reused as a chord matrix (Shamanskii: [`NewtonStrategy::Chord`])
+//! while the residual contracts, and carried to a warm start on the same scaled grid; the
+//! exact Jacobian at every iteration ([`NewtonStrategy::Full`]) is the reference path.
 //! Cold start: Hertz pressure and H₀ from Pan–Hamrock's central film; warm start: a
 //! previous solution interpolated in Hertz-scaled X.
 //!
@@ -42,6 +45,7 @@ use crate::physics::contact::line::line_contact_reduced;
 use crate::physics::lubrication::film::{pan_hamrock_central, FilmInputs};
 use crate::physics::lubrication::houpert::{Houpert, Isothermal};
 use std::f64::consts::PI;
+use std::sync::Arc;
 use thiserror::Error;
 
 /// Largest grid the dense Newton accepts (`nodes`): its LU is O(n³), about 1.4·10⁹ flops
@@ -134,13 +138,73 @@ pub struct LineEhlSolution {
     pub hertz_half_width_m: f64,
     /// The film constant h₀ of eq. 6 with the kernel's reference absorbed in it, m.
     pub h0_m: f64,
-    /// Newton iterations taken.
+    /// Newton iterations taken (full and chord steps).
     pub iterations: usize,
+    /// Jacobians assembled and factorised (≤ `iterations`; 0 when a warm start's
+    /// factorisation carried the whole solve).
+    pub factorisations: usize,
     /// (∫p dx − w)/w.
     pub load_balance_residual: f64,
     /// Nodes whose film an iterate made negative (clamped to 0), summed over iterations.
     pub clamps: usize,
+    /// The last LU factorisation of the Newton matrix, for a warm start on the same grid
+    /// (a cache, not part of the answer: it compares equal to any other).
+    pub factorisation: Option<Arc<Factorisation>>,
 }
+
+/// The LU factors of a Newton matrix and the Hertz-scaled grid they belong to (a later
+/// solve on the same grid reuses them as its chord matrix: [`NewtonStrategy::Chord`]).
+#[derive(Clone)]
+pub struct Factorisation {
+    n: usize,
+    x0: f64,
+    dx: f64,
+    lu: Vec<f64>,
+    piv: Vec<usize>,
+}
+
+impl Factorisation {
+    /// Whether these factors belong to the scaled grid (n nodes from X₀ in steps ΔX).
+    fn fits(&self, n: usize, x0: f64, dx: f64) -> bool {
+        self.n == n && (self.x0 - x0).abs() <= 1e-9 * x0.abs() && (self.dx - dx).abs() <= 1e-9 * dx
+    }
+}
+
+impl std::fmt::Debug for Factorisation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "Factorisation {{ n: {}, x0: {}, dx: {} }}",
+            self.n, self.x0, self.dx
+        )
+    }
+}
+
+/// A cache: two solutions with the same numbers are equal whatever factors they carry.
+impl PartialEq for Factorisation {
+    fn eq(&self, _other: &Self) -> bool {
+        true
+    }
+}
+
+/// How the Newton iteration uses its matrix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NewtonStrategy {
+    /// The exact Jacobian assembled and factorised at every iteration, with the
+    /// backtracking line search (the reference path).
+    Full,
+    /// Shamanskii's chord method: one factorisation reused (from a warm start's solution
+    /// on the same grid too) while each chord step cuts the residual by at least
+    /// [`CHORD_CONTRACTION`]; a step that does not is discarded and the exact Jacobian
+    /// refactorised (then a full, line-searched Newton step). Converges to the same root
+    /// (the residual is the same; only the matrix that finds the step differs).
+    Chord,
+}
+
+/// A chord step is kept when it cuts the merit ‖Φ‖ to at most this fraction (linear
+/// convergence at rate ≤ 0.5 bounds the remaining error by the last step, so the
+/// convergence test on the step stays valid).
+pub const CHORD_CONTRACTION: f64 = 0.5;
 
 impl LineEhlSolution {
     /// ρh per node, kg/m²: the next step's squeeze history.
@@ -637,10 +701,22 @@ fn lu_solve(a: &[f64], piv: &[usize], b: &mut [f64], m: usize) -> Option<()> {
 }
 
 /// Solve a line-contact EHL problem, optionally warm-started from a previous solution
-/// (its pressure is carried over in Hertz-scaled X and its film constant in film units).
+/// (its pressure is carried over in Hertz-scaled X, its film constant in film units and,
+/// on the same scaled grid, its factorised Newton matrix): the chord path
+/// ([`NewtonStrategy::Chord`]).
 pub fn solve_line_ehl(
     problem: &LineEhlProblem,
     warm: Option<&LineEhlSolution>,
+) -> Result<LineEhlSolution, LineEhlError> {
+    solve_line_ehl_with(problem, warm, NewtonStrategy::Chord)
+}
+
+/// [`solve_line_ehl`] with the Newton strategy chosen ([`NewtonStrategy::Full`] is the
+/// reference path the chord path is tested against).
+pub fn solve_line_ehl_with(
+    problem: &LineEhlProblem,
+    warm: Option<&LineEhlSolution>,
+    strategy: NewtonStrategy,
 ) -> Result<LineEhlSolution, LineEhlError> {
     problem.validate()?;
     let e_star = problem.reduced_modulus_pa;
@@ -740,9 +816,23 @@ pub fn solve_line_ehl(
     let mut ws = Work::new(n);
     let mut phi = vec![0.0; m];
     let mut jac = vec![0.0; m * m];
+    let mut piv = vec![0usize; m];
+    // The chord path starts from a warm solution's factors when they belong to this grid.
+    let mut have_factor = false;
+    if strategy == NewtonStrategy::Chord {
+        if let Some(f) = warm
+            .and_then(|s| s.factorisation.as_deref())
+            .filter(|f| f.fits(n, x0, dx))
+        {
+            jac.copy_from_slice(&f.lu);
+            piv.copy_from_slice(&f.piv);
+            have_factor = true;
+        }
+    }
     let mut trial_p = vec![0.0; n];
     let mut trial_phi = vec![0.0; m];
     let mut clamps_total = 0;
+    let mut factorisations = 0;
     let singular = |iteration| LineEhlError::Singular {
         iteration,
         load_n_m: w,
@@ -752,16 +842,26 @@ pub fn solve_line_ehl(
     let mut last_step = f64::INFINITY;
     let mut last_norm = f64::INFINITY;
     let mut last_load = f64::INFINITY;
-    let mut piv = vec![0usize; m];
+    let mut delta = vec![0.0; m];
     for iteration in 1..=problem.max_iterations {
-        let (norm, _, clamps) =
-            scaled.residual(&p, h0, &mut phi, Some(jac.as_mut_slice()), &mut ws);
+        let refactor = strategy == NewtonStrategy::Full || !have_factor;
+        let (norm, _, clamps) = scaled.residual(
+            &p,
+            h0,
+            &mut phi,
+            refactor.then_some(jac.as_mut_slice()),
+            &mut ws,
+        );
         clamps_total += clamps;
         if !norm.is_finite() {
             return Err(singular(iteration));
         }
-        let mut delta: Vec<f64> = phi.iter().map(|v| -v).collect();
-        lu_factor(&mut jac, &mut piv, m).ok_or_else(|| singular(iteration))?;
+        if refactor {
+            lu_factor(&mut jac, &mut piv, m).ok_or_else(|| singular(iteration))?;
+            factorisations += 1;
+            have_factor = true;
+        }
+        delta.iter_mut().zip(&phi).for_each(|(d, v)| *d = -v);
         lu_solve(&jac, &piv, &mut delta, m).ok_or_else(|| singular(iteration))?;
         // Damping: backtracking until ‖Φ‖ decreases (Armijo), from a first step that
         // moves no pressure by more than p_H (a trust bound against the viscosity's
@@ -771,18 +871,40 @@ pub fn solve_line_ehl(
         // the cold reference case 32 → 17 at 401 nodes).
         let largest = delta[..n].iter().fold(0.0f64, |a, v| a.max(v.abs()));
         let mut alpha = if largest > 1.0 { 1.0 / largest } else { 1.0 };
+        let h_c_now = interpolate(&scaled.x, &ws.h, 0.0).max(1e-12);
         let mut accepted = None;
-        for _ in 0..12 {
+        if !refactor {
+            // A chord step (a stale matrix): kept whole only if it contracts the residual
+            // by CHORD_CONTRACTION (or, at round-off, is below the tolerance and does not
+            // raise it); otherwise discarded and the exact Jacobian factorised next.
             for i in 0..n {
                 trial_p[i] = p[i] + alpha * delta[i];
             }
             let trial_h0 = h0 + alpha * delta[n];
             let (tn, tl, _) = scaled.residual(&trial_p, trial_h0, &mut trial_phi, None, &mut ws);
-            if tn.is_finite() && tn < (1.0 - 1e-4 * alpha) * norm {
-                accepted = Some((trial_h0, tn, tl));
-                break;
+            let chord_step = largest.max(delta[n].abs() / h_c_now);
+            let contracts =
+                tn <= CHORD_CONTRACTION * norm || (chord_step < problem.tolerance && tn <= norm);
+            if !(tn.is_finite() && contracts) {
+                have_factor = false;
+                last_norm = norm;
+                continue;
             }
-            alpha *= 0.5;
+            accepted = Some((trial_h0, tn, tl));
+        } else {
+            for _ in 0..12 {
+                for i in 0..n {
+                    trial_p[i] = p[i] + alpha * delta[i];
+                }
+                let trial_h0 = h0 + alpha * delta[n];
+                let (tn, tl, _) =
+                    scaled.residual(&trial_p, trial_h0, &mut trial_phi, None, &mut ws);
+                if tn.is_finite() && tn < (1.0 - 1e-4 * alpha) * norm {
+                    accepted = Some((trial_h0, tn, tl));
+                    break;
+                }
+                alpha *= 0.5;
+            }
         }
         // No acceptable step along the Newton direction: take the short step anyway and
         // let the iteration count bound it.
@@ -800,6 +922,8 @@ pub fn solve_line_ehl(
         let step_p = delta[..n]
             .iter()
             .fold(0.0f64, |a, v| a.max((alpha * v).abs()));
+        // The film scale of the step test: the accepted trial's central film (the last
+        // residual evaluated), as before the chord path.
         let h_c_scaled = interpolate(&scaled.x, &ws.h, 0.0).max(1e-12);
         let step_h0 = (alpha * delta[n]).abs() / h_c_scaled;
         std::mem::swap(&mut p, &mut trial_p);
@@ -810,16 +934,25 @@ pub fn solve_line_ehl(
         if !(new_norm.is_finite() && h0.is_finite()) {
             return Err(singular(iteration));
         }
-        // Converged when the full Newton step (not the damped one: a short damped step
-        // proves nothing) is below the tolerance.
-        let full_step = (largest).max(delta[n].abs() / h_c_scaled);
+        // Converged when the full Newton (or kept chord) step (not the damped one: a
+        // short damped step proves nothing) is below the tolerance.
+        let full_step = largest.max(delta[n].abs() / h_c_scaled);
         if full_step < problem.tolerance && new_load.abs() <= LOAD_BALANCE_TOLERANCE {
+            let factor = (strategy == NewtonStrategy::Chord).then(|| {
+                Arc::new(Factorisation {
+                    n,
+                    x0,
+                    dx,
+                    lu: jac,
+                    piv,
+                })
+            });
             return Ok(finish(
                 problem,
                 &scaled,
                 &p,
                 h0,
-                iteration,
+                (iteration, factorisations, factor),
                 new_load,
                 clamps_total,
                 &mut ws,
@@ -848,7 +981,7 @@ fn finish(
     scaled: &Scaled<'_>,
     p: &[f64],
     h0: f64,
-    iterations: usize,
+    (iterations, factorisations, factorisation): (usize, usize, Option<Arc<Factorisation>>),
     load_balance_residual: f64,
     clamps: usize,
     ws: &mut Work,
@@ -880,8 +1013,10 @@ fn finish(
         hertz_half_width_m: b,
         h0_m: h0 * film_scale,
         iterations,
+        factorisations,
         load_balance_residual,
         clamps: clamps + clamped_now,
+        factorisation,
         x_m,
         pressure_pa,
         hertz_pressure_pa,

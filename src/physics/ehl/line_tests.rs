@@ -305,3 +305,37 @@ proptest! {
         }
     }
 }
+
+/// The chord path and the reference path (exact Jacobian every iteration) reach the same
+/// root on references.md's case, cold and warm (2 % more load from the first answer,
+/// the warm step reusing its factors): 1e-6 of p_H and of h_c (each path stops at a step
+/// of 1e-8 while contracting at a rate ≤ 0.5; a margin of 50 for the conditioning).
+#[test]
+fn chord_path_agrees_with_the_reference_path() {
+    let cold = reference_case(201);
+    let mut next = cold.clone();
+    next.load_per_length_n_m *= 1.02;
+    let b = line_contact_reduced(next.load_per_length_n_m, RADIUS, 0.5 * E_PRIME).half_width_m;
+    next.x_inlet_m = -4.5 * b;
+    next.x_outlet_m = 1.5 * b;
+    let fast = solve_line_ehl_with(&cold, None, NewtonStrategy::Chord).unwrap();
+    let full = solve_line_ehl_with(&cold, None, NewtonStrategy::Full).unwrap();
+    let fast_next = solve_line_ehl_with(&next, Some(&fast), NewtonStrategy::Chord).unwrap();
+    let full_next = solve_line_ehl_with(&next, Some(&full), NewtonStrategy::Full).unwrap();
+    for (a, b) in [(&fast, &full), (&fast_next, &full_next)] {
+        let p_h = b.hertz_max_pressure_pa;
+        for (x, y) in a.pressure_pa.iter().zip(&b.pressure_pa) {
+            assert!((x - y).abs() <= 1e-6 * p_h, "{x} vs {y}");
+        }
+        for (x, y) in a.film_m.iter().zip(&b.film_m) {
+            assert!((x - y).abs() <= 1e-6 * b.central_film_m, "{x} vs {y}");
+        }
+    }
+    // The warm chord step reuses the cold answer's factors.
+    assert!(
+        fast_next.factorisations < full_next.factorisations,
+        "{} vs {}",
+        fast_next.factorisations,
+        full_next.factorisations
+    );
+}
