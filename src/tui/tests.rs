@@ -2021,6 +2021,9 @@ fn tui_tabs_name_every_pane_at_60_columns() {
         assert!(
             header.contains("aerospace.toml") && header.contains("US"),
             "{header:?}"
+        );
+    }
+}
 
 /// The cylindrical Contact pane (issue 26) shows what `rollbench contact --format json`
 /// gives for the same deck: the shipped truck deck on its quasi-statics
