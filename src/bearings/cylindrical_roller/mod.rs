@@ -19,6 +19,7 @@ pub mod answer;
 pub mod contact;
 pub mod deck;
 pub mod dynamics;
+pub mod friction;
 pub mod geometry;
 pub mod input;
 pub mod life;
