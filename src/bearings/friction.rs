@@ -49,6 +49,20 @@ impl FrictionBreakdown {
         }
     }
 
+    /// The breakdown at the rings' speeds `inner_rad_s`, `outer_rad_s` with the torque
+    /// convention of [`crate::physics::heat::HeatBreakdown`]: torque = Σ P/|ω_i − ω_o|, 0 N·m
+    /// when |ω_i − ω_o| is below [`crate::physics::heat::MIN_RELATIVE_SPEED_RAD_S`] or not
+    /// finite (no relative rotation, no torque defined). Σ P is summed in the mechanisms'
+    /// order, so a system that lists them in its own total's order gets the same bits.
+    pub fn at_ring_speeds(inner_rad_s: f64, outer_rad_s: f64, mechanisms: Vec<Mechanism>) -> Self {
+        let rel = (inner_rad_s - outer_rad_s).abs();
+        let mut f = Self::from_mechanisms(if rel.is_finite() { rel } else { 0.0 }, mechanisms);
+        if !(rel.is_finite() && rel >= crate::physics::heat::MIN_RELATIVE_SPEED_RAD_S) {
+            f.torque_nm = 0.0;
+        }
+        f
+    }
+
     /// Total dissipated power, W: the sum of the mechanisms.
     pub fn power_w(&self) -> f64 {
         self.mechanisms.iter().map(|m| m.power_w).sum()
@@ -156,3 +170,7 @@ mod tests {
         assert_eq!(h.watts(HeatSource::OuterContacts), 50.0);
     }
 }
+
+#[cfg(test)]
+#[path = "friction_tests.rs"]
+mod deck_tests;

@@ -21,6 +21,7 @@ pub mod form_system;
 pub mod friction;
 pub mod spherical_roller;
 pub mod tapered_roller;
+pub mod thermal_answer;
 pub mod view;
 
 pub use error::SolveError;

@@ -95,6 +95,19 @@ pub fn answer(a: &BallAnalysis, life: &BallLife) -> Vec<AnswerLine> {
         "/heat/total_w",
         "",
     ));
+    let fb = super::friction::friction(a);
+    out.push(AnswerLine::number(
+        FRICTION,
+        "friction torque",
+        Some(fb.torque_nm),
+        Display::Moment,
+        4,
+        "/friction/torque_nm",
+        "",
+    ));
+    if let Some(name) = crate::bearings::answer::largest_mechanism(&fb.pairs()) {
+        out.push(AnswerLine::name(FRICTION, "largest", name));
+    }
     out.push(AnswerLine::number(
         TEMPERATURE,
         "bulk oil",

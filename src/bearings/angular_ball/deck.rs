@@ -641,6 +641,7 @@ pub static SCHEMA: Schema<BallInput> = Schema {
         "traction_table",
         "lubricant",
         "dynamics",
+        "thermal",
     ],
     required_groups: &["geometry", "materials", "operating", "lubricant"],
     fields: &FIELDS,
@@ -661,11 +662,19 @@ pub static SCHEMA: Schema<BallInput> = Schema {
             }
         },
     }),
-    opaque_tables: &["traction_table"],
+    opaque_tables: &["traction_table", "thermal"],
     defaults: BallInput::chen_a,
     cross_checks,
     template_header: "rollbench deck: angular-contact ball bearing (seed 001, S.-H. Chen 1989)\nLoad distribution with centrifugal force and gyroscopic moment, race-control\nkinematics, spin heat, EHD film and the skidding threshold.",
-    template_notes: crate::deck::form::TemplateNotes::NONE,
+    template_notes: crate::deck::form::TemplateNotes {
+        opaque_notes: &[(
+            "thermal",
+            crate::bearings::thermal_answer::thermal_template_note!(
+                "\"inner_contacts\", \"outer_contacts\", \"rollers\""
+            ),
+        )],
+        ..crate::deck::form::TemplateNotes::NONE
+    },
 };
 
 /// Reads the deck's `[traction_table] points = [[u_s, µ], …]` (sliding speed m/s and

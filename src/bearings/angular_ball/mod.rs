@@ -19,6 +19,7 @@ mod contacts;
 pub mod deck;
 pub mod dynamics;
 pub mod error;
+pub mod friction;
 pub mod geometry;
 pub mod input;
 pub mod life;

@@ -213,6 +213,8 @@ pub fn json(a: &BallAnalysis) -> Value {
         },
         "skid": skid,
         "heat": heat,
+        // Issue 28: the same heat by mechanism and race, with the friction torque.
+        "friction": super::friction::friction(a).json(),
         "dynamics": dynamics,
         // Issue 28: reference and ISO 281 lives, static safety (`life.static_safety`).
         "life": super::life::life(a).json(),

@@ -6,6 +6,7 @@ use super::analysis::analyse_traced;
 use super::analysis::{analyse, analyse_streaming, BallAnalysis};
 use super::deck::SCHEMA;
 use super::input::BallInput;
+use crate::bearings::thermal_answer::{self, BearingThermal};
 use crate::bearings::view::{Chart, PaneKind, PaneSpec, View};
 use crate::bearings::{
     Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
@@ -14,6 +15,7 @@ use crate::bearings::{
 use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
+use crate::thermal::ThermalModel;
 use crate::units::Units;
 
 use super::SYSTEM_ID;
@@ -53,7 +55,8 @@ pub const EXAMPLE_DECK: &str = include_str!("../../../decks/chen_a.toml");
 
 impl FormSystem for AngularBall {
     type Input = BallInput;
-    type Derived = ();
+    /// The deck's `[thermal]` network, if any.
+    type Derived = Option<ThermalModel>;
 
     fn registered() -> &'static Self {
         &SYSTEM
@@ -85,7 +88,7 @@ impl FormSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 7] = [
+        const PANES: [PaneSpec; 8] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -114,6 +117,10 @@ impl FormSystem for AngularBall {
                 kind: PaneKind::Stepper,
                 title: "Stepper",
             },
+            PaneSpec {
+                kind: PaneKind::Thermal,
+                title: "Thermal",
+            },
         ];
         &PANES
     }
@@ -122,19 +129,26 @@ impl FormSystem for AngularBall {
         EXAMPLE_DECK
     }
 
-    /// The `[traction]` table's measured curve into the input.
-    fn prepare(form: &mut Form<BallInput>) -> Result<(), DeckErrors> {
-        super::deck::traction_table(form)
+    /// The `[traction]` table's measured curve into the input, and the `[thermal]`
+    /// network built (errors name node, link and field).
+    fn prepare(form: &mut Form<BallInput>) -> Result<Option<ThermalModel>, DeckErrors> {
+        super::deck::traction_table(form)?;
+        form.thermal_model()
     }
 
     fn solve(
         case: &BallCase,
-        _options: RunOptions,
+        options: RunOptions,
         cancel: Cancel,
     ) -> Result<Box<dyn Solution>, String> {
-        analyse(&case.form.value, cancel)
-            .map(|a| Box::new(BallSolution(a)) as Box<dyn Solution>)
-            .map_err(|e| e.to_string())
+        let a = analyse(&case.form.value, cancel).map_err(|e| e.to_string())?;
+        let th = thermal_of(&a, case, !options.skip_transient, &cancel)?;
+        Ok(Box::new(BallSolution(a, th)))
+    }
+
+    /// The `[thermal]` network's loss-of-oil transient.
+    fn has_transient(case: &BallCase) -> bool {
+        case.derived.is_some()
     }
 
     fn fidelity(input: &BallInput) -> Option<Fidelity> {
@@ -190,13 +204,6 @@ impl Session for BallSession {
                 }
             },
         )
-        .map(|a| {
-            if stream {
-                // The finished chart, as the solution's view draws it.
-                on_chart(SKID_CHART, super::view::skid_chart(&a));
-            }
-            Box::new(BallSolution(a)) as Box<dyn Solution>
-        })
         .map_err(|e| match e {
             super::error::BallError::Cancelled => SolveError::Cancelled,
             e => SolveError::Stage {
@@ -204,26 +211,67 @@ impl Session for BallSession {
                 message: e.to_string(),
             },
         })
+        .and_then(|a| {
+            if stream {
+                // The finished chart, as the solution's view draws it.
+                on_chart(SKID_CHART, super::view::skid_chart(&a));
+            }
+            let th = thermal_of(&a, ball, detail.transient, cancel).map_err(|message| {
+                if cancel.is_cancelled() {
+                    SolveError::Cancelled
+                } else {
+                    SolveError::Stage {
+                        stage: SYSTEM_ID,
+                        message,
+                    }
+                }
+            })?;
+            Ok(Box::new(BallSolution(a, th)) as Box<dyn Solution>)
+        })
     }
+}
+
+/// The deck's thermal network under the friction's heat (steady, and the transient when
+/// `transient`); `None` without `[thermal]`.
+fn thermal_of(
+    a: &BallAnalysis,
+    case: &BallCase,
+    transient: bool,
+    cancel: &Cancel,
+) -> Result<Option<BearingThermal>, String> {
+    case.derived
+        .as_ref()
+        .map(|tm| {
+            thermal_answer::solve(tm, &super::friction::friction(a), transient, &|| {
+                cancel.is_cancelled()
+            })
+        })
+        .transpose()
 }
 
 /// The Skid pane's chart: `PaneKind::Chart(SKID_CHART)`, the first of the view's charts.
 pub const SKID_CHART: usize = 0;
 
-/// A solved ball bearing.
-pub struct BallSolution(pub BallAnalysis);
+/// A solved ball bearing and its thermal network's results (when the deck has one).
+pub struct BallSolution(pub BallAnalysis, pub Option<BearingThermal>);
 
 impl Solution for BallSolution {
     fn view(&self) -> View {
-        super::view::view(&self.0)
+        let mut v = super::view::view(&self.0);
+        thermal_answer::add_to_view(&mut v, self.1.as_ref());
+        v
     }
 
     fn json(&self) -> serde_json::Value {
-        super::report::json(&self.0)
+        let mut v = super::report::json(&self.0);
+        thermal_answer::add_to_json(&mut v, self.1.as_ref());
+        v
     }
 
     fn text(&self, units: Units) -> String {
-        super::report::text(&self.0, units)
+        let mut s = super::report::text(&self.0, units);
+        thermal_answer::add_to_text(&mut s, self.1.as_ref(), units);
+        s
     }
 
     fn series_csv(&self) -> Result<String, String> {
@@ -272,7 +320,7 @@ mod tests {
         assert!(last.angle_change_rad < 1e-12 && last.load_change < 1e-10);
         // The view carries it for the stepper, one step per iteration.
         let n = steps.len();
-        let view = BallSolution(traced).view();
+        let view = BallSolution(traced, None).view();
         let t = view.trace.unwrap();
         assert_eq!((t.element, t.steps.len()), (10, n));
     }

@@ -238,6 +238,14 @@ pub fn view(a: &BallAnalysis) -> View {
                     KeyRole::Guard
                 },
             ),
+            // Issue 28: the friction torque, the heat over |ω_i − ω_o| (follows the
+            // heat: a guard).
+            k(
+                "friction_torque_nm",
+                Some(super::friction::friction(a).torque_nm),
+                Quantity::Moment,
+                KeyRole::Guard,
+            ),
             k(
                 "skid_threshold_rpm",
                 a.skid.speed_rad_s.map(|s| s * RPM_PER_RAD_S),
@@ -283,6 +291,7 @@ fn short_label(name: &str) -> &'static str {
         "max_pressure_pa" => "pmax",
         "cage_speed_rpm" => "cage",
         "heat_w" => "heat",
+        "friction_torque_nm" => "M",
         "skid_threshold_rpm" => "skid",
         "l10_bearing_mrev" => "L10",
         "static_safety" => "s0",

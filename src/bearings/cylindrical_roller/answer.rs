@@ -89,6 +89,22 @@ pub fn answer(a: &CylindricalAnalysis, life: &CylindricalLife) -> Vec<AnswerLine
         "/friction/power_w",
         NO_DYNAMICS,
     ));
+    let fb = super::friction::friction(a);
+    out.push(AnswerLine::number(
+        FRICTION,
+        "friction torque",
+        fb.as_ref().map(|f| f.torque_nm),
+        Display::Moment,
+        4,
+        "/friction/torque_nm",
+        NO_DYNAMICS,
+    ));
+    if let Some(name) = fb
+        .as_ref()
+        .and_then(|f| crate::bearings::answer::largest_mechanism(&f.pairs()))
+    {
+        out.push(AnswerLine::name(FRICTION, "largest", name));
+    }
     out.push(AnswerLine::number(
         FRICTION,
         "friction coefficient",

@@ -406,17 +406,25 @@ pub static SCHEMA: Schema<CylindricalInput> = Schema {
             _ => t.materials.outer = m,
         },
     }),
-    opaque_tables: &["contact"],
+    opaque_tables: &["contact", "thermal"],
     defaults: CylindricalInput::truck,
     cross_checks: cross,
     template_header: "rollbench cylindrical roller bearing deck (seed 003: tribodynamics of cylindrical roller bearings in a heavy-duty truck transmission)\nQuasi-static lamina load distribution, 2-DOF dynamics with the film in the deflection,\nspectra and mixed-regime friction per roller.",
     template_notes: TemplateNotes {
         name: "",
         group_notes: &[],
-        opaque_notes: &[(
-            "contact",
-            "[contact] (optional): sliding_speed = 0.589 (m/s in both unit systems; default: Table 3's 23.95 W / 40.67 N), positions = [0, 30, 60] (cage angles in deg for the contact report), inlet = \"flooded\" (the Contact pane's inlets: flooded, tipei or both)",
-        )],
+        opaque_notes: &[
+            (
+                "contact",
+                "[contact] (optional): sliding_speed = 0.589 (m/s in both unit systems; default: Table 3's 23.95 W / 40.67 N), positions = [0, 30, 60] (cage angles in deg for the contact report), inlet = \"flooded\" (the Contact pane's inlets: flooded, tipei or both)",
+            ),
+            (
+                "thermal",
+                crate::bearings::thermal_answer::thermal_template_note!(
+                    "\"inner_contacts\", \"outer_contacts\", \"rollers\""
+                ),
+            ),
+        ],
     },
 };
 

@@ -20,6 +20,7 @@ pub mod contact;
 pub mod contact_job;
 pub mod deck;
 pub mod dynamics;
+pub mod friction;
 pub mod geometry;
 pub mod input;
 pub mod life;

@@ -120,6 +120,18 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
         for (k, block) in super::report_tribo::json_blocks(t) {
             o.insert(k.to_string(), block);
         }
+        // Issue 28: the shared friction object's keys beside the existing ones (a
+        // contract: `power_w` stays the tribodynamics' own; Σ by_mechanism equals it to
+        // round-off).
+        if let (Some(fb), Some(Value::Object(f))) =
+            (super::friction::friction(a), o.get_mut("friction"))
+        {
+            if let Value::Object(shared) = fb.json() {
+                for (k, v) in shared {
+                    f.entry(k).or_insert(v);
+                }
+            }
+        }
     }
     v
 }

@@ -6,6 +6,7 @@ use super::deck::SCHEMA;
 use super::input::CylindricalInput;
 use super::quasi_static::{QuasiStatic, QuasiStaticError};
 use super::SYSTEM_ID;
+use crate::bearings::thermal_answer::{self, BearingThermal};
 use crate::bearings::view::{JobView, PaneKind, PaneSpec, View};
 use crate::bearings::{
     Case, Detail, Fidelity, FidelityGrid, FormSystem, RunOptions, Session, Solution, SolveError,
@@ -14,6 +15,7 @@ use crate::bearings::{
 use crate::deck::form::{Form, Schema};
 use crate::deck::DeckErrors;
 use crate::numerics::cancel::Cancel;
+use crate::thermal::ThermalModel;
 use crate::units::{restate_si, Units};
 
 /// The shipped example deck: the seed's truck-transmission bearing.
@@ -43,7 +45,8 @@ pub type CylindricalCase = SystemCase<CylindricalRoller>;
 
 impl FormSystem for CylindricalRoller {
     type Input = CylindricalInput;
-    type Derived = ();
+    /// The deck's `[thermal]` network, if any.
+    type Derived = Option<ThermalModel>;
 
     fn registered() -> &'static Self {
         &SYSTEM
@@ -110,7 +113,7 @@ impl FormSystem for CylindricalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 11] = [
+        const PANES: [PaneSpec; 12] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -155,6 +158,10 @@ impl FormSystem for CylindricalRoller {
                 kind: PaneKind::Job(0),
                 title: "Contact",
             },
+            PaneSpec {
+                kind: PaneKind::Thermal,
+                title: "Thermal",
+            },
         ];
         &PANES
     }
@@ -163,9 +170,11 @@ impl FormSystem for CylindricalRoller {
         EXAMPLE_DECK
     }
 
-    /// The `[contact]` table (sliding speed, cage angles) into the input.
-    fn prepare(form: &mut Form<CylindricalInput>) -> Result<(), DeckErrors> {
-        super::deck::contact_table(form)
+    /// The `[contact]` table (sliding speed, cage angles) into the input, and the
+    /// `[thermal]` network built (errors name node, link and field).
+    fn prepare(form: &mut Form<CylindricalInput>) -> Result<Option<ThermalModel>, DeckErrors> {
+        super::deck::contact_table(form)?;
+        form.thermal_model()
     }
 
     fn solve(
@@ -183,7 +192,8 @@ impl FormSystem for CylindricalRoller {
             with_tribodynamics(a, cancel)
                 .map_err(|e| restate_si(&e.to_string(), case.form.units))?
         };
-        Ok(Box::new(CylindricalSolution(a)))
+        let th = thermal_of(&a, case, true, &cancel)?;
+        Ok(Box::new(CylindricalSolution(a, th)))
     }
 
     /// The 2-DOF dynamics is this system's time simulation: run unless the deck says
@@ -206,20 +216,44 @@ impl FormSystem for CylindricalRoller {
     }
 }
 
-/// A solved cylindrical roller bearing.
-pub struct CylindricalSolution(pub CylindricalAnalysis);
+/// The deck's thermal network under the friction's heat (steady, and the transient when
+/// `transient`); `None` without `[thermal]` or without the friction (the tribodynamics
+/// did not run: `rollbench run --skip-transient`, a sweep's points).
+fn thermal_of(
+    a: &CylindricalAnalysis,
+    case: &CylindricalCase,
+    transient: bool,
+    cancel: &Cancel,
+) -> Result<Option<BearingThermal>, String> {
+    match (case.derived.as_ref(), super::friction::friction(a)) {
+        (Some(tm), Some(f)) => {
+            thermal_answer::solve(tm, &f, transient, &|| cancel.is_cancelled()).map(Some)
+        }
+        _ => Ok(None),
+    }
+}
+
+/// A solved cylindrical roller bearing and its thermal network's results (when the deck
+/// has one and the friction ran).
+pub struct CylindricalSolution(pub CylindricalAnalysis, pub Option<BearingThermal>);
 
 impl Solution for CylindricalSolution {
     fn view(&self) -> View {
-        super::view::view(&self.0)
+        let mut v = super::view::view(&self.0);
+        thermal_answer::add_to_view(&mut v, self.1.as_ref());
+        v
     }
 
     fn json(&self) -> serde_json::Value {
-        super::report::json(&self.0)
+        let mut v = super::report::json(&self.0);
+        thermal_answer::add_to_json(&mut v, self.1.as_ref());
+        v
     }
 
     fn text(&self, units: Units) -> String {
-        super::report::text(&self.0, units)
+        let mut s = super::report::text(&self.0, units);
+        thermal_answer::add_to_text(&mut s, self.1.as_ref(), units);
+        s
     }
 
     fn series_csv(&self) -> Result<String, String> {
@@ -275,6 +309,13 @@ impl Session for CylindricalSession {
         } else {
             a
         };
-        Ok(Box::new(CylindricalSolution(a)))
+        let th = thermal_of(&a, case, detail.transient, cancel).map_err(|m| {
+            if cancel.is_cancelled() {
+                SolveError::Cancelled
+            } else {
+                stage(m)
+            }
+        })?;
+        Ok(Box::new(CylindricalSolution(a, th)))
     }
 }

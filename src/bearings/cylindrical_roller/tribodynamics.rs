@@ -83,6 +83,9 @@ pub struct BearingFriction {
     pub inner_n: f64,
     /// The outer contacts' share, N.
     pub outer_n: f64,
+    /// The inner contacts' boundary (asperity) part, N (issue 28: friction by mechanism
+    /// at each race; the outer's is `boundary_n − inner_boundary_n`).
+    pub inner_boundary_n: f64,
 }
 
 /// Friction at one of the deck's `contact.positions` (Table 3's A1, B1, C1): roller 1's
@@ -364,6 +367,7 @@ fn cycle_friction(
             };
             let fo = outer.at(w_o, outer_film(w_o))?;
             row.boundary_n += fi.boundary_n + fo.boundary_n;
+            row.inner_boundary_n += fi.boundary_n;
             row.viscous_n += fi.viscous_n + fo.viscous_n;
             row.inner_n += fi.total_n;
             row.outer_n += fo.total_n;
@@ -396,6 +400,7 @@ fn cycle_friction(
             }
         }
         total.boundary_n += row.boundary_n;
+        total.inner_boundary_n += row.inner_boundary_n;
         total.viscous_n += row.viscous_n;
         total.inner_n += row.inner_n;
         total.outer_n += row.outer_n;
@@ -403,6 +408,7 @@ fn cycle_friction(
     }
     let count = idx.len().max(1) as f64;
     total.boundary_n /= count;
+    total.inner_boundary_n /= count;
     total.viscous_n /= count;
     total.inner_n /= count;
     total.outer_n /= count;

@@ -359,6 +359,14 @@ pub fn view(a: &CylindricalAnalysis) -> View {
                 Quantity::Power,
                 KeyRole::Info,
             ),
+            // Issue 28: the friction torque, power over ω_i.
+            key(
+                "friction_torque_nm",
+                "M",
+                super::friction::friction(a).map(|f| f.torque_nm),
+                Quantity::Moment,
+                KeyRole::Info,
+            ),
         ]);
     }
     View {

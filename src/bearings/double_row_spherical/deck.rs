@@ -436,17 +436,25 @@ pub static SCHEMA: Schema<DoubleRowInput> = Schema {
             _ => t.materials.outer_ring = m,
         },
     }),
-    opaque_tables: &["optimise"],
+    opaque_tables: &["optimise", "thermal"],
     defaults: DoubleRowInput::example_22308,
     cross_checks: cross,
     template_header: "rollbench double-row spherical roller bearing deck (seed 002: Stirbu, Grigoras, Hanganu, combined spherical roller bearings functioning analysis)\nTwo rows mirrored at ±α⁰ sharing the inner ring and one outer sphere, a guide ring between them;\nlamina statics per roller, stresses, film and life per row.",
     template_notes: TemplateNotes {
         name: "",
         group_notes: &[],
-        opaque_notes: &[(
-            "optimise",
-            "[optimise] (optional): variables = [\"k_ci\", \"k_w\"] (of k_ci, k_w, k_ce), relative_range = 0.005, grid = 21, min_lambda = 3.0, min_capacity_ratio = 1.0, load_cases = [{ radial_load = 20000, axial_load = 0, weight = 1 }] (loads in N/lbf as the deck's units)",
-        )],
+        opaque_notes: &[
+            (
+                "optimise",
+                "[optimise] (optional): variables = [\"k_ci\", \"k_w\"] (of k_ci, k_w, k_ce), relative_range = 0.005, grid = 21, min_lambda = 3.0, min_capacity_ratio = 1.0, load_cases = [{ radial_load = 20000, axial_load = 0, weight = 1 }] (loads in N/lbf as the deck's units)",
+            ),
+            (
+                "thermal",
+                crate::bearings::thermal_answer::thermal_template_note!(
+                    "\"inner_contacts\", \"outer_contacts\", \"rollers\", \"cage_rails\", \"guide_ring\""
+                ),
+            ),
+        ],
     },
 };
 

@@ -8,6 +8,7 @@
 
 pub mod answer;
 pub mod deck;
+pub mod friction;
 pub mod input;
 pub mod jobs;
 pub mod life;

@@ -5,6 +5,7 @@ use super::deck::SCHEMA;
 use super::input::DoubleRowInput;
 use super::losses::{losses, LossBreakdown};
 use super::statics::{analyse, DoubleRowAnalysis};
+use crate::bearings::thermal_answer::{self, BearingThermal};
 use crate::bearings::view::{JobView, PaneKind, PaneSpec, View};
 use crate::bearings::{Case, FormSystem, RunOptions, Solution, SolveError, SystemCase};
 use crate::deck::form::{Form, Schema};
@@ -26,7 +27,8 @@ pub type DoubleRowCase = SystemCase<DoubleRowSpherical>;
 
 impl FormSystem for DoubleRowSpherical {
     type Input = DoubleRowInput;
-    type Derived = ();
+    /// The deck's `[thermal]` network, if any.
+    type Derived = Option<crate::thermal::ThermalModel>;
 
     fn registered() -> &'static Self {
         &SYSTEM
@@ -49,7 +51,7 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 8] = [
+        const PANES: [PaneSpec; 9] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -82,6 +84,10 @@ impl FormSystem for DoubleRowSpherical {
                 kind: PaneKind::Job(1),
                 title: "Optimise",
             },
+            PaneSpec {
+                kind: PaneKind::Thermal,
+                title: "Thermal",
+            },
         ];
         &PANES
     }
@@ -111,13 +117,21 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     /// The `[optimise]` table into the input.
-    fn prepare(form: &mut Form<DoubleRowInput>) -> Result<(), DeckErrors> {
-        super::deck::optimise_table(form)
+    fn prepare(
+        form: &mut Form<DoubleRowInput>,
+    ) -> Result<Option<crate::thermal::ThermalModel>, DeckErrors> {
+        super::deck::optimise_table(form)?;
+        form.thermal_model()
+    }
+
+    /// The `[thermal]` network's transient.
+    fn has_transient(case: &DoubleRowCase) -> bool {
+        case.derived.is_some()
     }
 
     fn solve(
         case: &DoubleRowCase,
-        _options: RunOptions,
+        options: RunOptions,
         cancel: Cancel,
     ) -> Result<Box<dyn Solution>, String> {
         let a = analyse(&case.form.value, &case.form.name, cancel.flag())
@@ -126,25 +140,55 @@ impl FormSystem for DoubleRowSpherical {
         // silent zero.
         let l =
             losses(&a).map_err(|e| restate_si(&format!("loss breakdown: {e}"), case.form.units))?;
-        Ok(Box::new(DoubleRowSolution(a, l)))
+        // The thermal network under the losses' heat (issue 28), when the deck has one.
+        let th = case
+            .derived
+            .as_ref()
+            .map(|tm| {
+                thermal_answer::solve(
+                    tm,
+                    &super::friction::friction(&a, &l),
+                    !options.skip_transient,
+                    &|| cancel.is_cancelled(),
+                )
+            })
+            .transpose()?;
+        Ok(Box::new(DoubleRowSolution(a, l, th)))
     }
 }
 
-/// A solved double-row bearing: the statics and its loss breakdown.
-pub struct DoubleRowSolution(pub DoubleRowAnalysis, pub LossBreakdown);
+/// A solved double-row bearing: the statics, its loss breakdown and its thermal
+/// network's results (when the deck has one).
+pub struct DoubleRowSolution(
+    pub DoubleRowAnalysis,
+    pub LossBreakdown,
+    pub Option<BearingThermal>,
+);
 
 impl Solution for DoubleRowSolution {
     fn view(&self) -> View {
-        super::view::view_with_losses(&self.0, &self.1)
+        let mut v = super::view::view_with_losses(&self.0, &self.1);
+        thermal_answer::add_to_view(&mut v, self.2.as_ref());
+        v
     }
 
     fn json(&self) -> serde_json::Value {
         let mut v = super::report::json(&self.0);
         super::report::add_losses(&mut v, &self.1);
+        if let Some(o) = v.as_object_mut() {
+            // Issue 28: the losses as the shared friction object.
+            o.insert(
+                "friction".into(),
+                super::friction::friction(&self.0, &self.1).json(),
+            );
+        }
+        thermal_answer::add_to_json(&mut v, self.2.as_ref());
         v
     }
 
     fn text(&self, units: Units) -> String {
-        super::report::text_with_losses(&self.0, &self.1, units)
+        let mut s = super::report::text_with_losses(&self.0, &self.1, units);
+        thermal_answer::add_to_text(&mut s, self.2.as_ref(), units);
+        s
     }
 }

@@ -201,6 +201,7 @@ pub fn run(
                             heat_w: s.heat_w,
                             lateral_w: s.lateral_w,
                             rolling_w: s.rolling_w,
+                            inner_w: s.inner_w,
                             orbital_rad_s: s.orbital_rad_s,
                             oscillation_rad_s: 0.0,
                         },

@@ -226,6 +226,7 @@ mod tests {
                     heat_w: 0.0,
                     lateral_w: 0.0,
                     rolling_w: 0.0,
+                    inner_w: [0.0, 0.0],
                 }
             })
             .collect();
@@ -235,6 +236,7 @@ mod tests {
             heat_w: 0.0,
             lateral_w: 0.0,
             rolling_w: 0.0,
+            inner_w: [0.0, 0.0],
             orbital_rad_s: 500.0,
             oscillation_rad_s: swing + t0,
         }

@@ -239,6 +239,7 @@ pub fn simulate_ball_limited(
         mean(|s| s.rolling_w),
         mean(|s| s.orbital_rad_s),
     );
+    let inner_w = [mean(|s| s.inner_w[0]), mean(|s| s.inner_w[1])];
     Ok((
         BallDynamics {
             start_azimuth_rad: model.start_azimuth_rad,
@@ -246,6 +247,7 @@ pub fn simulate_ball_limited(
             heat_w,
             lateral_w,
             rolling_w,
+            inner_w,
             orbital_rad_s,
             oscillation_rad_s: amp,
         },

@@ -26,6 +26,9 @@ pub struct Sample {
     pub lateral_w: f64,
     /// Its rolling-direction part, W.
     pub rolling_w: f64,
+    /// The inner contact's part: [lateral, rolling-direction], W (the outer's is the
+    /// rest; the friction breakdown by race, issue 28).
+    pub inner_w: [f64; 2],
 }
 
 /// One ball's dynamics.
@@ -41,6 +44,9 @@ pub struct BallDynamics {
     pub lateral_w: f64,
     /// Its rolling part, W.
     pub rolling_w: f64,
+    /// The inner contact's part of the heat, [lateral, rolling-direction], averaged as
+    /// `heat_w`, W.
+    pub inner_w: [f64; 2],
     /// The orbital speed ω_m averaged over the last orbit (time simulation) or at the
     /// position, rad/s (the cage's with [`Orbit::Cage`]).
     pub orbital_rad_s: f64,
@@ -87,6 +93,12 @@ impl DynamicsResult {
     pub fn rolling_w(&self) -> f64 {
         self.balls.iter().map(|b| b.rolling_w).sum()
     }
+    /// The inner contacts' total [lateral, rolling-direction] heat, W.
+    pub fn inner_w(&self) -> [f64; 2] {
+        self.balls.iter().fold([0.0, 0.0], |a, b| {
+            [a[0] + b.inner_w[0], a[1] + b.inner_w[1]]
+        })
+    }
 }
 
 pub(super) fn sample(model: &BallModel, t: f64, w: &[f64]) -> Sample {
@@ -103,5 +115,6 @@ pub(super) fn sample(model: &BallModel, t: f64, w: &[f64]) -> Sample {
         heat_w: lat + roll,
         lateral_w: lat,
         rolling_w: roll,
+        inner_w: [i.lateral_w, i.rolling_w],
     }
 }

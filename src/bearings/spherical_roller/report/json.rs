@@ -2,8 +2,10 @@
 
 use serde_json::{json, Map, Value};
 
+use crate::bearings::friction::{FrictionBreakdown, Mechanism};
 use crate::bearings::spherical_roller::pipeline::Analysis;
 use crate::bearings::spherical_roller::view::{self, ContactView, LaminaView};
+use crate::thermal::HeatSource;
 
 /// One raceway contact of a roller (§3 load, §4 stresses, §5 film, §6 P_e, §9 heat).
 fn contact(c: &ContactView) -> Value {
@@ -187,6 +189,9 @@ pub fn to_value(a: &Analysis) -> Value {
             m.insert("lost_lubrication".into(), json!(fr.lost_lubrication));
         }
         doc.insert("heat".into(), h);
+        // Issue 28: the same heat by mechanism as every system's `friction` (the `heat`
+        // object above stays as it was, a contract).
+        doc.insert("friction".into(), friction(a, fr).json());
     }
     doc.insert(
         "residuals".into(),
@@ -207,6 +212,44 @@ pub fn to_value(a: &Analysis) -> Value {
         }),
     );
     Value::Object(doc)
+}
+
+/// §9's heat by mechanism as the shared friction breakdown (issue 28): contact sliding
+/// at the inner and outer raceways (eqs. 9.1–9.2; the lamina traction does not separate
+/// rolling from sliding: its heat is τ·Δu, the sliding part only), cage rails (9.3–9.4)
+/// and viscous drag (9.4), listed in the order [`HeatBreakdown::new`] sums them, at the
+/// rings' speeds, so `power_w` and `torque_nm` are `heat.total_w` and
+/// `heat.friction_torque_nm` to the bit.
+///
+/// [`HeatBreakdown::new`]: crate::physics::heat::HeatBreakdown::new
+pub fn friction(
+    a: &Analysis,
+    fr: &crate::bearings::spherical_roller::stages::Friction,
+) -> FrictionBreakdown {
+    let h = &fr.heat;
+    let m = |name, power_w, heat| Mechanism {
+        name,
+        power_w,
+        heat: Some(heat),
+    };
+    FrictionBreakdown::at_ring_speeds(
+        a.input.operating.inner_speed_rad_s,
+        a.input.operating.outer_speed_rad_s,
+        vec![
+            m(
+                "inner_contacts",
+                h.inner_contacts_w,
+                HeatSource::InnerContacts,
+            ),
+            m(
+                "outer_contacts",
+                h.outer_contacts_w,
+                HeatSource::OuterContacts,
+            ),
+            m("cage_rails", h.cage_rails_w, HeatSource::CageRails),
+            m("viscous_drag", h.viscous_drag_w, HeatSource::ViscousDrag),
+        ],
+    )
 }
 
 /// Pretty JSON text.
