@@ -121,6 +121,30 @@ fn stage_point<const N: usize>(k: &[[f64; N]; 16], y: &[f64; N], h: f64, s: usiz
     out
 }
 
+/// Stage `S` of a step: its point by [`stage_point`] with `S` known at compile time (the
+/// tableau row a constant, its zero entries dropped and the loops unrolled; the same
+/// operations in the same order), `f` there into `k[S]`; `false` if not finite.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the step's state, each distinct
+fn stage<const N: usize, const S: usize, Sys: FixedSystem<N>>(
+    sys: &Sys,
+    evals: &mut usize,
+    k: &mut [[f64; N]; 16],
+    y: &[f64; N],
+    h: f64,
+    t: f64,
+    t_new: f64,
+) -> bool {
+    let point = stage_point(k, y, h, S);
+    let ts = if S == 11 { t_new } else { t + C[S] * h };
+    let mut out = [0.0; N];
+    if !eval(sys, evals, ts, &point, &mut out) {
+        return false;
+    }
+    k[S] = out;
+    true
+}
+
 /// The seventh-order continuous extension of one step (the general path's
 /// `Interpolant` with DOP853's `r1..r8`).
 #[derive(Debug, Clone, Copy)]
@@ -266,17 +290,20 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         attempts += 1;
 
         // ---- The trial step (the general path's `Dop853::step`).
-        let mut finite = true;
-        for (s, &cs) in C.iter().enumerate().take(12).skip(1) {
-            let stage = stage_point(&k, &y, h, s);
-            let ts = if s == 11 { t_new } else { t + cs * h };
-            let mut out = [0.0; N];
-            if !eval(sys, &mut evals, ts, &stage, &mut out) {
-                finite = false;
-                break;
-            }
-            k[s] = out;
-        }
+        // Stages 1..=11, each with its row known at compile time; the first that is not
+        // finite ends the trial (as the general path's loop breaks there).
+        let e = &mut evals;
+        let mut finite = stage::<N, 1, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 2, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 3, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 4, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 5, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 6, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 7, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 8, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 9, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 10, S>(sys, e, &mut k, &y, h, t, t_new)
+            && stage::<N, 11, S>(sys, e, &mut k, &y, h, t, t_new);
         let mut y_new = [0.0; N];
         let mut err = f64::NAN;
         if finite {
@@ -342,13 +369,12 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         last_failure_nonfinite = false;
         let mut dense: Option<Dense<N>> = None;
         let make_dense = |k: &mut [[f64; N]; 16], evals: &mut usize| -> Option<Dense<N>> {
-            for (s, &cs) in C.iter().enumerate().skip(13) {
-                let stage = stage_point(k, &y, h, s);
-                let mut out = [0.0; N];
-                if !eval(sys, evals, t + cs * h, &stage, &mut out) {
-                    return None;
-                }
-                k[s] = out;
+            // Stages 13..=15 (C[S] < 1, so `t_new` is not taken).
+            let ok = stage::<N, 13, S>(sys, evals, k, &y, h, t, t_new)
+                && stage::<N, 14, S>(sys, evals, k, &y, h, t, t_new)
+                && stage::<N, 15, S>(sys, evals, k, &y, h, t, t_new);
+            if !ok {
+                return None;
             }
             let mut r = [[0.0; N]; 8];
             for i in 0..N {

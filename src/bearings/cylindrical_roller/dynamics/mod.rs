@@ -17,6 +17,7 @@
 //! `settle_revolutions` is a count of shaft revolutions skipped before sampling, not a
 //! convergence test (the result's `note` says so).
 
+mod angle;
 pub mod film;
 mod film_table;
 mod kernel;
@@ -522,6 +523,7 @@ pub fn simulate(
         energy_ref: 1.0,
         clamps: Cell::new(0),
         fast_film: None,
+        cage_angle: angle::AngleTable::new(),
     };
 
     (rhs.phase_sin, rhs.phase_cos) = rhs.phase_sin_cos.iter().copied().unzip();

@@ -1,6 +1,7 @@
 //! The 2-DOF equations of motion (seed 003 eqs. 1–3), their static equilibrium with the
 //! cage frozen, the analytic stiffness there, and the energy of the film-off model.
 
+use super::angle::AngleTable;
 use super::film::{Contact, ContactLaw};
 use super::film_table::FastFilm;
 use super::kernel::dry_sums_ten_ninths;
@@ -41,6 +42,9 @@ pub(crate) struct Rhs {
     pub clamps: Cell<usize>,
     /// The film solve tabulated for the hot loop (film on; `None`: Newton per roller).
     pub fast_film: Option<FastFilm>,
+    /// sin, cos of ω_c t for the hot loop ([`AngleTable`]: a table and a short series
+    /// instead of two libm calls per evaluation).
+    pub cage_angle: AngleTable,
 }
 
 impl Rhs {
@@ -152,7 +156,7 @@ impl Rhs {
     fn eval(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
         let w = self.omega_ref;
         let (vx, vy) = (y[2] * w, y[3] * w);
-        let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
+        let (s0, c0) = self.cage_angle.sin_cos(self.cage_speed_rad_s * t);
         // Σ W_i cos θ_i, Σ W_i sin θ_i and Σ W_i (y cos θ_i − x sin θ_i).
         let [fx, fy, dv] = if self.law.film.is_none() {
             self.dry_sums(y[0], y[1], s0, c0)

@@ -348,6 +348,7 @@ fn truck_rhs(interference_m: f64) -> model::Rhs {
         energy_ref: 1e-2,
         clamps: Cell::new(0),
         fast_film: None,
+        cage_angle: super::angle::AngleTable::new(),
     }
 }
 
