@@ -18,7 +18,9 @@ use crate::tui::view_model;
 /// least enough that the three labels (ends and middle) differ in their last two digits
 /// (±1 mm/s at three decimals of m/s would read 0.001, 0.000, -0.001).
 fn label_precision(b: [f64; 2]) -> usize {
-    let by_size = match b[1].abs() {
+    // The larger end's size: an axis of −500…0 needs no decimals (it printed −500.000
+    // when only the upper end, 0, was looked at).
+    let by_size = match b[0].abs().max(b[1].abs()) {
         m if m >= 100.0 => 0,
         m if m >= 10.0 => 1,
         m if m >= 1.0 => 2,
@@ -343,6 +345,8 @@ mod tests {
         assert_eq!(label_precision([0.0, 1.05]), 2);
         assert_eq!(label_precision([-1.212, -0.956]), 3);
         assert_eq!(label_precision([0.0, 0.0]), 3);
+        assert_eq!(label_precision([-500.0, 0.0]), 0);
+        assert_eq!(label_precision([-5.0, 0.0]), 2);
     }
 
     /// With data everywhere the legend still shows, in the corner hiding the least.
