@@ -343,7 +343,8 @@ mod tests {
         assert_eq!(label_precision([-0.0011, 0.0011]), 4);
         assert_eq!(label_precision([0.0, 360.0]), 0);
         assert_eq!(label_precision([0.0, 1.05]), 2);
-        assert_eq!(label_precision([-1.212, -0.956]), 3);
+        // The larger end (1.212) sets two decimals: −1.21, −1.08, −0.96 stay distinct.
+        assert_eq!(label_precision([-1.212, -0.956]), 2);
         assert_eq!(label_precision([0.0, 0.0]), 3);
         assert_eq!(label_precision([-500.0, 0.0]), 0);
         assert_eq!(label_precision([-5.0, 0.0]), 2);
