@@ -313,12 +313,12 @@ pub fn stiffness_lines(a: &Analysis, units: Units) -> Vec<String> {
         let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
         for j in 0..5 {
             let (f, _) = unit(i, j);
-            let shown = crate::report::stiffness::shown(|r, c| k[(r, c)], i, j);
+            let shown = crate::bearings::stiffness_text::shown(|r, c| k[(r, c)], i, j);
             let _ = write!(line, " {:>12.4e}", shown / f);
         }
         let _ = writeln!(s, "{line}");
     }
-    let _ = writeln!(s, "{}", crate::report::stiffness::round_off_note());
+    let _ = writeln!(s, "{}", crate::bearings::stiffness_text::round_off_note());
     let _ = writeln!(
         s,
         "  units: lineal {}, lineal-angular {} and {}, angular {}",
