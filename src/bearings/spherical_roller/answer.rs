@@ -32,6 +32,14 @@ pub fn answer(a: &Analysis) -> Vec<AnswerLine> {
     let no_life = life
         .and_then(|l| l.infinite_life_reason)
         .unwrap_or("the life stage did not run");
+    let iso = super::iso_life::iso_life(a);
+    let iso_why = |prefix: &str| -> &str {
+        iso.reasons
+            .iter()
+            .find(|r| r.starts_with(prefix))
+            .or(iso.reasons.first())
+            .map_or("not computed", |r| r.as_str())
+    };
     let mut out = vec![
         AnswerLine::number(
             LIFE,
@@ -59,6 +67,33 @@ pub fn answer(a: &Analysis) -> Vec<AnswerLine> {
             4,
             "/life/adjusted_l10_bearing_mrev",
             no_life,
+        ),
+        AnswerLine::number(
+            LIFE,
+            "L10 basic ISO 281",
+            iso.basic_l10_mrev,
+            Display::Mrev,
+            4,
+            "/life/basic_l10_mrev",
+            iso_why("ISO 281 P"),
+        ),
+        AnswerLine::number(
+            LIFE,
+            "L10m modified",
+            iso.modified_l10_mrev,
+            Display::Mrev,
+            4,
+            "/life/modified_l10_mrev",
+            iso_why("a_ISO"),
+        ),
+        AnswerLine::number(
+            LIFE,
+            "a_ISO",
+            iso.a_iso,
+            Display::Plain,
+            3,
+            "/life/a_iso",
+            iso_why("a_ISO"),
         ),
         AnswerLine::number(
             LIFE,

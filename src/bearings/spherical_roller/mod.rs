@@ -9,6 +9,7 @@ pub mod deck;
 pub mod deck_schema;
 pub mod geometry;
 pub mod input;
+pub mod iso_life;
 pub mod load_distribution;
 pub mod pipeline;
 pub mod report;

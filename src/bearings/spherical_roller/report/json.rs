@@ -167,6 +167,8 @@ pub fn to_value(a: &Analysis) -> Value {
                 json!(super::super::answer::static_safety_of(a)),
             );
         }
+        // Issue 28: ISO 281's basic and modified lives beside seed 000's (added fields).
+        super::super::iso_life::extend_json(a, &mut life);
         doc.insert("life".into(), life);
     }
     if let Some(th) = &a.thermal {

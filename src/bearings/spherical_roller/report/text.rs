@@ -185,6 +185,26 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
             opt(r.adjusted_l10_outer_mrev),
             opt(r.adjusted_l10_bearing_mrev)
         );
+        // Issue 28: ISO 281's numbers beside seed 000's (deck units; `iso_life`).
+        let iso = super::super::iso_life::iso_life(a);
+        let num =
+            |x: Option<f64>, k: f64| x.map_or("—".to_string(), |v| format!("{:.4e}", v * k));
+        let _ = writeln!(
+            s,
+            "  ISO 281: C_r {} {f}, P {} {f}, basic L-10 {} Mrev; kappa {}, e_C {}, a_ISO {}, modified L-10 {} Mrev; ISO 76 C_0r {} {f}",
+            num(iso.basic_dynamic_rating_n, d.force.0),
+            num(iso.equivalent_load_n, d.force.0),
+            num(iso.basic_l10_mrev, 1.0),
+            num(iso.kappa, 1.0),
+            iso.contamination_factor,
+            num(iso.a_iso, 1.0),
+            num(iso.modified_l10_mrev, 1.0),
+            num(iso.basic_static_rating_n, d.force.0),
+            f = d.force.1
+        );
+        for r in &iso.reasons {
+            let _ = writeln!(s, "  note: {r}");
+        }
     }
     if let Some(fr) = &a.friction {
         let h = &fr.heat;
