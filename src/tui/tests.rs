@@ -401,6 +401,85 @@ fn tui_stepper_navigation() {
     assert!(matches!(cmds.as_slice(), [Command::Solve(j)] if j.detail.trace_element == Some(2)));
 }
 
+/// The screen's rows as strings.
+fn screen_rows(t: &Terminal<TestBackend>) -> Vec<String> {
+    let b = t.backend().buffer();
+    (0..b.area.height)
+        .map(|y| (0..b.area.width).map(|x| b[(x, y)].symbol()).collect())
+        .collect()
+}
+
+/// Issue 30 item 2: the stepper's bar rows hold every lamina at 60×20, 80×24 and 200×50
+/// (resampled to the cells there are, said on screen, never cut), the trace's label is
+/// shown whole, and the history keeps at least its header and the current step's row.
+#[test]
+fn tui_stepper_bars_hold_every_lamina_at_every_size() {
+    for (w, h) in [(60, 20), (80, 24), (200, 50)] {
+        let app = solved_app(Pane::Stepper, w, h);
+        let trace = app
+            .view
+            .as_deref()
+            .and_then(|v| v.trace.clone())
+            .expect("a trace");
+        let n = trace.steps[0].bars[0].values.len();
+        // The stepper pane's columns only (at 200×50 other panes share the rows).
+        let all = screen_rows(&draw(&app, w, h));
+        let (top, x0) = all
+            .iter()
+            .enumerate()
+            .find_map(|(y, r)| {
+                let at = r.find("┌ Stepper")?;
+                Some((y, r[..at].chars().count()))
+            })
+            .expect("the stepper pane");
+        let x1 = all[top]
+            .chars()
+            .skip(x0)
+            .position(|c| c == '┐')
+            .expect("its corner")
+            + x0;
+        let rows: Vec<String> = all
+            .iter()
+            .skip(top)
+            .map(|r| r.chars().skip(x0).take(x1 + 1 - x0).collect())
+            .take_while(|r: &String| !r.starts_with('└'))
+            .collect();
+        let bar_row = rows
+            .iter()
+            .find(|r| r.contains("inner load"))
+            .unwrap_or_else(|| panic!("{w}×{h}: no bar row in {rows:#?}"));
+        let cells = bar_row
+            .chars()
+            .filter(|c| ('▁'..='█').contains(c) || *c == '·')
+            .count();
+        let note = format!("{n} values in {cells} cells, each the max");
+        let text = rows.join("\n");
+        if cells < n {
+            assert!(
+                text.contains(&note),
+                "{w}×{h}: {cells} of {n} cells unsaid:\n{text}"
+            );
+        } else {
+            assert_eq!(cells, n, "{w}×{h}: one cell per lamina");
+            assert!(!text.contains("each the max"), "{w}×{h}: nothing resampled");
+        }
+        // The bars end at the border: the whole row is used.
+        let inner_right = bar_row.chars().rev().nth(1).expect("row");
+        assert!(cells == n || inner_right != ' ', "{w}×{h}: {bar_row}");
+        let words: String = rows
+            .iter()
+            .map(|r| r.trim_matches(|c| c == '│' || c == ' ').to_string())
+            .collect::<Vec<_>>()
+            .join(" ");
+        let words = words.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(words.contains(&trace.label), "{w}×{h}: label cut:\n{text}");
+        assert!(
+            rows.iter().any(|r| r.contains("#  it")),
+            "{w}×{h}: no history:\n{text}"
+        );
+    }
+}
+
 #[test]
 fn tui_stale_result_is_dropped() {
     let mut app = solved_app(Pane::Inputs, 80, 24);
