@@ -480,6 +480,157 @@ fn tui_stepper_bars_hold_every_lamina_at_every_size() {
     }
 }
 
+/// A shipped deck (`decks/{stem}.toml`, as the snapshots draw it), solved at `w`×`h`
+/// and focused on the pane titled `title`.
+fn shipped_app(stem: &str, title: &str, w: u16, h: u16) -> App {
+    let path = PathBuf::from(format!("{}/decks/{stem}.toml", env!("CARGO_MANIFEST_DIR")));
+    let deck = shipped_deck_for_snapshots(&path);
+    let mut app = App::new(deck, Some(PathBuf::from(format!("decks/{stem}.toml"))));
+    app.handle(AppEvent::Resize(w, h));
+    let cmds = app.start();
+    run_sync_tolerant(&mut app, cmds);
+    let pane = app
+        .panes()
+        .into_iter()
+        .find(|&p| app.pane_title(p) == title)
+        .unwrap_or_else(|| panic!("{stem}: no pane {title}"));
+    let cmds = app.handle(ch(char::from(
+        b'1' + app.panes().iter().position(|&p| p == pane).unwrap_or(0) as u8,
+    )));
+    run_sync_tolerant(&mut app, cmds);
+    assert_eq!(app.focus, pane);
+    app
+}
+
+/// Issue 30 item 15: at 60×20 and 80×24 the Balls pane hides columns; `l` brings every
+/// one of them into view (the first, the ball's number, stays), the title says which
+/// are shown, and `h` goes back. At 200×50 the aerospace Rollers table uses the width.
+#[test]
+fn tui_every_table_column_can_be_scrolled_into_view() {
+    for (w, h) in [(60, 20), (80, 24)] {
+        let mut app = shipped_app("chen_b", "Balls", w, h);
+        let view = app.view.clone().expect("solved");
+        let table = view.screen_table().expect("a table");
+        let headers: Vec<String> = table
+            .columns
+            .iter()
+            .filter_map(|c| c.screen)
+            .map(|s| s.display.header(s.label, app.display_units))
+            .collect();
+        let mut seen = vec![false; headers.len()];
+        let mut titles = Vec::new();
+        for _ in 0..headers.len() {
+            let rows = screen_rows(&draw(&app, w, h));
+            titles.push(rows[1].clone());
+            let header_row = &rows[2];
+            for (k, hd) in headers.iter().enumerate() {
+                let padded = format!(" {hd}");
+                if header_row.contains(&padded) || header_row.starts_with(&format!("│{hd}")) {
+                    seen[k] = true;
+                }
+            }
+            app.handle(ch('l'));
+        }
+        let unseen: Vec<&String> = headers
+            .iter()
+            .zip(&seen)
+            .filter(|(_, s)| !**s)
+            .map(|(h, _)| h)
+            .collect();
+        assert!(unseen.is_empty(), "{w}×{h}: never shown: {unseen:?}");
+        assert!(
+            titles[0].contains("columns 2–")
+                && titles[0].contains(&format!("of {}", headers.len())),
+            "{w}×{h}: {}",
+            titles[0]
+        );
+        for _ in 0..headers.len() {
+            app.handle(ch('h'));
+        }
+        assert_eq!(app.col_scroll, 0);
+    }
+    let app = solved_app(Pane::Elements, 200, 50);
+    let rows = screen_rows(&draw(&app, 200, 50));
+    let used = rows[2].trim_end_matches(['│', ' ']).chars().count();
+    assert!(
+        used >= 190,
+        "the table ends at column {used} of 200:\n{}",
+        rows[2]
+    );
+}
+
+/// Issue 30 item 5: the tapered Stiffness pane at 60×20 shows each line of the block on
+/// one row (a matrix row is never wrapped), and `j`/`G` and `l` bring every line and
+/// every column into view, the title saying which.
+#[test]
+fn tui_text_pane_scrolls_instead_of_wrapping() {
+    let (w, h) = (60, 20);
+    let mut app = shipped_app("trb_afapl", "Stiffness", w, h);
+    let view = app.view.clone().expect("solved");
+    let n = match app.focus {
+        Pane::Text(n) => n,
+        p => panic!("Stiffness is a text pane, not {p:?}"),
+    };
+    let text: Vec<String> = view.texts[n].lines(app.display_units).to_vec();
+    let (rows_in, cols) = (usize::from(h) - 5, usize::from(w) - 2);
+    let widest_len = text.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+    assert!(
+        widest_len > cols,
+        "the block fits; the test needs one that does not"
+    );
+    let cut = |l: &str, from: usize| -> String {
+        l.chars()
+            .skip(from)
+            .take(cols)
+            .collect::<String>()
+            .trim_end()
+            .to_string()
+    };
+    let mut seen = vec![false; text.len()];
+    for top in 0..text.len() {
+        let rows = screen_rows(&draw(&app, w, h));
+        assert_eq!(
+            text.len() > rows_in,
+            rows[1].contains("lines "),
+            "{}",
+            rows[1]
+        );
+        assert!(rows[1].contains("columns 1–"), "{}", rows[1]);
+        let first = app.text_scroll.min(text.len().saturating_sub(rows_in));
+        for (r, line) in rows[2..2 + rows_in].iter().zip(text.iter().skip(first)) {
+            let shown = r.trim_start_matches('│').trim_end_matches('│').trim_end();
+            assert_eq!(shown, cut(line, 0), "row {top}: wrapped or cut wrongly");
+        }
+        for (k, s) in seen.iter_mut().enumerate() {
+            if k >= first && k < first + rows_in {
+                *s = true;
+            }
+        }
+        app.handle(ch('j'));
+    }
+    assert!(seen.iter().all(|s| *s), "a line never shown");
+    app.handle(ch('g'));
+    assert_eq!(app.text_scroll, 0);
+    // The widest line's end, after scrolling right.
+    let (at, widest) = text
+        .iter()
+        .enumerate()
+        .max_by_key(|(_, l)| l.chars().count())
+        .expect("lines");
+    let len = widest.chars().count();
+    for _ in 0..at {
+        app.handle(ch('j'));
+    }
+    if len > cols {
+        for _ in 0..(len / 8 + 1) {
+            app.handle(ch('l'));
+        }
+        let rows = screen_rows(&draw(&app, w, h));
+        let tail: String = widest.chars().skip(len - 10).collect();
+        assert!(rows.join("\n").contains(tail.trim()), "{tail} not reached");
+    }
+}
+
 #[test]
 fn tui_stale_result_is_dropped() {
     let mut app = solved_app(Pane::Inputs, 80, 24);
