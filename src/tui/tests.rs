@@ -1674,6 +1674,44 @@ fn help_scrolls_to_every_key() {
     assert_eq!(app.mode, Mode::Normal);
 }
 
+/// Issue 30 item 16: `?` on the element table says what the pane shows and, for every
+/// column of the view's table, its header and what it means (read from the view's own
+/// columns); Λ is explained in words. At 60×20 by scrolling, at 80×24 too.
+#[test]
+fn help_explains_every_column_of_the_table() {
+    for (w, h) in [(60, 20), (80, 24)] {
+        let mut app = solved_app(Pane::Elements, w, h);
+        app.handle(ch('?'));
+        let mut seen = String::new();
+        for _ in 0..(KEYS.len() + 30) {
+            seen.push_str(&draw(&app, w, h).backend().to_string());
+            app.handle(ch('j'));
+        }
+        let view = app.view.clone().expect("solved");
+        let table = view.screen_table().expect("table");
+        assert!(seen.contains("this pane"), "{w}×{h}");
+        for c in &table.columns {
+            let Some(s) = c.screen else { continue };
+            let header = s.display.header(s.label, app.display_units);
+            let help = crate::bearings::view::column_help(c.key);
+            let first = help
+                .split_whitespace()
+                .take(2)
+                .collect::<Vec<_>>()
+                .join(" ");
+            assert!(
+                seen.contains(&header),
+                "{w}×{h}: column {header} not in the help"
+            );
+            assert!(
+                seen.contains(&first),
+                "{w}×{h}: {header}: '{first}' not in the help"
+            );
+        }
+        assert!(seen.contains("film parameter Λ"), "{w}×{h}");
+    }
+}
+
 /// The screens in README.md and docs/workbench.md are the snapshot tests' frames: each
 /// `<!-- screen: NAME -->` marker is followed by a code block holding snapshot NAME's
 /// lines exactly. ROLLBENCH_UPDATE_DOCS=1 rewrites the blocks from the snapshots.
