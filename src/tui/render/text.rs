@@ -50,7 +50,41 @@ pub(super) fn render_text(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         .iter()
         .skip(top)
         .take(rows)
-        .map(|l| Line::raw(l.chars().skip(left).collect::<String>()))
+        .map(|l| Line::raw(window(l, left, cols)))
         .collect();
     Paragraph::new(lines).render(inner, buf);
+}
+
+/// Characters `left .. left + cols` of `line`, with a word cut by either edge blanked: a
+/// number is shown whole or not at all (`-7.2947e-21` cut to `-7.29` would misread).
+pub(super) fn window(line: &str, left: usize, cols: usize) -> String {
+    let chars: Vec<char> = line.chars().collect();
+    let end = (left + cols).min(chars.len());
+    let mut shown: Vec<char> = chars.get(left..end).unwrap_or(&[]).to_vec();
+    let word = |c: Option<&char>| c.is_some_and(|c| !c.is_whitespace());
+    if word(chars.get(end)) {
+        for c in shown.iter_mut().rev().take_while(|c| !c.is_whitespace()) {
+            *c = ' ';
+        }
+    }
+    if left > 0 && word(chars.get(left - 1)) {
+        for c in shown.iter_mut().take_while(|c| !c.is_whitespace()) {
+            *c = ' ';
+        }
+    }
+    shown.into_iter().collect::<String>().trim_end().to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::window;
+
+    /// A number cut by an edge is blanked, never shown in part.
+    #[test]
+    fn a_cut_number_is_not_shown() {
+        let line = "  M_y  9.9907e6  -7.2947e-21";
+        assert_eq!(window(line, 0, 24), "  M_y  9.9907e6");
+        assert_eq!(window(line, 0, 28), line);
+        assert_eq!(window(line, 9, 19), "        -7.2947e-21");
+    }
 }
