@@ -13,7 +13,7 @@ use rollbench::bearings::angular_ball::analysis::{analyse, BallAnalysis};
 use rollbench::bearings::angular_ball::dynamics;
 use rollbench::bearings::angular_ball::geometry::BallGeometry;
 use rollbench::bearings::angular_ball::input::{Method, Orbit, PreloadMode};
-use rollbench::bearings::angular_ball::load_distribution::{self, Axial, Conditions};
+use rollbench::bearings::angular_ball::load_distribution::{self, Axial, Conditions, Tilt};
 use rollbench::bearings::angular_ball::BallInput;
 use rollbench::numerics::cancel::Cancel;
 
@@ -26,8 +26,10 @@ fn conditions(input: &BallInput, geom: &BallGeometry) -> Conditions {
         outer_speed_rad_s: op.outer_speed_rad_s,
         axial: Axial::Force(op.axial_load_n),
         radial_load_n: op.radial_load_n,
+        tilt: Tilt::Held(0.0),
         race_control: input.kinematics.race_control,
         gyroscopic_friction: input.kinematics.gyroscopic_friction,
+        friction_split: input.kinematics.friction_split,
         max_friction: input.traction.curve().max_mu(),
     };
     if op.preload_mode == PreloadMode::Displacement {

@@ -822,6 +822,67 @@ impl View {
     }
 }
 
+/// What a column holds, for the workbench's help (issue 30 item 16): looked up by the
+/// column's own machine key, so the help follows the table. The common quantities are
+/// said in words (what Λ, s/r, h_c, M_r, an edge flag mean); any other key is read out
+/// from its name (`inner_load_n`: "inner load, N"), so no column is left unexplained.
+pub fn column_help(key: &str) -> String {
+    let known = match key {
+        "index" | "number" => "the element's number, counted from 1 around the bearing",
+        "azimuth_deg" => "angular position ψ of the element around the bearing",
+        "inner_normal_load_n" | "inner_load_n" => "normal load on the inner raceway contact",
+        "outer_normal_load_n" | "outer_load_n" => "normal load on the outer raceway contact",
+        "inner_contact_angle_deg" | "inner_angle_deg" => "contact angle α at the inner race",
+        "outer_contact_angle_deg" | "outer_angle_deg" => "contact angle α at the outer race",
+        "max_stress_pa" => "largest Hertz contact stress of the element, both races, edge laminae included",
+        "inner_max_pressure_pa" => "largest Hertz pressure p at the inner contact",
+        "outer_max_pressure_pa" => "largest Hertz pressure p at the outer contact",
+        "min_film_m" => "thinnest lubricant film h of the element's contacts",
+        "inner_central_film_m" => "central film thickness h_c at the inner contact (EHL)",
+        "outer_central_film_m" => "central film thickness h_c at the outer contact (EHL)",
+        "lambda" => "film parameter Λ = h / composite roughness: below 1 boundary, 1–3 mixed, above 3 full film",
+        "spin_rpm" => "the element's spin about its own axis relative to the cage",
+        "inner_spin_rad_s" => "spin ω_s of the ball relative to the inner race, about the contact normal",
+        "outer_spin_rad_s" => "spin ω_s of the ball relative to the outer race, about the contact normal",
+        "inner_spin_to_roll" => "s/r: spin-to-roll ratio at the inner contact (large: spin heats the contact)",
+        "outer_spin_to_roll" => "s/r: spin-to-roll ratio at the outer contact",
+        "inner_semi_major_m" => "semi-major axis a of the inner contact ellipse",
+        "outer_semi_major_m" => "semi-major axis a of the outer contact ellipse",
+        "centrifugal_force_n" => "centrifugal force F_c of the element at its orbit speed",
+        "gyroscopic_moment_nm" => "gyroscopic moment M_g the contacts must resist",
+        "resisting_moment_nm" => "M_r: the friction moment the contacts can resist; below M_g the ball skids",
+        "skidding" | "skid" => "whether the element skids (gyroscopic moment above what friction resists)",
+        "heat_w" => "heat generated at the element's contacts",
+        "flange_load_n" => "load on the flange (rib) contact",
+        "edge" | "inner_edge" | "outer_edge" => "edge loading: the contact reaches the end of the roller",
+        _ => "",
+    };
+    if !known.is_empty() {
+        return known.to_string();
+    }
+    // The SI unit is the key's last word (`_n`, `_pa`, `_m`, `_deg`, …).
+    let (words, unit) = match key.rsplit_once('_') {
+        Some((w, u)) => match u {
+            "n" => (w, "N"),
+            "m" => (w, "m"),
+            "pa" => (w, "Pa"),
+            "w" => (w, "W"),
+            "nm" => (w, "N·m"),
+            "deg" => (w, "°"),
+            "rpm" => (w, "rpm"),
+            "s" if w.ends_with("_rad") => (w.trim_end_matches("_rad"), "rad/s"),
+            _ => (key, ""),
+        },
+        None => (key, ""),
+    };
+    let words = words.replace('_', " ");
+    if unit.is_empty() {
+        words
+    } else {
+        format!("{words}, {unit} in SI")
+    }
+}
+
 #[cfg(test)]
 mod choice_tests {
     use super::*;
@@ -848,6 +909,17 @@ mod choice_tests {
 mod tests {
     use super::*;
     use crate::units::{INCH_M, LBF_N, PSI_PA};
+
+    /// Every column is explained: the common ones in words, the others read from their
+    /// key with its SI unit.
+    #[test]
+    fn every_column_has_help() {
+        assert!(column_help("lambda").contains("Λ"));
+        assert!(column_help("outer_spin_to_roll").starts_with("s/r"));
+        assert_eq!(column_help("cage_slip_n"), "cage slip, N in SI");
+        assert_eq!(column_help("cage_rad_s"), "cage, rad/s in SI");
+        assert_eq!(column_help("state"), "state");
+    }
 
     /// Display units against their definitions (exact factors of units.rs): 1 lbf, 1 ksi,
     /// 1 mil, 1 µin, 1 lbf/in shown as 1 in US units; SI shows N, MPa, mm, µm, N/mm.

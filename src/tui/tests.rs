@@ -401,6 +401,245 @@ fn tui_stepper_navigation() {
     assert!(matches!(cmds.as_slice(), [Command::Solve(j)] if j.detail.trace_element == Some(2)));
 }
 
+/// The screen's rows as strings.
+fn screen_rows(t: &Terminal<TestBackend>) -> Vec<String> {
+    let b = t.backend().buffer();
+    (0..b.area.height)
+        .map(|y| (0..b.area.width).map(|x| b[(x, y)].symbol()).collect())
+        .collect()
+}
+
+/// Issue 30 item 2: the stepper's bar rows hold every lamina at 60×20, 80×24 and 200×50
+/// (resampled to the cells there are, said on screen, never cut), the trace's label is
+/// shown whole, and the history keeps at least its header and the current step's row.
+#[test]
+fn tui_stepper_bars_hold_every_lamina_at_every_size() {
+    for (w, h) in [(60, 20), (80, 24), (200, 50)] {
+        let app = solved_app(Pane::Stepper, w, h);
+        let trace = app
+            .view
+            .as_deref()
+            .and_then(|v| v.trace.clone())
+            .expect("a trace");
+        let n = trace.steps[0].bars[0].values.len();
+        // The stepper pane's columns only (at 200×50 other panes share the rows).
+        let all = screen_rows(&draw(&app, w, h));
+        let (top, x0) = all
+            .iter()
+            .enumerate()
+            .find_map(|(y, r)| {
+                let at = r.find("┌ Stepper")?;
+                Some((y, r[..at].chars().count()))
+            })
+            .expect("the stepper pane");
+        let x1 = all[top]
+            .chars()
+            .skip(x0)
+            .position(|c| c == '┐')
+            .expect("its corner")
+            + x0;
+        let rows: Vec<String> = all
+            .iter()
+            .skip(top)
+            .map(|r| r.chars().skip(x0).take(x1 + 1 - x0).collect())
+            .take_while(|r: &String| !r.starts_with('└'))
+            .collect();
+        let bar_row = rows
+            .iter()
+            .find(|r| r.contains("inner load"))
+            .unwrap_or_else(|| panic!("{w}×{h}: no bar row in {rows:#?}"));
+        let cells = bar_row
+            .chars()
+            .filter(|c| ('▁'..='█').contains(c) || *c == '·')
+            .count();
+        let note = format!("{n} values in {cells} cells, each the max");
+        let text = rows.join("\n");
+        if cells < n {
+            assert!(
+                text.contains(&note),
+                "{w}×{h}: {cells} of {n} cells unsaid:\n{text}"
+            );
+        } else {
+            assert_eq!(cells, n, "{w}×{h}: one cell per lamina");
+            assert!(!text.contains("each the max"), "{w}×{h}: nothing resampled");
+        }
+        // The bars end at the border: the whole row is used.
+        let inner_right = bar_row.chars().rev().nth(1).expect("row");
+        assert!(cells == n || inner_right != ' ', "{w}×{h}: {bar_row}");
+        let words: String = rows
+            .iter()
+            .map(|r| r.trim_matches(|c| c == '│' || c == ' ').to_string())
+            .collect::<Vec<_>>()
+            .join(" ");
+        let words = words.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(words.contains(&trace.label), "{w}×{h}: label cut:\n{text}");
+        assert!(
+            rows.iter().any(|r| r.contains("#  it")),
+            "{w}×{h}: no history:\n{text}"
+        );
+    }
+}
+
+/// A shipped deck (`decks/{stem}.toml`, as the snapshots draw it), solved at `w`×`h`
+/// and focused on the pane titled `title`.
+fn shipped_app(stem: &str, title: &str, w: u16, h: u16) -> App {
+    let path = PathBuf::from(format!("{}/decks/{stem}.toml", env!("CARGO_MANIFEST_DIR")));
+    let deck = shipped_deck_for_snapshots(&path);
+    let mut app = App::new(deck, Some(PathBuf::from(format!("decks/{stem}.toml"))));
+    app.handle(AppEvent::Resize(w, h));
+    let cmds = app.start();
+    run_sync_tolerant(&mut app, cmds);
+    let pane = app
+        .panes()
+        .into_iter()
+        .find(|&p| app.pane_title(p) == title)
+        .unwrap_or_else(|| panic!("{stem}: no pane {title}"));
+    let cmds = app.handle(ch(char::from(
+        b'1' + app.panes().iter().position(|&p| p == pane).unwrap_or(0) as u8,
+    )));
+    run_sync_tolerant(&mut app, cmds);
+    assert_eq!(app.focus, pane);
+    app
+}
+
+/// Issue 30 item 15: at 60×20 and 80×24 the Balls pane hides columns; `l` brings every
+/// one of them into view (the first, the ball's number, stays), the title says which
+/// are shown, and `h` goes back. At 200×50 the aerospace Rollers table uses the width.
+#[test]
+fn tui_every_table_column_can_be_scrolled_into_view() {
+    for (w, h) in [(60, 20), (80, 24)] {
+        let mut app = shipped_app("chen_b", "Balls", w, h);
+        let view = app.view.clone().expect("solved");
+        let table = view.screen_table().expect("a table");
+        let headers: Vec<String> = table
+            .columns
+            .iter()
+            .filter_map(|c| c.screen)
+            .map(|s| s.display.header(s.label, app.display_units))
+            .collect();
+        let mut seen = vec![false; headers.len()];
+        let mut titles = Vec::new();
+        for _ in 0..headers.len() {
+            let rows = screen_rows(&draw(&app, w, h));
+            titles.push(rows[1].clone());
+            let header_row = &rows[2];
+            for (k, hd) in headers.iter().enumerate() {
+                let padded = format!(" {hd}");
+                if header_row.contains(&padded) || header_row.starts_with(&format!("│{hd}")) {
+                    seen[k] = true;
+                }
+            }
+            app.handle(ch('l'));
+        }
+        let unseen: Vec<&String> = headers
+            .iter()
+            .zip(&seen)
+            .filter(|(_, s)| !**s)
+            .map(|(h, _)| h)
+            .collect();
+        assert!(unseen.is_empty(), "{w}×{h}: never shown: {unseen:?}");
+        assert!(
+            titles[0].contains("columns 2–")
+                && titles[0].contains(&format!("of {}", headers.len())),
+            "{w}×{h}: {}",
+            titles[0]
+        );
+        for _ in 0..headers.len() {
+            app.handle(ch('h'));
+        }
+        assert_eq!(app.col_scroll, 0);
+    }
+    let app = solved_app(Pane::Elements, 200, 50);
+    let rows = screen_rows(&draw(&app, 200, 50));
+    let used = rows[2].trim_end_matches(['│', ' ']).chars().count();
+    assert!(
+        used >= 190,
+        "the table ends at column {used} of 200:\n{}",
+        rows[2]
+    );
+}
+
+/// Issue 30 item 5: the tapered Stiffness pane at 60×20 shows each line of the block on
+/// one row (a matrix row is never wrapped), and `j`/`G` and `l` bring every line and
+/// every column into view, the title saying which.
+#[test]
+fn tui_text_pane_scrolls_instead_of_wrapping() {
+    let (w, h) = (60, 20);
+    let mut app = shipped_app("trb_afapl", "Stiffness", w, h);
+    let view = app.view.clone().expect("solved");
+    let n = match app.focus {
+        Pane::Text(n) => n,
+        p => panic!("Stiffness is a text pane, not {p:?}"),
+    };
+    let text: Vec<String> = view.texts[n].lines(app.display_units).to_vec();
+    let (rows_in, cols) = (usize::from(h) - 5, usize::from(w) - 2);
+    let widest_len = text.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+    assert!(
+        widest_len > cols,
+        "the block fits; the test needs one that does not"
+    );
+    let cut = |l: &str, from: usize| -> String {
+        l.chars()
+            .skip(from)
+            .take(cols)
+            .collect::<String>()
+            .trim_end()
+            .to_string()
+    };
+    let mut seen = vec![false; text.len()];
+    for top in 0..text.len() {
+        let rows = screen_rows(&draw(&app, w, h));
+        assert_eq!(
+            text.len() > rows_in,
+            rows[1].contains("lines "),
+            "{}",
+            rows[1]
+        );
+        assert!(rows[1].contains("columns 1–"), "{}", rows[1]);
+        let first = app.text_scroll.min(text.len().saturating_sub(rows_in));
+        for (r, line) in rows[2..2 + rows_in].iter().zip(text.iter().skip(first)) {
+            let shown = r.trim_start_matches('│').trim_end_matches('│').trim_end();
+            let want = cut(line, 0);
+            // Whole words only: the row is the line's start, up to a word boundary.
+            assert!(
+                want.starts_with(shown)
+                    && line
+                        .chars()
+                        .nth(shown.chars().count())
+                        .is_none_or(char::is_whitespace),
+                "row {top}: wrapped or cut wrongly: {shown:?} of {line:?}"
+            );
+        }
+        for (k, s) in seen.iter_mut().enumerate() {
+            if k >= first && k < first + rows_in {
+                *s = true;
+            }
+        }
+        app.handle(ch('j'));
+    }
+    assert!(seen.iter().all(|s| *s), "a line never shown");
+    app.handle(ch('g'));
+    assert_eq!(app.text_scroll, 0);
+    // The widest line's end, after scrolling right.
+    let (at, widest) = text
+        .iter()
+        .enumerate()
+        .max_by_key(|(_, l)| l.chars().count())
+        .expect("lines");
+    let len = widest.chars().count();
+    for _ in 0..at {
+        app.handle(ch('j'));
+    }
+    if len > cols {
+        for _ in 0..(len / 8 + 1) {
+            app.handle(ch('l'));
+        }
+        let rows = screen_rows(&draw(&app, w, h));
+        let tail: String = widest.chars().skip(len - 10).collect();
+        assert!(rows.join("\n").contains(tail.trim()), "{tail} not reached");
+    }
+}
+
 #[test]
 fn tui_stale_result_is_dropped() {
     let mut app = solved_app(Pane::Inputs, 80, 24);
@@ -1442,6 +1681,44 @@ fn help_scrolls_to_every_key() {
     }
     app.handle(ch('x'));
     assert_eq!(app.mode, Mode::Normal);
+}
+
+/// Issue 30 item 16: `?` on the element table says what the pane shows and, for every
+/// column of the view's table, its header and what it means (read from the view's own
+/// columns); Λ is explained in words. At 60×20 by scrolling, at 80×24 too.
+#[test]
+fn help_explains_every_column_of_the_table() {
+    for (w, h) in [(60, 20), (80, 24)] {
+        let mut app = solved_app(Pane::Elements, w, h);
+        app.handle(ch('?'));
+        let mut seen = String::new();
+        for _ in 0..(KEYS.len() + 30) {
+            seen.push_str(&draw(&app, w, h).backend().to_string());
+            app.handle(ch('j'));
+        }
+        let view = app.view.clone().expect("solved");
+        let table = view.screen_table().expect("table");
+        assert!(seen.contains("this pane"), "{w}×{h}");
+        for c in &table.columns {
+            let Some(s) = c.screen else { continue };
+            let header = s.display.header(s.label, app.display_units);
+            let help = crate::bearings::view::column_help(c.key);
+            let first = help
+                .split_whitespace()
+                .take(2)
+                .collect::<Vec<_>>()
+                .join(" ");
+            assert!(
+                seen.contains(&header),
+                "{w}×{h}: column {header} not in the help"
+            );
+            assert!(
+                seen.contains(&first),
+                "{w}×{h}: {header}: '{first}' not in the help"
+            );
+        }
+        assert!(seen.contains("film parameter Λ"), "{w}×{h}");
+    }
 }
 
 /// The screens in README.md and docs/workbench.md are the snapshot tests' frames: each

@@ -127,22 +127,38 @@ pub struct TableCells {
     pub columns: Vec<Column>,
     /// One row of formatted cells per element (`—` where a stage was not run).
     pub rows: Vec<Vec<String>>,
-    /// Columns left out because even at their narrowest they do not fit.
+    /// Columns left out because even at their narrowest they do not fit (or are
+    /// scrolled off to the left).
     pub hidden: usize,
     /// Spaces between columns.
     pub gap: u16,
+    /// Columns of the table in all (shown and hidden).
+    pub total: usize,
+    /// The 1-based numbers of the first and last columns shown after the pinned first
+    /// one (`columns 2–9 of 17`).
+    pub range: [usize; 2],
+    /// The scroll offset used: how many columns after the first are scrolled off
+    /// (the requested offset, clamped to keep at least one column in view).
+    pub first: usize,
 }
 
 /// Narrowest a number column gets: room for `-1.2k` or `1.2e5`.
 const MIN_NUMBER_WIDTH: usize = 5;
+
+/// Most cells a column of a table narrower than its pane is widened by.
+pub const MAX_SPREAD: usize = 4;
 
 /// The screen table of a view in display units `u`, for a pane `width` cells wide
 /// (columns separated by two spaces, or one when room is short). Columns take the width of their widest cell and
 /// header; when that does not fit, the widest give way first, down to their header or
 /// [`MIN_NUMBER_WIDTH`], and their numbers are refitted ([`fit_number`]); columns that
 /// still do not fit are left out (counted in [`TableCells::hidden`]), never cut.
+/// `first` scrolls (issue 30 item 15): the first column (the element's number) stays,
+/// the `first` columns after it are left out, so every column can be brought into view;
+/// a table narrower than the pane spreads its columns over it (up to
+/// [`MAX_SPREAD`] more cells each) instead of leaving the right of the pane blank.
 /// Formatting only: the values come from the bearing system's view.
-pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
+pub fn table_cells(view: &View, u: Units, width: usize, first: usize) -> TableCells {
     let Some(t) = view.screen_table() else {
         return TableCells::default();
     };
@@ -151,6 +167,14 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
         .iter()
         .enumerate()
         .filter_map(|(i, c)| c.screen.map(|s| (i, s)))
+        .collect();
+    let total_columns = shown.len();
+    let first = first.min(total_columns.saturating_sub(2));
+    let shown: Vec<(usize, Screen)> = shown
+        .iter()
+        .take(1)
+        .chain(shown.iter().skip(1 + first))
+        .copied()
         .collect();
     let values: Vec<Vec<Option<f64>>> = t
         .rows
@@ -226,6 +250,14 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
     while n > 0 && total(&widths[..n]) > width {
         n -= 1;
     }
+    // Room to spare: spread the columns over the pane (numbers are right-aligned, so the
+    // extra cells go before them).
+    if n == widths.len() && n > 0 {
+        let spare = width.saturating_sub(total(&widths)) / n;
+        for w in &mut widths {
+            *w += spare.min(MAX_SPREAD);
+        }
+    }
     let columns = headers
         .iter()
         .zip(&widths)
@@ -256,8 +288,14 @@ pub fn table_cells(view: &View, u: Units, width: usize) -> TableCells {
     TableCells {
         columns,
         rows,
-        hidden: shown.len() - n,
+        hidden: total_columns - n,
         gap: gap as u16,
+        total: total_columns,
+        range: [
+            if n > 1 { 2 + first } else { 1 },
+            if n > 1 { 1 + first + (n - 1) } else { n },
+        ],
+        first,
     }
 }
 

@@ -36,6 +36,8 @@ pub struct BallAnalysis {
     pub load: LoadDistribution,
     /// Per ball.
     pub balls: Vec<BallResult>,
+    /// The 5×5 stiffness matrix at the operating point (issue 29).
+    pub stiffness: super::stiffness::BallStiffness,
     /// The skidding threshold.
     pub skid: SkidThreshold,
     /// Total heat, W: race control's spin heat, or the ball dynamics' slice heat when
@@ -165,11 +167,13 @@ pub fn analyse_streaming(
         .validate()
         .map_err(|e| BallError::InvalidInput(format!("traction: {e}")))?;
     let op = &input.operating;
-    if !(op.axial_load_n.is_finite() && op.axial_load_n > 0.0) {
-        return Err(BallError::InvalidInput(
-            "operating.axial_load must be positive (an angular-contact bearing needs its preload)"
-                .into(),
-        ));
+    // Zero is allowed (issue 29): a pure radial load, or a bearing at rest with nothing
+    // on it; `axial_condition` says what holds the ring axially then.
+    if !(op.axial_load_n.is_finite() && op.axial_load_n >= 0.0) {
+        return Err(BallError::InvalidInput(format!(
+            "operating.axial_load = {} N: it must be a finite force ≥ 0 N (0 for a pure radial load)",
+            op.axial_load_n
+        )));
     }
     let geom = BallGeometry::new(input)?;
     let (axial, rest) = axial_condition(input, &geom, cancel)?;
@@ -184,6 +188,7 @@ pub fn analyse_streaming(
             (l, Some((j, steps)))
         }
     };
+    let stiffness = super::stiffness::stiffness(&geom, &load, input.solver.stiffness)?;
     let mu = input.traction.curve().max_mu();
     let mut balls = Vec::with_capacity(load.balls.len());
     // A contact's result depends only on its load state and kinematics: balls in the
@@ -262,6 +267,7 @@ pub fn analyse_streaming(
         rest_axial_deflection_m: rest,
         load,
         balls,
+        stiffness,
         skid,
         total_heat_w: total,
         race_control_heat_w: race_control_heat,

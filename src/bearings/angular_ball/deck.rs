@@ -16,6 +16,8 @@ const HERTZ: &[&str] = &["exact", "brewe-hamrock"];
 const PRELOAD: &[&str] = &["displacement", "force"];
 const RACE: &[&str] = &["outer", "inner", "auto"];
 const GYRO: &[&str] = &["resisting", "seed"];
+const SPLIT: &[&str] = &["proportional", "controlling-race"];
+const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
 const CURVES: &[&str] = &[
     "constant", "curve-1", "curve-2", "curve-3", "table", "rheology",
 ];
@@ -29,7 +31,7 @@ const BALL: [FieldSpec<BallInput>; 5] =
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 46] = [
+static FIELDS: [FieldSpec<BallInput>; 50] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -200,10 +202,10 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
             "Axial load (preload) F_a",
             Quantity::Force,
             FieldKind::Real,
-            (0.0, true),
+            (0.0, false),
             (1e7, false),
             Presence::Required,
-            "axial load on the inner ring (the preload)",
+            "axial load on the inner ring (the preload); 0 for a pure radial load (the ring then finds its axial place from the radial load)",
         ),
         get: |b| b.operating.axial_load_n,
         set: |b, v| b.operating.axial_load_n = v,
@@ -240,6 +242,36 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
     },
     FieldSpec {
         meta: FieldMeta::new(
+            "operating.moment",
+            "operating",
+            "Moment M",
+            Quantity::Moment,
+            FieldKind::RealOr("held"),
+            (-1e6, false),
+            (1e6, false),
+            Presence::Default(f64::NAN),
+            "moment on the inner ring about the axis across the radial load (positive tilts the ring's side under the radial load towards the axial load); \"held\": the tilt is held at operating.misalignment instead",
+        ),
+        get: |b| b.operating.moment_nm.unwrap_or(f64::NAN),
+        set: |b, v| b.operating.moment_nm = (!v.is_nan()).then_some(v),
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "operating.misalignment",
+            "operating",
+            "Misalignment θ",
+            Quantity::Angle,
+            FieldKind::Real,
+            (-0.05, false),
+            (0.05, false),
+            Presence::Default(0.0),
+            "tilt of the inner ring about the axis across the radial load, held when no operating.moment is given (same sign as the moment's)",
+        ),
+        get: |b| b.operating.misalignment_rad,
+        set: |b, v| b.operating.misalignment_rad = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
             "kinematics.race_control",
             "kinematics",
             "Controlling race",
@@ -267,6 +299,36 @@ static FIELDS: [FieldSpec<BallInput>; 46] = [
         ),
         get: |b| match b.kinematics.gyroscopic_friction { GyroscopicFriction::Resisting => 0.0, GyroscopicFriction::SeedSign => 1.0 },
         set: |b, v| b.kinematics.gyroscopic_friction = if v == 1.0 { GyroscopicFriction::SeedSign } else { GyroscopicFriction::Resisting },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "kinematics.friction_split",
+            "kinematics",
+            "Gyroscopic friction split",
+            Quantity::Dimensionless,
+            FieldKind::Choice(SPLIT),
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(0.0),
+            "how the friction resisting the gyroscopic moment is shared: \"proportional\" (Chen, 2-7: in proportion to the normal loads) or \"controlling-race\" (Harris, OpenJones: all at the controlling race, λ = 2, none at the other)",
+        ),
+        get: |b| match b.kinematics.friction_split { FrictionSplit::Proportional => 0.0, FrictionSplit::ControllingRace => 1.0 },
+        set: |b, v| b.kinematics.friction_split = if v == 1.0 { FrictionSplit::ControllingRace } else { FrictionSplit::Proportional },
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "solver.stiffness",
+            "solver",
+            "Stiffness matrix by",
+            Quantity::Dimensionless,
+            FieldKind::Choice(STIFFNESS),
+            (0.0, false),
+            (2.0, false),
+            Presence::Default(0.0),
+            "the 5×5 stiffness matrix: \"analytic\" (the ring Newton's Jacobian, the balls condensed), \"finite-difference\" (central differences of the re-solved ball equilibria) or \"both\" (analytic, checked: finite_difference_max_rel)",
+        ),
+        get: |b| match b.solver.stiffness { StiffnessMethod::Analytic => 0.0, StiffnessMethod::FiniteDifference => 1.0, StiffnessMethod::Both => 2.0 },
+        set: |b, v| b.solver.stiffness = match v as usize { 1 => StiffnessMethod::FiniteDifference, 2 => StiffnessMethod::Both, _ => StiffnessMethod::Analytic },
     },
     FieldSpec {
         meta: FieldMeta::new(
@@ -620,6 +682,17 @@ fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
             ));
         }
     }
+    // One DOF, one holding (issue 29): a moment and a held tilt both given is refused,
+    // naming both keys.
+    if b.operating.moment_nm.is_some() && b.operating.misalignment_rad != 0.0 {
+        v.push((
+            "operating.moment",
+            format!(
+                "and operating.misalignment ({}) both hold the ring's tilt: give the moment (the tilt is solved) or the misalignment (the moment follows), not both",
+                show(&SCHEMA, b, "operating.misalignment", units),
+            ),
+        ));
+    }
     if b.geometry.pitch_diameter_m <= b.geometry.ball_diameter_m {
         v.push((
             "geometry.pitch_diameter",
@@ -641,6 +714,7 @@ pub static SCHEMA: Schema<BallInput> = Schema {
         "traction_table",
         "lubricant",
         "dynamics",
+        "solver",
         "thermal",
     ],
     required_groups: &["geometry", "materials", "operating", "lubricant"],

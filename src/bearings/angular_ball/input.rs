@@ -174,6 +174,65 @@ pub struct Operating {
     pub preload_mode: PreloadMode,
     /// Radial load, N.
     pub radial_load_n: f64,
+    /// Moment on the inner ring about the axis across the radial load, N·m; `None`: the
+    /// tilt is held at `misalignment_rad` (issue 29).
+    pub moment_nm: Option<f64>,
+    /// The inner ring's tilt when no moment is given, rad (0: the model before issue 29).
+    pub misalignment_rad: f64,
+}
+
+/// How the friction that resists the gyroscopic moment is shared between the races in
+/// the ball equilibrium (2-5; issue 29).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FrictionSplit {
+    /// Chen's reading (seed 001, 2-7, the default): one coefficient µ = 2M_g/(D(Q_i + Q_o))
+    /// at both contacts, so each race gives friction in proportion to its normal load.
+    #[default]
+    Proportional,
+    /// Harris's (Harris & Kotzalas vol. 2 §3.2, λ_i, λ_o; OpenJones): the whole friction
+    /// 2M_g/D at the controlling race of race control (λ = 2), none at the other (λ = 0).
+    /// With `race_control = "auto"` the race that control picks for each ball.
+    ControllingRace,
+}
+
+impl FrictionSplit {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            FrictionSplit::Proportional => "proportional",
+            FrictionSplit::ControllingRace => "controlling-race",
+        }
+    }
+}
+
+/// How the stiffness matrix is computed (`solver.stiffness`, issue 29).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StiffnessMethod {
+    /// From the ring Newton's Jacobian (default).
+    #[default]
+    Analytic,
+    /// Central differences of the re-solved ball equilibria.
+    FiniteDifference,
+    /// Both: the analytic matrix, checked by the finite differences.
+    Both,
+}
+
+impl StiffnessMethod {
+    /// The deck spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            StiffnessMethod::Analytic => "analytic",
+            StiffnessMethod::FiniteDifference => "finite-difference",
+            StiffnessMethod::Both => "both",
+        }
+    }
+}
+
+/// Solver options (issue 29).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Solver {
+    /// How the stiffness matrix is computed.
+    pub stiffness: StiffnessMethod,
 }
 
 /// Kinematic assumptions.
@@ -183,6 +242,8 @@ pub struct Kinematics {
     pub race_control: RaceControl,
     /// Sign convention of the gyroscopic friction in eq. 2-5.
     pub gyroscopic_friction: GyroscopicFriction,
+    /// How that friction is shared between the races.
+    pub friction_split: FrictionSplit,
 }
 
 /// The lubricant (seed 001 ch. 4), SI.
@@ -339,6 +400,8 @@ pub struct BallInput {
     pub operating: Operating,
     /// Kinematics.
     pub kinematics: Kinematics,
+    /// Solver options.
+    pub solver: Solver,
     /// Traction curve.
     pub traction: Traction,
     /// Lubricant.
@@ -418,10 +481,16 @@ impl BallInput {
                 axial_load_n: 1000.0,
                 preload_mode: PreloadMode::Displacement,
                 radial_load_n: 0.0,
+                moment_nm: None,
+                misalignment_rad: 0.0,
             },
             kinematics: Kinematics {
                 race_control: RaceControl::Outer,
                 gyroscopic_friction: GyroscopicFriction::Resisting,
+                friction_split: FrictionSplit::Proportional,
+            },
+            solver: Solver {
+                stiffness: StiffnessMethod::Analytic,
             },
             traction: Traction {
                 preset: TractionPreset::Curve1,

@@ -30,9 +30,13 @@ pub mod race_control;
 pub mod report;
 pub mod results;
 mod skid;
+pub mod stiffness;
 pub mod system;
 pub mod view;
 pub mod warnings;
+
+#[cfg(test)]
+mod dof_tests;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the
 /// folder's root so that every file below reads it downward.

@@ -269,6 +269,26 @@ pub fn view(a: &BallAnalysis) -> View {
                 Quantity::Dimensionless,
                 KeyRole::Guard,
             ),
+            // The stiffness diagonals (issue 29; the tapered system's names). SI values:
+            // the unit table has no stiffness quantity, so they are dimensionless.
+            k(
+                "stiffness_xx_n_m",
+                Some(a.stiffness.matrix[(0, 0)]),
+                Quantity::Dimensionless,
+                KeyRole::Target,
+            ),
+            k(
+                "stiffness_zz_n_m",
+                Some(a.stiffness.matrix[(2, 2)]),
+                Quantity::Dimensionless,
+                KeyRole::Target,
+            ),
+            k(
+                "stiffness_thetax_nm_rad",
+                Some(a.stiffness.matrix[(3, 3)]),
+                Quantity::Dimensionless,
+                KeyRole::Target,
+            ),
         ],
         trace: trace(a),
         thermal: None,
@@ -279,7 +299,11 @@ pub fn view(a: &BallAnalysis) -> View {
             wall_time_s: 0.0,
         },
         warnings: super::warnings::warnings(a),
-        texts: Vec::new(),
+        texts: vec![crate::bearings::view::TextBlock {
+            title: "stiffness",
+            si: super::report::stiffness_lines(a, crate::units::Units::Si),
+            us: super::report::stiffness_lines(a, crate::units::Units::Us),
+        }],
         answer: super::answer::answer(a, &life),
     }
 }
@@ -295,6 +319,9 @@ fn short_label(name: &str) -> &'static str {
         "skid_threshold_rpm" => "skid",
         "l10_bearing_mrev" => "L10",
         "static_safety" => "s0",
+        "stiffness_xx_n_m" => "Kxx",
+        "stiffness_zz_n_m" => "Kzz",
+        "stiffness_thetax_nm_rad" => "Kθθ",
         _ => "?",
     }
 }

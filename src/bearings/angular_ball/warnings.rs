@@ -5,7 +5,7 @@
 
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use super::dynamics;
-use super::input::Method;
+use super::input::{Method, PreloadMode};
 use crate::bearings::view::{Display, Warning};
 use crate::units::Units;
 
@@ -34,6 +34,7 @@ pub const BULK_TEMPERATURE_LIMIT_C: f64 = 400.0;
 /// empty when every result is within the model. Each is written in both unit systems.
 pub fn warnings(a: &BallAnalysis) -> Vec<Warning> {
     let mut w = Vec::new();
+    undetermined(a, &mut w);
     angles(a, &mut w);
     cage(a, &mut w);
     bulk(a, &mut w);
@@ -41,6 +42,29 @@ pub fn warnings(a: &BallAnalysis) -> Vec<Warning> {
     settling(a, &mut w);
     film(a, &mut w);
     w
+}
+
+/// Neither an axial nor a radial load: nothing fixes the inner ring's axial place within
+/// the bearing's play (at rest the balls are loose; at speed the centrifugal force holds
+/// them on the outer race and the inner ring floats), so the solve holds it
+/// (`load_conditions::axial_condition`): a displacement-held preload at δ_a = 0, the
+/// balls just touching both grooves at α₀ (at speed the balls' growth then loads it, as
+/// a rigidly held spindle pair); a force-held one centred in its play, δ_a = −A sin α₀,
+/// where no ball is pressed. Said, because that place is the model's choice, not an
+/// answer of the loads (issue 29).
+fn undetermined(a: &BallAnalysis, w: &mut Vec<Warning>) {
+    let op = &a.input.operating;
+    if op.axial_load_n == 0.0 && op.radial_load_n == 0.0 {
+        let place = match op.preload_mode {
+            PreloadMode::Displacement => "held at δ_a = 0 (operating.preload_mode = \"displacement\": the balls just touching both grooves at the free contact angle, as a rigidly held spindle pair with no preload)",
+            PreloadMode::Force => "held centred in its play, δ_a = −A·sin α₀ (operating.preload_mode = \"force\": no ball is pressed by the inner ring there)",
+        };
+        let text = format!("no load: with operating.axial_load = 0 and operating.radial_load = 0 nothing fixes the inner ring's axial place within the play; it is {place}, a choice of the model, not an answer of the loads");
+        w.push(Warning {
+            si: text.clone(),
+            us: text,
+        });
+    }
 }
 
 /// A loaded contact with no EHD film because the lubricant has no pressure–viscosity

@@ -254,7 +254,17 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "Stepper",
         "step back / forward through iterations",
     ),
-    ("h l / ← →", "Rollers, Load", "previous / next roller"),
+    ("h l / ← →", "Load", "previous / next roller"),
+    (
+        "h l / ← →",
+        "Rollers, Balls",
+        "scroll the columns (the first stays; the title says which are shown)",
+    ),
+    (
+        "j k g G / h l",
+        "Stiffness (text panes)",
+        "scroll the lines / the columns when they do not fit",
+    ),
     (
         "c",
         "Load (when shown)",

@@ -297,6 +297,11 @@ pub struct App {
     pub thermal_node: Option<usize>,
     /// The Summary pane's first line shown (it scrolls when its lines do not fit).
     pub summary_scroll: usize,
+    /// Horizontal scroll (`h`/`l`): the element table's columns scrolled off after its
+    /// first (issue 30 item 15); a text pane's characters scrolled off at the left.
+    pub col_scroll: usize,
+    /// A text pane's first line shown (`j`/`k`/`g`/`G`; issue 30 item 5).
+    pub text_scroll: usize,
     /// One-line message for the status bar (saved, errors).
     pub message: Option<String>,
     /// The last error (a failed open, save or solve), whole, one message per line: the
@@ -353,6 +358,8 @@ impl App {
             step: 0,
             thermal_node: None,
             summary_scroll: 0,
+            col_scroll: 0,
+            text_scroll: 0,
             message: None,
             error: None,
             quit: false,

@@ -15,6 +15,10 @@ impl App {
     }
 
     pub(super) fn focus_to(&mut self, pane: Pane) -> Vec<Command> {
+        if pane != self.focus {
+            self.col_scroll = 0;
+            self.text_scroll = 0;
+        }
         self.focus = pane;
         self.resolve_if_needed()
     }
@@ -27,7 +31,14 @@ impl App {
             (cur as isize).saturating_add(by).clamp(0, len as isize - 1) as usize
         };
         match self.focus {
-            Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
+            Pane::Text(_) => {
+                // The renderer clamps to what is left below the text's last line.
+                self.text_scroll = (self.text_scroll as isize)
+                    .saturating_add(by)
+                    .clamp(0, 10_000) as usize;
+                Vec::new()
+            }
+            Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
             Pane::Summary => {
                 // The renderer clamps to what is left below the pane's last line.
                 self.summary_scroll = (self.summary_scroll as isize)
@@ -61,7 +72,8 @@ impl App {
         }
     }
 
-    /// Left/right: stepper steps; load chart rollers.
+    /// Left/right: stepper steps; load chart rollers; the element table's columns and a
+    /// text pane's characters.
     pub(super) fn sideways(&mut self, by: isize) -> Vec<Command> {
         match self.focus {
             Pane::Stepper => {
@@ -73,7 +85,30 @@ impl App {
                 }
                 Vec::new()
             }
-            Pane::Chart(_) | Pane::Elements => {
+            // The element table scrolls its columns (the first, the element's number,
+            // stays); the renderer clamps to keep one column in view.
+            Pane::Elements => {
+                let n = self
+                    .view
+                    .as_deref()
+                    .and_then(|v| v.screen_table())
+                    .map_or(0, |t| {
+                        t.columns.iter().filter(|c| c.screen.is_some()).count()
+                    });
+                self.col_scroll = (self.col_scroll as isize)
+                    .saturating_add(by)
+                    .clamp(0, n.saturating_sub(2) as isize)
+                    as usize;
+                Vec::new()
+            }
+            // A text pane scrolls by 8 characters a step.
+            Pane::Text(_) => {
+                self.col_scroll = (self.col_scroll as isize)
+                    .saturating_add(by.saturating_mul(8))
+                    .clamp(0, 10_000) as usize;
+                Vec::new()
+            }
+            Pane::Chart(_) => {
                 let n = self.roller_count();
                 if n > 0 {
                     self.roller_sel =

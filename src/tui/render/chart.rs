@@ -170,12 +170,15 @@ pub(super) fn series_datasets(s: &view_model::ChartSeries) -> Vec<Dataset<'_>> {
         .collect()
 }
 
-/// Draws `datasets` on `s`'s axes inside `block`, the legend in the corner where it
-/// hides the least of what is drawn (data and axis titles): the top right when that
-/// corner is free, else the first free one of top left, bottom right, bottom left, else
-/// the one covering the fewest cells. Measured, not guessed: the chart is drawn once
-/// without a legend and once per corner into scratch buffers; the cells a legend changes
-/// are its box, and the bare chart's non-blank cells inside that box are what it hides.
+/// Draws `datasets` on `s`'s axes inside `block`. Nothing is drawn over the data
+/// (issue 30 item 3): the axis titles go on a row of their own above the plot (`▲ y`
+/// at the left, `x ▶` at the right; ratatui would write them inside the plot, over its
+/// first row and over the row above the x axis), and the legend goes in the corner of
+/// the plot where no data is (top right when that corner is free, else the first free
+/// one of top left, bottom right, bottom left), or, when every corner holds data, in a
+/// strip right of the plot. Measured, not guessed: the chart is drawn once without a
+/// legend and once per corner into scratch buffers; the cells a legend changes are its
+/// box, and the bare chart's non-blank cells inside that box are what it would hide.
 pub(super) fn draw_chart(
     s: &view_model::ChartSeries,
     datasets: Vec<Dataset>,
@@ -183,37 +186,95 @@ pub(super) fn draw_chart(
     area: Rect,
     buf: &mut Buffer,
 ) {
+    let inner = block.inner(area);
+    block.render(area, buf);
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
     let x_prec = label_precision(s.x_bounds);
     let make = |legend: Option<LegendPosition>| {
         Chart::new(datasets.clone())
             .legend_position(legend)
             .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
-            .block(block.clone())
             .x_axis(
                 Axis::default()
-                    .title(s.x_label.clone())
                     .style(Style::default().fg(DIM))
                     .bounds(s.x_bounds)
                     .labels(axis_labels(s.x_bounds, x_prec)),
             )
             .y_axis(
                 Axis::default()
-                    .title(s.y_label.clone())
                     .style(Style::default().fg(DIM))
                     .bounds(s.y_bounds)
                     .labels(axis_labels(s.y_bounds, label_precision(s.y_bounds))),
             )
     };
-    make(legend_corner(area, &make)).render(area, buf);
+    let plot = axis_titles(s, inner, buf);
+    match legend_corner(plot, &make) {
+        None => make(None).render(plot, buf),
+        Some((0, corner)) => make(Some(corner)).render(plot, buf),
+        Some(_) => legend_beside(plot, &make, buf),
+    }
+}
+
+/// Writes the axis titles on the first row of `area` (two rows when they do not fit on
+/// one) and returns what is left for the plot; all of `area` when it is too short to
+/// spare a row.
+fn axis_titles(s: &view_model::ChartSeries, area: Rect, buf: &mut Buffer) -> Rect {
+    let y = format!("▲ {}", s.y_label);
+    let x = format!("{} ▶", s.x_label);
+    let (yw, xw) = (y.chars().count() as u16, x.chars().count() as u16);
+    let rows = if yw + 2 + xw <= area.width { 1 } else { 2 };
+    if area.height < rows + 4 {
+        return area;
+    }
+    let style = Style::default().fg(DIM);
+    buf.set_stringn(area.x, area.y, &y, usize::from(area.width), style);
+    let xrow = area.y + rows - 1;
+    let xx = area.x + area.width.saturating_sub(xw);
+    buf.set_stringn(xx, xrow, &x, usize::from(area.width), style);
+    Rect {
+        y: area.y + rows,
+        height: area.height - rows,
+        ..area
+    }
+}
+
+/// Draws the chart `make` builds with its legend in a strip right of the plot: the
+/// legend box as ratatui draws it (found by drawing it in the top right of a scratch
+/// buffer), the plot narrowed by its width.
+fn legend_beside<'a>(
+    area: Rect,
+    make: &impl Fn(Option<LegendPosition>) -> Chart<'a>,
+    buf: &mut Buffer,
+) {
+    let mut bare = Buffer::empty(area);
+    make(None).render(area, &mut bare);
+    let mut with = Buffer::empty(area);
+    make(Some(LegendPosition::TopRight)).render(area, &mut with);
+    let Some(boxed) = changed_box(&bare, &with, area) else {
+        make(None).render(area, buf);
+        return;
+    };
+    let plot = Rect {
+        width: area.width.saturating_sub(boxed.width + 1),
+        ..area
+    };
+    make(None).render(plot, buf);
+    let left = area.right() - boxed.width;
+    for dy in 0..boxed.height {
+        for dx in 0..boxed.width {
+            let cell = with[(boxed.x + dx, boxed.y + dy)].clone();
+            buf[(left + dx, area.y + dy)] = cell;
+        }
+    }
 }
 
 /// The legend corner that hides the fewest non-blank cells of the chart `make(None)`
-/// draws (see [`draw_chart`]); `None` when no corner has room for a legend.
+/// draws (see [`draw_chart`]), with the count; `None` when no corner has room for a
+/// legend.
 fn legend_corner<'a>(
     area: Rect,
     make: &impl Fn(Option<LegendPosition>) -> Chart<'a>,
-) -> Option<LegendPosition> {
+) -> Option<(usize, LegendPosition)> {
     let mut bare = Buffer::empty(area);
     make(None).render(area, &mut bare);
     let mut best: Option<(usize, LegendPosition)> = None;
@@ -237,7 +298,7 @@ fn legend_corner<'a>(
             break;
         }
     }
-    best.map(|(_, corner)| corner)
+    best
 }
 
 /// The smallest rectangle holding every cell where `a` and `b` differ.
@@ -348,6 +409,70 @@ mod tests {
         assert_eq!(label_precision([0.0, 0.0]), 3);
         assert_eq!(label_precision([-500.0, 0.0]), 0);
         assert_eq!(label_precision([-5.0, 0.0]), 2);
+    }
+
+    /// Issue 30 item 3: with data in every cell of the plot (no free corner), the axis
+    /// titles and the legend are still shown, and none of them is inside the plot: the
+    /// rectangle right of the y axis and above the x axis (up to the legend strip) holds
+    /// no letter and no box line, at 60×20, 80×24 and 200×50. Before, the y title was
+    /// written over the plot's first row and the legend over its top-right corner.
+    #[test]
+    fn nothing_is_drawn_over_the_data() {
+        let zigzag: Vec<(f64, f64)> = (0..=4000)
+            .map(|i| {
+                let x = f64::from(i) / 4000.0;
+                (x, (x * 600.0).sin().abs())
+            })
+            .collect();
+        let s = series(zigzag);
+        for (w, h) in [(60, 20), (80, 24), (200, 50)] {
+            let area = Rect::new(0, 0, w, h);
+            let mut drawn = Buffer::empty(area);
+            draw_chart(&s, series_datasets(&s), Block::bordered(), area, &mut drawn);
+            let sym = |x: u16, y: u16| drawn[(x, y)].symbol().to_string();
+            let rows: Vec<String> = (0..h)
+                .map(|y| (0..w).map(|x| sym(x, y)).collect())
+                .collect();
+            let text = rows.join("\n");
+            for name in ["first series", "second", "▲ y N", "x m ▶"] {
+                assert!(text.contains(name), "{w}×{h}: {name} missing:\n{text}");
+            }
+            // The axes' corner (not the border's).
+            let (cx, cy) = (1..w - 1)
+                .flat_map(|x| (1..h - 1).map(move |y| (x, y)))
+                .find(|&(x, y)| sym(x, y) == "└")
+                .expect("axes drawn");
+            // The legend strip's left edge, if the legend is beside the plot.
+            let right = (cx + 1..w - 1)
+                .find(|&x| (1..cy).any(|y| sym(x, y) == "┌"))
+                .unwrap_or(w - 1);
+            // The plot starts under the titles (the y title's row in the old layout).
+            let titles = rows
+                .iter()
+                .position(|r| r.contains("▲ y N"))
+                .expect("y title");
+            assert_eq!(titles, 1, "{w}×{h}: the titles are the first row:\n{text}");
+            let top = 1 + rows
+                .iter()
+                .position(|r| r.contains("x m ▶"))
+                .expect("x title") as u16;
+            for y in top..cy {
+                for x in cx + 1..right {
+                    let c = sym(x, y);
+                    assert!(
+                        !c.chars()
+                            .any(|ch| ch.is_alphanumeric() || ('─'..='╿').contains(&ch)),
+                        "{w}×{h}: {c:?} at ({x}, {y}) over the data:\n{text}"
+                    );
+                }
+            }
+            // The plot holds data (it was not squeezed out).
+            assert!(
+                (top..cy).any(|y| (cx + 1..right)
+                    .any(|x| ('⠁'..='⣿').contains(&sym(x, y).chars().next().unwrap_or(' ')))),
+                "{w}×{h}:\n{text}"
+            );
+        }
     }
 
     /// With data everywhere the legend still shows, in the corner hiding the least.

@@ -17,12 +17,15 @@ use crate::tui::view_model::{self, DASH};
 pub(super) fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
     let u = app.display_units;
     // The table is laid out for the pane's inner width (2 border cells).
-    let cells = app
-        .view
-        .as_deref()
-        .map(|v| view_model::table_cells(v, u, area.width.saturating_sub(2) as usize));
+    let cells = app.view.as_deref().map(|v| {
+        view_model::table_cells(v, u, area.width.saturating_sub(2) as usize, app.col_scroll)
+    });
+    // What is in view of how many, and how to reach the rest (issue 30 item 15).
     let hidden = match &cells {
-        Some(c) if c.hidden > 0 => format!(" · {} more columns on a wider terminal", c.hidden),
+        Some(c) if c.hidden > 0 => format!(
+            " · columns {}–{} of {} · h l scroll",
+            c.range[0], c.range[1], c.total
+        ),
         _ => String::new(),
     };
     let block = pane_block(app, Pane::Elements, &format!("{}{hidden}", stale_note(app)));

@@ -37,7 +37,7 @@ use chart::render_load;
 use elements::render_rollers;
 use header::render_header;
 use inputs::render_inputs;
-use overlays::{render_confirm, render_error, render_help, render_prompt};
+use overlays::{pane_help, render_confirm, render_error, render_help, render_prompt};
 use status::{render_hints, render_status};
 use stepper::render_stepper;
 use sweep::render_sweep;
@@ -103,7 +103,7 @@ impl Widget for &App {
         render_status(self, status, buf);
         render_hints(self, hints, buf);
         match &self.mode {
-            Mode::Help => render_help(self.help_scroll, area, buf),
+            Mode::Help => render_help(self.help_scroll, &pane_help(self), area, buf),
             Mode::Error => render_error(
                 " Error · any key closes, e reopens ",
                 self.error.as_deref().unwrap_or(""),

@@ -9,7 +9,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Cell, Clear, Paragraph, Row, Table, Widget, Wrap};
 
 use super::{ACCENT, DIM};
-use crate::tui::app::{PromptKind, KEYS};
+use crate::bearings::view::column_help;
+use crate::tui::app::{App, Pane, PromptKind, KEYS};
 
 fn centered(area: Rect, w: u16, h: u16) -> Rect {
     let w = w.min(area.width);
@@ -72,24 +73,83 @@ fn wrap_words(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
-/// The key table: key, where, action (wrapped), scrolled by `scroll` rows when it does
-/// not fit; the title says how to scroll then.
-pub(super) fn render_help(scroll: usize, area: Rect, buf: &mut Buffer) {
+/// What the focused pane shows, as the help's first rows: the pane, then (for the element
+/// table) each column's header in the display units and what it means, from the view's
+/// own columns ([`column_help`] of each column's key), so the help cannot drift from the
+/// table.
+pub(super) fn pane_help(app: &App) -> Vec<(String, String, String)> {
+    let view = app.view.as_deref();
+    let el = app.element_name();
+    let what: String = match app.focus {
+        Pane::Inputs => "the deck's fields in the display units; Enter edits one, the deck re-solves".into(),
+        Pane::Summary => "the bearing-level answer: life, contact, film, friction, heat, each with where it occurs".into(),
+        Pane::Elements => format!("one row per {el}, its columns below"),
+        Pane::Chart(n) => match view.and_then(|v| v.charts.get(n)) {
+            Some(c) => format!("chart: {}", c.title_in(app.display_units)),
+            None => "a chart of the solution".into(),
+        },
+        Pane::Text(n) => match view.and_then(|v| v.texts.get(n)) {
+            Some(t) => t.title.to_string(),
+            None => "a block of text of the solution".into(),
+        },
+        Pane::Sweep(_) => "key outputs against one deck key, solved point by point while the pane is on screen".into(),
+        Pane::Thermal => "the thermal network: each node's steady temperature, the transient of the chosen node".into(),
+        Pane::Stepper => format!("the equilibrium iterations of the selected {el}, step by step: displacements, residuals, loads along it"),
+        Pane::Job(_) => "a long study, run while the pane is on screen (the next edit cancels it)".into(),
+    };
+    let mut rows = vec![(
+        app.pane_title(app.focus).to_string(),
+        "this pane".to_string(),
+        what,
+    )];
+    if app.focus == Pane::Elements {
+        if let Some(t) = view.and_then(|v| v.screen_table()) {
+            rows.extend(t.columns.iter().filter_map(|c| {
+                let s = c.screen?;
+                Some((
+                    s.display.header(s.label, app.display_units),
+                    "column".to_string(),
+                    column_help(c.key),
+                ))
+            }));
+        }
+    }
+    rows
+}
+
+/// The help: first what the focused pane shows and, for a table, what each of its
+/// columns means (`pane`: (name, where, what) rows, from the view's own columns; issue
+/// 30 item 16), then the key table: key, where, action (wrapped), scrolled by `scroll`
+/// rows when it does not fit; the title says how to scroll then.
+pub(super) fn render_help(
+    scroll: usize,
+    pane: &[(String, String, String)],
+    area: Rect,
+    buf: &mut Buffer,
+) {
     let w = area.width.min(80);
     let (key_w, ctx_w) = (17u16, 13u16);
     let action_w = w.saturating_sub(key_w + ctx_w + 4).max(10) as usize;
-    let rows: Vec<(Row, u16)> = KEYS
+    let all = pane
         .iter()
-        .map(|(k, ctx, what)| {
+        .map(|(k, c, a)| (k.as_str(), c.as_str(), a.as_str(), true))
+        .chain(KEYS.iter().map(|(k, c, a)| (*k, *c, *a, false)));
+    let rows: Vec<(Row, u16)> = all
+        .map(|(k, ctx, what, about)| {
             let lines = wrap_words(what, action_w);
-            let h = lines.len() as u16;
+            let h = lines
+                .len()
+                .max(ctx.chars().count().div_ceil(ctx_w as usize))
+                .max(k.chars().count().div_ceil(key_w as usize)) as u16;
+            let key_style = if about { ACCENT } else { Color::Yellow };
             let row = Row::new(vec![
-                Cell::from(*k).style(Style::default().fg(Color::Yellow)),
+                Cell::from(wrap_words(k, key_w as usize).join("\n"))
+                    .style(Style::default().fg(key_style)),
                 Cell::from(wrap_words(ctx, ctx_w as usize).join("\n"))
                     .style(Style::default().fg(DIM)),
                 Cell::from(lines.join("\n")),
             ])
-            .height(h.max(ctx.chars().count().div_ceil(ctx_w as usize) as u16));
+            .height(h);
             (row, h)
         })
         .collect();
@@ -112,10 +172,10 @@ pub(super) fn render_help(scroll: usize, area: Rect, buf: &mut Buffer) {
         })
         .count();
     let title = if fits {
-        " Keys (any key closes) ".to_string()
+        " Help (any key closes) ".to_string()
     } else {
         format!(
-            " Keys {}–{} of {} · j/k scroll, any other key closes ",
+            " Help {}–{} of {} · j/k scroll, any other key closes ",
             scroll + 1,
             scroll + shown,
             rows.len()

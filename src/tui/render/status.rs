@@ -129,7 +129,8 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
         Mode::Warnings => (v(&["any key closes", "w reopens the warnings"]), Vec::new()),
         Mode::Normal => {
             let mut first = match app.focus {
-                Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
+                Pane::Text(_) => v(&["jk/hl scroll"]),
+                Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
                 Pane::Inputs => v(&[
                     "jk move",
                     "Enter edit",
@@ -137,7 +138,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
                     "^z/^y undo/redo",
                     "^s save",
                 ]),
-                Pane::Elements => vec![format!("jk {el}")],
+                Pane::Elements => vec![format!("jk {el}"), "hl columns".into()],
                 Pane::Chart(n) => {
                     let mut h = vec![format!("jk {el}")];
                     if app

@@ -14,8 +14,12 @@ use crate::numerics::newton::{Backtracking, Newton, NewtonSystem, Termination, T
 /// Per-ball quantities held fixed during one load solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BallParams {
-    /// Signed friction coefficient µ of (I + µR) (sign: the gyroscopic convention).
+    /// Signed friction coefficient µ_i of (I + µR) at the inner contact (sign: the
+    /// gyroscopic convention).
     pub friction: f64,
+    /// µ_o at the outer contact: equal to µ_i for the proportional split (Chen's 2-7),
+    /// zero or 2M_g/(D Q_o) for the controlling-race split (Harris's λ_o = 0 or 2).
+    pub outer_friction: f64,
     /// m·ω_m², N/m: the centrifugal force is this times the ball-centre radius.
     pub centrifugal_coeff: f64,
     /// K of the inner contact, N/m^1.5.
@@ -50,7 +54,22 @@ impl ContactLoad {
         let length = v.norm();
         let unit = v / length;
         let deflection = length - offset;
-        let d = deflection.max(0.0);
+        // The groove is a whole torus in this model, so that contacts past 90° (off the
+        // shoulder, warned) still solve. Its far half is no ring at all: a line of centres
+        // turned past 135° from the race's radial direction (cos α < cos 135°) meets the
+        // torus on the side facing away from the ring. It happens under a pure radial
+        // load with a large play (issue 29: Bearing B's 60° play, F_a = 0, at speed):
+        // opposite the load the inner groove centre passes radially inside the outer one,
+        // and the ball flung outwards would "touch" the inner torus at ~180°. Such a
+        // contact is open. The cut sits between the largest angle the model has given a
+        // loaded contact (121.4°, Bearing B force-held under 500 N radial at 9 500 rpm,
+        // docs/ball.md, warned) and the phantom's 180°; no case that solved before has a
+        // contact beyond it, so no answer moves (json-diff of that case: none).
+        let d = if unit[1] < -std::f64::consts::FRAC_1_SQRT_2 {
+            0.0
+        } else {
+            deflection.max(0.0)
+        };
         ContactLoad {
             load_n: stiffness * d * d.sqrt(),
             stiffness_n_per_m: 1.5 * stiffness * d.sqrt(),
@@ -98,6 +117,8 @@ pub struct BallEquilibrium {
     pub ring_force: Vector2<f64>,
     /// d(ring_force)/d(I − O'), N/m.
     pub ring_stiffness: Matrix2<f64>,
+    /// dQ_i/d(I − O'), N/m (the ball's position following through its equilibrium).
+    pub inner_load_gradient: Vector2<f64>,
     /// Largest force residual, N.
     pub residual_n: f64,
     /// Newton iterations.
@@ -124,9 +145,21 @@ impl BallProblem<'_> {
         let inner = ContactLoad::new(self.centres - x, g.inner_offset_m, self.p.inner_stiffness);
         let fm = friction_matrix(self.p.friction);
         let c = self.p.centrifugal_coeff;
-        let f = fm * (inner.unit * inner.load_n - outer.unit * outer.load_n)
-            + Vector2::new(0.0, c * (g.outer_centre_radius_m + x[1]));
-        let j = -(fm * (inner.g() + outer.g())) + Matrix2::new(0.0, 0.0, 0.0, c);
+        let radial = Vector2::new(0.0, c * (g.outer_centre_radius_m + x[1]));
+        let (f, j) = if self.p.outer_friction == self.p.friction {
+            // One µ at both contacts (Chen's split): written as before the split existed,
+            // so that its answers do not move by a rounding.
+            (
+                fm * (inner.unit * inner.load_n - outer.unit * outer.load_n) + radial,
+                -(fm * (inner.g() + outer.g())) + Matrix2::new(0.0, 0.0, 0.0, c),
+            )
+        } else {
+            let fo = friction_matrix(self.p.outer_friction);
+            (
+                fm * inner.unit * inner.load_n - fo * outer.unit * outer.load_n + radial,
+                -(fm * inner.g() + fo * outer.g()) + Matrix2::new(0.0, 0.0, 0.0, c),
+            )
+        };
         BallEval { f, j, inner, outer }
     }
 }
@@ -183,7 +216,7 @@ impl OuterAlone {
         ) {
             return None;
         }
-        let inv = friction_matrix(p.friction).try_inverse()?;
+        let inv = friction_matrix(p.outer_friction).try_inverse()?;
         let w = inv * Vector2::new(0.0, 1.0);
         let (m, dir) = (w.norm(), w / w.norm());
         let mut d_o = 0.0f64;
@@ -235,11 +268,20 @@ pub fn solve_ball_with(
     let finish = |x: Vector2<f64>, e: BallEval, residual: f64, iterations: usize| {
         let fm = friction_matrix(p.friction);
         let mi = fm * e.inner.g();
-        let mo = fm * e.outer.g();
+        let mo = friction_matrix(p.outer_friction) * e.outer.g();
         let jb = -(mi + mo) + Matrix2::new(0.0, 0.0, 0.0, p.centrifugal_coeff);
-        let ring_stiffness = match jb.try_inverse() {
-            Some(inv) => mi * (Matrix2::identity() + inv * mi),
-            None => Matrix2::zeros(),
+        // dv/dc = I + J_b⁻¹ M_i (v = c − X, dX/dc = −J_b⁻¹ M_i by the implicit function
+        // theorem on the ball residual): the ring stiffness M_i·dv/dc and the gradient of
+        // the inner load dQ_i/dc = Q_i' u_iᵀ dv/dc (the tilt's friction couple needs it).
+        let (ring_stiffness, inner_load_gradient) = match jb.try_inverse() {
+            Some(inv) => {
+                let dv = Matrix2::identity() + inv * mi;
+                (
+                    mi * dv,
+                    (e.inner.unit.transpose() * dv).transpose() * e.inner.stiffness_n_per_m,
+                )
+            }
+            None => (Matrix2::zeros(), Vector2::zeros()),
         };
         let radius = geom.outer_centre_radius_m + x[1];
         BallEquilibrium {
@@ -250,6 +292,7 @@ pub fn solve_ball_with(
             centre_radius_m: radius,
             ring_force: fm * e.inner.unit * e.inner.load_n,
             ring_stiffness,
+            inner_load_gradient,
             residual_n: residual,
             iterations,
         }
@@ -375,11 +418,16 @@ fn wedged_start(
         (h2 > 0.0).then(|| e * a + n * h2.sqrt())
     };
     let fm = friction_matrix(p.friction);
+    let fo = friction_matrix(p.outer_friction);
     let mut x = wedge(0.0, 0.0)?;
     for _ in 0..2 {
         let u_o = x / x.norm();
         let u_i = (centres - x) / (centres - x).norm();
-        let m = fm * Matrix2::from_columns(&[u_i, -u_o]);
+        let m = if p.outer_friction == p.friction {
+            fm * Matrix2::from_columns(&[u_i, -u_o])
+        } else {
+            Matrix2::from_columns(&[fm * u_i, -(fo * u_o)])
+        };
         let fc = p.centrifugal_coeff * (geom.outer_centre_radius_m + x[1]);
         let q = m.try_inverse()? * Vector2::new(0.0, -fc);
         (q[0] > 0.0 && q[1] > 0.0).then_some(())?;

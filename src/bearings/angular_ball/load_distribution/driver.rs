@@ -5,14 +5,14 @@
 //! race control ([`finish`]). Apart from the Newton systems it drives (`ball`,
 //! `problem`) and the results (`load_distribution`).
 
-use nalgebra::Vector2;
+use nalgebra::{Vector2, Vector3};
 
 use super::ball::{reason, BallEquilibrium, BallParams, OuterAlone};
-use super::problem::{Layout, RingProblem};
+use super::problem::{inner_centre_radius, Layout, RingProblem, Tilt};
 use super::{Axial, BallLoad, Conditions, LoadDistribution, LoadStats, LoadStep};
 use crate::bearings::angular_ball::error::BallError;
 use crate::bearings::angular_ball::geometry::BallGeometry;
-use crate::bearings::angular_ball::input::{GyroscopicFriction, RaceControl};
+use crate::bearings::angular_ball::input::{FrictionSplit, GyroscopicFriction, RaceControl};
 use crate::bearings::angular_ball::race_control::{
     controlling_race, race_control, KinematicsInput,
 };
@@ -32,11 +32,49 @@ fn axial_guess(geom: &BallGeometry, fa: f64, stiff: (f64, f64)) -> f64 {
     ((a + total).powi(2) - ac * ac).sqrt() - a * a0.sin()
 }
 
+/// A first ring displacement for a pure radial load with the axial force held at zero
+/// (issue 29): the inner groove centres moved axially onto the outer ones' plane
+/// (δ_a = −A sin α₀, where the grooves face each other and a radial load gives no axial
+/// force but through the friction), and radially through the play P_d/2 = A(1 − cos α₀)
+/// plus the Hertz approach of both contacts in series under Stribeck's largest ball load
+/// 5F_r/Z. From the unloaded geometry (δ = 0) no ball is loaded, the ring Jacobian is
+/// zero and Newton has no direction; nor can the continuation from rest start, for at
+/// rest with neither load the ring's place is not determined.
+fn radial_guess(geom: &BallGeometry, fr: f64, stiff: (f64, f64)) -> Vector2<f64> {
+    let z = geom.ball_count as f64;
+    let a0 = geom.free_contact_angle_rad;
+    let a = geom.centre_distance_m;
+    let q = (5.0 * fr.abs() / z).max(1e-3);
+    let total = (q / stiff.0).powf(2.0 / 3.0) + (q / stiff.1).powf(2.0 / 3.0);
+    Vector2::new(-a * a0.sin(), (a * (1.0 - a0.cos()) + total).copysign(fr))
+}
+
+/// The inner contact angle race control (2-9) is given for a ball: its own, but for a
+/// ball the inner race does not touch (`inner_load_n` = 0) whose inner line of centres
+/// has turned more than 135° from the outer contact's (the phantom side of the torus, see
+/// `ball::ContactLoad::new`). That happens under a pure radial
+/// load with a large play (issue 29: Bearing B's 60° play centred, F_a = 0): opposite the
+/// load the inner groove centre passes radially inside the outer one, the open inner line
+/// points at ~180°, and 2-9 with the two contact normals parallel is singular. Such a
+/// ball rolls on the outer race alone; its kinematics take the outer line for both
+/// (α_i = α_o). Every ball the inner race loads keeps its own angle, and so does an open
+/// one within 135° (Bearing B force-held under 500 N radial has open inner lines at ~91°
+/// whose kinematics solved before), so no answer that solved before moves.
+fn kinematic_inner_angle(inner_rad: f64, outer_rad: f64, inner_load_n: f64) -> f64 {
+    if inner_load_n == 0.0 && (inner_rad - outer_rad).abs() > 0.75 * std::f64::consts::PI {
+        outer_rad
+    } else {
+        inner_rad
+    }
+}
+
 /// The state a load solve starts from and leaves: ring displacement, ball positions,
 /// contact angles, loads and ball-centre radii (for warm starts along a continuation).
 #[derive(Debug, Clone, PartialEq)]
 struct Warm {
     x: Vector2<f64>,
+    /// φ = θ·ℜ_i, m.
+    phi: f64,
     balls: Vec<Option<Vector2<f64>>>,
     angles: Vec<(f64, f64)>,
     loads: Vec<(f64, f64)>,
@@ -62,13 +100,25 @@ pub(super) fn solve_recorded(
         ) => return Err(e),
         Err(e) => e,
     };
+    // With the axial force held at zero the radial load alone places the ring (a rest
+    // solve without it has no answer): only the speed is raised then.
+    let radial_scaled = cond.axial != Axial::Force(0.0);
     let at = |s: f64| Conditions {
         inner_speed_rad_s: cond.inner_speed_rad_s * s,
         outer_speed_rad_s: cond.outer_speed_rad_s * s,
-        radial_load_n: cond.radial_load_n * s,
+        radial_load_n: if radial_scaled {
+            cond.radial_load_n * s
+        } else {
+            cond.radial_load_n
+        },
+        tilt: match cond.tilt {
+            Tilt::Moment(m) => Tilt::Moment(m * s),
+            t => t,
+        },
         ..*cond
     };
-    // Rest, axial load only (always axisymmetric); then the way up.
+    // Rest, axial load only (axisymmetric; the radial load too when F_a = 0); then the
+    // way up.
     let (mut done, mut state) = match solve_warm(geom, &at(0.0), cancel, None, trace, mirror) {
         Ok(r) => r,
         Err(_) => return Err(first),
@@ -110,7 +160,34 @@ fn solve_warm(
 ) -> Result<(LoadDistribution, Warm), BallError> {
     let z = geom.ball_count;
     let a0 = geom.free_contact_angle_rad;
-    let axisymmetric = cond.radial_load_n == 0.0;
+    // A tilt (held or solved against a moment) breaks the axial symmetry as a radial
+    // load does.
+    let axisymmetric = cond.radial_load_n == 0.0 && cond.tilt == Tilt::Held(0.0);
+    let ri = inner_centre_radius(geom);
+    let (mut phi, moment_force) = match cond.tilt {
+        Tilt::Held(t) => (t * ri, 0.0),
+        Tilt::Moment(m) => (start.map_or(0.0, |w| w.phi), m / ri),
+    };
+    // A moment on a ring no preload loads (held at δ_a = 0, the balls just touching): at
+    // φ = 0 no ball is loaded and the Jacobian is zero. Start tilted so that the ball at
+    // ψ = 0 carries what the moment asks of it, M = Q sin α·ℜ_i·Z/2, taken as an axial
+    // force 2M/ℜ_i on the whole ring through `axial_guess`.
+    if let (Tilt::Moment(m), None, Axial::Displacement(d)) = (cond.tilt, start, cond.axial) {
+        if d == 0.0 && m != 0.0 {
+            let a = geom.centre_distance_m;
+            let ring = axial_guess(
+                geom,
+                2.0 * m.abs() / ri,
+                (
+                    geom.contact(Race::Inner, a0)?.stiffness_n_per_m1_5(),
+                    geom.contact(Race::Outer, a0)?.stiffness_n_per_m1_5(),
+                ),
+            );
+            // axial_guess's δ_a from the unloaded place, at least a round-off's worth
+            // of the groove distance.
+            phi = ring.max(1e-9 * a).copysign(m);
+        }
+    }
     let azimuths: Vec<f64> = (0..z)
         .map(|j| 2.0 * std::f64::consts::PI * j as f64 / z as f64)
         .collect();
@@ -143,18 +220,27 @@ fn solve_warm(
             }
         })
         .max(z as f64 * geom.ball_mass_kg * wm_est * wm_est * 0.5 * geom.pitch_diameter_m)
+        .max(moment_force.abs())
         .max(1.0);
     let ball_tolerance = 1e-11 * f_ref / z as f64;
     let ring_tolerance = 1e-10 * f_ref;
     let mut x = match start {
         Some(w) => w.x,
-        None => Vector2::new(
-            match cond.axial {
-                Axial::Force(fa) => axial_guess(geom, fa, stiff0),
-                Axial::Displacement(d) => d,
-            },
-            0.0,
-        ),
+        None => match cond.axial {
+            Axial::Force(fa) if fa == 0.0 && !axisymmetric => {
+                radial_guess(geom, cond.radial_load_n, stiff0)
+            }
+            Axial::Force(fa) => Vector2::new(axial_guess(geom, fa, stiff0), 0.0),
+            // A ring held where the balls just touch (a zero preload, issue 29): no ball
+            // is loaded at δ_r = 0 and the ring Jacobian is zero there; start radially
+            // displaced by the Hertz approach of Stribeck's largest ball load 5F_r/Z.
+            Axial::Displacement(d) if d == 0.0 && !axisymmetric => Vector2::new(
+                0.0,
+                radial_guess(geom, cond.radial_load_n, stiff0)[1]
+                    - geom.centre_distance_m * (1.0 - a0.cos()).copysign(cond.radial_load_n),
+            ),
+            Axial::Displacement(d) => Vector2::new(d, 0.0),
+        },
     };
     if let Axial::Displacement(d) = cond.axial {
         x[0] = d;
@@ -223,7 +309,7 @@ fn solve_warm(
                 &KinematicsInput {
                     ball_diameter_m: geom.ball_diameter_m,
                     ball_centre_radius_m: radii[k],
-                    inner_angle_rad: ai,
+                    inner_angle_rad: kinematic_inner_angle(ai, ao, qi),
                     outer_angle_rad: ao,
                     inner_speed_rad_s: cond.inner_speed_rad_s,
                     outer_speed_rad_s: cond.outer_speed_rad_s,
@@ -237,8 +323,24 @@ fn solve_warm(
             } else {
                 0.0
             };
+            // (µ_i, µ_o): Chen's one µ at both contacts, or Harris's whole friction
+            // 2M_g/D at the controlling race (λ = 2), capped there at µ_m as 2-7 is.
+            let at = |q: f64| {
+                if q > 0.0 {
+                    sign * (2.0 * mg / (geom.ball_diameter_m * q))
+                        .clamp(-cond.max_friction, cond.max_friction)
+                } else {
+                    0.0
+                }
+            };
+            let (friction, outer_friction) = match (cond.friction_split, control) {
+                (FrictionSplit::Proportional, _) => (friction, friction),
+                (FrictionSplit::ControllingRace, Race::Outer) => (0.0, at(qo)),
+                (FrictionSplit::ControllingRace, Race::Inner) => (at(qi), 0.0),
+            };
             params.push(BallParams {
                 friction,
+                outer_friction,
                 centrifugal_coeff: geom.ball_mass_kg * kin.cage_rad_s * kin.cage_rad_s,
                 inner_stiffness: ci.stiffness_n_per_m1_5(),
                 outer_stiffness: co.stiffness_n_per_m1_5(),
@@ -260,6 +362,8 @@ fn solve_warm(
             ball_tolerance,
             warm: std::mem::take(&mut warm),
             error: None,
+            phi,
+            moment_force,
         };
         let newton = Newton {
             max_iterations: 100,
@@ -267,7 +371,16 @@ fn solve_warm(
             trust: TrustRegion::new(1e-5, 1e-15, 1e-3),
             line_search: Backtracking::default(),
         };
-        let r = newton.solve(&mut ring, &mut x);
+        let r = match cond.tilt {
+            Tilt::Held(_) => newton.solve(&mut ring, &mut x),
+            Tilt::Moment(_) => {
+                let mut x3 = Vector3::new(x[0], x[1], phi);
+                let r = newton.solve(&mut ring, &mut x3);
+                x = Vector2::new(x3[0], x3[1]);
+                phi = x3[2];
+                r
+            }
+        };
         stats.ring_iterations += r.stats.iterations;
         stats.ring_evaluations += r.stats.evaluations;
         let ring_residual = match r.termination {
@@ -279,7 +392,10 @@ fn solve_warm(
                 return Err(BallError::RingNotConverged {
                     reason: reason(&t),
                     iterations: t.iterations(),
-                    residual_n: r.eval.f.amax(),
+                    residual_n: match cond.tilt {
+                        Tilt::Held(_) => r.eval.f.amax(),
+                        Tilt::Moment(_) => r.eval.f3.amax(),
+                    },
                     tolerance_n: ring_tolerance,
                 });
             }
@@ -339,12 +455,15 @@ fn solve_warm(
                 balls,
                 x,
                 r.eval.force,
+                (phi / ri, r.eval.force_phi * ri),
+                &params,
                 ring_residual,
                 stats,
             )?;
             // Warm state for every ball, each from the distinct ball standing for it.
             let w = Warm {
                 x,
+                phi,
                 balls: layout.expand(&warm),
                 angles: layout.expand(&angles),
                 loads: layout.expand(&loads),
@@ -368,6 +487,8 @@ fn finish(
     balls: &[BallEquilibrium],
     x: Vector2<f64>,
     force: Vector2<f64>,
+    (tilt_rad, moment_nm): (f64, f64),
+    params: &[BallParams],
     ring_residual: f64,
     stats: LoadStats,
 ) -> Result<LoadDistribution, BallError> {
@@ -406,7 +527,7 @@ fn finish(
             &KinematicsInput {
                 ball_diameter_m: geom.ball_diameter_m,
                 ball_centre_radius_m: b.centre_radius_m,
-                inner_angle_rad: ai,
+                inner_angle_rad: kinematic_inner_angle(ai, ao, b.inner.load_n),
                 outer_angle_rad: ao,
                 inner_speed_rad_s: cond.inner_speed_rad_s,
                 outer_speed_rad_s: cond.outer_speed_rad_s,
@@ -440,6 +561,9 @@ fn finish(
         radial_deflection_m: x[1],
         axial_force_n: force[0],
         radial_force_n: force[1],
+        tilt_rad,
+        moment_nm,
+        params: layout.expand(params),
         balls: out,
         ring_residual_n: ring_residual,
         ball_residual_n: ball_residual,

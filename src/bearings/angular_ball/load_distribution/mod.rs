@@ -1,6 +1,18 @@
 //! Quasi-static load distribution with centrifugal force and gyroscopic moment (seed 001
-//! eqs. 2-5 … 2-8, 3-1, 3-2; Harris's model), iterated with race-control kinematics to a
-//! fixed point.
+//! eqs. 2-5 … 2-8, 3-1, 3-2: Jones's and Harris's quasi-static model as Chen writes it),
+//! iterated with race-control kinematics to a fixed point.
+//!
+//! # Which friction split is whose (issue 29)
+//! The friction that resists the gyroscopic moment is shared between the races
+//! (`kinematics.friction_split`, [`FrictionSplit`]):
+//! * `proportional` (default) is **Chen's** reading of 2-7: one coefficient
+//!   µ = 2M_g/(D(Q_i + Q_o)) at both contacts, each race's friction in proportion to its
+//!   normal load. It is *not* Harris's model, as this comment used to say.
+//! * `controlling-race` is **Harris's** (Harris & Kotzalas vol. 2 §3.2, λ_i + λ_o = 2;
+//!   OpenJones's outer-race control): the whole friction 2M_g/D at the controlling race
+//!   (λ = 2), none at the other (λ = 0); with `race_control = "auto"` at the race it picks.
+//!   In the equations below µ then differs between the contacts: (I + µ_i R) on the inner
+//!   load, (I + µ_o R) on the outer.
 //!
 //! # Unknowns and geometry (Fig. 3-1)
 //! In the plane of a ball at azimuth ψ, (a, r) axial and radial. The outer groove centre
@@ -63,12 +75,13 @@
 
 use super::error::BallError;
 use super::geometry::BallGeometry;
-use super::input::{GyroscopicFriction, RaceControl};
+use super::input::{FrictionSplit, GyroscopicFriction, RaceControl};
 use super::race_control::RaceKinematics;
 use crate::numerics::cancel::Cancel;
 
 pub use ball::{solve_ball, solve_ball_with, BallEquilibrium, BallParams, ContactLoad, OuterAlone};
 use driver::solve_recorded;
+pub use problem::Tilt;
 
 mod ball;
 mod driver;
@@ -94,10 +107,14 @@ pub struct Conditions {
     pub axial: Axial,
     /// F_r, N (towards ψ = 0).
     pub radial_load_n: f64,
+    /// How the tilt about the axis across the radial load is held (issue 29).
+    pub tilt: Tilt,
     /// Race control.
     pub race_control: RaceControl,
     /// Gyroscopic friction sign.
     pub gyroscopic_friction: GyroscopicFriction,
+    /// How that friction is shared between the races.
+    pub friction_split: FrictionSplit,
     /// The largest traction coefficient the contacts can give (µ_m of the traction
     /// curve): the gyroscopic friction of 2-7 is capped at it. Beyond, the friction
     /// cannot hold the ball's precession and the ball skids (the skidding condition 2-4);
@@ -142,8 +159,18 @@ pub struct LoadDistribution {
     pub axial_force_n: f64,
     /// ΣP_r cos ψ, N.
     pub radial_force_n: f64,
+    /// θ, the inner ring's tilt about the axis across the radial load, rad (held or
+    /// solved: [`Conditions::tilt`]).
+    pub tilt_rad: f64,
+    /// M, the moment the balls carry about that axis, N·m: ℜ_i·Σ(P_a − (f_i D/ℜ_i)µ_i Q_i)
+    /// cos ψ (Jones–Harris, pivot in the plane of the inner groove centres).
+    pub moment_nm: f64,
     /// Balls in azimuth order (ψ_j = 2πj/Z).
     pub balls: Vec<BallLoad>,
+    /// Each ball's quantities the last ring solve held (µ of 2-7, centrifugal
+    /// coefficient, Hertz constants), in the same order: the stiffness matrix is the
+    /// derivative about them (`stiffness`).
+    pub params: Vec<BallParams>,
     /// Largest ring-force residual, N (0 for a held displacement).
     pub ring_residual_n: f64,
     /// Largest ball-force residual, N.

@@ -16,8 +16,10 @@ fn conditions(speed_rpm: f64, axial: Axial, radial: f64, sign: GyroscopicFrictio
         outer_speed_rad_s: 0.0,
         axial,
         radial_load_n: radial,
+        tilt: Tilt::Held(0.0),
         race_control: RaceControl::Outer,
         gyroscopic_friction: sign,
+        friction_split: crate::bearings::angular_ball::input::FrictionSplit::Proportional,
         max_friction: 0.054,
     }
 }
@@ -181,6 +183,7 @@ fn analytic_jacobians_match_finite_differences() {
     let g = geom(&input);
     let p = BallParams {
         friction: 0.04,
+        outer_friction: 0.04,
         centrifugal_coeff: 0.007 * 500.0 * 500.0,
         inner_stiffness: g.contact(Race::Inner, 1.2).unwrap().stiffness_n_per_m1_5(),
         outer_stiffness: g.contact(Race::Outer, 0.9).unwrap().stiffness_n_per_m1_5(),
@@ -481,6 +484,7 @@ fn loose_ball_wedged_by_a_small_centrifugal_force_converges() {
     let centres = Vector2::new(4.1893146544959254e-4, 2.332927877710085e-4);
     let p = BallParams {
         friction: 0.0,
+        outer_friction: 0.0,
         centrifugal_coeff: 1.63486071801454e-5,
         inner_stiffness: 32198757603.963516,
         outer_stiffness: 32676339438.850777,
