@@ -164,6 +164,12 @@ pub fn json(a: &Analysis) -> Value {
             "rotation_rad": sol.rotation_rad,
             "reaction_force_n": [sol.reaction[0], sol.reaction[1], sol.reaction[2]],
             "reaction_moment_nm": [sol.reaction[3], sol.reaction[4]],
+            // Issue 29: the tilt about y (perpendicular to the radial load) and the moment
+            // about y: the applied one when the deck gives `operating.moment` (θy solved),
+            // else the moment holding the prescribed θy.
+            "tilt_rad": sol.rotation_rad[1],
+            "moment_nm": sol.reaction[4],
+            "tilt_solved": b.input.operating.applied_moment_nm().is_some(),
         },
         "rollers": rollers,
         "stiffness": stiffness,
@@ -390,6 +396,15 @@ pub fn text(a: &Analysis, units: Units) -> String {
         moment(sol.reaction[3]),
         moment(sol.reaction[4])
     );
+    if let Some(m) = b.input.operating.applied_moment_nm() {
+        let _ = writeln!(
+            s,
+            "Applied moment My = {:.3} {mu}: the cone tilts theta_y = {:.4e} rad (solved; M_y balanced to {:.1e} {mu})",
+            moment(m),
+            sol.rotation_rad[1],
+            moment((sol.reaction[4] - m).abs())
+        );
+    }
     let _ = writeln!(s, "\nRollers ({fu}, {mu}, ksi/MPa)");
     let _ = writeln!(
         s,
