@@ -20,6 +20,7 @@ pub mod error;
 pub mod form_system;
 pub mod friction;
 pub mod spherical_roller;
+pub mod stiffness;
 pub mod stiffness_text;
 pub mod tapered_roller;
 pub mod thermal_answer;

@@ -4,6 +4,7 @@
 use super::bearing::{asymmetry, fd_difference, Bearing, BearingError, BearingSolution, Matrix5};
 use super::contact::SliceResult;
 use super::input::{StiffnessMethod, TaperedInput};
+use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
 
 /// Stiffness rows and columns (x, y, z, θx, θy).
 pub const AXES: [&str; 5] = ["x", "y", "z", "theta_x", "theta_y"];
@@ -87,6 +88,31 @@ impl Analysis {
         t[(0, 4)] = -a;
         t[(1, 3)] = -a;
         Some(t.transpose() * self.stiffness * t)
+    }
+
+    /// The reported stiffness as the shared type (its JSON `stiffness` keys and text
+    /// block): the 5×5 over (x, y, z, θx, θy) at the seed's reference point, with the
+    /// finite-difference matrix and gap when computed.
+    pub fn stiffness_matrix(&self) -> StiffnessMatrix {
+        let flat = |m: &Matrix5| -> Vec<f64> {
+            (0..5)
+                .flat_map(|i| (0..5).map(move |j| m[(i, j)]))
+                .collect()
+        };
+        let method = match self.bearing.input.solver.stiffness {
+            StiffnessMethod::Analytic => Method::Analytic,
+            StiffnessMethod::FiniteDifference => Method::FiniteDifference,
+            StiffnessMethod::Both => Method::Both,
+        };
+        let mut k = StiffnessMatrix::new(Dof::ALL.to_vec(), flat(&self.stiffness), method);
+        k.reference_point = Some(
+            "cone centre at the rollers' central plane (the seed's ring reference point)"
+                .to_string(),
+        );
+        k.asymmetry_max = Some(self.asymmetry_max());
+        k.fd = self.stiffness_fd.as_ref().map(flat);
+        k.fd_max_rel = self.finite_difference_max_rel();
+        k
     }
 
     /// Largest analytic–difference gap over each row's scale, when both exist.

@@ -25,7 +25,7 @@
 //! a radial load in x with no θx: the mirror pairs φ, −φ, whose cosines are taken equal
 //! by construction).
 
-use nalgebra::{Matrix3, SMatrix, Vector3};
+use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3, Vector4};
 use thiserror::Error;
 
 use super::contact::{ContactError, Race, RaceContact};
@@ -392,6 +392,10 @@ impl Bearing {
         }
         let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
         let tolerance = self.input.solver.force_tolerance * f_ref;
+        if let Some(moment) = op.applied_moment_nm() {
+            let theta0 = start.map_or(0.0, |st| st.rotation_rad[1]);
+            return self.solve_with_moment(start, x, theta0, moment, tolerance);
+        }
         let mut sys = RingSystem {
             bearing: self,
             rot,
@@ -427,6 +431,68 @@ impl Bearing {
         Ok(BearingSolution {
             displacement_m: [x[0], x[1], x[2]],
             rotation_rad: rot,
+            reaction: st.reaction,
+            residual_n: res.eval.r.amax(),
+            rollers: st.rollers,
+            stiffness: st.k,
+            iterations: res.termination.iterations(),
+            unique_rollers: st.unique,
+        })
+    }
+
+    /// The equilibrium under an applied moment M_y (issue 29): four unknowns (δx, δy, δz,
+    /// θy), θx held at the deck's misalignment. Equilibrium is F′ = F_applied (eqs.
+    /// 97–99) and M′_y = M_y, M′_y = Σ (R_m P₁ + M₁) cos φ (eq. 96). The tilt enters as
+    /// the arc length u = R_m·θy and the moment residual as the force (M_y − M′_y)/R_m at
+    /// R_m, so one tolerance in newtons serves all four rows; the Jacobian is the
+    /// analytic K's (x, y, z, θy) block scaled alike (eqs. 107–120).
+    fn solve_with_moment(
+        &self,
+        start: Option<&BearingSolution>,
+        x3: Vector3<f64>,
+        theta0: f64,
+        moment: f64,
+        tolerance: f64,
+    ) -> Result<BearingSolution, BearingError> {
+        let op = &self.input.operating;
+        let rm = self.geometry.moment_radius_m;
+        let mut sys = MomentSystem {
+            bearing: self,
+            theta_x: op.misalignment_rad[0],
+            load: Vector4::new(op.radial_load_n, 0.0, op.axial_load_n, moment / rm),
+            rm,
+            warm: start
+                .filter(|st| st.rollers.len() == self.azimuth.len())
+                .map(|st| st.rollers.clone()),
+            error: None,
+            mirror: op.misalignment_rad[0] == 0.0 && op.initial_displacement_m[1] == 0.0,
+        };
+        let newton = Newton {
+            max_iterations: self.input.solver.max_iterations,
+            tolerance,
+            trust: TrustRegion::new(20.0, 1e-9, 1e4),
+            line_search: Backtracking::default(),
+        };
+        let mut x = Vector4::new(x3[0], x3[1], x3[2], rm * theta0);
+        let res = newton.solve(&mut sys, &mut x);
+        if let Some(e) = sys.error {
+            return Err(e);
+        }
+        let ok = match res.termination {
+            Termination::Converged { .. } => true,
+            Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
+            _ => false,
+        };
+        if !ok {
+            return Err(BearingError::NotConverged {
+                termination: res.termination,
+                tolerance_n: tolerance,
+            });
+        }
+        let st = res.eval.state;
+        Ok(BearingSolution {
+            displacement_m: [x[0], x[1], x[2]],
+            rotation_rad: [op.misalignment_rad[0], x[3] / rm],
             reaction: st.reaction,
             residual_n: res.eval.r.amax(),
             rollers: st.rollers,
@@ -577,6 +643,101 @@ impl NewtonSystem<3> for RingSystem<'_> {
         // A ring position where no roller touches the cone has a singular Jacobian in the
         // unloaded directions (y under a pure x load): solve in the least-squares sense
         // by a pseudo-inverse, which leaves those directions alone.
+        let j = &e.j;
+        let step = match j.try_inverse() {
+            Some(inv) => Some(-(inv * e.r)),
+            None => j.pseudo_inverse(1e-12 * j.amax()).ok().map(|p| -(p * e.r)),
+        };
+        step.map(|mut s| {
+            if self.mirror {
+                s[1] = 0.0;
+            }
+            s
+        })
+    }
+}
+
+/// Ring unknowns (δx, δy, δz, R_m·θy) under an applied moment (see
+/// [`Bearing::solve_with_moment`]).
+struct MomentEval {
+    r: Vector4<f64>,
+    j: Matrix4<f64>,
+    state: State,
+}
+
+struct MomentSystem<'a> {
+    bearing: &'a Bearing,
+    theta_x: f64,
+    /// (F_x, F_y, F_z, M_y/R_m), N.
+    load: Vector4<f64>,
+    rm: f64,
+    warm: Option<Vec<(RollerSolution, f64, f64)>>,
+    error: Option<BearingError>,
+    /// Mirror symmetry about the x–z plane (θy and the moment about y keep it).
+    mirror: bool,
+}
+
+impl NewtonSystem<4> for MomentSystem<'_> {
+    type Eval = MomentEval;
+
+    fn evaluate(&mut self, x: &Vector4<f64>) -> MomentEval {
+        let pos = [x[0], x[1], x[2], self.theta_x, x[3] / self.rm];
+        match self.bearing.state(&pos, self.warm.as_deref()) {
+            Ok(st) => {
+                let ry = if self.mirror {
+                    0.0
+                } else {
+                    self.load[1] - st.reaction[1]
+                };
+                let r = Vector4::new(
+                    self.load[0] - st.reaction[0],
+                    ry,
+                    self.load[2] - st.reaction[2],
+                    self.load[3] - st.reaction[4] / self.rm,
+                );
+                // Rows F_x, F_y, F_z, M_y/R_m; columns δx, δy, δz, R_m·θy.
+                let idx = [0usize, 1, 2, 4];
+                let mut j = Matrix4::zeros();
+                for (a, &ia) in idx.iter().enumerate() {
+                    for (b, &ib) in idx.iter().enumerate() {
+                        let row = if a == 3 { 1.0 / self.rm } else { 1.0 };
+                        let col = if b == 3 { 1.0 / self.rm } else { 1.0 };
+                        j[(a, b)] = -st.k[(ia, ib)] * row * col;
+                    }
+                }
+                self.warm = Some(st.rollers.clone());
+                MomentEval { r, j, state: st }
+            }
+            Err(e) => {
+                self.error.get_or_insert(e);
+                MomentEval {
+                    r: Vector4::repeat(f64::NAN),
+                    j: Matrix4::zeros(),
+                    state: State {
+                        reaction: [f64::NAN; 5],
+                        k: Matrix5::zeros(),
+                        rollers: Vec::new(),
+                        unique: 0,
+                    },
+                }
+            }
+        }
+    }
+
+    fn residual<'e>(&self, e: &'e MomentEval) -> &'e Vector4<f64> {
+        &e.r
+    }
+
+    fn jacobian<'e>(&self, e: &'e MomentEval) -> &'e Matrix4<f64> {
+        &e.j
+    }
+
+    fn step_length(&self, step: &Vector4<f64>) -> f64 {
+        step.norm() / 1e-7
+    }
+
+    fn newton_step(&self, e: &MomentEval) -> Option<Vector4<f64>> {
+        // As the 3-DOF ring: a pseudo-inverse leaves unloaded directions alone.
         let j = &e.j;
         let step = match j.try_inverse() {
             Some(inv) => Some(-(inv * e.r)),

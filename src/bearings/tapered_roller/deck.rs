@@ -42,7 +42,7 @@ const CUP: [FieldSpec<TaperedInput>; 5] =
 const CONE: [FieldSpec<TaperedInput>; 5] =
     material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
 
-static FIELDS: [FieldSpec<TaperedInput>; 63] = [
+static FIELDS: [FieldSpec<TaperedInput>; 64] = [
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
         get: |t| t.geometry.roller_count as f64,
@@ -165,6 +165,11 @@ static FIELDS: [FieldSpec<TaperedInput>; 63] = [
         meta: meta("operating.misalignment_y", "operating", "Misalignment θy", Quantity::Angle, REAL, (-5.0 * DEG, false), (5.0 * DEG, false), Presence::Default(0.0), "rotation of the cone about y, held by the shaft (its moment is reported)"),
         get: |t| t.operating.misalignment_rad[1],
         set: |t, v| t.operating.misalignment_rad[1] = v,
+    },
+    FieldSpec {
+        meta: meta("operating.moment", "operating", "Moment M_y", Quantity::Moment, FieldKind::RealOr("held"), (-1e7, false), (1e7, false), Presence::Default(f64::NAN), "moment on the cone about y (perpendicular to the radial load; positive loads the rollers the radial load loads): the cone's tilt θy is then solved for it; \"held\" (the default): θy is held at operating.misalignment_y"),
+        get: |t| t.operating.moment_nm,
+        set: |t, v| t.operating.moment_nm = v,
     },
     FieldSpec {
         meta: meta("solver.slices", "solver", "Slices", Quantity::Count, INT, (3.0, false), (1001.0, false), Presence::Default(21.0), "slices per contact along the effective length"),
@@ -314,6 +319,18 @@ static FIELDS: [FieldSpec<TaperedInput>; 63] = [
 fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
     let g = &t.geometry;
     let mut v = Vec::new();
+    // θy is given one way: held at a rotation, or free under a moment (issue 29). A held
+    // rotation of exactly 0 is also the absent key's default and cannot be told apart from
+    // it, so a deck writing `misalignment_y = 0.0` beside a moment is read as the moment.
+    if t.operating.applied_moment_nm().is_some() && t.operating.misalignment_rad[1] != 0.0 {
+        v.push((
+            "operating.moment",
+            format!(
+                "and operating.misalignment_y ({}) both give the cone's tilt about y: give the moment (θy is then solved) or the rotation (its moment is then reported), not both",
+                show(&SCHEMA, t, "operating.misalignment_y", units)
+            ),
+        ));
+    }
     if g.roller_diameter_m >= g.pitch_diameter_m {
         v.push((
             "geometry.roller_diameter",

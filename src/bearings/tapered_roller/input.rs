@@ -115,6 +115,19 @@ pub struct Operating {
     /// θ, prescribed rotations (θx, θy) of the cone, rad: misalignment held by the shaft
     /// (eqs. 40, 42); the moments that hold them are reported.
     pub misalignment_rad: [f64; 2],
+    /// M_y, the moment applied to the cone about y (the axis perpendicular to the radial
+    /// load), N·m, in the reactions' sign (a positive moment loads the rollers at φ = 0,
+    /// where the radial load does): the bearing Newton then solves θy for it (issue 29).
+    /// NaN (the deck's `"held"`, the default): θy is held at `misalignment_rad[1]`,
+    /// the behaviour before moments.
+    pub moment_nm: f64,
+}
+
+impl Operating {
+    /// The applied moment about y, when the deck gives one (θy is then solved).
+    pub fn applied_moment_nm(&self) -> Option<f64> {
+        self.moment_nm.is_finite().then_some(self.moment_nm)
+    }
 }
 
 /// How stiffness is computed.
@@ -316,6 +329,7 @@ impl TaperedInput {
                 radial_load_n: 0.0,
                 initial_displacement_m: [0.0; 3],
                 misalignment_rad: [0.0; 2],
+                moment_nm: f64::NAN,
             },
             solver: Solver::default(),
             pedestal: Pedestal::default(),

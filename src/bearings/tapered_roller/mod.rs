@@ -23,6 +23,8 @@ pub mod deck;
 pub mod geometry;
 pub mod input;
 pub mod life;
+#[cfg(test)]
+mod moment_tests;
 pub mod report;
 pub mod roller;
 pub mod system;

@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use serde_json::{json, Value};
 
-use super::analysis::{Analysis, AXES};
+use super::analysis::Analysis;
 use crate::units::{Quantity, Units};
 
 /// The seed's statement on damping (§2.3.2), reported instead of invented numbers.
@@ -101,28 +101,7 @@ pub fn json(a: &Analysis) -> Value {
             .map(|i| (0..5).map(|j| k[(i, j)]).collect())
             .collect()
     };
-    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
-        (true, true) => "N/m",
-        (true, false) => "N/rad",
-        (false, true) => "N·m/m",
-        (false, false) => "N·m/rad",
-    };
-    let units: Vec<Vec<&str>> = (0..5)
-        .map(|i| (0..5).map(|j| unit(i, j)).collect())
-        .collect();
-    let mut stiffness = json!({
-        "matrix": matrix(&a.stiffness),
-        "rows": ["F_x", "F_y", "F_z", "M_x", "M_y"],
-        "columns": AXES,
-        "units": units,
-        "method": match b.input.solver.stiffness {
-            super::input::StiffnessMethod::Analytic => "analytic",
-            super::input::StiffnessMethod::FiniteDifference => "finite-difference",
-            super::input::StiffnessMethod::Both => "both",
-        },
-        "reference_point": "cone centre at the rollers' central plane (the seed's ring reference point)",
-        "asymmetry_max": a.asymmetry_max(),
-    });
+    let mut stiffness = a.stiffness_matrix().json();
     if let (Some(off), Some(kc), Some(obj)) = (
         a.load_centre_offset_m(),
         a.stiffness_at_load_centre(),
@@ -141,12 +120,6 @@ pub fn json(a: &Analysis) -> Value {
             Ok(k) => obj.insert("with_pedestal_matrix".into(), json!(matrix(&k))),
             Err(e) => obj.insert("with_pedestal_error".into(), json!(e)),
         };
-    }
-    if let (Some(fd), Some(obj)) = (a.stiffness_fd, stiffness.as_object_mut()) {
-        obj.insert("finite_difference_matrix".into(), json!(matrix(&fd)));
-        if let Some(d) = a.finite_difference_max_rel() {
-            obj.insert("finite_difference_max_rel".into(), json!(d));
-        }
     }
     let roller_res = sol
         .rollers
@@ -191,6 +164,12 @@ pub fn json(a: &Analysis) -> Value {
             "rotation_rad": sol.rotation_rad,
             "reaction_force_n": [sol.reaction[0], sol.reaction[1], sol.reaction[2]],
             "reaction_moment_nm": [sol.reaction[3], sol.reaction[4]],
+            // Issue 29: the tilt about y (perpendicular to the radial load) and the moment
+            // about y: the applied one when the deck gives `operating.moment` (θy solved),
+            // else the moment holding the prescribed θy.
+            "tilt_rad": sol.rotation_rad[1],
+            "moment_nm": sol.reaction[4],
+            "tilt_solved": b.input.operating.applied_moment_nm().is_some(),
         },
         "rollers": rollers,
         "stiffness": stiffness,
@@ -286,58 +265,20 @@ fn lubrication_json(a: &Analysis) -> Vec<(&'static str, Value)> {
 /// unit), its asymmetry and the finite-difference check: the text report's section and
 /// the workbench's Stiffness pane.
 pub fn stiffness_lines(a: &Analysis, units: Units) -> Vec<String> {
-    let (lu, fu, mu) = (
-        Quantity::Length.unit(units),
-        Quantity::Force.unit(units),
-        Quantity::Moment.unit(units),
-    );
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
-    );
+    let mut out = a.stiffness_matrix().lines(units);
+    out.extend(pedestal_lines(a, units));
+    out
+}
+
+/// The stiffness with the deck's pedestal in series (eq. 9), when the deck has one.
+pub fn pedestal_lines(a: &Analysis, units: Units) -> Vec<String> {
     let unit = |i: usize, j: usize| match (i < 3, j < 3) {
-        (true, true) => (
-            Quantity::Force.factor(units) / Quantity::Length.factor(units),
-            format!("{fu}/{lu}"),
-        ),
-        (true, false) => (Quantity::Force.factor(units), format!("{fu}/rad")),
-        (false, true) => (
-            Quantity::Moment.factor(units) / Quantity::Length.factor(units),
-            format!("{mu}/{lu}"),
-        ),
-        (false, false) => (Quantity::Moment.factor(units), format!("{mu}/rad")),
+        (true, true) => Quantity::Force.factor(units) / Quantity::Length.factor(units),
+        (true, false) => Quantity::Force.factor(units),
+        (false, true) => Quantity::Moment.factor(units) / Quantity::Length.factor(units),
+        (false, false) => Quantity::Moment.factor(units),
     };
-    let k = &a.stiffness;
-    for i in 0..5 {
-        let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
-        for j in 0..5 {
-            let (f, _) = unit(i, j);
-            let shown = crate::bearings::stiffness_text::shown(|r, c| k[(r, c)], i, j);
-            let _ = write!(line, " {:>12.4e}", shown / f);
-        }
-        let _ = writeln!(s, "{line}");
-    }
-    let _ = writeln!(s, "{}", crate::bearings::stiffness_text::round_off_note());
-    let _ = writeln!(
-        s,
-        "  units: lineal {}, lineal-angular {} and {}, angular {}",
-        unit(0, 0).1,
-        unit(0, 3).1,
-        unit(3, 0).1,
-        unit(3, 3).1
-    );
-    let _ = writeln!(
-        s,
-        "  largest asymmetry |K_ij - K_ji| (scaled): {:.3e}",
-        a.asymmetry_max()
-    );
-    if let Some(d) = a.finite_difference_max_rel() {
-        let _ = writeln!(
-            s,
-            "  analytic vs finite differences: largest gap {d:.3e} of the row scale"
-        );
-    }
+    let mut s = String::new();
     match a.stiffness_with_pedestal() {
         None => {}
         Some(Err(e)) => {
@@ -371,7 +312,7 @@ pub fn stiffness_lines(a: &Analysis, units: Units) -> Vec<String> {
             for i in 0..5 {
                 let mut line = format!("  {:<4}", ["F_x", "F_y", "F_z", "M_x", "M_y"][i]);
                 for j in 0..5 {
-                    let (f, _) = unit(i, j);
+                    let f = unit(i, j);
                     let _ = write!(line, " {:>12.4e}", kp[(i, j)] / f);
                 }
                 let _ = writeln!(s, "{line}");
@@ -455,6 +396,15 @@ pub fn text(a: &Analysis, units: Units) -> String {
         moment(sol.reaction[3]),
         moment(sol.reaction[4])
     );
+    if let Some(m) = b.input.operating.applied_moment_nm() {
+        let _ = writeln!(
+            s,
+            "Applied moment My = {:.3} {mu}: the cone tilts theta_y = {:.4e} rad (solved; M_y balanced to {:.1e} {mu})",
+            moment(m),
+            sol.rotation_rad[1],
+            moment((sol.reaction[4] - m).abs())
+        );
+    }
     let _ = writeln!(s, "\nRollers ({fu}, {mu}, ksi/MPa)");
     let _ = writeln!(
         s,

@@ -460,11 +460,9 @@ pub fn view(a: &Analysis) -> View {
             us: w,
         })
         .collect(),
-        texts: vec![crate::bearings::view::TextBlock {
-            title: "stiffness",
-            si: super::report::stiffness_lines(a, crate::units::Units::Si),
-            us: super::report::stiffness_lines(a, crate::units::Units::Us),
-        }],
+        texts: vec![a
+            .stiffness_matrix()
+            .text_block(|units| super::report::pedestal_lines(a, units))],
         answer: super::answer::answer(a, &life),
     }
 }
