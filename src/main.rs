@@ -262,7 +262,7 @@ fn main() -> ExitCode {
                 report::stiffness::render(solution.as_ref(), report_format(format), units)
             else {
                 eprintln!(
-                    "{}: the {} has no stiffness matrix (tapered-roller decks have one)",
+                    "{}: the {} has no stiffness matrix yet (tapered-roller and angular-contact ball decks have one)",
                     deck.display(),
                     case.system().title()
                 );
