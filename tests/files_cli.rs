@@ -416,7 +416,8 @@ fn a_failed_command_leaves_its_output_untouched() {
         ],
         vec!["stiffness", "DECK_A", "--output", "f.csv"],
     ] {
-        let a = deck("chen_a.toml");
+        // A system with no stiffness matrix yet (the ball system gained one: issue 29).
+        let a = deck("aerospace.toml");
         let args: Vec<&str> = args
             .iter()
             .map(|x| if *x == "DECK_A" { a.as_str() } else { x })

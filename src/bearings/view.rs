@@ -828,7 +828,11 @@ impl View {
 /// from its name (`inner_load_n`: "inner load, N"), so no column is left unexplained.
 pub fn column_help(key: &str) -> String {
     let known = match key {
-        "index" | "number" => "the element's number, counted from 1 around the bearing",
+        // The ball system still counts from 0 (its JSON `index`; issue 30 item 9 is to
+        // number every system's elements from 1), so the help must not promise 1.
+        "index" | "number" => {
+            "the element's number around the bearing (rollers count from 1, balls from 0 as in the JSON's index)"
+        }
         "azimuth_deg" => "angular position ψ of the element around the bearing",
         "inner_normal_load_n" | "inner_load_n" => "normal load on the inner raceway contact",
         "outer_normal_load_n" | "outer_load_n" => "normal load on the outer raceway contact",
