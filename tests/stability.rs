@@ -159,8 +159,21 @@ fn valid(b: &Bearing) -> Option<Bearing> {
 
 /// JSON keys whose value may legitimately be null (Option fields): lives of an unloaded
 /// raceway, films of unloaded laminae, the transient that was not requested, the static
-/// safety of a bearing with no contact stress (infinite).
-const NULLABLE: [&str; 14] = [
+/// safety of a bearing with no contact stress (infinite); and ISO 281's numbers (issue
+/// 28), each null only with its sentence in `life.reasons` (checked in [`check`]).
+const NULLABLE: [&str; 26] = [
+    "basic_dynamic_rating_n",
+    "basic_static_rating_n",
+    "equivalent_load_n",
+    "equivalent_load_factors",
+    "basic_l10_mrev",
+    "basic_l10_h",
+    "reference_viscosity_m2_s",
+    "kappa",
+    "fatigue_load_limit_n",
+    "a_iso",
+    "modified_l10_mrev",
+    "modified_l10_h",
     "infinite_life_reason",
     "l10_inner_mrev",
     "l10_outer_mrev",
@@ -269,6 +282,21 @@ fn check(b: &Bearing) -> Result<Outcome, String> {
     let json = report::json::to_value(&a);
     if let Some(p) = non_finite(&json, "$", "") {
         return Err(format!("non-finite or unexpected null at {p}"));
+    }
+    // An absent ISO number is said: null only with a reason (rating::IsoLife's contract).
+    let life = &json["life"];
+    let iso_null = [
+        "basic_dynamic_rating_n",
+        "basic_l10_mrev",
+        "a_iso",
+        "modified_l10_mrev",
+    ]
+    .iter()
+    .any(|k| life.get(k).is_some_and(|v| v.is_null()));
+    if iso_null && life["reasons"].as_array().is_none_or(|r| r.is_empty()) {
+        return Err(format!(
+            "an ISO 281 number is null without a reason: {life}"
+        ));
     }
     options_finite(&a)?;
     Ok(Outcome::Solved)
