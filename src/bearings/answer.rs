@@ -22,15 +22,9 @@ pub const ELEMENTS: &str = "Elements";
 /// Significant figures of lives (they span decades).
 const LIFE_DIGITS: usize = 4;
 
-/// The reference (load-distribution) life in Mrev and hours, ISO 281's basic and modified
-/// lives and the static safety, from the `life` object every system writes
-/// ([`crate::physics::rating::life_json`]).
-pub fn life_lines(
-    l10_bearing_mrev: Option<f64>,
-    l10_bearing_h: Option<f64>,
-    reference_why: &str,
-    iso: &IsoLife,
-) -> Vec<AnswerLine> {
+/// ISO 281's lines of the Summary pane (basic L10, modified L10m, a_ISO), each absent
+/// number with its reason from `iso.reasons`; shared by every system's life lines.
+pub fn iso_lines(iso: &IsoLife) -> Vec<AnswerLine> {
     let why = |prefix: &str| -> String {
         iso.reasons
             .iter()
@@ -40,24 +34,6 @@ pub fn life_lines(
             .unwrap_or_else(|| "not computed".into())
     };
     vec![
-        AnswerLine::number(
-            LIFE,
-            "L10 reference",
-            l10_bearing_mrev,
-            Display::Mrev,
-            LIFE_DIGITS,
-            "/life/l10_bearing_mrev",
-            reference_why,
-        ),
-        AnswerLine::number(
-            LIFE,
-            "L10 reference",
-            l10_bearing_h,
-            Display::Hours,
-            LIFE_DIGITS,
-            "/life/l10_bearing_h",
-            reference_why,
-        ),
         AnswerLine::number(
             LIFE,
             "L10 basic ISO 281",
@@ -85,16 +61,49 @@ pub fn life_lines(
             "/life/a_iso",
             &why("a_ISO"),
         ),
+    ]
+}
+
+/// The reference (load-distribution) life in Mrev and hours, ISO 281's basic and modified
+/// lives and the static safety, from the `life` object every system writes
+/// ([`crate::physics::rating::life_json`]).
+pub fn life_lines(
+    l10_bearing_mrev: Option<f64>,
+    l10_bearing_h: Option<f64>,
+    reference_why: &str,
+    iso: &IsoLife,
+) -> Vec<AnswerLine> {
+    let mut out = vec![
         AnswerLine::number(
             LIFE,
-            "static safety s0",
-            iso.static_safety,
-            Display::Plain,
-            2,
-            "/life/static_safety",
-            "no contact stress",
+            "L10 reference",
+            l10_bearing_mrev,
+            Display::Mrev,
+            LIFE_DIGITS,
+            "/life/l10_bearing_mrev",
+            reference_why,
         ),
-    ]
+        AnswerLine::number(
+            LIFE,
+            "L10 reference",
+            l10_bearing_h,
+            Display::Hours,
+            LIFE_DIGITS,
+            "/life/l10_bearing_h",
+            reference_why,
+        ),
+    ];
+    out.extend(iso_lines(iso));
+    out.push(AnswerLine::number(
+        LIFE,
+        "static safety s0",
+        iso.static_safety,
+        Display::Plain,
+        2,
+        "/life/static_safety",
+        "no contact stress",
+    ));
+    out
 }
 
 /// The thermal network's hottest node at steady state, and, when the loss-of-oil transient

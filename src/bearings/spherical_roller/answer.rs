@@ -32,14 +32,6 @@ pub fn answer(a: &Analysis) -> Vec<AnswerLine> {
     let no_life = life
         .and_then(|l| l.infinite_life_reason)
         .unwrap_or("the life stage did not run");
-    let iso = super::iso_life::iso_life(a);
-    let iso_why = |prefix: &str| -> &str {
-        iso.reasons
-            .iter()
-            .find(|r| r.starts_with(prefix))
-            .or(iso.reasons.first())
-            .map_or("not computed", |r| r.as_str())
-    };
     let mut out = vec![
         AnswerLine::number(
             LIFE,
@@ -68,43 +60,20 @@ pub fn answer(a: &Analysis) -> Vec<AnswerLine> {
             "/life/adjusted_l10_bearing_mrev",
             no_life,
         ),
-        AnswerLine::number(
-            LIFE,
-            "L10 basic ISO 281",
-            iso.basic_l10_mrev,
-            Display::Mrev,
-            4,
-            "/life/basic_l10_mrev",
-            iso_why("ISO 281 P"),
-        ),
-        AnswerLine::number(
-            LIFE,
-            "L10m modified",
-            iso.modified_l10_mrev,
-            Display::Mrev,
-            4,
-            "/life/modified_l10_mrev",
-            iso_why("a_ISO"),
-        ),
-        AnswerLine::number(
-            LIFE,
-            "a_ISO",
-            iso.a_iso,
-            Display::Plain,
-            3,
-            "/life/a_iso",
-            iso_why("a_ISO"),
-        ),
-        AnswerLine::number(
-            LIFE,
-            "static safety s0",
-            static_safety_of(a),
-            Display::Plain,
-            2,
-            "/life/static_safety",
-            "no contact stress",
-        ),
     ];
+    // ISO 281's numbers beside seed 000's (issue 28), as every system shows them.
+    out.extend(crate::bearings::answer::iso_lines(
+        &super::iso_life::iso_life(a),
+    ));
+    out.push(AnswerLine::number(
+        LIFE,
+        "static safety s0",
+        static_safety_of(a),
+        Display::Plain,
+        2,
+        "/life/static_safety",
+        "no contact stress",
+    ));
     let (idx, race, stress) = match max_stress(a) {
         Some((i, k, s)) => (Some(i), Some(k), Some(s)),
         None => (None, None, None),
