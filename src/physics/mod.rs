@@ -19,3 +19,4 @@ pub mod life_point;
 pub mod lubrication;
 pub mod material;
 pub mod rating;
+pub mod thrust_ball_rating;

@@ -467,6 +467,8 @@ pub const DEFAULT_CONTAMINATION_FACTOR: f64 = 0.5;
 pub struct IsoLifeInputs {
     /// Ball or roller.
     pub kind: ContactKind,
+    /// Radial or axial (thrust) ratings: names the ratings in the outputs.
+    pub rating_direction: RatingDirection,
     /// C (C_r), N, or why there is none.
     pub rating: Result<f64, String>,
     /// P and its factors, or why there is none.
@@ -485,13 +487,37 @@ pub struct IsoLifeInputs {
     pub max_contact_stress_pa: f64,
 }
 
+/// Whether the ISO ratings are radial (C_r, C_0r, P_r) or axial (C_a, C_0a, P_a: thrust
+/// bearings, ISO 281 §6.2, α > 45° for ball bearings).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum RatingDirection {
+    /// C_r, C_0r, P_r.
+    #[default]
+    Radial,
+    /// C_a, C_0a, P_a.
+    Axial,
+}
+
+impl RatingDirection {
+    /// The rating's subscript in the text ("r" or "a").
+    pub fn subscript(self) -> &'static str {
+        match self {
+            RatingDirection::Radial => "r",
+            RatingDirection::Axial => "a",
+        }
+    }
+}
+
 /// ISO 281 / ISO 76 outputs of one solve (JSON names are a contract). Absent numbers are
 /// `None` (null) with a sentence in `reasons`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct IsoLife {
-    /// C_r, N.
+    /// Radial (C_r, C_0r, P_r) or axial (C_a, C_0a, P_a) ratings; JSON `rating_direction`.
+    pub rating_direction: RatingDirection,
+    /// C_r (or C_a where `rating_direction` is axial), N.
     pub basic_dynamic_rating_n: Option<f64>,
-    /// C_0r, N.
+    /// C_0r (or C_0a), N.
     pub basic_static_rating_n: Option<f64>,
     /// P, N.
     pub equivalent_load_n: Option<f64>,
@@ -572,6 +598,7 @@ pub fn iso_life(inp: &IsoLifeInputs) -> IsoLife {
     };
     let modified = basic.zip(a).map(|(l, a)| l * a);
     IsoLife {
+        rating_direction: inp.rating_direction,
         basic_dynamic_rating_n: c,
         basic_static_rating_n: c0,
         equivalent_load_n: p.map(|p| p.load_n),
@@ -734,6 +761,12 @@ pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife
         None => "—".to_string(),
     };
     let mut s = String::from("\nLIFE\n");
+    let d = iso.rating_direction.subscript();
+    // Radial lines read as they always have ("P"); a thrust bearing's load is P_a.
+    let p_name = match iso.rating_direction {
+        RatingDirection::Radial => "P",
+        RatingDirection::Axial => "P_a",
+    };
     match reference {
         Ok(r) => {
             let _ = writeln!(
@@ -753,7 +786,7 @@ pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife
     }
     let _ = writeln!(
         s,
-        "  ISO 281: C_r {} N, P {} N, L10 {} Mrev = {} h; κ {}, e_C {}, C_u {} N, a_ISO {}, L10m {} Mrev = {} h",
+        "  ISO 281: C_{d} {} N, {p_name} {} N, L10 {} Mrev = {} h; κ {}, e_C {}, C_u {} N, a_ISO {}, L10m {} Mrev = {} h",
         f(iso.basic_dynamic_rating_n, 0),
         f(iso.equivalent_load_n, 1),
         f(iso.basic_l10_mrev, 2),
@@ -767,7 +800,7 @@ pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife
     );
     let _ = writeln!(
         s,
-        "  ISO 76: C_0r {} N, static safety s0 {}",
+        "  ISO 76: C_0{d} {} N, static safety s0 {}",
         f(iso.basic_static_rating_n, 0),
         f(iso.static_safety, 3)
     );

@@ -187,6 +187,7 @@ fn static_rating_and_fatigue_limit() {
 fn iso_life_chain() {
     let inp = IsoLifeInputs {
         kind: ContactKind::Roller,
+        rating_direction: RatingDirection::Radial,
         rating: Ok(50_000.0),
         equivalent_load: equivalent_load_radial_roller(5_000.0, 0.0, 0.0, 1)
             .ok_or_else(String::new),

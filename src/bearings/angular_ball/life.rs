@@ -18,10 +18,14 @@
 //! `capacity_inner_n`/`capacity_outer_n` report the raceway's *effective* capacity
 //! Q_e·L^(1/3) (= Q_c when every ball has the same angle).
 //!
-//! **ISO 281.** C_r from [`life_point::iso_radial_rating`] at the free contact angle α₀; P
-//! from the forces the bearing carries at the solution (the axial force of the
-//! equilibrium at speed, the radial load) by Table 3 ([`rating::equivalent_load_radial_ball`]);
-//! C_0r from ISO 76's 4 200 MPa at the inner contact of α₀ ([`rating::static_radial_rating_ball`]);
+//! **ISO 281.** For α₀ ≤ 45°, C_r from [`life_point::iso_radial_rating`] at the free
+//! contact angle α₀; P from the forces the bearing carries at the solution (the axial force
+//! of the equilibrium at speed, the radial load) by Table 3
+//! ([`rating::equivalent_load_radial_ball`]); C_0r from ISO 76's 4 200 MPa at the inner
+//! contact of α₀ ([`rating::static_radial_rating_ball`]). For α₀ > 45° ISO 281 rates the
+//! bearing as a single-direction thrust ball bearing: C_a (Table 4), P_a (Table 5) and C_0a
+//! ([`thrust_ball_rating`]), with JSON `rating_direction = "axial"`; a_ISO and C_u take the
+//! ball forms (ISO 281 uses them for thrust ball bearings too).
 //! κ from the lubricant's viscosity at the bulk temperature of eq. 4-1 (Barus/Roelands with
 //! the deck's temperature–viscosity coefficient) over its density; e_C =
 //! [`rating::DEFAULT_CONTAMINATION_FACTOR`] (the deck has no key for it yet).
@@ -37,7 +41,8 @@ use crate::physics::life_point::{
     self, bearing_l10, life_hours, power_mean_load, raceway_capacity, raceway_l10, Life, Raceway,
     ISO_BM_RADIAL_BALL, LIFE_EXPONENT_POINT, WEIBULL_SLOPE_POINT,
 };
-use crate::physics::rating::{self, ContactKind, IsoLife, IsoLifeInputs};
+use crate::physics::rating::{self, ContactKind, IsoLife, IsoLifeInputs, RatingDirection};
+use crate::physics::thrust_ball_rating;
 
 /// Revolutions per minute per rad/s.
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
@@ -186,7 +191,25 @@ pub fn life(a: &BallAnalysis) -> BallLife {
         pitch_diameter_m: g.pitch_diameter_m,
         contact_angle_rad: alpha0,
     };
-    let rating = life_point::iso_radial_rating(&iso_brg).map_err(|e| format!("ISO 281 C_r: {e}"));
+    // ISO 281 rates α ≤ 45° as a radial bearing (C_r, Table 3) and α > 45° as a
+    // single-direction thrust bearing (C_a, Tables 4–5; `thrust_ball_rating`).
+    let thrust = alpha0.to_degrees() > 45.0;
+    let direction = if thrust {
+        RatingDirection::Axial
+    } else {
+        RatingDirection::Radial
+    };
+    let rating = if thrust {
+        thrust_ball_rating::iso_thrust_rating(
+            alpha0,
+            g.ball_count,
+            g.ball_diameter_m,
+            g.pitch_diameter_m,
+        )
+    } else {
+        life_point::iso_radial_rating(&iso_brg).map_err(|e| format!("ISO 281 C_r: {e}"))
+    };
+    let c0_name = if thrust { "C_0a" } else { "C_0r" };
     let static_rating = ball_race_curvature(
         Race::Inner,
         g.ball_diameter_m,
@@ -196,23 +219,38 @@ pub fn life(a: &BallAnalysis) -> BallLife {
     )
     .and_then(|c| HertzPointContact::new(c, g.reduced_modulus_pa, g.hertz_method))
     .and_then(|h| h.solve(1000.0))
-    .map_err(|e| format!("ISO 76 C_0r: {e}"))
+    .map_err(|e| format!("ISO 76 {c0_name}: {e}"))
     .and_then(|pc| {
-        rating::static_radial_rating_ball(1, g.ball_count, alpha0, (1000.0, pc.max_pressure_pa))
-            .ok_or_else(|| "ISO 76 C_0r: no contact pressure at the reference load".to_string())
+        let per_load = (1000.0, pc.max_pressure_pa);
+        if thrust {
+            thrust_ball_rating::static_axial_rating_ball(g.ball_count, alpha0, per_load)
+        } else {
+            rating::static_radial_rating_ball(1, g.ball_count, alpha0, per_load)
+        }
+        .ok_or_else(|| format!("ISO 76 {c0_name}: no contact pressure at the reference load"))
     });
-    let equivalent_load = rating::equivalent_load_radial_ball(
-        a.load.radial_force_n,
-        a.load.axial_force_n,
-        alpha0,
-        g.ball_count,
-        g.ball_diameter_m,
-    )
-    .map_err(|e| format!("ISO 281 P: {e}"));
+    let equivalent_load = if thrust {
+        thrust_ball_rating::equivalent_load_thrust_ball(
+            a.load.radial_force_n,
+            a.load.axial_force_n,
+            alpha0,
+        )
+        .map_err(|e| format!("ISO 281 P_a: {e}"))
+    } else {
+        rating::equivalent_load_radial_ball(
+            a.load.radial_force_n,
+            a.load.axial_force_n,
+            alpha0,
+            g.ball_count,
+            g.ball_diameter_m,
+        )
+        .map_err(|e| format!("ISO 281 P: {e}"))
+    };
     let op = &a.input.operating;
     let max_p = a.max_pressure_pa();
     let iso = rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Ball,
+        rating_direction: direction,
         rating,
         equivalent_load,
         static_rating,

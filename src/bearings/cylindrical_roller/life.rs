@@ -107,6 +107,7 @@ pub fn life(a: &CylindricalAnalysis) -> CylindricalLife {
     let nu = super::tribodynamics::inlet_viscosity_pa_s(&a.input) / lub.density_kg_m3;
     let mut iso = rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Roller,
+        rating_direction: crate::physics::rating::RatingDirection::Radial,
         rating: rating::iso_radial_rating_roller(rating::B_M_CYLINDRICAL_ROLLER, &rg).ok_or_else(
             || {
                 format!(

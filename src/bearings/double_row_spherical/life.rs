@@ -61,6 +61,7 @@ pub fn life(a: &DoubleRowAnalysis) -> DoubleRowLife {
     let nu = heat::kinematic_viscosity_m2_s(&a.row_bearing.lubricant);
     let iso = rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Roller,
+        rating_direction: crate::physics::rating::RatingDirection::Radial,
         rating: super::load_sweep::dynamic_rating_n(&a.input).ok_or_else(|| {
             format!(
                 "ISO 281 C_r: D·cos α/D_pw = {:.4} is outside Table 7 (0.01–0.30)",

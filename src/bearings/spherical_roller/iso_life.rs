@@ -41,6 +41,7 @@ pub fn iso_life(a: &Analysis) -> IsoLife {
     let stress = super::answer::max_stress(a).map_or(0.0, |(_, _, s)| s);
     rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Roller,
+        rating_direction: crate::physics::rating::RatingDirection::Radial,
         rating: rating::iso_radial_rating_roller(B_M_SPHERICAL_ROLLER, &rg).ok_or_else(|| {
             format!(
                 "ISO 281 C_r: D·cos α/D_pw = {:.4} is outside Table 7 (0.01–0.30)",

@@ -117,6 +117,7 @@ pub fn life(a: &Analysis) -> TaperedLife {
     };
     let iso = rating::iso_life(&IsoLifeInputs {
         kind: ContactKind::Roller,
+        rating_direction: crate::physics::rating::RatingDirection::Radial,
         rating: rating::iso_radial_rating_roller(rating::B_M_TAPERED_ROLLER, &rg).ok_or_else(
             || {
                 format!(
