@@ -469,6 +469,11 @@ pub static SCHEMA: Schema<TaperedInput> = Schema {
     opaque_tables: &["thermal"],
     defaults: TaperedInput::afapl_sample,
     cross_checks: cross,
+    one_holding: &[crate::deck::form::OneHolding {
+        load: "operating.moment",
+        displacement: "operating.misalignment_y",
+        dof: "the cone's tilt about y",
+    }],
     template_header: "rollbench tapered roller bearing deck (seed 004: AFAPL-TR-78-6 Part III, tapered roller bearing stiffness with centrifugal effects)",
     template_notes: TEMPLATE_NOTES,
 };

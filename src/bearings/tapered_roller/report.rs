@@ -195,6 +195,14 @@ pub fn json(a: &Analysis) -> Value {
             "wall_time_s": a.wall_time_s,
         },
     });
+    // Issue 29: the tilt about x and its moment beside tilt_rad/moment_nm (about y),
+    // written where non-zero (operating.misalignment_x, or a y displacement).
+    if sol.rotation_rad[0] != 0.0 || sol.reaction[3] != 0.0 {
+        if let Some(r) = out.get_mut("rings").and_then(Value::as_object_mut) {
+            r.insert("tilt_x_rad".into(), json!(sol.rotation_rad[0]));
+            r.insert("moment_x_nm".into(), json!(sol.reaction[3]));
+        }
+    }
     if let Some(o) = out.as_object_mut() {
         for (k, v) in lubrication_json(a) {
             o.insert(k.into(), v);
