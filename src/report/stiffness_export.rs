@@ -319,7 +319,7 @@ mod tests {
             .map(|n| {
                 let (i, j) = (n / 5, n % 5);
                 let s = if (i + j) % 2 == 0 { 1.0 } else { -1.0 };
-                s * (i as f64 + 1.0) * 10f64.powi(j as i32 + 5) / 3.0
+                s * (i as f64 + 1.0) * 10f64.powi(j + 5) / 3.0
             })
             .collect();
         let mut m = StiffnessMatrix::new(Dof::ALL.to_vec(), k, Method::Analytic);

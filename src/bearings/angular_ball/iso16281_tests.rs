@@ -66,12 +66,15 @@ fn iso_case(pd: f64, fr: f64, fa: f64, m: Option<f64>) -> [f64; 3] {
     ]
 }
 
+/// (example, P_d m, F_r N, F_a N, M N·m or held, [δ_r µm, δ_a µm, |θ| mrad]).
+type Case = (&'static str, f64, f64, f64, Option<f64>, [f64; 3]);
+
 #[test]
 fn iso_ts_16281_deep_groove_cases() {
     let nan = f64::NAN;
     // (example, P_d m, F_r N, F_a N, M N·m or held, [δ_r µm, δ_a µm, |θ| mrad]); NaN: not
     // compared (zero by symmetry or not given).
-    let cases: [(&str, f64, f64, f64, Option<f64>, [f64; 3]); 6] = [
+    let cases: [Case; 6] = [
         (
             "1 radial, no play",
             0.0,
