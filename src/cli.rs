@@ -94,6 +94,12 @@ pub enum Command {
         /// Write to FILE instead of standard output, as `run --output` does.
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
+        /// Export for a rotordynamics model instead of the report: ross (a ROSS
+        /// BearingElement TOML, SI, read back by `ross.BearingElement.load`), csv (one
+        /// entry a line) or json, both in the deck's units. No system computes damping:
+        /// the exports say so (ROSS's c terms are 0).
+        #[arg(long, value_enum, value_name = "FORMAT", conflicts_with = "format")]
+        export: Option<StiffnessExport>,
     },
     /// Friction torques M_fi, M_fo, M against F/C (C: ISO 281's C_r) of a double-row
     /// spherical roller deck, each point a full solve (seed 002 Fig. 2). Combined load keeps
@@ -323,6 +329,28 @@ pub fn contact_command(
 pub enum TableFormat {
     Text,
     Json,
+}
+
+/// `rollbench stiffness --export` formats (see [`crate::report::stiffness_export`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StiffnessExport {
+    /// ROSS's BearingElement TOML (SI).
+    Ross,
+    /// One entry a line, deck units.
+    Csv,
+    /// The matrix with its units, deck units.
+    Json,
+}
+
+impl From<StiffnessExport> for crate::report::stiffness_export::Export {
+    fn from(e: StiffnessExport) -> Self {
+        use crate::report::stiffness_export::Export;
+        match e {
+            StiffnessExport::Ross => Export::Ross,
+            StiffnessExport::Csv => Export::Csv,
+            StiffnessExport::Json => Export::Json,
+        }
+    }
 }
 
 /// Report formats.

@@ -44,6 +44,42 @@ fn commit(plan: &Plan, contents: &[&[u8]]) -> ExitCode {
     }
 }
 
+/// `rollbench stiffness DECK --export FORMAT`: the matrix of the solution's JSON
+/// `stiffness` object written for a rotordynamics model, through `plan`.
+fn stiffness_export(
+    deck: &Path,
+    case: &dyn Case,
+    solution: &dyn bearings::Solution,
+    export: rollbench::cli::StiffnessExport,
+    plan: &Plan,
+) -> ExitCode {
+    use rollbench::report::stiffness_export as se;
+    let json = solution.json();
+    let Some(k) = json.get("stiffness").and_then(se::matrix_from_json) else {
+        eprintln!(
+            "{}: the {} has no stiffness matrix yet, nothing to export",
+            deck.display(),
+            case.system().title()
+        );
+        return ExitCode::from(exit::INVALID_INPUT);
+    };
+    let tag = deck
+        .file_stem()
+        .map_or_else(|| "bearing".into(), |s| s.to_string_lossy().into_owned());
+    let src = se::Source {
+        tag: &tag,
+        system: case.system().title(),
+        units: case.units(),
+    };
+    match se::export(&k, export.into(), src) {
+        Ok(text) => commit(plan, &[text.as_bytes()]),
+        Err(e) => {
+            eprintln!("{}: {e}", deck.display());
+            ExitCode::from(exit::INVALID_INPUT)
+        }
+    }
+}
+
 /// A deck's case and its solution.
 type Solved = (Box<dyn Case>, Box<dyn bearings::Solution>);
 
@@ -241,6 +277,7 @@ fn main() -> ExitCode {
             check_fd,
             format,
             output,
+            export,
         }) => {
             let plan = match plan_outputs(&[("--output", output.as_deref())], &deck) {
                 Ok(p) => p,
@@ -258,6 +295,9 @@ fn main() -> ExitCode {
                 Err(code) => return code,
             };
             let units = case.units();
+            if let Some(export) = export {
+                return stiffness_export(&deck, case.as_ref(), solution.as_ref(), export, &plan);
+            }
             let Some(text) =
                 report::stiffness::render(solution.as_ref(), report_format(format), units)
             else {

@@ -4,6 +4,7 @@
 
 pub mod csv;
 pub mod stiffness;
+pub mod stiffness_export;
 
 use crate::bearings::view::View;
 use crate::bearings::Solution;

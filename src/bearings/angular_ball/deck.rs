@@ -739,6 +739,11 @@ pub static SCHEMA: Schema<BallInput> = Schema {
     opaque_tables: &["traction_table", "thermal"],
     defaults: BallInput::chen_a,
     cross_checks,
+    one_holding: &[crate::deck::form::OneHolding {
+        load: "operating.moment",
+        displacement: "operating.misalignment",
+        dof: "the ring's tilt",
+    }],
     template_header: "rollbench deck: angular-contact ball bearing (seed 001, S.-H. Chen 1989)\nLoad distribution with centrifugal force and gyroscopic moment, race-control\nkinematics, spin heat, EHD film and the skidding threshold.",
     template_notes: crate::deck::form::TemplateNotes {
         opaque_notes: &[(

@@ -384,3 +384,38 @@ mod stiffness {
         }
     }
 }
+
+/// One holding per DOF (issue 29): `operating.moment` and `operating.misalignment` both
+/// written, even a misalignment of exactly 0 (the value rule cannot see it), are refused
+/// at the later key, naming both keys and both lines, once.
+#[test]
+fn moment_and_written_zero_misalignment_refused_with_lines() {
+    let toml = std::fs::read_to_string("decks/chen_a.toml").unwrap();
+    let line = |text: &str, key: &str| {
+        1 + text
+            .lines()
+            .position(|l| l.starts_with(key))
+            .unwrap_or_else(|| panic!("{key}"))
+    };
+    for mis in ["0.0", "0.01"] {
+        let t = toml.replace(
+            "[operating]",
+            &format!("[operating]\nmoment = 10.0\nmisalignment = {mis}"),
+        );
+        let (lm, la) = (line(&t, "moment ="), line(&t, "misalignment ="));
+        let e = crate::deck::form::Form::parse(
+            &t,
+            "chen_a.toml",
+            &crate::bearings::angular_ball::deck::SCHEMA,
+        )
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+        assert!(
+            e.contains(&format!("operating.moment at line {lm}"))
+                && e.contains(&format!("operating.misalignment at line {la}")),
+            "{mis}: {e}"
+        );
+        assert_eq!(e.matches("operating.moment").count(), 1, "{e}");
+    }
+}

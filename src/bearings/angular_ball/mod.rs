@@ -37,6 +37,10 @@ pub mod warnings;
 
 #[cfg(test)]
 mod dof_tests;
+#[cfg(test)]
+mod iso16281_tests;
+#[cfg(test)]
+mod le7_tests;
 
 /// The deck `type` of this system (its schema's `system`, the JSON's `type`), here at the
 /// folder's root so that every file below reads it downward.

@@ -409,6 +409,7 @@ pub static SCHEMA: Schema<CylindricalInput> = Schema {
     opaque_tables: &["contact", "thermal"],
     defaults: CylindricalInput::truck,
     cross_checks: cross,
+    one_holding: &[],
     template_header: "rollbench cylindrical roller bearing deck (seed 003: tribodynamics of cylindrical roller bearings in a heavy-duty truck transmission)\nQuasi-static lamina load distribution, 2-DOF dynamics with the film in the deflection,\nspectra and mixed-regime friction per roller.",
     template_notes: TemplateNotes {
         name: "",

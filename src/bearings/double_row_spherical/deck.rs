@@ -439,6 +439,7 @@ pub static SCHEMA: Schema<DoubleRowInput> = Schema {
     opaque_tables: &["optimise", "thermal"],
     defaults: DoubleRowInput::example_22308,
     cross_checks: cross,
+    one_holding: &[],
     template_header: "rollbench double-row spherical roller bearing deck (seed 002: Stirbu, Grigoras, Hanganu, combined spherical roller bearings functioning analysis)\nTwo rows mirrored at ±α⁰ sharing the inner ring and one outer sphere, a guide ring between them;\nlamina statics per roller, stresses, film and life per row.",
     template_notes: TemplateNotes {
         name: "",

@@ -68,7 +68,15 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
         "input": serde_json::to_value(&a.input).unwrap_or(Value::Null),
         "converged": ld.converged,
         "loads": {"radial_n": a.input.operating.radial_load_n, "axial_n": a.input.operating.axial_load_n},
-        "rings": {"axial_deflection_m": a.axial_deflection_m(), "radial_deflection_m": a.radial_deflection_m()},
+        // Issue 29: self-aligning (the outer raceway is a sphere about the bearing
+        // centre), so the ring's tilt is free and it carries no moment: moment_nm is 0
+        // by that geometry, not computed, and tilt_free says so.
+        "rings": {
+            "axial_deflection_m": a.axial_deflection_m(),
+            "radial_deflection_m": a.radial_deflection_m(),
+            "moment_nm": 0.0,
+            "tilt_free": true,
+        },
         "stiffness": {
             "rows": ["F_x", "F_z"],
             "columns": ["x", "z"],

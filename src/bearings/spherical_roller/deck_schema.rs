@@ -457,6 +457,7 @@ pub static SCHEMA: Schema<Bearing> = Schema {
     opaque_tables: &["thermal"],
     defaults,
     cross_checks,
+    one_holding: &[],
     template_header: "rollbench deck template: every key, its unit and allowed range.\nValues are the aerospace example bearing (decks/aerospace.toml).",
     template_notes: TEMPLATE_NOTES,
 };

@@ -319,9 +319,10 @@ static FIELDS: [FieldSpec<TaperedInput>; 64] = [
 fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
     let g = &t.geometry;
     let mut v = Vec::new();
-    // θy is given one way: held at a rotation, or free under a moment (issue 29). A held
-    // rotation of exactly 0 is also the absent key's default and cannot be told apart from
-    // it, so a deck writing `misalignment_y = 0.0` beside a moment is read as the moment.
+    // θy is given one way: held at a rotation, or free under a moment (issue 29). Both
+    // keys written (even `misalignment_y = 0.0`) are refused by the schema's
+    // `one_holding`, with both lines; this value rule covers values set without a deck
+    // text (and is not repeated when that one fired).
     if t.operating.applied_moment_nm().is_some() && t.operating.misalignment_rad[1] != 0.0 {
         v.push((
             "operating.moment",
@@ -469,6 +470,11 @@ pub static SCHEMA: Schema<TaperedInput> = Schema {
     opaque_tables: &["thermal"],
     defaults: TaperedInput::afapl_sample,
     cross_checks: cross,
+    one_holding: &[crate::deck::form::OneHolding {
+        load: "operating.moment",
+        displacement: "operating.misalignment_y",
+        dof: "the cone's tilt about y",
+    }],
     template_header: "rollbench tapered roller bearing deck (seed 004: AFAPL-TR-78-6 Part III, tapered roller bearing stiffness with centrifugal effects)",
     template_notes: TEMPLATE_NOTES,
 };

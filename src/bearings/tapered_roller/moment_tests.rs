@@ -133,3 +133,37 @@ fn nguyen_schaefer_32007_with_moment() {
     assert!((sol.reaction[4] - 267.2).abs() < 1e-6 * 267.2);
     assert!(a.finite_difference_max_rel().unwrap() < 1e-6);
 }
+
+/// One holding per DOF (issue 29): the moment beside a written `misalignment_y = 0.0` is
+/// refused too (the key is there, whatever its value), naming both keys and lines; the
+/// moment written as "held" beside a rotation is one holding and accepted.
+#[test]
+fn moment_and_written_rotation_refused_with_lines() {
+    let base = include_str!("../../../decks/trb_32007.toml");
+    let both = base.replace("[operating]\n", "[operating]\nmisalignment_y = 0.0\n");
+    let line = |text: &str, key: &str| {
+        1 + text
+            .lines()
+            .position(|l| l.starts_with(key))
+            .unwrap_or_else(|| panic!("{key}"))
+    };
+    let err = match Form::parse(&both, "both.toml", &SCHEMA) {
+        Ok(_) => panic!("a deck with both the moment and the rotation was accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        err.contains(&format!(
+            "operating.moment at line {}",
+            line(&both, "moment =")
+        )) && err.contains(&format!(
+            "operating.misalignment_y at line {}",
+            line(&both, "misalignment_y =")
+        )),
+        "{err}"
+    );
+    let held = both.replacen("moment = 267.2", "moment = \"held\"", 1);
+    assert!(held.contains("moment = \"held\""));
+    if let Err(e) = Form::parse(&held, "held.toml", &SCHEMA) {
+        panic!("{e}");
+    }
+}

@@ -195,6 +195,15 @@ pub fn json(a: &Analysis) -> Value {
             "wall_time_s": a.wall_time_s,
         },
     });
+    // Issue 29: the tilt about x and its moment beside tilt_rad/moment_nm (about y),
+    // written where the deck holds a θx (operating.misalignment_x). Without it the loads
+    // lie in the x–z plane and M_x is zero by symmetry (round-off only): not written.
+    if sol.rotation_rad[0] != 0.0 {
+        if let Some(r) = out.get_mut("rings").and_then(Value::as_object_mut) {
+            r.insert("tilt_x_rad".into(), json!(sol.rotation_rad[0]));
+            r.insert("moment_x_nm".into(), json!(sol.reaction[3]));
+        }
+    }
     if let Some(o) = out.as_object_mut() {
         for (k, v) in lubrication_json(a) {
             o.insert(k.into(), v);

@@ -330,6 +330,18 @@ pub fn preset_name(m: &Material) -> Option<&'static str> {
         .map(|(n, _)| *n)
 }
 
+/// Two keys giving one ring degree of freedom two ways ([`Schema::one_holding`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OneHolding {
+    /// The key applying a load (force or moment). A [`FieldKind::RealOr`] key written
+    /// as its word (`"held"`) applies none.
+    pub load: &'static str,
+    /// The key holding a displacement (or rotation).
+    pub displacement: &'static str,
+    /// The degree of freedom, for the message ("the ring's tilt about y").
+    pub dof: &'static str,
+}
+
 /// What one bearing system's deck looks like.
 pub struct Schema<T: 'static> {
     /// The deck's `type`. Only [`crate::deck::DEFAULT_TYPE`] decks may omit it.
@@ -354,6 +366,10 @@ pub struct Schema<T: 'static> {
     /// Rules involving several keys, on the value built from the valid fields:
     /// `(key, rule)` pairs; see the module documentation for when they are reported.
     pub cross_checks: fn(&T, Units) -> Vec<(&'static str, String)>,
+    /// Pairs of keys that hold the same ring degree of freedom, one by a load, the other
+    /// by a displacement (issue 29: a deck gives each degree of freedom one way): a deck
+    /// writing both is refused, naming both keys and their lines.
+    pub one_holding: &'static [OneHolding],
     /// The first comment lines of [`template`] (without `# `).
     pub template_header: &'static str,
     /// Comment lines of the template (and of a unit-converted deck) beyond the field

@@ -139,6 +139,7 @@ static TOY: Schema<Toy> = Schema {
     opaque_tables: &["extra"],
     defaults: toy_defaults,
     cross_checks: toy_cross,
+    one_holding: &[],
     template_header: "toy deck template",
     template_notes: crate::deck::form::TemplateNotes::NONE,
 };
@@ -609,6 +610,7 @@ fn thermal_table_is_read_by_the_thermal_parser() {
         opaque_tables: &["thermal"],
         defaults: toy_defaults,
         cross_checks: toy_cross,
+        one_holding: &[],
         template_header: "warm toy",
         template_notes: crate::deck::form::TemplateNotes::NONE,
     };

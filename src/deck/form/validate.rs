@@ -475,6 +475,42 @@ pub(crate) fn validate<T>(
         }
     }
 
+    // one holding per degree of freedom (issue 29): a load and a displacement both
+    // written for the same DOF are refused at the later key, naming both and their lines
+    // (presence in the deck, not the value: `misalignment = 0.0` beside a moment is two
+    // holdings too). The value rule a system may keep for the same pair is then not
+    // repeated.
+    let mut held_twice: Vec<&str> = Vec::new();
+    for pair in schema.one_holding {
+        let (Some(load), Some(disp)) = (ctx.seen.get(pair.load), ctx.seen.get(pair.displacement))
+        else {
+            continue;
+        };
+        let word = schema.field(pair.load).and_then(|f| match f.kind {
+            FieldKind::RealOr(w) => Some(w),
+            _ => None,
+        });
+        if word.is_some_and(|w| load.1.trim_matches(['"', '\'']) == w) {
+            continue;
+        }
+        let (later, later_key) = if load.0.line <= disp.0.line {
+            (disp.clone(), pair.displacement)
+        } else {
+            (load.clone(), pair.load)
+        };
+        let rule = format!(
+            "{} is given two ways: {} at line {} applies a load and {} at line {} holds a displacement; give one of them",
+            pair.dof, pair.load, load.0.line, pair.displacement, disp.0.line
+        );
+        ctx.errors.push(DeckError::Invalid {
+            location: later.0,
+            key: later_key.into(),
+            value: later.1,
+            rule,
+        });
+        held_twice.extend([pair.load, pair.displacement]);
+    }
+
     // cross-field rules, on valid keys only
     let invalid: Vec<&str> = schema
         .fields
@@ -483,7 +519,10 @@ pub(crate) fn validate<T>(
         .filter(|k| !ctx.valid.contains_key(k))
         .collect();
     for (key, rule) in (schema.cross_checks)(&value, units) {
-        if !ctx.valid.contains_key(key) || invalid.iter().any(|k| names_key(&rule, k)) {
+        if !ctx.valid.contains_key(key)
+            || invalid.iter().any(|k| names_key(&rule, k))
+            || (held_twice.contains(&key) && held_twice.iter().any(|k| names_key(&rule, k)))
+        {
             continue;
         }
         let (location, v) = match ctx.seen.get(key) {

@@ -138,7 +138,14 @@ pub fn to_value(a: &Analysis) -> Value {
     );
     doc.insert(
         "rings".into(),
-        json!({"axial_deflection_m": ld.axial_deflection_m, "radial_deflection_m": ld.radial_deflection_m}),
+        // Issue 29: self-aligning (spherical outer raceway), so the ring's tilt is free
+        // and it carries no moment: moment_nm is 0 by that geometry, tilt_free says so.
+        json!({
+            "axial_deflection_m": ld.axial_deflection_m,
+            "radial_deflection_m": ld.radial_deflection_m,
+            "moment_nm": 0.0,
+            "tilt_free": true,
+        }),
     );
     doc.insert(
         "roller_properties".into(),
