@@ -79,7 +79,7 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Text)]
         format: TableFormat,
     },
-    /// The bearing's stiffness matrix (tapered-roller and angular-contact ball decks: the 5×5 for a rotor model).
+    /// The bearing's stiffness matrix at the operating point, every system (the 5×5 for a rotor model; docs/stiffness.md).
     Stiffness {
         /// Deck file (TOML).
         deck: PathBuf,

@@ -301,11 +301,25 @@ fn main() -> ExitCode {
             let Some(text) =
                 report::stiffness::render(solution.as_ref(), report_format(format), units)
             else {
-                eprintln!(
-                    "{}: the {} has no stiffness matrix yet (tapered-roller and angular-contact ball decks have one)",
-                    deck.display(),
-                    case.system().title()
-                );
+                // The system's own reason when it gives one (issue 29: a stage that cannot
+                // answer says why, with its numbers).
+                let reason = solution
+                    .json()
+                    .get("stiffness")
+                    .and_then(|k| k.get("reason"))
+                    .and_then(|r| r.as_str().map(str::to_string));
+                match reason {
+                    Some(r) => eprintln!(
+                        "{}: the {} has no stiffness matrix here: {r}",
+                        deck.display(),
+                        case.system().title()
+                    ),
+                    None => eprintln!(
+                        "{}: the {} has no stiffness matrix",
+                        deck.display(),
+                        case.system().title()
+                    ),
+                }
                 return ExitCode::from(exit::INVALID_INPUT);
             };
             commit(&plan, &[text.as_bytes()])

@@ -10,6 +10,7 @@
 
 use std::fmt::Write;
 
+use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 
 use super::view::TextBlock;
@@ -63,10 +64,13 @@ impl Dof {
     }
 }
 
-/// How the reported matrix was computed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// How the reported matrix was computed (the deck's `solver.stiffness` where a system
+/// has that key).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// The Jacobian of the ring equilibrium.
+    #[default]
     Analytic,
     /// Central differences of re-solved equilibria.
     FiniteDifference,
@@ -74,7 +78,33 @@ pub enum Method {
     Both,
 }
 
+/// The deck spellings of [`Method`], in its order (a `solver.stiffness` choice field).
+pub const METHODS: &[&str] = &["analytic", "finite-difference", "both"];
+
 impl Method {
+    /// The index of the deck choice ([`METHODS`]' order).
+    pub fn index(self) -> f64 {
+        match self {
+            Method::Analytic => 0.0,
+            Method::FiniteDifference => 1.0,
+            Method::Both => 2.0,
+        }
+    }
+
+    /// The method of deck choice `v` ([`METHODS`]' order).
+    pub fn from_index(v: f64) -> Method {
+        match v as usize {
+            1 => Method::FiniteDifference,
+            2 => Method::Both,
+            _ => Method::Analytic,
+        }
+    }
+
+    /// Whether the finite differences are computed.
+    pub fn wants_fd(self) -> bool {
+        self != Method::Analytic
+    }
+
     /// The JSON name.
     pub fn name(self) -> &'static str {
         match self {

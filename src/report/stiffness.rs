@@ -34,13 +34,21 @@ pub fn render(solution: &dyn Solution, format: Format, units: Units) -> Option<S
             // forces then moments, columns of displacements then rotations; each row
             // says its units (lineal columns, angular columns).
             let (f, l, m) = (Quantity::Force, Quantity::Length, Quantity::Moment);
-            let per = |i: usize, j: usize| -> (f64, String) {
-                let (num, nu) = if i < 3 {
+            // A row or column is angular by its name (M_x, theta_y), so matrices over any
+            // subset of the DOFs (the cylindrical roller's x, y) get their units right.
+            let angular = |names: &[serde_json::Value], i: usize| {
+                names
+                    .get(i)
+                    .and_then(|v| v.as_str())
+                    .is_some_and(|n| n.starts_with("M_") || n.starts_with("theta"))
+            };
+            let per = |i: usize, angular_column: bool| -> (f64, String) {
+                let (num, nu) = if !angular(rows, i) {
                     (f.factor(units), f.unit(units))
                 } else {
                     (m.factor(units), m.unit(units))
                 };
-                if j < 3 {
+                if !angular_column {
                     (num / l.factor(units), format!("{nu}/{}", l.unit(units)))
                 } else {
                     (num, format!("{nu}/rad"))
@@ -56,16 +64,17 @@ pub fn render(solution: &dyn Solution, format: Format, units: Units) -> Option<S
                     .iter()
                     .enumerate()
                     .map(|(j, c)| {
-                        c.as_f64()
-                            .map_or(String::new(), |v| super::csv::csv_number(v / per(i, j).0))
+                        c.as_f64().map_or(String::new(), |v| {
+                            super::csv::csv_number(v / per(i, angular(cols, j)).0)
+                        })
                     })
                     .collect();
                 s.push_str(&format!(
                     "{},{},{},{}\n",
                     name(r),
                     cells.join(","),
-                    per(i, 0).1,
-                    per(i, 3).1
+                    per(i, false).1,
+                    per(i, true).1
                 ));
             }
             Some(s)

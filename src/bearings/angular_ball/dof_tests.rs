@@ -359,6 +359,54 @@ mod stiffness {
         assert!(k[(1, 0)].abs() < 1e-9 * k[(0, 0)], "{k}");
     }
 
+    /// On the shared type (issue 29 item 3) the JSON `stiffness` keeps every key the ball
+    /// wrote (`matrix`, `rows`, `columns`, `units`, `method`, `reference_point`, `held`,
+    /// and with "both" `finite_difference_matrix`, `finite_difference_max_rel`), with the
+    /// ball's own matrix in it bit for bit, and the text block is the shared printer's.
+    #[test]
+    fn shared_type_keeps_the_ball_json() {
+        let mut i = BallInput::chen_b();
+        i.solver.stiffness = StiffnessMethod::Both;
+        let a = analyse(&i, Cancel::NONE).unwrap();
+        let j = crate::bearings::angular_ball::report::json(&a);
+        let k = &j["stiffness"];
+        for key in [
+            "matrix",
+            "rows",
+            "columns",
+            "units",
+            "method",
+            "reference_point",
+            "held",
+            "finite_difference_matrix",
+            "finite_difference_max_rel",
+        ] {
+            assert!(k.get(key).is_some(), "{key} missing: {k}");
+        }
+        assert_eq!(
+            k["rows"],
+            serde_json::json!(["F_x", "F_y", "F_z", "M_x", "M_y"])
+        );
+        assert_eq!(
+            k["columns"],
+            serde_json::json!(["x", "y", "z", "theta_x", "theta_y"])
+        );
+        assert_eq!(k["method"], "both");
+        assert_eq!(k["units"][0][3], "N/rad");
+        for r in 0..5 {
+            for c in 0..5 {
+                assert_eq!(k["matrix"][r][c].as_f64(), Some(a.stiffness.matrix[(r, c)]));
+            }
+        }
+        assert!(k["finite_difference_max_rel"].as_f64().unwrap() < 1e-6);
+        let lines =
+            crate::bearings::angular_ball::report::stiffness_lines(&a, crate::units::Units::Si);
+        assert_eq!(
+            lines[0],
+            "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
+        );
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 4, ..ProptestConfig::default() })]
         /// The analytic matrix (the ring Newton's Jacobian with the balls condensed)

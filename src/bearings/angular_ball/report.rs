@@ -517,96 +517,21 @@ pub fn series_csv(a: &BallAnalysis) -> Result<String, String> {
     Ok(out)
 }
 
-/// The JSON `stiffness` object, as the tapered system's (issue 29): `matrix` (rows of
-/// `rows`, columns of `columns`, SI), `units`, `method`, and with `solver.stiffness =
-/// "both"` the finite-difference matrix and `finite_difference_max_rel`.
+/// The JSON `stiffness` object on the shared type (issue 29): `matrix` (rows of `rows`,
+/// columns of `columns`, SI), `units`, `method`, `reference_point`, and with
+/// `solver.stiffness = "both"` the finite-difference matrix and
+/// `finite_difference_max_rel`; the ball's own `held` beside them.
 fn stiffness_json(a: &BallAnalysis) -> Value {
-    use super::stiffness::{COLUMNS, ROWS};
-    let k = &a.stiffness;
-    let rows = |m: &super::stiffness::Matrix5| -> Vec<Vec<f64>> {
-        (0..5)
-            .map(|i| (0..5).map(|j| m[(i, j)]).collect())
-            .collect()
-    };
-    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
-        (true, true) => "N/m",
-        (true, false) => "N/rad",
-        (false, true) => "N·m/m",
-        (false, false) => "N·m/rad",
-    };
-    let units: Vec<Vec<&str>> = (0..5)
-        .map(|i| (0..5).map(|j| unit(i, j)).collect())
-        .collect();
-    let mut v = json!({
-        "matrix": rows(&k.matrix),
-        "rows": ROWS,
-        "columns": COLUMNS,
-        "units": units,
-        "method": k.method.name(),
-        "reference_point": "inner ring centre in the plane of its groove centres (x along the radial load, z along the axial load)",
-        "held": "race-control speeds, Hertz constants and the gyroscopic friction µ at the operating point; each ball's position follows its equilibrium",
-    });
-    if let (Some(fd), Some(obj)) = (&k.finite_difference, v.as_object_mut()) {
-        obj.insert("finite_difference_matrix".into(), json!(rows(fd)));
-        if let Some(d) = k.finite_difference_max_rel {
-            obj.insert("finite_difference_max_rel".into(), json!(d));
-        }
+    let mut v = a.stiffness.shared().json();
+    if let Some(o) = v.as_object_mut() {
+        o.insert("held".into(), json!(super::stiffness::HELD));
     }
     v
 }
 
 /// The stiffness matrix in `units` (rows F_x … M_y, columns x … θ_y) and the
-/// finite-difference check: the view's "stiffness" text block (`rollbench stiffness`).
+/// finite-difference check: the view's "stiffness" text block (`rollbench stiffness`),
+/// the shared printer's.
 pub fn stiffness_lines(a: &BallAnalysis, units: Units) -> Vec<String> {
-    use crate::units::Quantity;
-    use std::fmt::Write;
-    let (lu, fu, mu) = (
-        Quantity::Length.unit(units),
-        Quantity::Force.unit(units),
-        Quantity::Moment.unit(units),
-    );
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y), {}",
-        a.stiffness.method.name()
-    );
-    let unit = |i: usize, j: usize| match (i < 3, j < 3) {
-        (true, true) => (
-            Quantity::Force.factor(units) / Quantity::Length.factor(units),
-            format!("{fu}/{lu}"),
-        ),
-        (true, false) => (Quantity::Force.factor(units), format!("{fu}/rad")),
-        (false, true) => (
-            Quantity::Moment.factor(units) / Quantity::Length.factor(units),
-            format!("{mu}/{lu}"),
-        ),
-        (false, false) => (Quantity::Moment.factor(units), format!("{mu}/rad")),
-    };
-    let k = &a.stiffness.matrix;
-    for i in 0..5 {
-        let mut line = format!("  {:<4}", super::stiffness::ROWS[i]);
-        for j in 0..5 {
-            let (f, _) = unit(i, j);
-            let shown = crate::bearings::stiffness_text::shown(|r, c| k[(r, c)], i, j);
-            let _ = write!(line, " {:>12.4e}", shown / f);
-        }
-        let _ = writeln!(s, "{line}");
-    }
-    let _ = writeln!(s, "{}", crate::bearings::stiffness_text::round_off_note());
-    let _ = writeln!(
-        s,
-        "  units: lineal {}, lineal-angular {} and {}, angular {}",
-        unit(0, 0).1,
-        unit(0, 3).1,
-        unit(3, 0).1,
-        unit(3, 3).1
-    );
-    if let Some(d) = a.stiffness.finite_difference_max_rel {
-        let _ = writeln!(
-            s,
-            "  finite-difference check: largest difference {d:.2e} of its row's scale"
-        );
-    }
-    s.lines().map(str::to_string).collect()
+    a.stiffness.shared().lines(units)
 }

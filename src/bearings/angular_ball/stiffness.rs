@@ -39,15 +39,18 @@ use super::error::BallError;
 use super::geometry::BallGeometry;
 pub use super::input::StiffnessMethod;
 use super::load_distribution::{solve_ball_with, LoadDistribution, OuterAlone};
+use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
 
 /// A 5×5 matrix, rows F_x … M_y, columns x … θ_y.
 pub type Matrix5 = SMatrix<f64, 5, 5>;
 type Vector5 = SVector<f64, 5>;
 
-/// Row names.
-pub const ROWS: [&str; 5] = ["F_x", "F_y", "F_z", "M_x", "M_y"];
-/// Column names.
-pub const COLUMNS: [&str; 5] = ["x", "y", "z", "theta_x", "theta_y"];
+/// What the matrix holds fixed (JSON `stiffness.held`).
+pub const HELD: &str = "race-control speeds, Hertz constants and the gyroscopic friction µ at the operating point; each ball's position follows its equilibrium";
+
+/// Where the displacements and moments are referred to (JSON
+/// `stiffness.reference_point`).
+pub const REFERENCE_POINT: &str = "inner ring centre in the plane of its groove centres (x along the radial load, z along the axial load)";
 
 /// The stiffness of a solved case.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,6 +64,29 @@ pub struct BallStiffness {
     pub finite_difference: Option<Matrix5>,
     /// Largest |K_an − K_fd| over its row's scale, when both are computed.
     pub finite_difference_max_rel: Option<f64>,
+}
+
+impl BallStiffness {
+    /// The matrix on the shared type (its JSON `stiffness` keys and text block): the 5×5
+    /// over (x, y, z, θ_x, θ_y), the method, the reference point, and the
+    /// finite-difference matrix and gap when computed.
+    pub fn shared(&self) -> StiffnessMatrix {
+        let flat = |m: &Matrix5| -> Vec<f64> {
+            (0..5)
+                .flat_map(|i| (0..5).map(move |j| m[(i, j)]))
+                .collect()
+        };
+        let method = match self.method {
+            StiffnessMethod::Analytic => Method::Analytic,
+            StiffnessMethod::FiniteDifference => Method::FiniteDifference,
+            StiffnessMethod::Both => Method::Both,
+        };
+        let mut k = StiffnessMatrix::new(Dof::ALL.to_vec(), flat(&self.matrix), method);
+        k.reference_point = Some(REFERENCE_POINT.to_string());
+        k.fd = self.finite_difference.as_ref().map(flat);
+        k.fd_max_rel = self.finite_difference_max_rel;
+        k
+    }
 }
 
 /// ℜ_i, the radius of the inner groove centres, m.

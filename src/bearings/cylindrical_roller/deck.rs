@@ -60,7 +60,7 @@ const OUTER: [FieldSpec<CylindricalInput>; 5] =
         .materials
         .outer);
 
-static FIELDS: [FieldSpec<CylindricalInput>; 57] = [
+static FIELDS: [FieldSpec<CylindricalInput>; 58] = [
     // [geometry] (seed 003 Table A1)
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers m", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
@@ -311,6 +311,11 @@ static FIELDS: [FieldSpec<CylindricalInput>; 57] = [
         meta: meta("solver.force_tolerance", "solver", "Force tolerance", Quantity::Dimensionless, REAL, (0.0, true), (1e-4, false), def(1e-9), "ring equilibrium force residual relative to the load"),
         get: |t| t.solver.force_tolerance,
         set: |t, v| t.solver.force_tolerance = v,
+    },
+    FieldSpec {
+        meta: meta("solver.stiffness", "solver", "Stiffness method", Quantity::Dimensionless, FieldKind::Choice(crate::bearings::stiffness::METHODS), (0.0, false), (2.0, false), def(0.0), "the ring stiffness: \"analytic\" (the ring Newton's Jacobian), \"finite-difference\" (central differences of the re-solved rollers; x, y only) or \"both\" (analytic, checked: finite_difference_max_rel)"),
+        get: |t| t.solver.stiffness.index(),
+        set: |t, v| t.solver.stiffness = crate::bearings::stiffness::Method::from_index(v),
     },
 ];
 

@@ -194,6 +194,8 @@ pub struct Solver {
     pub slices: usize,
     /// Force tolerance relative to the load.
     pub force_tolerance: f64,
+    /// How the stiffness matrix is computed (`solver.stiffness`, issue 29).
+    pub stiffness: crate::bearings::stiffness::Method,
 }
 
 /// A whole cylindrical roller bearing case, SI.
@@ -311,6 +313,7 @@ impl CylindricalInput {
             solver: Solver {
                 slices: 21,
                 force_tolerance: 1e-9,
+                stiffness: crate::bearings::stiffness::Method::Analytic,
             },
         }
     }

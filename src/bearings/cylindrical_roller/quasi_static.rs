@@ -896,6 +896,43 @@ fn report(
     }
 }
 
+/// Central finite differences of the ring force Σ_j W_i,j (cos ψ_j, sin ψ_j) with every
+/// roller re-solved (to 1e-14 of its load) at the ring displaced by ±h along x and y from
+/// `q`'s solution: the check of the analytic 2×2 (issue 29), N/m, and the step h, m.
+/// Step rule: h = 1e-5 of the ring offset |(x, y)| (floor 1e-12 m), as the spherical
+/// roller's: the slice law's truncation ~ (h/δ)² ≈ 1e-10, round-off ~1e-14/1e-5 of K.
+///
+/// # Errors
+/// The model's own ([`QuasiStaticError`]), as [`solve`].
+pub fn finite_difference_stiffness(
+    model: &QuasiStaticModel,
+    q: &QuasiStatic,
+) -> Result<([[f64; 2]; 2], f64), QuasiStaticError> {
+    let prep = Prepared::new(model)?;
+    let xy = q.displacement_m;
+    let h = (1e-5 * norm(xy)).max(1e-12);
+    let force = |d: [f64; 2]| -> [f64; 2] {
+        let p = [xy[0] + d[0], xy[1] + d[1]];
+        let guesses: Vec<f64> = (0..prep.cos.len())
+            .map(|j| 0.5 * (p[0] * prep.cos[j] + p[1] * prep.sin[j]))
+            .collect();
+        // With no load the residual is the rollers' force on the ring.
+        evaluate(&prep, [0.0, 0.0], p, &guesses).residual
+    };
+    let mut k = [[0.0; 2]; 2];
+    for col in 0..2 {
+        let mut d = [0.0; 2];
+        d[col] = h;
+        let fp = force(d);
+        d[col] = -h;
+        let fm = force(d);
+        for row in 0..2 {
+            k[row][col] = (fp[row] - fm[row]) / (2.0 * h);
+        }
+    }
+    Ok((k, h))
+}
+
 #[cfg(test)]
 #[path = "quasi_static_tests.rs"]
 mod tests;

@@ -5,6 +5,8 @@ use std::fmt::Write;
 
 use serde_json::{json, Value};
 
+use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
+
 use super::analysis::CylindricalAnalysis;
 use crate::units::{Quantity, Units};
 
@@ -136,24 +138,90 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
     v
 }
 
-/// The ring stiffness for `rollbench stiffness` (rows of forces, columns of
-/// displacements, SI): the 2×2 (x, y), or the 3×3 (x, y, z) when ribs carry axial load.
-fn stiffness_json(a: &CylindricalAnalysis) -> Value {
+/// Why the cylindrical roller's matrix has no z without ribs (JSON `notes`).
+pub const NO_Z_NOTE: &str = "z: not a degree of freedom here: the raceways are cylinders and carry no axial load, and no ribs are modelled (operating.axial_load = 0 or no rib geometry), so nothing in the model resists an axial displacement";
+/// What z means with ribs.
+pub const RIB_Z_NOTE: &str = "z: the axial displacement of the inner ring against the outer: only the roller end-rib point contacts resist it (the raceways carry no axial load)";
+/// Why there are no tilts.
+pub const NO_TILT_NOTE: &str = "theta_x, theta_y: not computed: the quasi-static model holds the rings parallel (no misalignment degree of freedom), though a cylindrical roller bearing does resist tilt";
+
+/// The ring stiffness on the shared type (issue 29): (x, y), or (x, y, z) when ribs carry
+/// axial load, analytic (the ring Newton's Jacobian), SI, with what z and the tilts mean.
+pub fn stiffness_matrix(a: &CylindricalAnalysis) -> StiffnessMatrix {
     let q = &a.statics;
-    match q.stiffness_xyz_n_m {
-        Some(k) => json!({
-            "rows": ["F_x", "F_y", "F_z"],
-            "columns": ["x", "y", "z"],
-            "matrix": k,
-            "unit": "N/m",
-        }),
-        None => json!({
-            "rows": ["F_x", "F_y"],
-            "columns": ["x", "y"],
-            "matrix": q.stiffness_n_m,
-            "unit": "N/m",
-        }),
+    let mut k = match q.stiffness_xyz_n_m {
+        Some(k) => {
+            let mut m = StiffnessMatrix::new(
+                vec![Dof::X, Dof::Y, Dof::Z],
+                k.iter().flatten().copied().collect(),
+                Method::Analytic,
+            );
+            m.notes.push(RIB_Z_NOTE.to_string());
+            m
+        }
+        None => {
+            let k = q.stiffness_n_m;
+            let method = a.input.solver.stiffness;
+            let fd = method
+                .wants_fd()
+                .then(|| super::quasi_static::finite_difference_stiffness(&a.model, q));
+            let flat = |m: [[f64; 2]; 2]| -> Vec<f64> { m.iter().flatten().copied().collect() };
+            let mut m = match &fd {
+                Some(Ok((f, _))) if method == Method::FiniteDifference => {
+                    StiffnessMatrix::new(vec![Dof::X, Dof::Y], flat(*f), method)
+                }
+                Some(Ok(_)) => StiffnessMatrix::new(vec![Dof::X, Dof::Y], flat(k), method),
+                _ => StiffnessMatrix::new(vec![Dof::X, Dof::Y], flat(k), Method::Analytic),
+            };
+            m.notes.push(NO_Z_NOTE.to_string());
+            match fd {
+                Some(Ok((f, h))) => {
+                    m.fd = Some(flat(f));
+                    if method == Method::Both {
+                        m.fd_max_rel = Some(fd_max_rel(k, f));
+                    }
+                    m.notes.push(format!(
+                        "finite differences: central, step {h:.3e} m (1e-5 of the ring offset), every roller re-solved"
+                    ));
+                }
+                Some(Err(e)) => m.notes.push(format!(
+                    "finite differences asked for but not computed: {e}"
+                )),
+                None => {}
+            }
+            m
+        }
+    };
+    if q.stiffness_xyz_n_m.is_some() && a.input.solver.stiffness.wants_fd() {
+        k.notes.push(
+            "finite differences asked for but not computed: the ribbed 3x3 has only its analytic Jacobian so far (solver.stiffness applies to x, y without ribs)"
+                .to_string(),
+        );
     }
+    k.notes.push(NO_TILT_NOTE.to_string());
+    k.reference_point =
+        Some("bearing centre (x, y in the radial plane, z along the axis)".to_string());
+    k
+}
+
+/// Largest |a − b| over each row's largest |a|.
+fn fd_max_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
+    (0..2)
+        .map(|r| {
+            let scale = a[r][0].abs().max(a[r][1].abs()).max(f64::MIN_POSITIVE);
+            (a[r][0] - b[r][0]).abs().max((a[r][1] - b[r][1]).abs()) / scale
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The ring stiffness for `rollbench stiffness` (rows of forces, columns of
+/// displacements, SI): the shared type's keys, and the `unit` the 2×2/3×3 had.
+fn stiffness_json(a: &CylindricalAnalysis) -> Value {
+    let mut v = stiffness_matrix(a).json();
+    if let Some(o) = v.as_object_mut() {
+        o.insert("unit".into(), json!("N/m"));
+    }
+    v
 }
 
 /// The rib contact's geometry when ribs carry axial load (`null` otherwise).
@@ -169,40 +237,12 @@ fn ribs_json(a: &CylindricalAnalysis) -> Value {
     }
 }
 
-/// The 2×2 ring stiffness and the static offset in `units`: the text report's section
-/// and the workbench's Stiffness pane.
+/// The ring stiffness (the shared printer) and the static offset in `units`: the text
+/// report's section and the workbench's Stiffness pane.
 pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
     let q = &a.statics;
-    let ks = Quantity::LinearStiffness;
     let len = Quantity::Length;
-    let k = q.stiffness_n_m;
-    let mut v = Vec::new();
-    if let Some(k3) = q.stiffness_xyz_n_m {
-        v.push(format!(
-            "Ring stiffness (rows F_x F_y F_z; columns x y z), {}",
-            ks.unit(units)
-        ));
-        for (name, row) in ["F_x", "F_y", "F_z"].iter().zip(k3) {
-            v.push(format!(
-                "  {name:<4} {:>12.4e} {:>12.4e} {:>12.4e}",
-                ks.from_si(row[0], units),
-                ks.from_si(row[1], units),
-                ks.from_si(row[2], units)
-            ));
-        }
-    } else {
-        v.push(format!(
-            "Ring stiffness (rows F_x F_y; columns x y), {}",
-            ks.unit(units)
-        ));
-        for (name, row) in ["F_x", "F_y"].iter().zip(k) {
-            v.push(format!(
-                "  {name:<4} {:>12.4e} {:>12.4e}",
-                ks.from_si(row[0], units),
-                ks.from_si(row[1], units)
-            ));
-        }
-    }
+    let mut v = stiffness_matrix(a).lines(units);
     v.push(format!(
         "Static offset of the inner ring  x = {:.4e}  y = {:.4e} {}",
         len.from_si(q.displacement_m[0], units),

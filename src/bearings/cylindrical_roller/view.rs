@@ -282,6 +282,15 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             Quantity::LinearStiffness,
             KeyRole::Target,
         ),
+        // Issue 29: K_zz where ribs carry axial load (absent otherwise: the raceways
+        // carry none, so there is no axial stiffness in the model).
+        key(
+            "stiffness_zz_n_m",
+            "Kzz",
+            q.stiffness_xyz_n_m.map(|k| k[2][2]),
+            Quantity::LinearStiffness,
+            KeyRole::Info,
+        ),
         key(
             "displacement_x_m",
             "x",

@@ -57,7 +57,7 @@ const OUTER: [FieldSpec<DoubleRowInput>; 5] =
         .materials
         .outer_ring);
 
-static FIELDS: [FieldSpec<DoubleRowInput>; 52] = [
+static FIELDS: [FieldSpec<DoubleRowInput>; 53] = [
     // [geometry]
     FieldSpec {
         meta: meta("geometry.rows", "geometry", "Rows", Quantity::Count, INT, (1.0, false), (2.0, false), def(2.0), "rows of rollers: 2 (1 is the single-row reduction used by the validation)"),
@@ -288,6 +288,11 @@ static FIELDS: [FieldSpec<DoubleRowInput>; 52] = [
         meta: meta("solver.max_iterations", "solver", "Ring iteration limit", Quantity::Count, INT, (1.0, false), (1e5, false), def(100.0), "Newton iterations of the ring equilibrium"),
         get: |t| t.solver.max_iterations as f64,
         set: |t, v| t.solver.max_iterations = v as usize,
+    },
+    FieldSpec {
+        meta: meta("solver.stiffness", "solver", "Stiffness method", Quantity::Dimensionless, FieldKind::Choice(crate::bearings::stiffness::METHODS), (0.0, false), (2.0, false), def(0.0), "the stiffness matrix: \"analytic\" (the rollers' condensed Jacobians), \"finite-difference\" (central differences of the re-solved rollers, guide ring held) or \"both\" (analytic, checked: finite_difference_max_rel)"),
+        get: |t| t.solver.stiffness.index(),
+        set: |t, v| t.solver.stiffness = crate::bearings::stiffness::Method::from_index(v),
     },
 ];
 

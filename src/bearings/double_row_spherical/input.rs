@@ -177,6 +177,8 @@ pub struct DrSolver {
     pub laminae: usize,
     pub force_tolerance: f64,
     pub max_iterations: usize,
+    /// How the stiffness matrix is computed (`solver.stiffness`, issue 29).
+    pub stiffness: crate::bearings::stiffness::Method,
 }
 
 /// Everything the double-row analysis reads, SI.
@@ -271,6 +273,7 @@ impl DoubleRowInput {
                 laminae: 81,
                 force_tolerance: 1e-9,
                 max_iterations: 100,
+                stiffness: crate::bearings::stiffness::Method::Analytic,
             },
             optimise: Optimise::default(),
         }
@@ -399,6 +402,7 @@ impl DoubleRowInput {
                     CageSpeedSource::Computed => DynamicLoads::Iterated,
                 },
                 slicing: Slicing::Cosine,
+                stiffness: self.solver.stiffness,
                 ..SolverSettings::DEFAULT
             },
         }

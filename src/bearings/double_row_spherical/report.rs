@@ -77,12 +77,7 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
             "moment_nm": 0.0,
             "tilt_free": true,
         },
-        "stiffness": {
-            "rows": ["F_x", "F_z"],
-            "columns": ["x", "z"],
-            "matrix": k,
-            "unit": "N/m",
-        },
+        "stiffness": stiffness_json(a, k),
         "dynamic_speeds": {
             "source": a.input.cage.speed,
             "cage_rad_s": a.dynamic.cage_rad_s,
@@ -122,22 +117,53 @@ pub fn json(a: &DoubleRowAnalysis) -> Value {
     })
 }
 
-/// The 2×2 ring stiffness and the ring deflection in `units`.
+/// The JSON `stiffness` object (issue 29): the shared 5×5 (x, y, z, θ_x, θ_y; its x–z
+/// block is the ring solve's 2×2 `k`, the tilts zero: self-aligning) with the `unit` key
+/// the 2×2 had; the 2×2 itself, as it was, when the 5×5 could not be computed, with the
+/// reason.
+fn stiffness_json(a: &DoubleRowAnalysis, k: [[f64; 2]; 2]) -> Value {
+    match &a.stiffness {
+        Ok(m) => {
+            let mut v = m.json();
+            if let Some(o) = v.as_object_mut() {
+                o.insert("unit".into(), json!("N/m"));
+            }
+            v
+        }
+        Err(reason) => json!({
+            "rows": ["F_x", "F_z"],
+            "columns": ["x", "z"],
+            "matrix": k,
+            "unit": "N/m",
+            "reason": reason,
+        }),
+    }
+}
+
+/// The ring stiffness (the shared 5×5 block, or the 2×2 when that is missing) and the
+/// ring deflection in `units`.
 pub fn stiffness_lines(a: &DoubleRowAnalysis, units: Units) -> Vec<String> {
     let ks = Quantity::LinearStiffness;
     let len = Quantity::Length;
-    let k = stiffness_xz(a);
-    let mut v = vec![format!(
-        "Ring stiffness (rows F_x F_z; columns x z), {}",
-        ks.unit(units)
-    )];
-    for (name, row) in ["F_x", "F_z"].iter().zip(k) {
-        v.push(format!(
-            "  {name:<4} {:>12.4e} {:>12.4e}",
-            ks.from_si(row[0], units),
-            ks.from_si(row[1], units)
-        ));
-    }
+    let mut v = match &a.stiffness {
+        Ok(m) => m.lines(units),
+        Err(reason) => {
+            let k = stiffness_xz(a);
+            let mut v = vec![format!(
+                "Ring stiffness (rows F_x F_z; columns x z), {}",
+                ks.unit(units)
+            )];
+            for (name, row) in ["F_x", "F_z"].iter().zip(k) {
+                v.push(format!(
+                    "  {name:<4} {:>12.4e} {:>12.4e}",
+                    ks.from_si(row[0], units),
+                    ks.from_si(row[1], units)
+                ));
+            }
+            v.push(format!("  no 5x5: {reason}"));
+            v
+        }
+    };
     v.push(format!(
         "Inner ring deflection  x (radial) = {:.4e}  z (axial) = {:.4e} {}",
         len.from_si(a.radial_deflection_m(), units),

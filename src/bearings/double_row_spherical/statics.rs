@@ -70,6 +70,9 @@ pub struct DoubleRowAnalysis {
     pub guide: GuideRingForces,
     /// Ring stiffness ∂F/∂u in (axial, radial) × (axial, radial), N/m.
     pub stiffness_n_m: [[f64; 2]; 2],
+    /// The 5×5 on the shared type (issue 29; its x–z block is `stiffness_n_m`), or why
+    /// there is none.
+    pub stiffness: Result<crate::bearings::stiffness::StiffnessMatrix, String>,
     /// Bearing L-10 from the rows' (Mrev, hours); None when no row is loaded.
     pub l10_mrev: Option<f64>,
     pub l10_h: Option<f64>,
@@ -204,6 +207,7 @@ pub fn analyse_from(
     };
     let whole = pipeline::run(&b, &request, cancel)?;
     let combined = whole.load;
+    let stiffness_5x5 = whole.stiffness;
     let dynamic = combined.speeds;
     // §7 speeds of the whole (one cage speed for both rows), split per row.
     let speeds: InternalSpeeds = stages::internal_speeds(&b, &combined, &whole.contacts);
@@ -234,6 +238,8 @@ pub fn analyse_from(
             life: Some(li),
             friction: None,
             thermal: None,
+            // A row has no stiffness of its own: the bearing's is the double row's.
+            stiffness: Err("a row of a double-row bearing: its stiffness is the bearing's".into()),
             trace: Vec::new(),
             trace_roller: None,
             trace_outer: 0,
@@ -283,6 +289,7 @@ pub fn analyse_from(
         dynamic,
         guide,
         stiffness_n_m: stiffness,
+        stiffness: stiffness_5x5,
         l10_mrev,
         l10_h,
         wall_time_s: start.elapsed().as_secs_f64(),

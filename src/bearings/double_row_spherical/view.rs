@@ -264,6 +264,17 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             Quantity::LinearStiffness,
             KeyRole::Info,
         ),
+        // Issue 29: the 5×5's y diagonal (θ_x, θ_y are zero: self-aligning).
+        key(
+            "stiffness_yy_n_m",
+            "Kyy",
+            a.stiffness
+                .as_ref()
+                .ok()
+                .and_then(|m| m.diagonal(crate::bearings::stiffness::Dof::Y)),
+            Quantity::LinearStiffness,
+            KeyRole::Info,
+        ),
         key(
             "guide_ring_row1_n",
             "F_g1",

@@ -196,7 +196,7 @@ const MAT_OUTER: [FieldSpec<Bearing>; 5] =
 const SOLVER_DEFAULTS: SolverSettings = SolverSettings::DEFAULT;
 
 /// Every editable scalar key of a spherical roller deck, in file order.
-pub static FIELDS: [FieldSpec<Bearing>; 61] = [
+pub static FIELDS: [FieldSpec<Bearing>; 62] = [
     // --- geometry ---
     field!("geometry.roller_count", "geometry", "Roller count Z", Count, I, 3.0, false, 500.0, false, REQ,
         "number of rollers", get: |b| b.geometry.roller_count as f64, set: |b, v| b.geometry.roller_count = to_count(v)),
@@ -340,6 +340,9 @@ pub static FIELDS: [FieldSpec<Bearing>; 61] = [
     field!("solver.slicing", "solver", "Lamina slicing", Dimensionless, FieldKind::Choice(SLICINGS), 0.0, false, 1.0, false,
         Presence::Default(1.0), "lamina spacing: uniform (the seed's) or cosine (thin laminae at the roller ends)",
         get: |b| slicing_index(b.solver.slicing), set: |b, v| b.solver.slicing = slicing_from(v)),
+    field!("solver.stiffness", "solver", "Stiffness method", Dimensionless, FieldKind::Choice(crate::bearings::stiffness::METHODS), 0.0, false, 2.0, false,
+        Presence::Default(0.0), "the stiffness matrix: \"analytic\" (each roller's condensed Jacobian), \"finite-difference\" (central differences of the re-solved rollers) or \"both\" (analytic, checked: finite_difference_max_rel)",
+        get: |b| b.solver.stiffness.index(), set: |b, v| b.solver.stiffness = crate::bearings::stiffness::Method::from_index(v)),
     // padding rows are not allowed: the array length is exact
 ];
 

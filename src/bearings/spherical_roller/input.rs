@@ -121,6 +121,11 @@ pub struct SolverSettings {
     pub dynamic_loads: DynamicLoads,
     /// Lamina spacing.
     pub slicing: Slicing,
+    /// How the stiffness matrix is computed (`solver.stiffness`, issue 29): analytic
+    /// (the rollers' condensed Jacobians), finite differences of the re-solved rollers,
+    /// or both (analytic, checked).
+    #[serde(default)]
+    pub stiffness: crate::bearings::stiffness::Method,
 }
 
 impl SolverSettings {
@@ -141,6 +146,7 @@ impl SolverSettings {
         cage_stiffness_ratio: 1e-7,
         dynamic_loads: DynamicLoads::Iterated,
         slicing: Slicing::Cosine,
+        stiffness: crate::bearings::stiffness::Method::Analytic,
     };
 }
 

@@ -15,6 +15,7 @@ pub mod pipeline;
 pub mod report;
 pub mod roller;
 pub mod stages;
+pub mod stiffness;
 pub mod system;
 pub mod view;
 pub mod warnings;

@@ -87,6 +87,10 @@ pub struct Analysis {
     pub friction: Option<Friction>,
     /// §10 thermal network (when the deck has one).
     pub thermal: Option<ThermalOut>,
+    /// The 5×5 stiffness at the operating point (issue 29), or why there is none (a
+    /// sentence with numbers: a roller that did not converge at a displaced ring).
+    #[serde(skip)]
+    pub stiffness: Result<crate::bearings::stiffness::StiffnessMatrix, String>,
     /// Stepper trace of the requested roller (empty unless requested).
     #[serde(skip)]
     pub trace: Vec<TraceStep>,
@@ -258,7 +262,7 @@ impl Pipeline {
             steady: self.steady.output().filter(|_| n.thermal).cloned(),
             transient: self.transient.output().filter(|_| n.transient).cloned(),
         };
-        parts.analysis(bearing)
+        parts.analysis(bearing, request.layout)
     }
 
     /// A one-shot pipeline's analysis: the stage outputs are moved, not copied (a copy of
@@ -277,7 +281,7 @@ impl Pipeline {
             steady: self.steady.into_output().filter(|_| n.thermal),
             transient: self.transient.into_output().filter(|_| n.transient),
         };
-        parts.analysis(bearing)
+        parts.analysis(bearing, request.layout)
     }
 
     /// Bring every stage `request` needs up to date with `bearing`.
@@ -423,7 +427,7 @@ struct Parts {
 
 impl Parts {
     /// The analysis of `bearing` from these outputs.
-    fn analysis(self, bearing: &Bearing) -> Result<Analysis, SolveError> {
+    fn analysis(self, bearing: &Bearing, layout: Layout) -> Result<Analysis, SolveError> {
         let Some(ls) = self.load else {
             return Err(SolveError::Stage {
                 stage: "pipeline",
@@ -440,8 +444,11 @@ impl Parts {
             transient_heat_w: transient.as_ref().map(|t| t.1),
             transient: transient.map(|t| t.0),
         });
+        let stiffness = super::stiffness::stiffness(bearing, layout, &ls.load)
+            .map_err(|e| format!("no stiffness matrix: {e}"));
         Ok(Analysis {
             input: bearing.clone(),
+            stiffness,
             thermal,
             speeds: stages::speeds_report(bearing, &ls.speeds, ls.iterations),
             load: ls.load,

@@ -5,6 +5,7 @@
 use super::load_distribution::{LaminaResult, RacewayContact, RollerResult};
 use super::pipeline::Analysis;
 use super::stages::{LaminaFriction, RacewayStress};
+use crate::bearings::stiffness::Dof;
 use crate::bearings::view::{
     Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, NodeSeries, Screen, Series,
     SolveStats, SteadyNode, Summary, Table, ThermalResults, Trace, TraceBars, TraceColumn,
@@ -395,7 +396,12 @@ pub fn view(a: &Analysis) -> View {
             wall_time_s: a.load.stats.wall_time_s,
         },
         warnings: super::warnings::warnings(a),
-        texts: Vec::new(),
+        // Issue 29: the stiffness block (`rollbench stiffness`, the Stiffness pane).
+        texts: a
+            .stiffness
+            .as_ref()
+            .map(|k| vec![k.text_block(|_| Vec::new())])
+            .unwrap_or_default(),
         answer: super::answer::answer(a),
     }
 }
@@ -639,6 +645,7 @@ fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
             .map(|n| n.temperature_c)
             .reduce(f64::max)
     });
+    let diagonal = |d: Dof| a.stiffness.as_ref().ok().and_then(|k| k.diagonal(d));
     let k = |name, label, value, quantity, role| KeyOutput {
         name,
         label,
@@ -704,6 +711,31 @@ fn key_outputs(a: &Analysis) -> Vec<KeyOutput> {
             super::answer::static_safety_of(a),
             Quantity::Dimensionless,
             KeyRole::Guard,
+        ),
+        // Issue 29: the stiffness diagonals, the other systems' names (θ_x, θ_y are zero
+        // by construction: self-aligning, so they are not key outputs). Info: reported
+        // by `sweep` and `bench`, not judged, so the fidelity recommendation (judged on
+        // stress, life and the guards above) stays what it was.
+        k(
+            "stiffness_xx_n_m",
+            "Kxx",
+            diagonal(Dof::X),
+            Quantity::LinearStiffness,
+            KeyRole::Info,
+        ),
+        k(
+            "stiffness_yy_n_m",
+            "Kyy",
+            diagonal(Dof::Y),
+            Quantity::LinearStiffness,
+            KeyRole::Info,
+        ),
+        k(
+            "stiffness_zz_n_m",
+            "Kzz",
+            diagonal(Dof::Z),
+            Quantity::LinearStiffness,
+            KeyRole::Info,
         ),
     ]
 }

@@ -33,6 +33,7 @@ mod diagnostics;
 mod driver;
 mod float;
 mod problem;
+pub mod stiffness;
 #[cfg(test)]
 mod tests;
 

@@ -136,6 +136,14 @@ pub fn to_value(a: &Analysis) -> Value {
         "loads".into(),
         json!({"radial_n": a.input.operating.radial_load_n, "axial_n": a.input.operating.axial_load_n}),
     );
+    // Issue 29: the 5×5 stiffness on the shared type, or why there is none.
+    doc.insert(
+        "stiffness".into(),
+        match &a.stiffness {
+            Ok(k) => k.json(),
+            Err(reason) => json!({ "reason": reason }),
+        },
+    );
     doc.insert(
         "rings".into(),
         // Issue 29: self-aligning (spherical outer raceway), so the ring's tilt is free
