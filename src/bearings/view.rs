@@ -225,6 +225,41 @@ impl Column {
     }
 }
 
+/// The words a yes/no flag is shown by on screen and in text (issue 30 item 11): `—` for
+/// no, so the rows that hold the flag stand out; CSV keeps the code 0/1 (legend in
+/// `docs/workbench.md`).
+pub const FLAG_NAMES: [&str; 2] = ["—", "yes"];
+
+/// A yes/no column (the ball's `skidding`, the tapered roller's edge flags): code 0 or 1,
+/// shown as [`FLAG_NAMES`].
+pub const FLAG: Display = Display::Choice(&FLAG_NAMES);
+
+/// A flag as a word, for text reports (the same words as the panes').
+pub const fn flag_word(set: bool) -> &'static str {
+    FLAG_NAMES[set as usize]
+}
+
+/// An element's number on screen and in text from its position around the bearing
+/// (0-based): every system counts its elements from 1 (issue 30 item 9; the seeds' and
+/// the engineer's habit). JSON keeps each system's `index` (the ball's from 0) and gives
+/// this as `number` beside it.
+pub const fn element_number(position: usize) -> usize {
+    position + 1
+}
+
+/// The element table's `#` column: [`element_number`] of each row, on screen only (a
+/// system whose CSV `index` already counts from 1 shows that column as `#` instead).
+pub const NUMBER_COLUMN: Column = Column::screen_only(
+    "number",
+    Quantity::Count,
+    Screen {
+        label: "#",
+        display: Display::Plain,
+        precision: 0,
+        width: 3,
+    },
+);
+
 /// A table: one row per rolling element (or per point of a sweep), SI values; `None`
 /// where a stage was not run.
 #[derive(Debug, Clone, PartialEq)]
@@ -520,6 +555,10 @@ pub struct SolveStats {
     pub names: [&'static str; 2],
     /// Wall time of the solve, s.
     pub wall_time_s: f64,
+    /// True when the solve started from the session's last answer (a warm start): its
+    /// counts are from there, 0 when nothing changed (the tapered roller re-solved for
+    /// its Sweep pane), and the status line says so.
+    pub warm_start: bool,
 }
 
 /// Everything a solved bearing shows.
@@ -828,10 +867,9 @@ impl View {
 /// from its name (`inner_load_n`: "inner load, N"), so no column is left unexplained.
 pub fn column_help(key: &str) -> String {
     let known = match key {
-        // The ball system still counts from 0 (its JSON `index`; issue 30 item 9 is to
-        // number every system's elements from 1), so the help must not promise 1.
+        // Every system counts its elements from 1 on screen (issue 30 item 9).
         "index" | "number" => {
-            "the element's number around the bearing (rollers count from 1, balls from 0 as in the JSON's index)"
+            "the element's number around the bearing, counting from 1 (the JSON's number)"
         }
         "azimuth_deg" => "angular position ψ of the element around the bearing",
         "inner_normal_load_n" | "inner_load_n" => "normal load on the inner raceway contact",
@@ -855,10 +893,13 @@ pub fn column_help(key: &str) -> String {
         "centrifugal_force_n" => "centrifugal force F_c of the element at its orbit speed",
         "gyroscopic_moment_nm" => "gyroscopic moment M_g the contacts must resist",
         "resisting_moment_nm" => "M_r: the friction moment the contacts can resist; below M_g the ball skids",
-        "skidding" | "skid" => "whether the element skids (gyroscopic moment above what friction resists)",
+        "skidding" | "skid" => "yes when the element skids (gyroscopic moment above what friction resists), — when not",
         "heat_w" => "heat generated at the element's contacts",
         "flange_load_n" => "load on the flange (rib) contact",
-        "edge" | "inner_edge" | "outer_edge" => "edge loading: the contact reaches the end of the roller",
+        "edge" | "inner_edge" | "outer_edge" | "outer_edge_loaded" | "inner_edge_loaded" => {
+            "edge loading: yes when the contact reaches the end of the roller, — when not"
+        }
+        "state" => "how the roller is held: both-races, cup-and-flange (off the cone) or free",
         _ => "",
     };
     if !known.is_empty() {
@@ -922,7 +963,7 @@ mod tests {
         assert!(column_help("outer_spin_to_roll").starts_with("s/r"));
         assert_eq!(column_help("cage_slip_n"), "cage slip, N in SI");
         assert_eq!(column_help("cage_rad_s"), "cage, rad/s in SI");
-        assert_eq!(column_help("state"), "state");
+        assert_eq!(column_help("heat_state"), "heat state");
     }
 
     /// Display units against their definitions (exact factors of units.rs): 1 lbf, 1 ksi,

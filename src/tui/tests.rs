@@ -502,6 +502,280 @@ fn shipped_app(stem: &str, title: &str, w: u16, h: u16) -> App {
     app
 }
 
+/// Issue 30 item 9: every system counts its elements from 1 on screen and in text. For
+/// one deck of each system the element pane's first row reads `1` under `#`, the view's
+/// `#` column runs 1…n, and the JSON's per-element array gives `number` from 1 beside
+/// the system's `index` (the ball's still from 0). The ball's stepper names the first
+/// ball "ball 1", and its text report's tables start at 1. (The ball's `#` read 0…19.)
+#[test]
+fn tui_every_system_numbers_its_elements_from_1() {
+    for (stem, pane, array) in [
+        ("aerospace", "Rollers", "/rollers"),
+        ("chen_b", "Balls", "/balls"),
+        ("trb_afapl", "Rollers", "/rollers"),
+        ("crb_nasa210", "Rollers", "/rollers"),
+        ("srb_22308", "Rollers", "/rollers"),
+    ] {
+        let app = shipped_app(stem, pane, 80, 24);
+        let view = app.view.clone().expect("solved");
+        let table = view.screen_table().expect("a table");
+        let c = table
+            .columns
+            .iter()
+            .position(|c| c.screen.is_some_and(|s| s.label == "#"))
+            .unwrap_or_else(|| panic!("{stem}: no # column"));
+        // The double-row bearing numbers each row's rollers 1…z beside its `row` column.
+        let z = if stem == "srb_22308" {
+            table.rows.len() / 2
+        } else {
+            table.rows.len()
+        };
+        for (k, row) in table.rows.iter().enumerate() {
+            assert_eq!(row[c], Some((k % z + 1) as f64), "{stem}: row {k}");
+        }
+        let screen = draw(&app, 80, 24).backend().to_string();
+        let bare: Vec<String> = screen
+            .lines()
+            .map(|l| {
+                l.trim_matches(|c| c == '"' || c == '│' || c == ' ')
+                    .to_string()
+            })
+            .collect();
+        // The header's `#` (after the double-row bearing's `row`) and the first row's
+        // cell under it.
+        let (header, at) = bare
+            .iter()
+            .enumerate()
+            .find_map(|(i, l)| Some((i, l.split_whitespace().position(|w| w == "#")?)))
+            .unwrap_or_else(|| panic!("{stem}: no header:\n{screen}"));
+        assert_eq!(
+            bare[header + 1].split_whitespace().nth(at),
+            Some("1"),
+            "{stem}:\n{screen}"
+        );
+        let path = PathBuf::from(format!("{}/decks/{stem}.toml", env!("CARGO_MANIFEST_DIR")));
+        let case = crate::bearings::load_file(&path, &[]).expect("deck loads");
+        let solution = case
+            .solve(
+                crate::bearings::RunOptions {
+                    skip_transient: true,
+                },
+                Cancel::NONE,
+            )
+            .expect("solves");
+        let json = solution.json();
+        let elements = json
+            .pointer(array)
+            .and_then(|a| a.as_array())
+            .unwrap_or_else(|| panic!("{stem}: no {array}"));
+        assert_eq!(elements[0]["number"], 1, "{stem}");
+        for e in elements {
+            let (number, index) = (e["number"].as_u64(), e["index"].as_u64());
+            let base = if stem == "chen_b" { 1 } else { 0 };
+            assert_eq!(number, index.map(|i| i + base), "{stem}: {e}");
+        }
+        if stem == "chen_b" {
+            let text = solution.text(crate::units::Units::Si);
+            for table in ["LOAD DISTRIBUTION", "RACE CONTROL"] {
+                let mut lines = text.lines().skip_while(|l| !l.starts_with(table));
+                let first = lines.nth(2).unwrap_or_default();
+                assert!(first.trim_start().starts_with("1 "), "{table}: {first}");
+            }
+            let stepper = shipped_app(stem, "Stepper", 80, 24);
+            let screen = draw(&stepper, 80, 24).backend().to_string();
+            assert!(screen.contains("ball 1 ·"), "{screen}");
+        }
+    }
+}
+
+/// Issue 30 item 11: flags are words on screen and in text, codes in CSV. The ball's
+/// `skid` and the tapered roller's `edge1`/`edge2` cells read `yes` or `—` (they read 1/0)
+/// and agree with the JSON's bools, the tapered `state` reads its name; the text reports
+/// use the same words; the CSV keeps 0/1.
+#[test]
+fn flags_are_words_on_screen_and_in_text() {
+    use crate::bearings::view::FLAG_NAMES;
+    for (stem, array, flags) in [
+        ("chen_b", "/balls", vec![("skid", "skidding")]),
+        (
+            "trb_afapl",
+            "/rollers",
+            vec![
+                ("edge1", "outer_edge_loaded"),
+                ("edge2", "inner_edge_loaded"),
+            ],
+        ),
+    ] {
+        let path = PathBuf::from(format!("{}/decks/{stem}.toml", env!("CARGO_MANIFEST_DIR")));
+        let case = crate::bearings::load_file(&path, &[]).expect("deck loads");
+        let solution = case
+            .solve(
+                crate::bearings::RunOptions {
+                    skip_transient: true,
+                },
+                Cancel::NONE,
+            )
+            .expect("solves");
+        let (view, json) = (solution.view(), solution.json());
+        let cells = view_model::table_cells(&view, crate::units::Units::Si, 1000, 0);
+        let elements = json.pointer(array).and_then(|a| a.as_array()).expect(array);
+        for (header, key) in flags {
+            let c = cells
+                .columns
+                .iter()
+                .position(|c| c.header == header)
+                .unwrap_or_else(|| panic!("{stem}: no {header}"));
+            for (row, e) in cells.rows.iter().zip(elements) {
+                let want = FLAG_NAMES[usize::from(e[key].as_bool().expect(key))];
+                assert_eq!(row[c], want, "{stem} {header}");
+            }
+        }
+        if stem == "trb_afapl" {
+            let c = cells.columns.iter().position(|c| c.header == "state");
+            let c = c.expect("state column");
+            for (row, e) in cells.rows.iter().zip(elements) {
+                assert_eq!(Some(row[c].as_str()), e["state"].as_str());
+            }
+        }
+        let text = solution.text(case.units());
+        let csv = crate::report::csv::to_string(&view);
+        let rows: Vec<&str> = match stem {
+            "chen_b" => text
+                .lines()
+                .skip_while(|l| !l.starts_with("LOAD DISTRIBUTION"))
+                .skip(2)
+                .take(elements.len())
+                .collect(),
+            _ => text
+                .lines()
+                .skip_while(|l| !l.starts_with("Rollers ("))
+                .skip(2)
+                .take(elements.len())
+                .collect(),
+        };
+        assert_eq!(rows.len(), elements.len(), "{text}");
+        for r in rows {
+            let last = r.split_whitespace().last().unwrap_or_default();
+            assert!(FLAG_NAMES.contains(&last), "{stem}: {r}");
+            assert!(!r.ends_with(" no"), "{stem}: {r}");
+        }
+        // CSV: the codes (its columns never change).
+        let header: Vec<&str> = csv.lines().next().unwrap_or_default().split(',').collect();
+        let key = if stem == "chen_b" {
+            "skidding"
+        } else {
+            "outer_edge_loaded"
+        };
+        let i = header.iter().position(|h| *h == key).expect(key);
+        for line in csv.lines().skip(1) {
+            let code = line.split(',').nth(i).unwrap_or_default();
+            assert!(code == "0" || code == "1", "{stem}: {line}");
+        }
+    }
+}
+
+/// Issue 30 item 12: one iteration vocabulary. The status line keeps its form at a width
+/// whatever stands beside it (it fell to `15+184 it` when a message appeared); the Summary
+/// pane words the counts as the status line does; a tapered re-solve of the unchanged
+/// deck through the session (what the Sweep pane's job does) counts 0 + 0 from the last
+/// answer and says so; and the spherical roller's stepper names the text report's count
+/// of dynamic-load iterations.
+#[test]
+fn iterations_are_counted_in_one_vocabulary() {
+    for w in [60, 80, 120] {
+        let mut app = solved_app(Pane::Elements, w, 24);
+        let status = |app: &App| {
+            let t = draw(app, w, 24).backend().to_string();
+            let line = t.lines().rev().nth(1).unwrap_or_default().to_string();
+            line.trim_matches('"')
+                .split(" │")
+                .next()
+                .unwrap_or_default()
+                .trim_end()
+                .to_string()
+        };
+        let before = status(&app);
+        app.message = Some("a message that takes room on the status line".into());
+        assert_eq!(status(&app), before, "{w}");
+        assert!(before.contains("13"), "{w}: {before}");
+    }
+    let mut app = shipped_app("aerospace", "Summary", 200, 50);
+    for _ in 0..20 {
+        app.handle(ch('j')); // the solver's line is the Summary's last
+    }
+    let screen = draw(&app, 200, 50).backend().to_string();
+    assert!(
+        screen.contains("converged: 13 ring + 96 roller iterations"),
+        "{screen}"
+    );
+    assert!(
+        draw(&app, 200, 50)
+            .backend()
+            .to_string()
+            .contains("solved in 13 ring + 96 roller iterations"),
+        "{screen}"
+    );
+
+    let path = PathBuf::from(format!(
+        "{}/decks/trb_afapl.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ));
+    let case = crate::bearings::load_file(&path, &[]).expect("deck loads");
+    let mut session = case.system().session();
+    let cold = session
+        .solve(&*case, Detail::default(), &Cancel::NONE)
+        .expect("solves")
+        .view();
+    let again = session
+        .solve(&*case, Detail::default(), &Cancel::NONE)
+        .expect("solves")
+        .view();
+    // (trb_afapl's cold solve takes 0 bearing Newton iterations of its own: its start
+    // already balances; the rollers' Newton iterations are the work.)
+    assert!(!cold.stats.warm_start && cold.stats.inner_iterations > 0);
+    assert!(again.stats.warm_start);
+    assert_eq!(
+        (again.stats.iterations, again.stats.inner_iterations),
+        (0, 0)
+    );
+    let s = again.stats;
+    let words = render::status::counts_text(s.names, 0, 0, s.warm_start, false);
+    assert_eq!(
+        words,
+        "0 bearing Newton + 0 roller Newton iterations from the last answer"
+    );
+
+    let case = crate::bearings::load_file(
+        &PathBuf::from(format!(
+            "{}/decks/aerospace.toml",
+            env!("CARGO_MANIFEST_DIR")
+        )),
+        &[],
+    )
+    .expect("deck loads");
+    let detail = Detail {
+        trace_element: Some(0),
+        ..Detail::default()
+    };
+    let solution = case
+        .system()
+        .session()
+        .solve(&*case, detail, &Cancel::NONE)
+        .expect("solves");
+    let text = solution.text(crate::units::Units::Si);
+    let after = text
+        .split("speeds after ")
+        .nth(1)
+        .and_then(|t| t.split_whitespace().next())
+        .expect("the text's count");
+    let label = solution.view().trace.expect("a trace").label;
+    assert!(
+        label.starts_with(&format!("{after} dynamic-load"))
+            || label.contains(&format!(" of {after} dynamic-load")),
+        "text {after}, stepper: {label}"
+    );
+}
+
 /// Issue 30 item 15: at 60×20 and 80×24 the Balls pane hides columns; `l` brings every
 /// one of them into view (the first, the ball's number, stays), the title says which
 /// are shown, and `h` goes back. At 200×50 the aerospace Rollers table uses the width.
@@ -1199,9 +1473,22 @@ fn tui_thermal_view_renders() {
         })
         .collect();
     assert_snapshot!("thermal_view_40x10", text);
+    // Issue 30 item 13: "hottest" says when, and the line names the chart's limit line
+    // and marker (the legend is hidden on small panes).
     assert_eq!(
         view.summary(),
-        "inner ring (hottest): 40.0 → 118.4 °C over 585 s · limit 110.0 °C at 312.2 s"
+        "inner ring (hottest at the end of the transient): 40.0 → 118.4 °C over 585 s · limit 110.0 °C (── line), reached at 312.2 s (█)"
+    );
+    let steady = view_model::ThermalView {
+        series: Vec::new(),
+        ..view.clone()
+    };
+    assert!(
+        steady
+            .summary()
+            .starts_with("inner ring (hottest in the steady state): steady "),
+        "{}",
+        steady.summary()
     );
     let series_cases: [Vec<(f64, f64)>; 4] = [
         vec![],
@@ -2094,7 +2381,7 @@ fn tui_ball_element_chart_lives_on_the_dynamics_pane() {
     }
     app.handle(ch('u'));
     let screen = draw(&app, 80, 24).backend().to_string();
-    assert!(screen.contains("Dynamics · ball 0:"), "{screen}");
+    assert!(screen.contains("Dynamics · ball 1:"), "{screen}");
     assert!(screen.contains("Btu/hr"), "{screen}");
     assert!(screen.contains("heat Btu/hr"), "{screen}");
 }

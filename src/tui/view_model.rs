@@ -658,14 +658,22 @@ impl ThermalView {
             return "no nodes".into();
         };
         let u = &self.temperature_unit;
-        let which = if self.selected_is_hottest {
-            " (hottest)"
-        } else {
-            ""
+        // "Hottest" says when (issue 30 item 13): the default node is the hottest at the
+        // end of the transient, which need not be the hottest in the steady-state table.
+        let which = match (self.selected_is_hottest, self.series.is_empty()) {
+            (false, _) => "",
+            (true, false) => " (hottest at the end of the transient)",
+            (true, true) => " (hottest in the steady state)",
         };
+        // The chart's legend is hidden on small panes: the line names the limit line's
+        // and the marker's glyphs (issue 30 item 13).
         let limit = match (n.limit, n.time_to_limit_s) {
-            (Some(l), Some(t)) => format!(" · limit {} {u} at {} s", fixed(l, 1), fixed(t, 1)),
-            (Some(l), None) => format!(" · limit {} {u} not reached", fixed(l, 1)),
+            (Some(l), Some(t)) => format!(
+                " · limit {} {u} (── line), reached at {} s (█)",
+                fixed(l, 1),
+                fixed(t, 1)
+            ),
+            (Some(l), None) => format!(" · limit {} {u} (── line) not reached", fixed(l, 1)),
             (None, _) => " · no limit".into(),
         };
         match (self.series.first(), self.series.last()) {

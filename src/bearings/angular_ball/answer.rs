@@ -8,7 +8,7 @@ use super::view::cage_rpm;
 use crate::bearings::answer::{
     arg_max, arg_min, life_lines, CONTACT, ELEMENTS, FRICTION, SPEEDS, TEMPERATURE,
 };
-use crate::bearings::view::{AnswerLine, Display};
+use crate::bearings::view::{element_number, AnswerLine, Display};
 
 const RACE: [&str; 2] = ["inner", "outer"];
 
@@ -24,7 +24,7 @@ pub fn answer(a: &BallAnalysis, life: &BallLife) -> Vec<AnswerLine> {
         Err(e) => (None, None, e.as_str()),
     };
     let mut out = life_lines(l10, l10_h, why, &life.iso);
-    let place = |i: usize| format!("ball {}, {}", i / 2, RACE[i % 2]);
+    let place = |i: usize| format!("ball {}, {}", element_number(i / 2), RACE[i % 2]);
     let max_p = arg_max(
         a.balls
             .iter()

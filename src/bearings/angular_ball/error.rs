@@ -19,7 +19,7 @@ pub enum BallError {
         source: PointContactError,
     },
     /// One ball's force equilibrium (2-5a, b) did not converge.
-    #[error("ball {ball} equilibrium did not converge ({reason}) after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)")]
+    #[error("ball {number} equilibrium did not converge ({reason}) after {iterations} iterations (residual {residual_n:.3e} N, tolerance {tolerance_n:.3e} N)", number = .ball + 1)]
     BallNotConverged {
         /// 0-based ball index.
         ball: usize,

@@ -7,6 +7,7 @@ use serde_json::{json, Value};
 use super::analysis::{BallAnalysis, ContactResult};
 use super::input::Method;
 use super::view::cage_rpm;
+use crate::bearings::view::{element_number, flag_word};
 use crate::physics::contact::point::Race;
 use crate::units::Units;
 
@@ -90,6 +91,7 @@ pub fn json(a: &BallAnalysis) -> Value {
         .map(|(j, b)| {
             json!({
                 "index": j,
+                "number": element_number(j),
                 "azimuth_deg": b.azimuth_rad.to_degrees(),
                 "centrifugal_force_n": b.centrifugal_n,
                 "gyroscopic_moment_nm": b.gyroscopic_moment_nm,
@@ -308,7 +310,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         let _ = writeln!(
             s,
             "{:3} {:5.1} {:8.2} {:6.2} {:8.2} {:6.2} {:7.4} {:7.4} {:7.4} {:7.4} {:6.2} {:8.4} {:8.4}  {}",
-            j,
+            element_number(j),
             b.azimuth_rad.to_degrees(),
             b.inner.load_n,
             b.inner.angle_rad.to_degrees(),
@@ -321,7 +323,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
             b.centrifugal_n,
             b.gyroscopic_moment_nm,
             b.resisting_moment_nm,
-            if b.skidding { "yes" } else { "no" }
+            flag_word(b.skidding)
         );
     }
     let _ = writeln!(
@@ -334,7 +336,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
         let _ = writeln!(
             s,
             "{:3} {:8.1} {:10.2} {:10.2} {:7.1} {:7.1} {:7.4} {:7.4} {:8.3} {:8.3} {:6.3} {:7.3} {:7.3}",
-            j,
+            element_number(j),
             b.cage_rad_s * RPM_PER_RAD_S,
             i.kinematics.spin_rad_s,
             o.kinematics.spin_rad_s,
@@ -380,7 +382,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
             s,
             "  rheology curve ({:?}) tabulated at ball {} {}: p₀ {:.3} GPa, b {:.4} mm, h {:.3} µm, V {:.2} m/s",
             a.input.lubricant.viscosity_model,
-            rc.ball,
+            element_number(rc.ball),
             race_name(rc.race),
             rc.strip.max_pressure_pa * 1e-9,
             rc.strip.semi_width_m * 1e3,
@@ -416,7 +418,7 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
             let _ = writeln!(
                 s,
                 "{:3} {:5.1} {:10.2} {:10.2} {:10.2} {:7.3} {:9.3} {:9.3} {:9.3} {:15.3}",
-                j,
+                element_number(j),
                 b.azimuth_rad.to_degrees(),
                 w[0],
                 w[1],

@@ -3,16 +3,20 @@
 
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use crate::bearings::view::{
-    Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series, SolveStats, Summary,
-    Table, Trace, TraceColumn, TraceFormat, TraceLine, TraceStep, View,
+    element_number, Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series,
+    SolveStats, Summary, Table, Trace, TraceColumn, TraceFormat, TraceLine, TraceStep, View, FLAG,
+    NUMBER_COLUMN,
 };
 use crate::units::{Quantity, Units};
 
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
 
 /// Columns of the `balls` table.
-pub const COLUMNS: [Column; 21] = [
-    Column::new("index", Quantity::Count, CsvStyle::Integer).shown("#", Display::Plain, 0, 3),
+/// The screen's `#` counts from 1 ([`NUMBER_COLUMN`]); the CSV's `index` keeps the JSON's
+/// base, 0 (a shipped contract).
+pub const COLUMNS: [Column; 22] = [
+    NUMBER_COLUMN,
+    Column::new("index", Quantity::Count, CsvStyle::Integer),
     Column::new("azimuth_deg", Quantity::Angle, CsvStyle::Plain).shown(
         "ψ deg",
         Display::Plain,
@@ -37,7 +41,7 @@ pub const COLUMNS: [Column; 21] = [
         CsvStyle::Scientific,
     )
     .shown("Mr", Display::Moment, 4, 8),
-    Column::new("skidding", Quantity::Count, CsvStyle::Integer).shown("skid", Display::Plain, 0, 4),
+    Column::new("skidding", Quantity::Count, CsvStyle::Integer).shown("skid", FLAG, 0, 4),
     Column::new("heat_w", Quantity::Power, CsvStyle::Scientific).shown("H", Display::Power, 3, 7),
     Column::new("inner_normal_load_n", Quantity::Force, CsvStyle::Scientific).shown(
         "Qi",
@@ -139,6 +143,7 @@ fn contact_cells(c: &ContactResult) -> [Option<f64>; 7] {
 
 fn row(j: usize, b: &BallResult) -> Vec<Option<f64>> {
     let mut r = vec![
+        Some(element_number(j) as f64),
         Some(j as f64),
         Some(b.azimuth_rad.to_degrees()),
         Some(b.centrifugal_n),
@@ -297,6 +302,7 @@ pub fn view(a: &BallAnalysis) -> View {
             inner_iterations: a.load.stats.ring_iterations,
             names: ["fixed-point", "ring Newton"],
             wall_time_s: 0.0,
+            warm_start: false,
         },
         warnings: super::warnings::warnings(a),
         texts: vec![crate::bearings::view::TextBlock {
@@ -582,7 +588,7 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
         .iter()
         .enumerate()
         .map(|(j, bd)| Chart {
-            // Ball j as the Balls table and the JSON number it (from 0).
+            // Ball j + 1, as the Balls table's # and the JSON's `number` count it.
             title: per_ball_title(j, bd, Units::Si),
             title_us: Some(per_ball_title(j, bd, Units::Us)),
             x: ChartAxis {
@@ -622,7 +628,8 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
 fn per_ball_title(j: usize, bd: &super::dynamics::BallDynamics, u: Units) -> String {
     let p = Display::Power;
     format!(
-        "ball {j}: {:.2} {} ({:.2} lateral, {:.2} rolling)",
+        "ball {}: {:.2} {} ({:.2} lateral, {:.2} rolling)",
+        element_number(j),
         p.convert(bd.heat_w, u),
         p.unit(u),
         p.convert(bd.lateral_w, u),

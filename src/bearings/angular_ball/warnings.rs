@@ -6,7 +6,7 @@
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use super::dynamics;
 use super::input::{Method, PreloadMode};
-use crate::bearings::view::{Display, Warning};
+use crate::bearings::view::{element_number, Display, Warning};
 use crate::units::Units;
 
 /// Contact stress above which the elastic (Hertz) contact no longer holds for bearing
@@ -114,8 +114,9 @@ fn angles(a: &BallAnalysis, w: &mut Vec<Warning>) {
                     .filter(|b| pick(b).load_n > 0.0 && pick(b).angle_rad > ANGLE_LIMIT_RAD)
                     .count();
                 let text = format!(
-                    "{race} contact angle {:.1}° (ball {j}; {n} ball{} beyond 90°): the model's groove is a whole torus, but a real ring's groove ends at its shoulder below 90°, so the contact would run off the land; a force-held preload lets the angle run up at speed (operating.preload_mode = \"displacement\" holds it)",
+                    "{race} contact angle {:.1}° (ball {}; {n} ball{} beyond 90°): the model's groove is a whole torus, but a real ring's groove ends at its shoulder below 90°, so the contact would run off the land; a force-held preload lets the angle run up at speed (operating.preload_mode = \"displacement\" holds it)",
                     alpha.to_degrees(),
+                    element_number(j),
                     if n == 1 { "" } else { "s" }
                 );
                 w.push(Warning {
@@ -146,8 +147,9 @@ fn angles(a: &BallAnalysis, w: &mut Vec<Warning>) {
                     .filter(|b| pick(b).load_n > 0.0 && pick(b).angle_rad < 0.0)
                     .count();
                 let text = format!(
-                    "{race} contact angle {:.2}° (ball {j}; {n} ball{} below 0°): the contact has crossed the groove bottom to the side an angular-contact ring cuts away (counterbore, low shoulder), so the ball would run on the edge of the land; the model's groove is a whole torus and solves it, a real ring does not carry it",
+                    "{race} contact angle {:.2}° (ball {}; {n} ball{} below 0°): the contact has crossed the groove bottom to the side an angular-contact ring cuts away (counterbore, low shoulder), so the ball would run on the edge of the land; the model's groove is a whole torus and solves it, a real ring does not carry it",
                     alpha.to_degrees(),
+                    element_number(j),
                     if n == 1 { "" } else { "s" }
                 );
                 w.push(Warning {
@@ -190,8 +192,9 @@ fn cage(a: &BallAnalysis, w: &mut Vec<Warning>) {
         let rpm = 30.0 / std::f64::consts::PI;
         let n = a.balls.iter().filter(|b| off(b.cage_rad_s)).count();
         let text = format!(
-            "cage speed {:.0} rpm (ball {j}; {n} ball{}) lies outside the ring speeds ({:.0} … {:.0} rpm){}: a rolling ball's orbit turns between its rings, so race control (kinematics.race_control = \"{}\") is met here only by a ball turning against its orbit; the speeds, spin heat and skidding threshold are not physical",
+            "cage speed {:.0} rpm (ball {}; {n} ball{}) lies outside the ring speeds ({:.0} … {:.0} rpm){}: a rolling ball's orbit turns between its rings, so race control (kinematics.race_control = \"{}\") is met here only by a ball turning against its orbit; the speeds, spin heat and skidding threshold are not physical",
             b.cage_rad_s * rpm,
+            element_number(j),
             if n == 1 { "" } else { "s" },
             lo * rpm,
             hi * rpm,
@@ -261,7 +264,7 @@ fn settling(a: &BallAnalysis, w: &mut Vec<Warning>) {
     let what = if s.periodic {
         format!(
             "ball {}'s angular velocity averaged over an orbit still changes by {} rad/s from one orbit to the next (settled: ≤ 1e-6·|ω| = {} rad/s); its swing of {} rad/s around the orbit is the periodic response to the radial load, not the transient",
-            s.ball,
+            element_number(s.ball),
             g(s.transient_rad_s),
             g(s.bound_rad_s),
             g(s.amplitude_rad_s)

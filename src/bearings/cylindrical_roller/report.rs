@@ -8,6 +8,7 @@ use serde_json::{json, Value};
 use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
 
 use super::analysis::CylindricalAnalysis;
+use crate::bearings::view::element_number;
 use crate::units::{Quantity, Units};
 
 /// Azimuth of a roller in [0, 360) deg.
@@ -52,6 +53,7 @@ pub fn json(a: &CylindricalAnalysis) -> Value {
                 .collect();
             json!({
                 "index": i + 1,
+                "number": element_number(i),
                 "azimuth_deg": azimuth_deg(r.azimuth_rad),
                 "inner_load_n": r.inner_load_n,
                 "outer_load_n": r.outer_load_n,

@@ -400,6 +400,7 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             inner_iterations: a.tribo.as_ref().map_or(0, |t| t.dynamics.stats.steps),
             names: ["ring Newton", "dynamics steps"],
             wall_time_s: a.wall_time_s,
+            warm_start: false,
         },
         warnings: a
             .warnings

@@ -328,6 +328,7 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
             inner_iterations: st.roller_iterations,
             names: ["ring Newton", "roller Newton"],
             wall_time_s: a.wall_time_s,
+            warm_start: false,
         },
         warnings: crate::physics::rating::static_safety_warning(
             crate::physics::rating::ContactKind::Roller,

@@ -31,6 +31,9 @@ pub struct Analysis {
     pub tribology: Option<Result<super::tribology::Tribology, super::tribology::TribologyError>>,
     /// The thermal network's answer, when the deck has a `[thermal]` and a lubricant.
     pub thermal: Option<Result<super::thermal::ThermalOut, String>>,
+    /// True when the equilibrium started from a session's last one (its iteration counts
+    /// are then those from there: 0 when the deck is the last one solved).
+    pub warm_started: bool,
 }
 
 impl Analysis {
@@ -144,12 +147,12 @@ pub fn analyse_from(
 ) -> Result<Analysis, BearingError> {
     let t0 = std::time::Instant::now();
     let bearing = Bearing::new(input)?;
-    let solution = match start {
+    let (solution, warm_started) = match start {
         Some(st) => match bearing.solve_from(Some(st)) {
-            Ok(sol) => sol,
-            Err(_) => bearing.solve()?,
+            Ok(sol) => (sol, true),
+            Err(_) => (bearing.solve()?, false),
         },
-        None => bearing.solve()?,
+        None => (bearing.solve()?, false),
     };
     let stiffness_fd = match input.solver.stiffness {
         StiffnessMethod::Analytic => None,
@@ -190,6 +193,7 @@ pub fn analyse_from(
         wall_time_s: 0.0,
         tribology: None,
         thermal: None,
+        warm_started,
     };
     a.tribology = super::tribology::tribology(&a);
     a.wall_time_s = t0.elapsed().as_secs_f64();

@@ -6,6 +6,7 @@ use std::fmt::Write;
 use serde_json::{json, Value};
 
 use super::analysis::Analysis;
+use crate::bearings::view::{element_number, flag_word};
 use crate::units::{Quantity, Units};
 
 /// The seed's statement on damping (§2.3.2), reported instead of invented numbers.
@@ -59,6 +60,7 @@ pub fn json(a: &Analysis) -> Value {
                 .collect();
             let mut v = json!({
                 "index": q + 1,
+                "number": element_number(q),
                 "azimuth_deg": s.atan2(c).to_degrees().rem_euclid(360.0),
                 "state": r.state.as_str(),
                 "outer_load_n": r.cup.load_n,
@@ -425,7 +427,7 @@ pub fn text(a: &Analysis, units: Units) -> String {
         let _ = writeln!(
             s,
             "  {:>3} {:>7.2} {:>15} {:>10.3} {:>10.3} {:>9.3} {:>9.4} {:>9.4} {:>5} {:>5}",
-            q + 1,
+            element_number(q),
             sn.atan2(c).to_degrees().rem_euclid(360.0),
             r.state.as_str(),
             force(r.cup.load_n),
@@ -433,8 +435,8 @@ pub fn text(a: &Analysis, units: Units) -> String {
             force(r.flange_n),
             moment(r.cup.moment_nm),
             moment(r.cone.moment_nm),
-            if r.cup.edge_loaded { "yes" } else { "no" },
-            if r.cone.edge_loaded { "yes" } else { "no" },
+            flag_word(r.cup.edge_loaded),
+            flag_word(r.cone.edge_loaded),
         );
     }
     let _ = writeln!(s);

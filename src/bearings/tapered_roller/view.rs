@@ -5,7 +5,7 @@
 use super::analysis::Analysis;
 use crate::bearings::view::{
     Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Screen, Series, SolveStats,
-    Summary, Table, View,
+    Summary, Table, View, FLAG,
 };
 use crate::units::Quantity;
 
@@ -33,7 +33,7 @@ const fn col(
 }
 
 /// Columns of the `rollers` table (issue 17's per-roller fields; the state as a code:
-/// 0 both races, 1 cup and flange, 2 free; edge flags 0/1).
+/// 0 both races, 1 cup and flange, 2 free; edge flags 0/1 in CSV, words on screen).
 pub const ROLLER_COLUMNS: [Column; 12] = [
     col(
         "index",
@@ -112,7 +112,7 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
         Quantity::Count,
         CsvStyle::Integer,
         "edge1",
-        Display::Plain,
+        FLAG,
         0,
         5,
     ),
@@ -121,7 +121,7 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
         Quantity::Count,
         CsvStyle::Integer,
         "edge2",
-        Display::Plain,
+        FLAG,
         0,
         5,
     ),
@@ -449,6 +449,7 @@ pub fn view(a: &Analysis) -> View {
             inner_iterations: sol.rollers.iter().map(|r| r.0.iterations).sum(),
             names: ["bearing Newton", "roller Newton"],
             wall_time_s: a.wall_time_s,
+            warm_start: a.warm_started,
         },
         warnings: crate::physics::rating::static_safety_warning(
             crate::physics::rating::ContactKind::Roller,

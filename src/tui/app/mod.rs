@@ -175,6 +175,8 @@ pub enum SolveState {
         roller_iterations: usize,
         /// Wall time, ms.
         wall_ms: f64,
+        /// The solve started from the session's last answer (its counts are from there).
+        warm: bool,
     },
     /// Last solve failed.
     Failed(String),
@@ -442,16 +444,19 @@ impl App {
         }
     }
 
-    /// The selected element's number as the element table shows it (its `index`
-    /// column: the balls count from 0, like their JSON and CSV; the rollers from 1), so
-    /// the stepper and chart labels name the row the table shows; its position + 1 when
-    /// the table has no such column (or before the first solution).
+    /// The selected element's number as the element table's `#` shows it (from 1 in
+    /// every system), so the stepper and chart labels name the row the table shows; its
+    /// position + 1 when the table has no such column (or before the first solution).
     pub fn element_number(&self) -> usize {
         self.view
             .as_deref()
             .and_then(|v| v.screen_table())
             .and_then(|t| {
-                let c = t.columns.iter().position(|c| c.key == "index")?;
+                // The screen's `#`: the `number` column (from 1 in every system), else a
+                // system's `index` that already counts from 1 (issue 30 item 9).
+                let c = ["number", "index"]
+                    .iter()
+                    .find_map(|k| t.columns.iter().position(|c| c.key == *k))?;
                 let v = (*t.rows.get(self.roller_sel)?.get(c)?)?;
                 (v.is_finite() && v >= 0.0).then_some(v as usize)
             })
@@ -506,6 +511,7 @@ impl App {
                             iterations: s.iterations,
                             roller_iterations: s.inner_iterations,
                             wall_ms: s.wall_time_s * 1e3,
+                            warm: s.warm_start,
                         };
                         self.roller_sel = self
                             .roller_sel

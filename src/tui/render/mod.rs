@@ -17,7 +17,7 @@ mod heatmap;
 mod inputs;
 mod job;
 mod overlays;
-mod status;
+pub(crate) mod status;
 mod stepper;
 mod summary;
 mod sweep;

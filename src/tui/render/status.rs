@@ -12,6 +12,30 @@ use ratatui::widgets::{Paragraph, Widget};
 use super::DIM;
 use crate::tui::app::{App, Mode, Pane, SolveState};
 
+/// A solve's iteration counts in the one vocabulary the status line and the Summary pane
+/// share (issue 30 item 12): both counts named by what they count (`13 ring + 96 roller
+/// iterations`), and said to start from the last answer after a warm start (a tapered
+/// re-solve of an unchanged deck for its Sweep pane counts 0 + 0 from there). `short`
+/// drops the names' word "iterations" for "it".
+pub(crate) fn counts_text(
+    names: [&str; 2],
+    iterations: usize,
+    inner: usize,
+    warm: bool,
+    short: bool,
+) -> String {
+    let what = if short { "it" } else { "iterations" };
+    let warm = match (warm, short) {
+        (false, _) => "",
+        (true, false) => " from the last answer",
+        (true, true) => " (warm)",
+    };
+    format!(
+        "{iterations} {} + {inner} {} {what}{warm}",
+        names[0], names[1]
+    )
+}
+
 pub(super) fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
     let (text, color) = match &app.solve {
         SolveState::Idle => ("idle".to_string(), DIM),
@@ -21,25 +45,23 @@ pub(super) fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             iterations,
             roller_iterations,
             wall_ms,
+            warm,
         } => {
-            // The longest wording that leaves room for the rest of the line: numbers are
-            // never cut, words are dropped first.
-            let rest = status_extras_width(app);
-            let room = usize::from(area.width).saturating_sub(rest);
-            let forms = [
-                format!(
-                    "✓ solved in {iterations} {} + {roller_iterations} {} iterations, {wall_ms:.1} ms",
-                    names[0], names[1]
+            // One form per terminal width, whatever else the line holds (issue 30 item
+            // 12: the form used to change with the warnings and messages beside it,
+            // `solved in 13 ring + 96 roller iterations` → `15+184 it`).
+            let c = |short| counts_text(*names, *iterations, *roller_iterations, *warm, short);
+            let text = match area.width {
+                120.. => format!("✓ solved in {}, {wall_ms:.1} ms", c(false)),
+                80.. => format!("✓ {}, {wall_ms:.1} ms", c(true)),
+                _ => format!(
+                    "✓ {}+{} it{}, {wall_ms:.1} ms",
+                    iterations,
+                    roller_iterations,
+                    if *warm { " (warm)" } else { "" }
                 ),
-                format!("✓ solved: {iterations} + {roller_iterations} iterations, {wall_ms:.1} ms"),
-                format!("✓ {iterations}+{roller_iterations} it, {wall_ms:.1} ms"),
-            ];
-            let pick = forms
-                .iter()
-                .find(|f| f.chars().count() <= room)
-                .unwrap_or(&forms[2])
-                .clone();
-            (pick, Color::Green)
+            };
+            (text, Color::Green)
         }
         SolveState::Failed(r) => (
             format!(
@@ -55,14 +77,6 @@ pub(super) fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
     )];
     spans.extend(status_extras(app));
     Line::from(spans).render(area, buf);
-}
-
-/// Width of [`status_extras`] in cells.
-fn status_extras_width(app: &App) -> usize {
-    status_extras(app)
-        .iter()
-        .map(|s| s.content.chars().count())
-        .sum()
 }
 
 /// The status line after the solver state: warnings, unsaved, edits not solved, message.

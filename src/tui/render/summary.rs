@@ -144,9 +144,10 @@ pub(crate) fn solver_state(app: &App) -> String {
             iterations,
             roller_iterations,
             wall_ms,
+            warm,
         } => format!(
-            "converged: {iterations} {} and {roller_iterations} {} iterations, {wall_ms:.1} ms",
-            names[0], names[1]
+            "converged: {}, {wall_ms:.1} ms",
+            super::status::counts_text(*names, *iterations, *roller_iterations, *warm, false)
         ),
         SolveState::Running => "solving…".into(),
         SolveState::Idle => "not solved yet".into(),

@@ -41,18 +41,32 @@ pub(super) fn render_thermal(app: &App, area: Rect, buf: &mut Buffer) {
     render_thermal_view(&t, inner, buf);
 }
 
+/// How many lines `text` takes when its words are wrapped to `width` cells (a word longer
+/// than the width takes lines of its own).
+fn wrapped_lines(text: &str, width: usize) -> usize {
+    let width = width.max(1);
+    let (mut lines, mut used) = (1, 0);
+    for word in text.split_whitespace() {
+        let n = word.chars().count();
+        let need = if used == 0 { n } else { used + 1 + n };
+        if need <= width {
+            used = need;
+        } else {
+            lines += usize::from(used > 0) + (n - 1) / width;
+            used = (n - 1) % width + 1;
+        }
+    }
+    lines
+}
+
 /// The thermal pane's contents (inside the border): what the selected node does (one
 /// line), its transient against time with the limit and the moment it is reached, and the
 /// node list with the selection highlighted (scrolled to keep it in view).
 pub fn render_thermal_view(t: &view_model::ThermalView, inner: Rect, buf: &mut Buffer) {
     let summary = t.summary();
-    // The account of the node is read whole: a second line when it is longer than the
-    // pane is wide.
-    let title_h = if summary.chars().count() > inner.width as usize {
-        2
-    } else {
-        1
-    };
+    // The account of the node is read whole: as many lines as its words wrap to (at
+    // most 3; it names the limit line's and marker's glyphs too, issue 30 item 13).
+    let title_h = wrapped_lines(&summary, inner.width as usize).clamp(1, 3) as u16;
     let chart_h = if t.series.is_empty() {
         0
     } else {

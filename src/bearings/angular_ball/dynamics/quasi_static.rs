@@ -8,6 +8,7 @@ use nalgebra::{DMatrix, DVector, Vector3};
 use super::model::BallModel;
 use crate::bearings::angular_ball::error::BallError;
 use crate::bearings::angular_ball::input::Orbit;
+use crate::bearings::view::element_number;
 use crate::physics::lubrication::traction_curve::TractionCurve;
 
 /// The quasi-static angular velocity of a ball at fixed loads: dω/dt = 0 solved by a
@@ -212,7 +213,8 @@ fn newton(
         }
         let step = jac.lu().solve(&(-&fw)).ok_or_else(|| {
             BallError::Dynamics(format!(
-                "ball {ball}: singular Jacobian of the quasi-static balance at {:?} (rad/s)",
+                "ball {}: singular Jacobian of the quasi-static balance at {:?} (rad/s)",
+                element_number(ball),
                 w.as_slice()
             ))
         })?;
@@ -233,7 +235,7 @@ fn newton(
                 return Ok((w, it, evals));
             }
             return Err(BallError::Dynamics(format!(
-                "ball {ball}: quasi-static balance stalled after {it} iterations (|rates| = {:.3e} rad/s², step {:.3e} rad/s)",
+                "ball {}: quasi-static balance stalled after {it} iterations (|rates| = {:.3e} rad/s², step {:.3e} rad/s)", element_number(ball),
                 fw.norm(),
                 step.norm()
             )));
@@ -246,7 +248,7 @@ fn newton(
         }
     }
     Err(BallError::Dynamics(format!(
-        "ball {ball}: quasi-static balance did not converge in 100 iterations (|rates| = {:.3e} rad/s²)",
+        "ball {}: quasi-static balance did not converge in 100 iterations (|rates| = {:.3e} rad/s²)", element_number(ball),
         fw.norm()
     )))
 }

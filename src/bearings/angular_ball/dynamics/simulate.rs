@@ -11,13 +11,14 @@ use super::model::BallModel;
 use super::summary::{sample, BallDynamics, Sample};
 use crate::bearings::angular_ball::error::BallError;
 use crate::bearings::angular_ball::input::Orbit;
+use crate::bearings::view::element_number;
 use crate::numerics::cancel::Cancel;
 use crate::numerics::ode::{self, OdeError, OdeOptions, Output};
 
 fn ode_error(ball: usize, e: OdeError) -> BallError {
     match e {
         OdeError::Cancelled { .. } => BallError::Cancelled,
-        e => BallError::Dynamics(format!("ball {ball}: {e}")),
+        e => BallError::Dynamics(format!("ball {}: {e}", element_number(ball))),
     }
 }
 
@@ -95,7 +96,8 @@ pub fn simulate_ball_limited(
     let wm = model.cage_rad_s.abs();
     if wm.is_nan() || wm <= 0.0 {
         return Err(BallError::Dynamics(format!(
-            "ball {ball}: the cage does not turn (ω_m = {} rad/s): nothing to simulate",
+            "ball {}: the cage does not turn (ω_m = {} rad/s): nothing to simulate",
+            element_number(ball),
             model.cage_rad_s
         )));
     }
@@ -260,7 +262,7 @@ pub fn simulate_ball_limited(
 /// constant µ near 1) and the keys that change it.
 fn too_many_steps(ball: usize, max: usize, reached: f64, orbits: f64) -> BallError {
     BallError::Dynamics(format!(
-        "ball {ball}: the integration took more than {max} step attempts (20× what the shipped decks need per orbit) and reached only {reached:.3} of {orbits} orbits: the ball's motion is too stiff for the integrator (a steep traction curve, e.g. traction.curve = \"constant\" with a large traction.mu); use a gentler traction curve, a looser dynamics.tolerance, fewer dynamics.orbits or dynamics.method = \"race-control\""
+        "ball {}: the integration took more than {max} step attempts (20× what the shipped decks need per orbit) and reached only {reached:.3} of {orbits} orbits: the ball's motion is too stiff for the integrator (a steep traction curve, e.g. traction.curve = \"constant\" with a large traction.mu); use a gentler traction curve, a looser dynamics.tolerance, fewer dynamics.orbits or dynamics.method = \"race-control\"", element_number(ball)
     ))
 }
 

@@ -101,6 +101,8 @@ pub fn to_value(a: &Analysis) -> Value {
             let r = rv.roller;
             json!({
                 "index": r.index,
+                // Rollers count from 1 here already (issue 30 item 9).
+                "number": r.index,
                 "azimuth_deg": r.azimuth_deg,
                 "axial_displacement_m": r.axial_displacement_m,
                 "radial_displacement_m": r.radial_displacement_m,

@@ -7,6 +7,24 @@ use crate::bearings::spherical_roller::view;
 use crate::units::Disp;
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
 
+/// The dynamic-load iterations in the words the stepper uses (issue 30 item 12): all of
+/// them, and when a coarse presolve ran first, how many were on it and how many on the
+/// deck's laminae (the stepper traces only the latter).
+pub fn dynamic_iterations(a: &Analysis) -> String {
+    let all = a.speeds.iterations;
+    let fine = a.trace_outer.min(all);
+    let word = |n: usize| if n == 1 { "iteration" } else { "iterations" };
+    if fine == all {
+        format!("{all} dynamic-load {}", word(all))
+    } else {
+        format!(
+            "{all} dynamic-load {} ({} coarse on a presolve, {fine} on the deck's laminae)",
+            word(all),
+            all - fine
+        )
+    }
+}
+
 /// Human-readable report in `units`.
 pub fn to_string(a: &Analysis, units: Units) -> String {
     let d = Disp::of(units);
@@ -31,7 +49,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     let rpm = 30.0 / std::f64::consts::PI;
     let _ = writeln!(
         s,
-        "Speeds: inner {:.0} rpm, outer {:.0} rpm; cage {:.1} rpm (§7, {} controlling rollers; App. C estimate {:.1} rpm, {:+.2} %); dynamic loads from {:?} speeds after {} iteration(s)",
+        "Speeds: inner {:.0} rpm, outer {:.0} rpm; cage {:.1} rpm (§7, {} controlling rollers; App. C estimate {:.1} rpm, {:+.2} %); dynamic loads from {:?} speeds after {}",
         b.operating.inner_speed_rad_s * rpm,
         b.operating.outer_speed_rad_s * rpm,
         a.speeds.cage_rpm,
@@ -42,7 +60,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
             super::super::DynamicLoads::Iterated => "iterated (§7)",
             super::super::DynamicLoads::Estimate => "App. C estimated",
         },
-        a.speeds.iterations
+        dynamic_iterations(a)
     );
     let _ = rpm;
     let _ = writeln!(
