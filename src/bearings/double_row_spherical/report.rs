@@ -127,6 +127,10 @@ fn stiffness_json(a: &DoubleRowAnalysis, k: [[f64; 2]; 2]) -> Value {
             let mut v = m.json();
             if let Some(o) = v.as_object_mut() {
                 o.insert("unit".into(), json!("N/m"));
+                // Before issue 29 `matrix` was this 2×2 (rows F_x F_z, columns x z); the
+                // shared 5×5 (issue 29: `matrix` with `rows`/`columns` names) replaced it,
+                // so the old layout stays readable under its own name.
+                o.insert("matrix_xz".into(), json!(k));
             }
             v
         }
