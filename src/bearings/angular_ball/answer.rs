@@ -59,6 +59,18 @@ pub fn answer(a: &BallAnalysis, life: &BallLife) -> Vec<AnswerLine> {
         )
         .at(thinnest.map(|m| place(m.0))),
     );
+    // Λ = h_min/σ at the thinnest film's contact (issue 28 item 3), where the deck gives σ.
+    if let Some(sigma) = a.input.surfaces.composite_rms_m {
+        out.push(AnswerLine::number(
+            CONTACT,
+            "Λ at the min film",
+            thinnest.map(|m| m.1 / sigma),
+            Display::Plain,
+            2,
+            "min /balls/*/inner/lambda /balls/*/outer/lambda",
+            "no loaded contact has a film",
+        ));
+    }
     out.push(AnswerLine::number(
         SPEEDS,
         "cage",

@@ -31,7 +31,7 @@ const BALL: [FieldSpec<BallInput>; 5] =
 const RINGS: [FieldSpec<BallInput>; 5] =
     material_fields!(BallInput, "rings", "Rings", |b| b.materials.rings);
 
-static FIELDS: [FieldSpec<BallInput>; 50] = [
+static FIELDS: [FieldSpec<BallInput>; 51] = [
     FieldSpec {
         meta: FieldMeta::new(
             "geometry.ball_count",
@@ -664,6 +664,21 @@ static FIELDS: [FieldSpec<BallInput>; 50] = [
             }
         },
     },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "surfaces.composite_rms",
+            "surfaces",
+            "Composite roughness σ",
+            Quantity::Roughness,
+            FieldKind::RealOr("none"),
+            (0.0, true),
+            (1e-4, false),
+            Presence::Default(f64::NAN),
+            "composite rms roughness of ball and race, sqrt(σ_ball² + σ_race²), for the film parameter Λ = h_min/σ at every contact and in the life; \"none\" (the default): no Λ",
+        ),
+        get: |b| b.surfaces.composite_rms_m.unwrap_or(f64::NAN),
+        set: |b, v| b.surfaces.composite_rms_m = (!v.is_nan()).then_some(v),
+    },
 ];
 
 fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
@@ -715,6 +730,7 @@ pub static SCHEMA: Schema<BallInput> = Schema {
         "lubricant",
         "dynamics",
         "solver",
+        "surfaces",
         "thermal",
     ],
     required_groups: &["geometry", "materials", "operating", "lubricant"],

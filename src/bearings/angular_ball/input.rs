@@ -408,6 +408,24 @@ pub struct BallInput {
     pub lubricant: Lubricant,
     /// Analysis options.
     pub dynamics: Dynamics,
+    /// Surface finish (Λ).
+    pub surfaces: Surfaces,
+}
+
+/// Surface finish of balls and races (issue 28 item 3: Λ at every contact).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Surfaces {
+    /// σ, composite rms roughness of ball and race √(σ_b² + σ_r²), m; `None`: not given,
+    /// so no Λ (the life says why).
+    pub composite_rms_m: Option<f64>,
+}
+
+impl Surfaces {
+    /// Λ = h_min/σ of one contact; `None` without σ or without a film.
+    pub fn lambda(&self, min_film_m: Option<f64>) -> Option<f64> {
+        let sigma = self.composite_rms_m.filter(|s| *s > 0.0)?;
+        min_film_m.map(|h| h / sigma)
+    }
 }
 
 /// rpm → rad/s.
@@ -522,6 +540,7 @@ impl BallInput {
                 integrator: Integrator::Auto,
                 orbit: Orbit::Free,
             },
+            surfaces: Surfaces::default(),
         }
     }
 

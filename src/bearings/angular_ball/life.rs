@@ -91,6 +91,29 @@ pub struct BallLife {
     pub iso: IsoLife,
     /// The most loaded contact's Hertz pressure, Pa (s0's input).
     pub max_contact_stress_pa: f64,
+    /// The thinnest Λ = h_min/σ over the balls at the inner and the outer raceway (JSON
+    /// `lambda_inner`/`lambda_outer`), or why there is none.
+    pub lambdas: Result<(Option<f64>, Option<f64>), String>,
+}
+
+/// The thinnest Λ over the balls at each raceway (`None` at a raceway with no film), or
+/// why the deck gives none.
+pub fn raceway_lambdas(a: &BallAnalysis) -> Result<(Option<f64>, Option<f64>), String> {
+    let s = &a.input.surfaces;
+    if s.composite_rms_m.is_none() {
+        return Err(
+            "the deck gives no surfaces.composite_rms: no Λ (the films are in balls[].inner/outer)"
+                .into(),
+        );
+    }
+    let min = |xs: &mut dyn Iterator<Item = Option<f64>>| {
+        xs.flatten()
+            .fold(None, |m: Option<f64>, l| Some(m.map_or(l, |m| m.min(l))))
+    };
+    Ok((
+        min(&mut a.balls.iter().map(|b| s.lambda(b.inner.min_film_m))),
+        min(&mut a.balls.iter().map(|b| s.lambda(b.outer.min_film_m))),
+    ))
 }
 
 /// The per-ball raceway life: L = [Σ(Q_j/Q_cj)^p/Z]^(−3/p) (module notes); `Infinite`
@@ -261,6 +284,7 @@ pub fn life(a: &BallAnalysis) -> BallLife {
         max_contact_stress_pa: max_p,
     });
     BallLife {
+        lambdas: raceway_lambdas(a),
         reference: reference_life(a),
         iso,
         max_contact_stress_pa: max_p,
@@ -268,12 +292,16 @@ pub fn life(a: &BallAnalysis) -> BallLife {
 }
 
 impl BallLife {
-    /// The JSON `life` object ([`rating::life_json`]); the ball deck has no surface
-    /// roughness, so Λ is absent with its reason.
+    /// The JSON `life` object ([`rating::life_json`]); Λ is absent with its reason when
+    /// the deck gives no `surfaces.composite_rms`.
     pub fn json(&self) -> serde_json::Value {
         let mut v = rating::life_json(
-            &self.reference.as_ref().map(|r| r.numbers()).map_err(Clone::clone),
-            &Err("the ball deck gives no surface roughness: no Λ (the films are in balls[].inner/outer)".into()),
+            &self
+                .reference
+                .as_ref()
+                .map(|r| r.numbers())
+                .map_err(Clone::clone),
+            &self.lambdas,
             &self.iso,
         );
         if let (Some(m), Ok(r)) = (v.as_object_mut(), &self.reference) {

@@ -215,3 +215,38 @@ fn thrust_rating_against_the_reference_life_at_a_crawl() {
         "{r54} vs η^-3 = {thrust_reduction}"
     );
 }
+
+/// Λ at every contact (issue 28 item 3): with `surfaces.composite_rms` each contact's
+/// `lambda` is its h_min/σ and the life's `lambda_inner`/`lambda_outer` are the thinnest of
+/// each raceway; without it every Λ is null and the life says which key to give. Exact
+/// (the same division).
+#[test]
+fn lambda_at_every_contact_from_the_composite_roughness() {
+    let mut b = BallInput::chen_a();
+    b.operating.radial_load_n = 800.0;
+    b.surfaces.composite_rms_m = Some(0.11e-6);
+    let a = analyse(&b, Cancel::NONE).unwrap();
+    let j = crate::bearings::angular_ball::report::json(&a);
+    let mut min = [f64::INFINITY; 2];
+    for (k, ball) in a.balls.iter().enumerate() {
+        for (r, (c, name)) in [(&ball.inner, "inner"), (&ball.outer, "outer")]
+            .into_iter()
+            .enumerate()
+        {
+            let h = c.min_film_m.unwrap();
+            let lam = j["balls"][k][name]["lambda"].as_f64().unwrap();
+            assert_eq!(lam, h / 0.11e-6);
+            min[r] = min[r].min(lam);
+        }
+    }
+    assert_eq!(j["life"]["lambda_inner"].as_f64(), Some(min[0]));
+    assert_eq!(j["life"]["lambda_outer"].as_f64(), Some(min[1]));
+    // Without σ: null Λ and the reason names the key.
+    let plain = analyse(&loaded_a().input, Cancel::NONE).unwrap();
+    let j = crate::bearings::angular_ball::report::json(&plain);
+    assert!(j["balls"][0]["inner"]["lambda"].is_null());
+    assert!(j["life"]["lambda_reason"]
+        .as_str()
+        .unwrap()
+        .contains("surfaces.composite_rms"));
+}

@@ -20,7 +20,7 @@ fn race_name(r: Race) -> &'static str {
     }
 }
 
-fn contact(c: &ContactResult) -> Value {
+fn contact(c: &ContactResult, surfaces: &super::input::Surfaces) -> Value {
     json!({
         "normal_load_n": c.load_n,
         "contact_angle_deg": c.angle_rad.to_degrees(),
@@ -36,6 +36,8 @@ fn contact(c: &ContactResult) -> Value {
         "spin_heat_w": c.spin_heat_w,
         "central_film_m": c.central_film_m,
         "min_film_m": c.min_film_m,
+        // Λ = h_min/σ (null without surfaces.composite_rms or without a film).
+        "lambda": surfaces.lambda(c.min_film_m),
         "film_temperature_rise_c": c.film_temperature_rise_k,
         "surface_temperature_rise_c": c.surface_temperature_rise_k,
     })
@@ -100,8 +102,8 @@ pub fn json(a: &BallAnalysis) -> Value {
                 "heat_w": b.heat_w,
                 "cage_rpm": b.cage_rad_s * RPM_PER_RAD_S,
                 "controlling_race": race_name(b.control),
-                "inner": contact(&b.inner),
-                "outer": contact(&b.outer),
+                "inner": contact(&b.inner, &a.input.surfaces),
+                "outer": contact(&b.outer, &a.input.surfaces),
             })
         })
         .collect();
