@@ -67,13 +67,27 @@ absent() {
     if screen | grep -qF -- "$1"; then fail "did not expect \"$1\" on screen"; fi
 }
 keys() { tm send-keys -t "$TARGET" "$@"; sleep 0.15; }
+# wait_solved: polls until the status line shows a finished solve. Its form follows the
+# width only (issue 30 item 12): "✓ solved in 13 ring + 96 roller iterations, 3.3 ms" from
+# 120 columns, "✓ 13 ring + 96 roller it, 3.3 ms" (or "it (warm), …") from 80, "✓ 13+96 it,
+# 3.3 ms" below.
+wait_solved() {
+    local i
+    for ((i = 0; i < 150; i++)); do
+        if screen | grep -qE -- '✓ (solved in .* iterations[^,]*|.* it( \(warm\))?), [0-9.]+ ms'; then
+            return 0
+        fi
+        sleep 0.1
+    done
+    fail "expected a finished solve (✓ … it, … ms) on the status line"
+}
 
 tm new-session -d -s "$SESSION" -x 80 -y 24 \
     "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN'; echo \"EXITED:\$?\"; sleep 60"
 
 # 1. Opens on the Inputs pane and solves the default deck.
 wait_for "Inputs [US]"
-wait_for "solved in"
+wait_solved
 wait_for "Roller count Z"
 
 # 2. Tab to the Summary (the bearing-level answer), Tab to the Rollers table; j j selects
@@ -113,7 +127,7 @@ keys End BSpace BSpace BSpace BSpace BSpace BSpace 0 . 5 2
 keys Enter
 wait_for "0.52 in"
 wait_for "[+] unsaved"
-wait_for "solved in"
+wait_solved
 
 # 5. Units toggle shows SI values.
 keys u
@@ -178,7 +192,7 @@ tm new-session -d -s trb -x 80 -y 24 \
     "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN' trb.toml; echo \"EXITED:\$?\"; sleep 60"
 TARGET="trb"
 wait_for "Inputs [US]"
-wait_for "solved in"
+wait_solved
 keys 6
 wait_for "21/21 points"
 wait_for "Cone speed"
@@ -206,13 +220,13 @@ tm new-session -d -s ball -x 80 -y 24 \
     "cd '$WORK' && TERM=xterm-256color '$ROLLBENCH_BIN' ball.toml; echo \"EXITED:\$?\"; sleep 60"
 TARGET="ball"
 wait_for "Inputs [SI]"
-wait_for "solved in"
+wait_solved
 keys 3
 wait_for "Balls"
 keys j j
 keys Enter
-# Ball 2 (from 0, as the Balls table and the JSON number them) after two steps down.
-wait_for "Stepper · ball 2 · step 1/"
+# Ball 3 (balls count from 1 on screen, issue 30 item 9) after two steps down from ball 1.
+wait_for "Stepper · ball 3 · step 1/"
 wait_for "αi,αo deg"
 keys l
 wait_for "step 2/"
@@ -250,7 +264,7 @@ for sig_code in TERM:143 INT:130 HUP:129 QUIT:131; do
     keys clear Enter
     keys "'$ROLLBENCH_BIN'; echo \"EXITED:\$?\"" Enter
     wait_for "Inputs [US]"
-    wait_for "solved in"
+    wait_solved
     pid=""
     for ((i = 0; i < 50; i++)); do
         pid="$(pgrep -P "$shell_pid" | head -n 1 || true)"
