@@ -139,10 +139,10 @@ wait_for "Inputs [US]"
 # 5b. Thermal pane: the node walk of issue 15 (j j k k k k G G k Home End) keeps a node
 #     selected and on screen; G shows the last node (oil_cavity) in the list.
 keys 5
-wait_for "(hottest)"
+wait_for "(hottest at the end"
 keys j j k k k k G G k Home End
 wait_for "bedplate: 86.0"
-absent "(hottest)"
+absent "(hottest at the end"
 
 # 5c. An error is read whole: opening a missing file pops up the whole message; any key
 #     closes it, e reopens it; Esc does not quit.
