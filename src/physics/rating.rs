@@ -165,6 +165,15 @@ pub fn iso_static_radial_rating_roller(g: &RollerRatingGeometry) -> f64 {
         * ca
 }
 
+/// Q_0, the ball load that brings a point contact to ISO 76's 4 200 MPa, N, from the
+/// caller's Hertz p₀ at one ball load Q₁ (`(Q₁ N, p₀ Pa)`): p₀ ∝ Q^(1/3), so
+/// Q_0 = Q₁·(4200 MPa/p₀)³. `None` when Q₁ or p₀ is not positive. The radial and the thrust
+/// (`thrust_ball_rating`) static ratings both start from it.
+pub fn ball_load_at_iso76_stress(pressure_per_load: (f64, f64)) -> Option<f64> {
+    let (q1, p1) = pressure_per_load;
+    (q1 > 0.0 && p1 > 0.0).then(|| q1 * (ISO76_BALL_STRESS_PA / p1).powi(3))
+}
+
 /// ISO 76's C_0r of a radial or angular-contact ball bearing from the contact stress that
 /// defines it, N: C_0r = Z·i·Q_0·cos α/5, Q_0 the ball load giving 4 200 MPa at the inner
 /// contact (Stribeck's Q_max = 5·F_r/(Z·cos α), ISO 76's basis). `inner_pressure_per_load`
@@ -177,11 +186,7 @@ pub fn static_radial_rating_ball(
     contact_angle_rad: f64,
     inner_pressure_per_load: (f64, f64),
 ) -> Option<f64> {
-    let (q1, p1) = inner_pressure_per_load;
-    if !(q1 > 0.0 && p1 > 0.0) {
-        return None;
-    }
-    let q0 = q1 * (ISO76_BALL_STRESS_PA / p1).powi(3);
+    let q0 = ball_load_at_iso76_stress(inner_pressure_per_load)?;
     let c0 = (rows * ball_count) as f64 * q0 * contact_angle_rad.cos() / 5.0;
     (c0.is_finite() && c0 > 0.0).then_some(c0)
 }

@@ -181,11 +181,7 @@ pub fn static_axial_rating_ball(
     contact_angle_rad: f64,
     inner_pressure_per_load: (f64, f64),
 ) -> Option<f64> {
-    let (q1, p1) = inner_pressure_per_load;
-    if !(q1 > 0.0 && p1 > 0.0) {
-        return None;
-    }
-    let q0 = q1 * (super::rating::ISO76_BALL_STRESS_PA / p1).powi(3);
+    let q0 = super::rating::ball_load_at_iso76_stress(inner_pressure_per_load)?;
     let c0 = ball_count as f64 * q0 * contact_angle_rad.sin();
     (c0.is_finite() && c0 > 0.0).then_some(c0)
 }
