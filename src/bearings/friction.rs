@@ -120,6 +120,141 @@ impl FrictionBreakdown {
     }
 }
 
+/// The optional `[cage]` section of the ball and tapered decks (issue 28 item 4), with the
+/// spherical roller's keys and laws (seed 000 §9.3–9.4), so every system names its cage and
+/// churning losses the same way:
+/// - `cage.drag_factor` f₀: Palmgren's load-independent viscous moment
+///   M₀ = 10⁻⁷·f₀·(ν·n)^(2/3)·d_m³ N·mm (eq. 9.5) at the rings' relative speed, mechanism
+///   `viscous_drag` (heat into the oil). Palmgren's published f₀ (Harris & Kotzalas,
+///   *Essential Concepts of Bearing Technology*, 5th ed., Table 12.1) are for the whole M₀,
+///   which in his fit also holds the contacts' hydrodynamic rolling loss: with the EHL
+///   rolling resistance computed per contact, f₀ stands for the churning alone, and the
+///   table's value is an upper estimate (docs/friction.md says so).
+/// - `cage.rail_width`, `cage.mean_diameter`, `cage.diametral_clearance`, `cage.guided_by`:
+///   a land-guided cage's rails, Petroff shear at the cage's slip over the guiding ring
+///   (eqs. 9.3–9.4), mechanism `cage_rails`. A cage guided by its rolling elements (the
+///   usual pressed-steel tapered cage) has no rails: leave `rail_width` out; its pocket
+///   forces in steady running only balance its own drag, which f₀ covers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CageLosses {
+    /// f₀, dimensionless; NaN: no `cage.drag_factor` (no `viscous_drag` mechanism).
+    pub drag_factor: f64,
+    /// W_cr, total rail width, m; NaN: no rails (no `cage_rails` mechanism).
+    pub rail_width_m: f64,
+    /// D_cr, mean rail/land diameter, m (NaN: not given).
+    pub mean_diameter_m: f64,
+    /// dc_cr, diametral rail clearance, m (NaN: not given).
+    pub diametral_clearance_m: f64,
+    /// The ring whose land guides the cage.
+    pub guided_by: crate::physics::heat::GuidingRing,
+}
+
+impl Default for CageLosses {
+    fn default() -> Self {
+        Self {
+            drag_factor: f64::NAN,
+            rail_width_m: f64::NAN,
+            mean_diameter_m: f64::NAN,
+            diametral_clearance_m: f64::NAN,
+            guided_by: crate::physics::heat::GuidingRing::Outer,
+        }
+    }
+}
+
+/// The operating state [`CageLosses::mechanisms`] needs, SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CageState {
+    /// η, dynamic viscosity in the bearing, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// ρ, oil density, kg/m³ (ν = η/ρ for Palmgren's M₀).
+    pub density_kg_m3: f64,
+    /// Ω₁, Ω₂: inner and outer ring speeds, rad/s.
+    pub inner_rad_s: f64,
+    /// Outer ring speed, rad/s.
+    pub outer_rad_s: f64,
+    /// Ω_cg, cage speed, rad/s.
+    pub cage_rad_s: f64,
+    /// d_m, pitch diameter, m.
+    pub pitch_diameter_m: f64,
+}
+
+impl CageLosses {
+    /// True when the deck gives any cage-loss key.
+    pub fn is_given(&self) -> bool {
+        self.drag_factor.is_finite() || self.rail_width_m.is_finite()
+    }
+
+    /// Which rail keys are missing when `rail_width` is given (a person-readable list).
+    pub fn missing_rail_keys(&self) -> Vec<&'static str> {
+        if !self.rail_width_m.is_finite() {
+            return Vec::new();
+        }
+        let mut v = Vec::new();
+        if !self.mean_diameter_m.is_finite() {
+            v.push("cage.mean_diameter");
+        }
+        if !self.diametral_clearance_m.is_finite() {
+            v.push("cage.diametral_clearance");
+        }
+        v
+    }
+
+    /// The `viscous_drag` and `cage_rails` mechanisms the deck asks for, in that order
+    /// (none when neither is given). Errors (phrased for a person) when a rail key is
+    /// missing or the Petroff law refuses its inputs (zero clearance).
+    pub fn mechanisms(&self, s: &CageState) -> Result<Vec<Mechanism>, String> {
+        use crate::physics::heat;
+        let mut out = Vec::new();
+        if self.drag_factor.is_finite() {
+            let nu = if s.density_kg_m3 > 0.0 {
+                s.viscosity_pa_s / s.density_kg_m3
+            } else {
+                return Err(format!(
+                    "cage.drag_factor needs the oil's density for ν = η/ρ (got {} kg/m³)",
+                    s.density_kg_m3
+                ));
+            };
+            out.push(Mechanism {
+                name: "viscous_drag",
+                power_w: heat::viscous_drag_power_w(
+                    self.drag_factor,
+                    nu,
+                    s.inner_rad_s - s.outer_rad_s,
+                    s.pitch_diameter_m,
+                ),
+                heat: Some(HeatSource::ViscousDrag),
+            });
+        }
+        if self.rail_width_m.is_finite() {
+            let missing = self.missing_rail_keys();
+            if !missing.is_empty() {
+                return Err(format!(
+                    "cage.rail_width is given, so the cage is land-guided: give {} too (or leave cage.rail_width out for a cage guided by its rolling elements)",
+                    missing.join(" and ")
+                ));
+            }
+            let guide = match self.guided_by {
+                heat::GuidingRing::Inner => s.inner_rad_s,
+                heat::GuidingRing::Outer => s.outer_rad_s,
+            };
+            let p = heat::cage_rail_power_w(
+                s.viscosity_pa_s,
+                self.rail_width_m,
+                self.mean_diameter_m,
+                self.diametral_clearance_m,
+                s.cage_rad_s - guide,
+            )
+            .map_err(|e| format!("cage rails: {e}"))?;
+            out.push(Mechanism {
+                name: "cage_rails",
+                power_w: p,
+                heat: Some(HeatSource::CageRails),
+            });
+        }
+        Ok(out)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

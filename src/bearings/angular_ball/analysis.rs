@@ -47,8 +47,12 @@ pub struct BallAnalysis {
     pub race_control_heat_w: f64,
     /// The ball dynamics (quasi-static or time simulation), when asked for.
     pub dynamics: Option<DynamicsResult>,
-    /// Bulk temperature T_oil + H/(ρ c Q̇), K (4-1).
+    /// Bulk temperature T_oil + H/(ρ c Q̇), K (4-1), with H = `total_heat_w` (the
+    /// seed's sliding heat; the friction's other mechanisms are not in eq. 4-1).
     pub bulk_temperature_k: f64,
+    /// The `[cage]` section's mechanisms (`viscous_drag`, `cage_rails`), at the inlet
+    /// viscosity and the balls' mean race-control cage speed; empty without the section.
+    pub cage_losses: Vec<crate::bearings::friction::Mechanism>,
     /// For `traction.curve = "rheology"`: the contact the curve was tabulated at.
     pub rheology_contact: Option<RheologyContact>,
     /// The load distribution's fixed-point iterations for one ball (the workbench's
@@ -261,7 +265,9 @@ pub fn analyse_streaming(
     if !bulk.is_finite() {
         return Err(not_finite_bulk(input, total));
     }
+    let cage_losses = cage_losses(input, &balls)?;
     Ok(BallAnalysis {
+        cage_losses,
         input: input.clone(),
         geometry: geom,
         rest_axial_deflection_m: rest,
@@ -276,6 +282,30 @@ pub fn analyse_streaming(
         rheology_contact,
         load_trace,
     })
+}
+
+/// The `[cage]` section's losses (issue 28; `bearings::friction::CageLosses`): the cage
+/// turns at the balls' mean race-control orbital speed (one cage, one speed).
+fn cage_losses(
+    input: &BallInput,
+    balls: &[BallResult],
+) -> Result<Vec<crate::bearings::friction::Mechanism>, BallError> {
+    if !input.cage.is_given() {
+        return Ok(Vec::new());
+    }
+    let cage = balls.iter().map(|b| b.cage_rad_s).sum::<f64>() / balls.len().max(1) as f64;
+    let op = &input.operating;
+    input
+        .cage
+        .mechanisms(&crate::bearings::friction::CageState {
+            viscosity_pa_s: input.lubricant.viscosity_pa_s,
+            density_kg_m3: input.lubricant.density_kg_m3,
+            inner_rad_s: op.inner_speed_rad_s,
+            outer_rad_s: op.outer_speed_rad_s,
+            cage_rad_s: cage,
+            pitch_diameter_m: input.geometry.pitch_diameter_m,
+        })
+        .map_err(BallError::InvalidInput)
 }
 
 #[cfg(test)]

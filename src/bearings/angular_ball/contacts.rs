@@ -13,8 +13,10 @@ use super::race_control::{spin_moment_nm, ContactKinematics};
 use super::results::{ContactResult, RheologyContact};
 use crate::numerics::cancel::Cancel;
 use crate::physics::contact::point::{Axis, PointContact, Race};
+use crate::physics::lubrication::film::FilmInputs;
 use crate::physics::lubrication::film_point::PointFilmInputs;
 use crate::physics::lubrication::rheology::{self, ContactStrip, FilmThermal};
+use crate::physics::lubrication::rolling_resistance;
 use crate::physics::lubrication::traction_curve::TractionCurve;
 use std::borrow::Cow;
 
@@ -183,7 +185,30 @@ pub(super) fn contact_result(
         }
         _ => None,
     };
+    // EHL rolling resistance by strips of the line fit over the ellipse's transverse
+    // axis (issue 28 item 4; `rolling_resistance` module docs).
+    let rolling_resistance_n = if ok {
+        let (a_transverse, _) = semi_axes(&hertz);
+        rolling_resistance::point_force_n(
+            &FilmInputs {
+                viscosity_pa_s: lub.viscosity_pa_s,
+                pressure_viscosity_pa_inv: lub.pressure_viscosity_pa_inv,
+                entrainment_speed_m_s: kin.rolling_speed_m_s,
+                reduced_radius_m: film.reduced_radius_rolling_m,
+                load_per_length_n_m: 0.0,
+                effective_modulus_pa: film.effective_modulus_pa,
+            },
+            load.load_n,
+            a_transverse,
+        )
+    } else {
+        None
+    };
     Ok(ContactResult {
+        rolling_resistance_n,
+        rolling_resistance_w: rolling_resistance_n.map_or(0.0, |f| {
+            rolling_resistance::power_w(f, kin.rolling_speed_m_s)
+        }),
         load_n: load.load_n,
         angle_rad: load.angle_rad,
         deflection_m: load.deflection_m,

@@ -410,6 +410,8 @@ pub struct BallInput {
     pub dynamics: Dynamics,
     /// Surface finish (Λ).
     pub surfaces: Surfaces,
+    /// The optional `[cage]` section: churning drag and cage-rail losses (issue 28).
+    pub cage: crate::bearings::friction::CageLosses,
 }
 
 /// Surface finish of balls and races (issue 28 item 3: Λ at every contact).
@@ -541,6 +543,7 @@ impl BallInput {
                 orbit: Orbit::Free,
             },
             surfaces: Surfaces::default(),
+            cage: crate::bearings::friction::CageLosses::default(),
         }
     }
 

@@ -34,6 +34,8 @@ fn contact(c: &ContactResult, surfaces: &super::input::Surfaces) -> Value {
         "rolling_speed_m_s": c.kinematics.rolling_speed_m_s,
         "spin_moment_nm": c.spin_moment_nm,
         "spin_heat_w": c.spin_heat_w,
+        "rolling_resistance_n": c.rolling_resistance_n,
+        "rolling_resistance_w": c.rolling_resistance_w,
         "central_film_m": c.central_film_m,
         "min_film_m": c.min_film_m,
         // Λ = h_min/σ (null without surfaces.composite_rms or without a film).

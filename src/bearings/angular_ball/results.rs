@@ -37,6 +37,11 @@ pub struct ContactResult {
     pub film_temperature_rise_k: Option<f64>,
     /// Largest surface temperature rise (4-3) of the same calculation, K.
     pub surface_temperature_rise_k: Option<f64>,
+    /// EHL rolling resistance F_R of the contact, N (Goksem–Hargreaves by strips,
+    /// `physics::lubrication::rolling_resistance`); `None` without load, rolling or α.
+    pub rolling_resistance_n: Option<f64>,
+    /// Its power F_R·|u|, W (u the race-control entrainment speed); 0 W where `None`.
+    pub rolling_resistance_w: f64,
 }
 
 /// Where a `traction.curve = "rheology"` curve was tabulated.

@@ -10,6 +10,8 @@ use crate::units::{Quantity, Units, INCH_M};
 
 use super::SYSTEM_ID;
 
+/// `cage.guided_by` choices (the spherical roller's).
+const CAGE_GUIDES: &[&str] = &["inner", "outer"];
 const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
 const GYRO: &[&str] = &["polar", "transverse"];
 
@@ -42,7 +44,7 @@ const CUP: [FieldSpec<TaperedInput>; 5] =
 const CONE: [FieldSpec<TaperedInput>; 5] =
     material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
 
-static FIELDS: [FieldSpec<TaperedInput>; 64] = [
+static FIELDS: [FieldSpec<TaperedInput>; 69] = [
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
         get: |t| t.geometry.roller_count as f64,
@@ -312,6 +314,90 @@ static FIELDS: [FieldSpec<TaperedInput>; 64] = [
         get: |t| t.surfaces.asperity_slope,
         set: |t, v| t.surfaces.asperity_slope = v,
     },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "cage.drag_factor",
+            "cage",
+            "Drag factor f₀",
+            Quantity::Dimensionless,
+            FieldKind::RealOr("none"),
+            (0.0, false),
+            (100.0, false),
+            Presence::Default(f64::NAN),
+            "Palmgren's f₀ of the churning (viscous drag) moment M₀ = 1e-7·f₀·(ν·n)^(2/3)·d_m³ N·mm (seed 000 eq. 9.5), mechanism viscous_drag; \"none\" (the default): no drag",
+        ),
+        get: |b| b.cage.drag_factor,
+        set: |b, v| b.cage.drag_factor = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "cage.rail_width",
+            "cage",
+            "Cage rail width W_cr",
+            Quantity::Length,
+            FieldKind::RealOr("none"),
+            (0.0, true),
+            (1.0, false),
+            Presence::Default(f64::NAN),
+            "total width of a land-guided cage's rails for their Petroff shear (seed 000 eqs. 9.3–9.4), mechanism cage_rails; \"none\" (the default): the cage is guided by its rolling elements, no rails",
+        ),
+        get: |b| b.cage.rail_width_m,
+        set: |b, v| b.cage.rail_width_m = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "cage.mean_diameter",
+            "cage",
+            "Cage rail diameter D_cr",
+            Quantity::Length,
+            FieldKind::RealOr("none"),
+            (0.0, true),
+            (10.0, false),
+            Presence::Default(f64::NAN),
+            "mean diameter of the cage rail/land interface (needed with cage.rail_width)",
+        ),
+        get: |b| b.cage.mean_diameter_m,
+        set: |b, v| b.cage.mean_diameter_m = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "cage.diametral_clearance",
+            "cage",
+            "Cage rail clearance",
+            Quantity::Length,
+            FieldKind::RealOr("none"),
+            (0.0, true),
+            (0.1, false),
+            Presence::Default(f64::NAN),
+            "diametral clearance between the cage rails and the guiding land (needed with cage.rail_width)",
+        ),
+        get: |b| b.cage.diametral_clearance_m,
+        set: |b, v| b.cage.diametral_clearance_m = v,
+    },
+    FieldSpec {
+        meta: FieldMeta::new(
+            "cage.guided_by",
+            "cage",
+            "Cage guided by",
+            Quantity::Dimensionless,
+            FieldKind::Choice(CAGE_GUIDES),
+            (0.0, false),
+            (1.0, false),
+            Presence::Default(1.0),
+            "the ring whose land guides the cage (used with cage.rail_width)",
+        ),
+        get: |b| match b.cage.guided_by {
+            crate::physics::heat::GuidingRing::Inner => 0.0,
+            crate::physics::heat::GuidingRing::Outer => 1.0,
+        },
+        set: |b, v| {
+            b.cage.guided_by = if v as usize == 0 {
+                crate::physics::heat::GuidingRing::Inner
+            } else {
+                crate::physics::heat::GuidingRing::Outer
+            }
+        },
+    },
 ];
 
 /// Rules across keys: the roller must fit inside the pitch circle and the flat inside the
@@ -319,6 +405,24 @@ static FIELDS: [FieldSpec<TaperedInput>; 64] = [
 fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
     let g = &t.geometry;
     let mut v = Vec::new();
+    // The cage's losses are part of the friction stage, which runs with a lubricant only.
+    if t.cage.is_given() && !t.lubricant.is_given() {
+        v.push((
+            "cage.drag_factor",
+            "and the cage rails need a [lubricant] (lubricant.viscosity a number): the friction stage runs only with one".to_string(),
+        ));
+    }
+    // A land-guided cage needs all its rail keys (issue 28's `[cage]` section).
+    let missing = t.cage.missing_rail_keys();
+    if !missing.is_empty() {
+        v.push((
+            "cage.rail_width",
+            format!(
+                "is given, so the cage is land-guided: give {} too (or leave cage.rail_width out for a cage guided by its rolling elements)",
+                missing.join(" and ")
+            ),
+        ));
+    }
     // θy is given one way: held at a rotation, or free under a moment (issue 29). Both
     // keys written (even `misalignment_y = 0.0`) are refused by the schema's
     // `one_holding`, with both lines; this value rule covers values set without a deck
@@ -451,7 +555,7 @@ pub const TEMPLATE_NOTES: crate::deck::form::TemplateNotes = crate::deck::form::
 /// The tapered roller deck's schema.
 pub static SCHEMA: Schema<TaperedInput> = Schema {
     system: SYSTEM_ID,
-    groups: &["geometry", "materials", "operating", "solver", "pedestal", "lubricant", "surfaces", "thermal"],
+    groups: &["geometry", "materials", "operating", "solver", "pedestal", "lubricant", "surfaces", "cage", "thermal"],
     required_groups: &["geometry", "materials", "operating"],
     fields: &FIELDS,
     material_bodies: &["roller", "cup", "cone"],

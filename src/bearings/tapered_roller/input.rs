@@ -176,6 +176,8 @@ pub struct TaperedInput {
     pub lubricant: Lubricant,
     /// The surfaces' roughness.
     pub surfaces: Surfaces,
+    /// The optional `[cage]` section: churning drag and cage-rail losses (issue 28).
+    pub cage: crate::bearings::friction::CageLosses,
 }
 
 /// The lubricant and the friction laws' constants, SI (issue 28 item 3). The key names
@@ -335,6 +337,7 @@ impl TaperedInput {
             pedestal: Pedestal::default(),
             lubricant: Lubricant::default(),
             surfaces: Surfaces::default(),
+            cage: crate::bearings::friction::CageLosses::default(),
         }
     }
 }

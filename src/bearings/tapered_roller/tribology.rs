@@ -42,18 +42,22 @@
 //! F_R = 4.318·(G·U)^0.658·W^0.0126·R·l/α, its power F_R·u_e. Raceway sliding per slice:
 //! the same mixed law as the rib with the slice's Hertz strip 2b·l.
 //!
-//! No cage and no churning are modelled (the seed's bearing has neither in its model):
-//! the friction is the contacts' and the ribs'. Heat: cone contacts → `InnerContacts`,
+//! **Cage and churning** (the deck's optional `[cage]` section, issue 28): Palmgren's
+//! churning drag `viscous_drag` (f₀, seed 000 eq. 9.5) and, for a land-guided cage, the
+//! rails' Petroff shear `cage_rails` (eqs. 9.3–9.4) at the cage speed Ω_E; the usual
+//! roller-guided tapered cage has no rails (its pocket forces only balance its drag).
+//! Without the section the friction is the contacts' and the ribs' alone. Heat: cone contacts → `InnerContacts`,
 //! cup → `OuterContacts`, ribs → `Flanges`.
 
 use super::analysis::Analysis;
 use super::contact::SliceResult;
 use super::input::{Lubricant, Surfaces};
-use crate::bearings::friction::{FrictionBreakdown, Mechanism};
+use crate::bearings::friction::{CageState, FrictionBreakdown, Mechanism};
 use crate::physics::contact::point::{CurvatureSum, HertzMethod, HertzPointContact};
 use crate::physics::lubrication::film::{dowson_higginson_min, pan_hamrock_central, FilmInputs};
 use crate::physics::lubrication::film_point::{hamrock_dowson_ellipticity, PointFilmInputs};
 use crate::physics::lubrication::greenwood_tripp::Roughness;
+use crate::physics::lubrication::rolling_resistance;
 use crate::thermal::HeatSource;
 
 /// One raceway slice's film and friction, SI.
@@ -198,17 +202,10 @@ fn mixed_force_n(
 }
 
 /// Goksem–Hargreaves EHL rolling resistance of a line contact, N:
-/// F_R = 4.318·(G·U)^0.658·W^0.0126·R·l/α (with α > 0).
+/// F_R = 4.318·(G·U)^0.658·W^0.0126·R·l/α (`physics::lubrication::rolling_resistance`);
+/// 0 N for an unloaded or non-rolling slice (it dissipates nothing) and for α = 0.
 pub fn rolling_force_n(inputs: &FilmInputs, length_m: f64) -> f64 {
-    let Some(g) = inputs.groups() else {
-        return 0.0;
-    };
-    let gu = g.material * g.speed;
-    if !(gu > 0.0) {
-        return 0.0;
-    }
-    4.318 * gu.powf(0.658) * g.load.powf(0.0126) * inputs.reduced_radius_m * length_m
-        / inputs.pressure_viscosity_pa_inv
+    rolling_resistance::line_force_n(inputs, length_m).unwrap_or(0.0)
 }
 
 /// Sliding speed at the rib in closed form, m/s: (Ω₂ − Ω_E)·sin ψ·(R₂ − r)/tan t.
@@ -413,6 +410,19 @@ fn run(a: &Analysis) -> Result<Tribology, TribologyError> {
         power_w,
         heat: Some(heat),
     };
+    // The `[cage]` section: churning drag and a land-guided cage's rails (issue 28,
+    // `bearings::friction::CageLosses`), at the inlet viscosity and the cage speed Ω_E.
+    let cage = input
+        .cage
+        .mechanisms(&CageState {
+            viscosity_pa_s: eta,
+            density_kg_m3: lub.density_kg_m3,
+            inner_rad_s: op.inner_speed_rad_s,
+            outer_rad_s: op.outer_speed_rad_s,
+            cage_rad_s: dy.cage_rad_s,
+            pitch_diameter_m: g.pitch_diameter_m,
+        })
+        .map_err(TribologyError)?;
     let friction = FrictionBreakdown::from_mechanisms(
         op.inner_speed_rad_s - op.outer_speed_rad_s,
         vec![
@@ -441,7 +451,10 @@ fn run(a: &Analysis) -> Result<Tribology, TribologyError> {
                 sum(&|r| r.flange.power_w),
                 HeatSource::Flanges,
             ),
-        ],
+        ]
+        .into_iter()
+        .chain(cage)
+        .collect(),
     );
     let mut min: Option<FilmMin> = None;
     let mut min_race: [Option<FilmMin>; 2] = [None, None];

@@ -13,6 +13,7 @@ pub mod houpert;
 pub mod lamina_friction;
 pub mod mixed_friction;
 pub mod rheology;
+pub mod rolling_resistance;
 pub mod traction;
 pub mod traction_curve;
 pub mod walther;
