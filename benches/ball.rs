@@ -4,7 +4,9 @@
 //! target of its own); the quasi-static ball dynamics on Bearing B at 9 500 rpm (target
 //! < 2 ms); the time simulation of B under 500 N radial load, 20 balls × 5 orbits
 //! (target < 100 ms; also with the free orbit, no target of its own); A's load distribution under 500 N radial load (target < 0.3 ms);
-//! a 19-speed skid sweep of B with the quasi-static dynamics (target < 50 ms). The
+//! a 19-speed skid sweep of B with the quasi-static dynamics (target < 50 ms); A's ring
+//! in five DOF under a radial load and a moment, its tilt solved, with the analytic 5×5
+//! stiffness (issue 29: ≤ 2 × the radial solve's 144 µs, so < 288 µs). The
 //! dynamics benches time `dynamics::run` alone, from a race-control analysis solved once
 //! outside the loop.
 
@@ -14,6 +16,7 @@ use rollbench::bearings::angular_ball::dynamics;
 use rollbench::bearings::angular_ball::geometry::BallGeometry;
 use rollbench::bearings::angular_ball::input::{Method, Orbit, PreloadMode};
 use rollbench::bearings::angular_ball::load_distribution::{self, Axial, Conditions, Tilt};
+use rollbench::bearings::angular_ball::stiffness::{self, StiffnessMethod};
 use rollbench::bearings::angular_ball::BallInput;
 use rollbench::numerics::cancel::Cancel;
 
@@ -76,6 +79,33 @@ fn bearing_a(c: &mut Criterion) {
                 .unwrap_or_else(|e| panic!("{e}"))
         })
     });
+}
+
+/// Issue 29's speed target (≤ 2 × the radial solve's 144 µs): Bearing A at its
+/// 10 000 rpm under a 2 000 N radial load and a 30 N·m moment (the case of
+/// `dof_tests::moment_and_tilt_round_trip`), the ring's tilt solved against the moment,
+/// then the analytic 5×5 stiffness at that point.
+fn bearing_a_five_dof(c: &mut Criterion) {
+    let mut input = BallInput::chen_a();
+    input.operating.radial_load_n = 2_000.0;
+    let geom = BallGeometry::new(&input).unwrap_or_else(|e| panic!("{e}"));
+    let cond = Conditions {
+        tilt: Tilt::Moment(30.0),
+        ..conditions(&input, &geom)
+    };
+    c.bench_function(
+        "ball_a_five_dof_radial_2000_n_moment_30_nm_with_stiffness",
+        |b| {
+            b.iter(|| {
+                let load =
+                    load_distribution::solve(&geom, std::hint::black_box(&cond), Cancel::NONE)
+                        .unwrap_or_else(|e| panic!("{e}"));
+                let k = stiffness::stiffness(&geom, &load, StiffnessMethod::Analytic)
+                    .unwrap_or_else(|e| panic!("{e}"));
+                (load, k)
+            })
+        },
+    );
 }
 
 /// The 19-speed skid sweep with dynamics (issue 16: < 50 ms): Bearing B from 6 000 to
@@ -154,5 +184,11 @@ fn bearing_b_dynamics(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bearing_a, bearing_b_dynamics, skid_sweep);
+criterion_group!(
+    benches,
+    bearing_a,
+    bearing_a_five_dof,
+    bearing_b_dynamics,
+    skid_sweep
+);
 criterion_main!(benches);

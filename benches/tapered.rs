@@ -1,12 +1,16 @@
 //! Criterion benchmarks of the tapered roller system (issue 17): one load case
 //! (equilibrium + analytic 5×5 stiffness) of the seed's sample at 21 and 41 slices, under
 //! Load Condition 1 (pure thrust: one distinct roller) and 2 (700 lbf radial: 19 distinct
-//! rollers), 20 000 rpm; and the finite-difference check of one case.
+//! rollers), 20 000 rpm; and the finite-difference check of one case. Under applied
+//! moments (issue 29: ≤ 2 ms at 21 slices): Load Condition 2 with 120 N·m, and
+//! Nguyen-Schäfer's 32007-X-XL (`decks/trb_32007.toml`), the tilt solved.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::tapered_roller::bearing::Bearing;
+use rollbench::bearings::tapered_roller::deck::SCHEMA;
 use rollbench::bearings::tapered_roller::input::{StiffnessMethod, TaperedInput};
 use rollbench::bearings::tapered_roller::system::TaperedSession;
+use rollbench::deck::form::Form;
 use rollbench::units::LBF_N;
 
 fn case(slices: usize, radial_lbf: f64) -> TaperedInput {
@@ -35,6 +39,30 @@ fn load_case(c: &mut Criterion) {
     c.bench_function("tapered_lc2_21_slices_finite_difference", |b| {
         b.iter(|| bearing.stiffness_fd(std::hint::black_box(&sol)))
     });
+}
+
+/// Issue 29's speed target for moments (≤ 2 ms at 21 slices): equilibrium with the tilt
+/// solved against the moment, and the analytic 5×5 stiffness at the tilted ring.
+fn moment_case(c: &mut Criterion) {
+    let mut lc2 = case(21, 700.0);
+    lc2.operating.moment_nm = 120.0;
+    let deck = include_str!("../decks/trb_32007.toml");
+    let n32007 = Form::parse(deck, "trb_32007.toml", &SCHEMA)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .value;
+    assert_eq!(n32007.solver.slices, 21);
+    for (name, input) in [
+        ("tapered_lc2_moment_120_nm_21_slices", lc2),
+        ("tapered_32007_moment_21_slices", n32007),
+    ] {
+        c.bench_function(name, |b| {
+            b.iter(|| {
+                let bearing =
+                    Bearing::new(std::hint::black_box(&input)).unwrap_or_else(|e| panic!("{e}"));
+                bearing.solve().unwrap_or_else(|e| panic!("{e}"))
+            })
+        });
+    }
 }
 
 /// A 21-point speed sweep (0–20 000 rpm, Load Condition 2, 21 slices), each point
@@ -109,5 +137,12 @@ fn lubrication(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, load_case, speed_sweep, session_sweep, lubrication);
+criterion_group!(
+    benches,
+    load_case,
+    moment_case,
+    speed_sweep,
+    session_sweep,
+    lubrication
+);
 criterion_main!(benches);

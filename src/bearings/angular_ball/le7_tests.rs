@@ -76,10 +76,18 @@ fn le7_without_gyroscopic_friction_matches_openjones() {
 
 /// The deck as shipped (`friction_split = "controlling-race"`: Harris's λ_o = 2, λ_i = 0,
 /// OpenJones's outer race control) through the whole analysis: within 0.03 % of
-/// OpenJones's full model (measured: α_i +4e-5, α_o −2.1e-4, Q_i −3.7e-5, Q_o +1.5e-4;
-/// the 2e-4 on α_o appears only with the friction on and is not traced to a term: both
-/// codes take the friction 2M_g/D at the outer contact); the proportional split (Chen's,
-/// the default) moves Q_i by more than 0.1 %, so the comparison tells the two apart.
+/// OpenJones's full model (measured: α_i +4e-5, α_o −2.1e-4, Q_i −3.7e-5, Q_o +1.5e-4);
+/// the proportional split (Chen's, the default) moves Q_i by more than 0.1 %, so the
+/// comparison tells the two apart.
+///
+/// The 2e-4 on α_o is traced (session 9): OpenJones puts the ball centre on the pitch
+/// circle, d_m/2, in its race-control speeds (γ′ = D/d_m) and in its centrifugal force
+/// (½ m d_m ω_m²); here both use the loaded ball's own centre radius R_b, 19.2605 mm
+/// against 19.25 (+5.5e-4), so ω_m is +1.3e-4, F_c +8.1e-4 and M_g +6.1e-4 above
+/// OpenJones's (which prints M_g 0.090917 N·m, ω_m 2 143.29 rad/s, F_c 179.49 N). With
+/// R_b replaced by d_m/2 in a scratch build, the four gaps fell to ≤ 2.7e-6 (kinematics
+/// alone at d_m/2: α_o −1.0e-4, so each term is about half). It shows with the friction
+/// on because M_g turns α_o by 1.5°; R_b is the more exact reading, so it is kept.
 #[test]
 fn le7_full_model_matches_openjones() {
     let want = [26.232633, 18.605438, 604.049415, 768.816735];

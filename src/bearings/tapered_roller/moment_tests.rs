@@ -99,10 +99,10 @@ fn moment_and_rotation_together_are_refused() {
 /// (c_l = 35 948·L^(8/9)) with Reusner's edge factors and a logarithmic profile; this
 /// model's is Lundberg's slices with a circular crown (assumed, the book gives none), so
 /// 12 % on loads and pressures, 12 % on the angular stiffness (measured: −9.3 %, −11 %,
-/// +11 %, +9 %, +10 %). The book's K_r 2.58e5 and K_a 4.34e4 N/mm are not compared:
-/// the tangent K_xx, K_zz here are 8.0e5 and 9.8e4 N/mm, the secants F_r/δx and F_a/|δz|
-/// 4.9e5 and 5.9e4; which the book prints, and about which point, is not stated in the
-/// summary this project holds (docs/tapered.md).
+/// +11 %, +9 %, +10 %). The book's K_r 2.58e5 and K_a 4.34e4 N/mm are not compared: no
+/// reading of this model's matrix reproduces both (tangent K_xx, K_zz 8.0e5, 9.8e4;
+/// secants F_r/δx, F_a/|δz| 4.9e5, 5.9e4; condensed 1/C_ii 2.0e4, 2.8e3; the table of
+/// every candidate and why the book's are most likely secants is in docs/tapered.md).
 #[test]
 fn nguyen_schaefer_32007_with_moment() {
     let deck = include_str!("../../../decks/trb_32007.toml");
