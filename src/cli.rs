@@ -165,6 +165,37 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// A design study over one deck (docs/studies.md): a grid of several keys, a Monte
+    /// Carlo or Latin-hypercube tolerance sample, or a duty cycle, from a study file
+    /// (TOML: `deck`, `outputs`, and one of `[grid]`, `[sample]`, `[duty]`); every point
+    /// solved in parallel without the transient; `--shard I/N` for a cluster, then
+    /// `rollbench study merge`.
+    #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+    Study {
+        /// The study file (TOML), e.g. decks/chen_b.study.toml.
+        #[arg(required = true)]
+        file: Option<PathBuf>,
+        /// Output format: text (the summary), csv, json (rows and summary) or jsonl
+        /// (a header line, then one row a line). With csv, json or jsonl the summary goes
+        /// to standard error.
+        #[arg(long, value_enum, default_value_t = StudyFormat::Text)]
+        format: StudyFormat,
+        /// Write to FILE instead of standard output, as `run --output` does; with
+        /// --shard, the part (JSONL) to create or resume.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+        /// Compute only the points i ≡ I (mod N), written as a part (JSONL) to --output
+        /// and resumed from it when re-run; `auto` reads SLURM_ARRAY_TASK_ID /
+        /// SLURM_ARRAY_TASK_COUNT or JOB_COMPLETION_INDEX (with --shards or ROLLBENCH_SHARDS).
+        #[arg(long, value_name = "I/N|auto")]
+        shard: Option<String>,
+        /// The number of shards for `--shard auto` under a Kubernetes Indexed Job (its
+        /// completions), or to override SLURM_ARRAY_TASK_COUNT.
+        #[arg(long, value_name = "N", requires = "shard")]
+        shards: Option<usize>,
+        #[command(subcommand)]
+        action: Option<StudyAction>,
+    },
     /// Double-row spherical roller decks: the osculation optimiser (issue 27): the relative
     /// radii of `[optimise]` (k_ci = R'_Ci/R_Ci, k_w = R'_W/R_W) that minimise the weighted
     /// total friction loss over its load cases, on a grid then a Nelder–Mead polish.
@@ -178,6 +209,45 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
     },
+}
+
+/// `rollbench study` subcommands.
+#[derive(Debug, Subcommand)]
+pub enum StudyAction {
+    /// Merge the parts of a sharded study: checks that every index is present exactly
+    /// once and that every part comes from the same study (file, deck and version), then
+    /// writes the rows in index order and the summary.
+    Merge {
+        /// The parts (JSONL, from `rollbench study FILE --shard I/N --output PART`).
+        #[arg(required = true, value_name = "PART")]
+        parts: Vec<PathBuf>,
+        /// Output format (as `rollbench study`).
+        #[arg(long, value_enum, default_value_t = StudyFormat::Text)]
+        format: StudyFormat,
+        /// Write to FILE instead of standard output, as `run --output` does.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
+}
+
+/// Formats of `rollbench study`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StudyFormat {
+    Text,
+    Csv,
+    Json,
+    Jsonl,
+}
+
+/// A study's result in `format` (text: the summary).
+pub fn study_text(r: &crate::studies::study::StudyResult, format: StudyFormat) -> String {
+    use crate::studies::study::{output, summary};
+    match format {
+        StudyFormat::Text => summary::text(r),
+        StudyFormat::Csv => output::csv(r),
+        StudyFormat::Json => output::json(r),
+        StudyFormat::Jsonl => output::jsonl(r),
+    }
 }
 
 /// Load direction of `rollbench losses`.

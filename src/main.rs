@@ -7,7 +7,7 @@ use std::path::Path;
 
 use clap::Parser;
 use rollbench::bearings::{self, Case, RunOptions};
-use rollbench::cli::{exit, Cli, Command, Format, TableFormat, UnitsArg};
+use rollbench::cli::{exit, Cli, Command, Format, StudyFormat, TableFormat, UnitsArg};
 use rollbench::deck::Units;
 use rollbench::files::{self, Plan};
 use rollbench::numerics::cancel::Cancel;
@@ -201,6 +201,8 @@ fn main() -> ExitCode {
             Some(Command::Template { .. }) => Some("template"),
             Some(Command::Validate { .. }) => Some("validate"),
             Some(Command::Keys { .. }) => Some("keys"),
+            // A study's values live in its file, so that its hash says what was run.
+            Some(Command::Study { .. }) => Some("study"),
             _ => None,
         };
         if let Some(cmd) = ignored {
@@ -484,6 +486,30 @@ fn main() -> ExitCode {
             format,
             output,
         }) => sweep(&deck, &cli.set, &set_range, cold, format, output.as_deref()),
+        Some(Command::Study {
+            file,
+            format,
+            output,
+            shard,
+            shards,
+            action,
+        }) => match action {
+            Some(rollbench::cli::StudyAction::Merge {
+                parts,
+                format,
+                output,
+            }) => study_merge(&parts, format, output.as_deref()),
+            None => match file {
+                Some(file) => match shard {
+                    Some(spec) => study_shard(&file, &spec, shards, output.as_deref()),
+                    None => study(&file, format, output.as_deref()),
+                },
+                None => {
+                    eprintln!("study: give a study file, or `study merge PART…`");
+                    ExitCode::from(exit::USAGE)
+                }
+            },
+        },
         Some(Command::Bench { deck, format }) => {
             match rollbench::studies::fidelity::bench_command(
                 deck.as_deref(),
@@ -595,4 +621,168 @@ fn sweep(
     } else {
         ExitCode::SUCCESS
     }
+}
+
+/// The summary on standard error when the result itself goes elsewhere in another format.
+fn study_summary_to_stderr(result: &rollbench::studies::study::StudyResult, format: StudyFormat) {
+    if format != StudyFormat::Text {
+        eprint!("{}", rollbench::studies::study::summary::text(result));
+    }
+}
+
+/// `rollbench study FILE`: every point locally, in parallel (see
+/// [`rollbench::studies::study`]). A bad study file, deck, key or output exits with
+/// [`exit::INVALID_INPUT`] before anything is solved; failed points are rows with their
+/// reason; a study in which every point failed writes no file and exits
+/// [`exit::SOLVE_FAILED`].
+fn study(file: &Path, format: StudyFormat, output: Option<&Path>) -> ExitCode {
+    use std::io::IsTerminal;
+    let plan = match plan_outputs(&[("--output", output)], file) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let prepared = match rollbench::studies::study::prepare(file) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let result = prepared.run(std::io::stderr().is_terminal());
+    let failed = result.failures();
+    if failed == result.rows.len() {
+        eprintln!(
+            "study: none of the {failed} points solved{} (first failure: {})",
+            output.map_or(String::new(), |p| format!(
+                "; --output {} is not written",
+                p.display()
+            )),
+            result
+                .rows
+                .iter()
+                .find_map(|r| r.failure.as_deref())
+                .unwrap_or("unknown")
+        );
+        return ExitCode::from(exit::SOLVE_FAILED);
+    }
+    let text = rollbench::cli::study_text(&result, format);
+    let written = commit(&plan, &[text.as_bytes()]);
+    if written != ExitCode::SUCCESS {
+        return written;
+    }
+    study_summary_to_stderr(&result, format);
+    ExitCode::SUCCESS
+}
+
+/// `rollbench study FILE --shard I/N --output PART`: the shard's points into its part,
+/// resumed from it (see [`rollbench::studies::study::part`]). Failed points are rows (the
+/// exit code stays 0, so a dependent merge job runs); a refused part or shard exits 1.
+fn study_shard(file: &Path, spec: &str, shards: Option<usize>, output: Option<&Path>) -> ExitCode {
+    use rollbench::studies::study::{part, progress_bar};
+    use std::io::IsTerminal;
+    let Some(output) = output.filter(|p| p.as_os_str() != "-") else {
+        eprintln!("--shard {spec}: give --output PART (a file: the part is appended to as points finish, and resumed from)");
+        return ExitCode::from(exit::USAGE);
+    };
+    if let Err(code) = plan_outputs(&[("--output", Some(output))], file) {
+        return code;
+    }
+    let shard = match part::Shard::parse(spec, shards, &|k| std::env::var(k).ok()) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::USAGE);
+        }
+    };
+    let prepared = match rollbench::studies::study::prepare(file) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let n = shard.indices(prepared.plan.len()).len();
+    let bar = progress_bar(
+        std::io::stderr().is_terminal(),
+        n,
+        &format!("{} shard {}", file.display(), shard.label()),
+    );
+    let run = part::run_shard(&prepared, shard, output, &|| {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    match run {
+        Ok(r) => {
+            eprintln!(
+                "study {} shard {}: {} points ({} resumed from {}{}, {} computed), {} failed",
+                file.display(),
+                shard.label(),
+                r.points,
+                r.kept,
+                output.display(),
+                if r.discarded_torn_line {
+                    ", a torn last line discarded"
+                } else {
+                    ""
+                },
+                r.computed,
+                r.failures
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(exit::INVALID_INPUT)
+        }
+    }
+}
+
+/// `rollbench study merge PART… [--format F] [--output FILE]`.
+fn study_merge(
+    parts: &[std::path::PathBuf],
+    format: StudyFormat,
+    output: Option<&Path>,
+) -> ExitCode {
+    let inputs: Vec<(&str, &Path)> = parts
+        .iter()
+        .map(|p| ("a part being merged", p.as_path()))
+        .collect();
+    if let Err(e) = files::remove_temporaries_on_signals() {
+        eprintln!("warning: a signal may leave a temporary file beside the outputs: {e}");
+    }
+    let plan = match files::plan(&[("--output", output)], &inputs) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let mut texts = Vec::with_capacity(parts.len());
+    for p in parts {
+        match std::fs::read_to_string(p) {
+            Ok(t) => texts.push((p.display().to_string(), t)),
+            Err(e) => {
+                eprintln!("{}: cannot read: {e}", p.display());
+                return ExitCode::from(exit::INVALID_INPUT);
+            }
+        }
+    }
+    let result = match rollbench::studies::study::part::merge(&texts) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("study merge: {e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let text = rollbench::cli::study_text(&result, format);
+    let written = commit(&plan, &[text.as_bytes()]);
+    if written != ExitCode::SUCCESS {
+        return written;
+    }
+    study_summary_to_stderr(&result, format);
+    ExitCode::SUCCESS
 }

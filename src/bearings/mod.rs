@@ -211,6 +211,11 @@ pub trait CaseDeck {
     /// The case with `key` set to `value` (deck units), the whole deck re-validated;
     /// comments and layout kept.
     fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors>;
+    /// The case with every `key=value` assignment set (deck units), then validated once,
+    /// as `--set` does: the order of the assignments never changes the verdict, and a pair
+    /// of keys that must change together (speed and cage speed) is never judged half-set.
+    /// A study's point with several keys is built this way.
+    fn with_values(&self, assignments: &[String]) -> Result<Box<dyn Case>, DeckErrors>;
     /// The deck's text (what a save writes).
     fn text(&self) -> String;
     /// Saves the deck (atomic, previous file kept as `.bak`; see [`crate::files`]).
@@ -259,6 +264,12 @@ impl<C: FormCase> CaseDeck for C {
     fn with_value(&self, key: &str, value: &str) -> Result<Box<dyn Case>, DeckErrors> {
         let mut form = self.form().clone();
         form.set(key, value)?;
+        self.with_form(form)
+    }
+
+    fn with_values(&self, assignments: &[String]) -> Result<Box<dyn Case>, DeckErrors> {
+        let mut form = self.form().clone();
+        form.apply_assignments(assignments)?;
         self.with_form(form)
     }
 

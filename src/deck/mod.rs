@@ -25,6 +25,9 @@ pub mod thermal;
 
 pub use crate::units::Units;
 pub use error::{DeckError, DeckErrors, Location};
+/// A toml_edit syntax error as a [`DeckError::Syntax`] (file, line, column, the line with a
+/// caret): for other TOML files read like decks (study files).
+pub(crate) use form::syntax_error as syntax_error_of;
 pub use form::{
     format_short, material_preset, FieldKind, FieldMeta, FieldSpec, Form, MaterialAccess, Presence,
     Schema, TemplateNotes, MATERIAL_PRESETS,

@@ -5,4 +5,5 @@
 //! reaches a system only through `crate::bearings` (its cases, sessions and key outputs).
 
 pub mod fidelity;
+pub mod study;
 pub mod sweep;

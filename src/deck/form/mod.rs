@@ -643,6 +643,7 @@ pub fn schema_problems<T>(schema: &Schema<T>) -> Vec<String> {
 mod edit;
 mod keys;
 mod validate;
+pub(crate) use validate::syntax_error;
 mod write;
 
 pub(crate) use edit::*;
