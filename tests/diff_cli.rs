@@ -127,7 +127,7 @@ fn two_systems_compare_only_what_they_share() {
     assert_eq!(code, 0, "{err}");
     assert!(text.contains("values in A's deck units (SI)"), "{text}");
     assert!(
-        text.contains("per-element tables: not compared: A is a"),
+        text.contains("per-element tables: not compared: two systems (A: angular-contact"),
         "{text}"
     );
     assert!(text.contains("Speeds · cage"), "{text}");

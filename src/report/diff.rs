@@ -150,7 +150,7 @@ pub fn compare(a: Side, b: Side, u: Units) -> Diff {
 fn element_rows(a: Side, b: Side, u: Units) -> Result<Vec<Row>, String> {
     if a.view.system != b.view.system {
         return Err(format!(
-            "not compared: A is a {}, B a {}",
+            "not compared: two systems (A: {}; B: {})",
             a.system, b.system
         ));
     }

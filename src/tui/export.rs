@@ -88,11 +88,14 @@ pub fn table_csv(t: &Table, u: Units) -> String {
     out
 }
 
+/// A series of a panel: its name, its panel's y axis label, its points.
+type NamedSeries<'a> = (String, &'a str, &'a [(f64, f64)]);
+
 /// A chart's panels (display units, as drawn): one shared x column when every series
 /// has the same x values, else an x and a y column per series; a series' y header is
 /// its name and its panel's y axis (`ω_t · ω_t rad/s`).
 pub fn chart_csv(panels: &[ChartSeries]) -> String {
-    let series: Vec<(String, &str, &[(f64, f64)])> = panels
+    let series: Vec<NamedSeries> = panels
         .iter()
         .flat_map(|p| {
             p.series
