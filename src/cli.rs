@@ -44,6 +44,30 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         series: Option<PathBuf>,
     },
+    /// Two designs side by side: the bearing-level answers of decks A and B (and their
+    /// per-element tables when both are one system with as many elements), with the
+    /// differences B − A, absolute and in %, in A's deck units. Decks of two systems are
+    /// compared on the Summary lines both report; the rest is listed as not compared.
+    /// `--set` applies to both decks, `--set-b` to B only.
+    Diff {
+        /// Deck A (TOML): the baseline.
+        a: PathBuf,
+        /// Deck B (TOML): the design compared with it.
+        b: PathBuf,
+        /// Report format.
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write the comparison to FILE instead of standard output (as `run --output`).
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+        /// Override a value of deck B only (KEY=VALUE in B's units; repeatable): B is A
+        /// edited when both name the same file.
+        #[arg(long = "set-b", value_name = "KEY=VALUE")]
+        set_b: Vec<String>,
+        /// Skip the loss-of-oil thermal transients.
+        #[arg(long)]
+        no_transient: bool,
+    },
     /// Validate a deck; exit 1 with messages if it is invalid.
     Check {
         /// Deck file (TOML).

@@ -152,6 +152,74 @@ fn progress_bar() -> Bar {
     }
 }
 
+/// `rollbench diff A B`: both decks solved (`--set` on both, `--set-b` on B), compared
+/// by [`report::diff`] in A's deck units, written through the plan (neither deck may be
+/// the output).
+fn diff(
+    a: &Path,
+    b: &Path,
+    sets: &[String],
+    set_b: &[String],
+    format: Format,
+    output: Option<&Path>,
+    no_transient: bool,
+) -> ExitCode {
+    if let Err(e) = files::remove_temporaries_on_signals() {
+        eprintln!("warning: a signal may leave a temporary file beside the output: {e}");
+    }
+    let plan = match files::plan(&[("--output", output)], &[("deck A", a), ("deck B", b)]) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(exit::INVALID_INPUT);
+        }
+    };
+    let options = RunOptions {
+        skip_transient: no_transient,
+    };
+    let (case_a, sol_a) = match load_and_solve(a, sets, options) {
+        Ok(x) => x,
+        Err(code) => return code,
+    };
+    let sets_b: Vec<String> = sets.iter().chain(set_b).cloned().collect();
+    let (case_b, sol_b) = match load_and_solve(b, &sets_b, options) {
+        Ok(x) => x,
+        Err(code) => return code,
+    };
+    let (view_a, view_b) = (sol_a.view(), sol_b.view());
+    let name_a = a.display().to_string();
+    let name_b = if set_b.is_empty() {
+        b.display().to_string()
+    } else {
+        format!("{} --set-b {}", b.display(), set_b.join(" --set-b "))
+    };
+    fn side<'a>(
+        name: &'a str,
+        case: &dyn Case,
+        view: &'a bearings::view::View,
+    ) -> report::diff::Side<'a> {
+        report::diff::Side {
+            name,
+            system: case.system().title(),
+            element: case.system().element_name(),
+            view,
+        }
+    }
+    let d = report::diff::compare(
+        side(&name_a, case_a.as_ref(), &view_a),
+        side(&name_b, case_b.as_ref(), &view_b),
+        case_a.units(),
+    );
+    let text = match format {
+        Format::Text => report::diff::to_text(&d),
+        Format::Json => {
+            serde_json::to_string_pretty(&report::diff::to_json(&d)).unwrap_or_default() + "\n"
+        }
+        Format::Csv => report::diff::to_csv(&d),
+    };
+    commit(&plan, &[text.as_bytes()])
+}
+
 /// The report format of a CLI format.
 fn report_format(format: Format) -> report::Format {
     match format {
@@ -355,6 +423,22 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Some(Command::Diff {
+            a,
+            b,
+            format,
+            output,
+            set_b,
+            no_transient,
+        }) => diff(
+            &a,
+            &b,
+            &cli.set,
+            &set_b,
+            format,
+            output.as_deref(),
+            no_transient,
+        ),
         Some(Command::Check { deck }) => match load_case(&deck, &cli.set) {
             Ok(_) => {
                 println!("{}: ok", deck.display());

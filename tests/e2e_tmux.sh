@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end run of the real workbench binary in an 80×24 tmux session: switch panes,
 # move the roller selection, open the stepper, edit a deck value (valid and invalid),
-# then quit through the unsaved-changes prompt. Then, in a shell, each termination signal
+# export a pane and the report (refusing to replace a file without consent), then quit
+# through the unsaved-changes prompt. Then, in a shell, each termination signal
 # (TERM, INT, HUP, QUIT) sent to the workbench restores the terminal (echo, canonical
 # mode, main screen, cursor shown) and exits with 128 + signal. Asserts on
 # `tmux capture-pane` text and the pane's flags.
@@ -245,6 +246,33 @@ keys 4
 wait_for "Skid · skidding from"
 wait_for "threshold"
 absent "9780 rpm"
+# 8d. Export (issue 30 item 20): x on the Balls table offers ball_balls.csv beside the
+#     deck and writes every column with its unit in the header; x again asks before
+#     replacing the file (any key but y goes back to the prompt, the file kept); X writes
+#     the report as `run` writes it (JSON by the offered name's extension).
+keys 3
+keys x
+wait_for "Export the pane to"
+wait_for "ball_balls.csv"
+keys Enter
+wait_for "wrote ball_balls.csv"
+[ -f "$WORK/ball_balls.csv" ] || fail "ball_balls.csv was not written"
+head -n 1 "$WORK/ball_balls.csv" | grep -qF "Qi N" || fail "the CSV header lacks 'Qi N'"
+printf 'keep\n' > "$WORK/ball_balls.csv"
+keys x
+keys Enter
+wait_for "File exists"
+keys n
+wait_for "Export the pane to"
+keys Escape
+absent "Export the pane to"
+[ "$(cat "$WORK/ball_balls.csv")" = keep ] || fail "the export replaced a file without consent"
+keys X
+wait_for "Report to"
+wait_for "ball_report.json"
+keys Enter
+wait_for "wrote ball_report" 60
+grep -qF '"balls"' "$WORK/ball_report.json" || fail "the report lacks its balls"
 keys q
 wait_for "Unsaved changes"
 keys y

@@ -214,6 +214,38 @@ impl Column {
         self
     }
 
+    /// The column's header in a file written in display units `u` (an export, a diff):
+    /// a column the pane shows under its pane header (`Qi lbf`), a yes/no or state column
+    /// with its codes' names (`skid (0 —; 1 yes)`); a CSV-only column under its machine
+    /// key, whose last word names its SI unit (`inner_normal_load_n`).
+    pub fn header_in(&self, u: Units) -> String {
+        match self.screen {
+            Some(Screen {
+                label,
+                display: Display::Choice(names),
+                ..
+            }) => {
+                let legend: Vec<String> = names
+                    .iter()
+                    .enumerate()
+                    .map(|(i, n)| format!("{i} {n}"))
+                    .collect();
+                format!("{label} ({})", legend.join("; "))
+            }
+            Some(s) => s.display.header(s.label, u),
+            None => self.key.to_string(),
+        }
+    }
+
+    /// A value of this column as written under [`Column::header_in`]: in the pane's
+    /// display unit `u` when the pane shows it, else SI as its key says.
+    pub fn value_in(&self, v: f64, u: Units) -> f64 {
+        match self.screen {
+            Some(s) => s.display.convert(v, u),
+            None => v,
+        }
+    }
+
     /// A pane-only column.
     pub const fn screen_only(key: &'static str, quantity: Quantity, screen: Screen) -> Column {
         Column {
@@ -851,6 +883,30 @@ impl View {
     /// The table called `id`.
     pub fn table(&self, id: &str) -> Option<&Table> {
         self.tables.iter().find(|t| t.id == id)
+    }
+
+    /// The element pane's table with every column the view has for its elements: the
+    /// screen table's, then those of another table of the same rows (a system that keeps
+    /// its CSV report's columns apart, as the spherical roller does) whose keys it lacks.
+    /// What an export or a diff of the elements holds.
+    pub fn element_table(&self) -> Option<Table> {
+        let screen = self.screen_table()?;
+        let mut t = screen.clone();
+        for other in &self.tables {
+            if other.id == screen.id || other.rows.len() != screen.rows.len() {
+                continue;
+            }
+            for (c, col) in other.columns.iter().enumerate() {
+                if col.csv.is_none() || t.columns.iter().any(|k| k.key == col.key) {
+                    continue;
+                }
+                t.columns.push(col.clone());
+                for (row, from) in t.rows.iter_mut().zip(&other.rows) {
+                    row.push(from.get(c).copied().flatten());
+                }
+            }
+        }
+        Some(t)
     }
 
     /// The table a pane shows: the first with columns meant for the screen.

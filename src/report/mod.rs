@@ -3,6 +3,7 @@
 //! system-independent [`View`] table. [`Disp`] holds the display units of a text report.
 
 pub mod csv;
+pub mod diff;
 pub mod stiffness;
 pub mod stiffness_export;
 

@@ -12,10 +12,13 @@
 
 pub mod app;
 pub mod deck_io;
+pub mod export;
 pub mod render;
 pub mod view_model;
 pub mod worker;
 
+#[cfg(test)]
+mod export_tests;
 #[cfg(test)]
 mod summary_tests;
 #[cfg(test)]
@@ -266,6 +269,23 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 // symlink_metadata: a dangling link or a FIFO exists too
                 let exists = std::fs::symlink_metadata(&path).is_ok();
                 app.handle(AppEvent::SaveTargetChecked { path, exists })
+            }
+            Command::CheckExportTarget { path, what } => {
+                let exists = std::fs::symlink_metadata(&path).is_ok();
+                app.handle(AppEvent::ExportTargetChecked { path, what, exists })
+            }
+            Command::WriteExport {
+                path,
+                contents,
+                what,
+            } => {
+                let r = export::write(&path, app.path.as_deref(), contents.as_bytes())
+                    .map(|w| format!("wrote {w}: {what}"));
+                app.handle(AppEvent::Exported(r))
+            }
+            Command::ExportReport { path, deck, format } => {
+                worker.export_report(path, deck.case(), format, app.path.clone());
+                Vec::new()
             }
             Command::Open(path) => {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));

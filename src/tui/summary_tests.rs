@@ -17,7 +17,7 @@ use crate::numerics::cancel::Cancel;
 use crate::units::Units;
 
 /// The value a [`AnswerLine::json`] spec names in `doc` (see its doc for the syntax).
-fn resolve(doc: &Value, spec: &str) -> Option<f64> {
+pub(super) fn resolve(doc: &Value, spec: &str) -> Option<f64> {
     let (spec, scale) = match spec.split_once(" ×") {
         Some((s, k)) => (s, k.trim().parse::<f64>().ok()?),
         None => (spec, 1.0),

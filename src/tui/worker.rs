@@ -84,6 +84,8 @@ struct Job {
 /// Handle to the solver thread, owned by the UI loop.
 pub struct Worker {
     jobs: Option<Sender<Job>>,
+    /// The UI's channel, for the report exports' threads.
+    events: Sender<AppEvent>,
     last_cancel: Option<Arc<AtomicBool>>,
     handle: Option<JoinHandle<()>>,
 }
@@ -92,11 +94,13 @@ impl Worker {
     /// Starts the solver thread; results arrive on `events` as [`AppEvent::Solved`].
     pub fn spawn(events: Sender<AppEvent>, solver: Solver) -> std::io::Result<Worker> {
         let (tx, rx) = mpsc::channel::<Job>();
+        let ui = events.clone();
         let handle = thread::Builder::new()
             .name(SOLVER_THREAD.into())
             .spawn(move || worker_loop(rx, events, solver))?;
         Ok(Worker {
             jobs: Some(tx),
+            events: ui,
             last_cancel: None,
             handle: Some(handle),
         })
@@ -113,6 +117,57 @@ impl Worker {
             let _ = tx.send(Job { job, cancel });
         }
     }
+}
+
+impl Worker {
+    /// Writes `case`'s report to `path` in `format` as `rollbench run` does (its own
+    /// solve with the run's defaults, the deck's units, through the safe writer; never
+    /// over the deck at `deck_path`), on a thread of its own so the workbench stays live;
+    /// the outcome comes back as [`AppEvent::Exported`]. A panic is reported, not raised.
+    pub fn export_report(
+        &self,
+        path: std::path::PathBuf,
+        case: Arc<dyn Case>,
+        format: crate::report::Format,
+        deck_path: Option<std::path::PathBuf>,
+    ) {
+        let events = self.events.clone();
+        let spawned = thread::Builder::new()
+            .name(SOLVER_THREAD.into())
+            .spawn(move || {
+                let outcome = catch_unwind(AssertUnwindSafe(|| {
+                    report_to(&path, &*case, format, deck_path.as_deref())
+                }))
+                .unwrap_or_else(|p| {
+                    Err(format!("the report panicked: {}", panic_text(p.as_ref())))
+                });
+                let _ = events.send(AppEvent::Exported(outcome));
+            });
+        if let Err(e) = spawned {
+            let _ = self.events.send(AppEvent::Exported(Err(format!(
+                "cannot start the report: {e}"
+            ))));
+        }
+    }
+}
+
+/// Solves `case` as `rollbench run` does and writes its report (see
+/// [`Worker::export_report`]); the status line's sentence, or why not.
+fn report_to(
+    path: &std::path::Path,
+    case: &dyn Case,
+    format: crate::report::Format,
+    deck_path: Option<&std::path::Path>,
+) -> Result<String, String> {
+    let solution = case
+        .solve(crate::bearings::RunOptions::default(), Cancel::NONE)
+        .map_err(|e| format!("solve failed: {e}"))?;
+    let text = crate::report::render(solution.as_ref(), format, case.units());
+    let written = super::export::write(path, deck_path, text.as_bytes())?;
+    Ok(format!(
+        "wrote {written}: the {} report, as `run` writes it",
+        super::export::format_name(format)
+    ))
 }
 
 #[cfg(test)]

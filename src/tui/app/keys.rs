@@ -4,7 +4,7 @@
 
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use super::{App, Command, Mode, Pane, PromptKind, PAGE};
+use super::{App, Command, ExportWhat, Mode, Pane, PromptKind, PAGE};
 use crate::tui::deck_io;
 
 impl App {
@@ -77,6 +77,10 @@ impl App {
                     Vec::new()
                 }
             },
+            Mode::ConfirmExport { path, what } => {
+                let yes = matches!(key.code, KeyCode::Char('y') | KeyCode::Char('Y'));
+                self.on_confirm_export(yes, path, what)
+            }
             Mode::ConfirmRevert => {
                 self.mode = Mode::Normal;
                 match (key.code, &self.path) {
@@ -138,6 +142,14 @@ impl App {
             }
             KeyCode::Char('o') => {
                 self.open_prompt(PromptKind::Open);
+                Vec::new()
+            }
+            KeyCode::Char('x') => {
+                self.open_export_prompt(ExportWhat::Pane);
+                Vec::new()
+            }
+            KeyCode::Char('X') => {
+                self.open_export_prompt(ExportWhat::Report);
                 Vec::new()
             }
             KeyCode::Char('R') => match &self.path {
@@ -276,6 +288,16 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ("Ctrl-s", "any", "save (atomic, keeps .bak)"),
     ("S", "any", "save as…"),
     ("o", "any", "open a deck…"),
+    (
+        "x",
+        "any",
+        "export the pane's data as CSV: every column or series, display units…",
+    ),
+    (
+        "X",
+        "any",
+        "export the report as `run` writes it (.json, .csv, else text)…",
+    ),
     ("R", "any", "revert to the saved file"),
     ("e", "any", "the last error, whole (any key closes)"),
     (

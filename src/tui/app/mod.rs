@@ -12,6 +12,7 @@
 //! solver and when).
 
 mod edit;
+mod export;
 mod keys;
 mod navigation;
 mod solve;
@@ -90,6 +91,17 @@ pub enum AppEvent {
     /// leave at once, without asking (the runtime restores the terminal and exits with
     /// 128 + the signal number).
     Signal(i32),
+    /// The runtime looked at an export target ([`Command::CheckExportTarget`]).
+    ExportTargetChecked {
+        /// The typed path.
+        path: PathBuf,
+        /// What is exported.
+        what: ExportWhat,
+        /// Something already exists there.
+        exists: bool,
+    },
+    /// An export finished: what was written where, or why not.
+    Exported(Result<String, String>),
     /// The runtime looked at a save-as target ([`Command::CheckSaveTarget`]).
     SaveTargetChecked {
         /// The typed path.
@@ -154,8 +166,45 @@ pub enum Command {
     /// Save as: see whether this path already exists, then report
     /// [`AppEvent::SaveTargetChecked`] (the app asks before replacing it).
     CheckSaveTarget(PathBuf),
+    /// Export: see whether this path already exists, then report
+    /// [`AppEvent::ExportTargetChecked`] (the app asks before replacing it).
+    CheckExportTarget {
+        /// The typed path.
+        path: PathBuf,
+        /// What is exported.
+        what: ExportWhat,
+    },
+    /// Write a pane's export ([`super::export::pane_export`]) through the safe writer,
+    /// then report [`AppEvent::Exported`].
+    WriteExport {
+        /// Target path.
+        path: PathBuf,
+        /// The file's contents.
+        contents: String,
+        /// What it is, for the status line.
+        what: String,
+    },
+    /// Solve the deck as `rollbench run` does and write its report in `format` (in the
+    /// background: the worker's report thread), then report [`AppEvent::Exported`].
+    ExportReport {
+        /// Target path.
+        path: PathBuf,
+        /// The deck to report on.
+        deck: Box<DeckDoc>,
+        /// JSON, CSV or text, by the path's extension.
+        format: crate::report::Format,
+    },
     /// Leave the workbench.
     Quit,
+}
+
+/// What the export prompt writes (issue 30 item 20).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExportWhat {
+    /// The focused pane's data (`x`).
+    Pane,
+    /// The whole report, as `rollbench run` writes it (`X`).
+    Report,
 }
 
 /// State of the solver as shown in the status bar.
@@ -189,6 +238,8 @@ pub enum PromptKind {
     SaveAs,
     /// Open a deck file.
     Open,
+    /// Export the focused pane or the report to a file.
+    Export(ExportWhat),
 }
 
 /// Input mode (which keys mean what).
@@ -220,6 +271,13 @@ pub enum Mode {
     ConfirmOverwrite {
         /// The existing target.
         path: PathBuf,
+    },
+    /// Export over a file that exists.
+    ConfirmExport {
+        /// The existing target.
+        path: PathBuf,
+        /// What is exported.
+        what: ExportWhat,
     },
     /// Help overlay.
     Help,
@@ -617,6 +675,24 @@ impl App {
                         deck: Box::new(self.deck.clone()),
                     }]
                 }
+            }
+            AppEvent::ExportTargetChecked { path, what, exists } => {
+                if exists {
+                    self.mode = Mode::ConfirmExport { path, what };
+                    Vec::new()
+                } else {
+                    self.export_commands(path, what)
+                }
+            }
+            AppEvent::Exported(Ok(m)) => {
+                self.message = Some(m);
+                Vec::new()
+            }
+            AppEvent::Exported(Err(e)) => {
+                self.message = Some("export failed (e: the whole message)".into());
+                self.error = Some(format!("export failed:\n{e}"));
+                self.mode = Mode::Error;
+                Vec::new()
             }
             AppEvent::Signal(n) => {
                 // A signal is not a question: quit even with unsaved changes or a prompt open.

@@ -135,6 +135,15 @@ impl Widget for &App {
                 area,
                 buf,
             ),
+            Mode::ConfirmExport { path, .. } => render_confirm(
+                "File exists",
+                &format!(
+                    "{} exists · y replace it · any other key: choose another name",
+                    path.display()
+                ),
+                area,
+                buf,
+            ),
             Mode::ConfirmRevert => render_confirm(
                 "Revert",
                 "y discard unsaved changes and reload the file · any other key: keep",

@@ -10,7 +10,7 @@ use ratatui::widgets::{Block, Borders, Cell, Clear, Paragraph, Row, Table, Widge
 
 use super::{ACCENT, DIM};
 use crate::bearings::view::column_help;
-use crate::tui::app::{App, Pane, PromptKind, KEYS};
+use crate::tui::app::{App, ExportWhat, Pane, PromptKind, KEYS};
 
 fn centered(area: Rect, w: u16, h: u16) -> Rect {
     let w = w.min(area.width);
@@ -204,6 +204,10 @@ pub(super) fn render_prompt(kind: PromptKind, text: &str, area: Rect, buf: &mut 
     let title = match kind {
         PromptKind::SaveAs => " Save deck as (Enter save, Esc cancel) ",
         PromptKind::Open => " Open deck (Enter open, Esc cancel) ",
+        PromptKind::Export(ExportWhat::Pane) => " Export the pane to (Enter write, Esc cancel) ",
+        PromptKind::Export(ExportWhat::Report) => {
+            " Report to (.json, .csv, else text; Enter write) "
+        }
     };
     let r = centered(area, 64, 3);
     Clear.render(r, buf);

@@ -128,9 +128,10 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             v(&["Esc cancel"]),
         ),
         Mode::Prompt { .. } => (v(&["type a path", "Enter confirm"]), v(&["Esc cancel"])),
-        Mode::ConfirmQuit | Mode::ConfirmRevert | Mode::ConfirmOverwrite { .. } => {
-            (v(&["answer the prompt"]), Vec::new())
-        }
+        Mode::ConfirmQuit
+        | Mode::ConfirmRevert
+        | Mode::ConfirmOverwrite { .. }
+        | Mode::ConfirmExport { .. } => (v(&["answer the prompt"]), Vec::new()),
         Mode::Help => (v(&["any key closes help"]), Vec::new()),
         Mode::Search { .. } => (
             v(&["type part of a name or key", "Tab next match", "Enter go"]),
@@ -175,6 +176,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             }
             first.push("u units".into());
             first.push("Tab pane".into());
+            first.push("x export".into());
             if app.error.is_some() {
                 first.insert(0, "e error".into());
             }
