@@ -493,7 +493,28 @@ fn main() -> ExitCode {
                         bearings::known_types()
                     );
                     }
-                    print!("{}", system.keys_table());
+                    let mut out = String::new();
+                    if r#type.is_none() {
+                        // Issue 30 item 17: the default system's table as before, named in
+                        // the first line, then every other system's, each under its name.
+                        out.push_str(&format!(
+                            "keys of the {} system (the default type), then of every other system; one system: rollbench keys --type TYPE\n",
+                            system.id()
+                        ));
+                        out.push_str(&system.keys_table());
+                        for other in bearings::SYSTEMS.iter().filter(|o| o.id() != system.id()) {
+                            out.push_str(&format!(
+                                "\nkeys of the {} system (--type {})\n",
+                                other.id(),
+                                other.id()
+                            ));
+                            out.push_str(&other.keys_table());
+                        }
+                    } else {
+                        out.push_str(&system.keys_table());
+                    }
+                    // A closed pipe (`keys | head`) ends the listing quietly.
+                    let _ = std::io::Write::write_all(&mut std::io::stdout(), out.as_bytes());
                     ExitCode::SUCCESS
                 }
                 None => {

@@ -234,6 +234,45 @@ impl Quantity {
     }
 }
 
+/// 1 US gallon in litres (exact: 231 in³).
+pub const US_GALLON_L: f64 = 3.785_411_784;
+
+/// A quantity that a deck writes in one unit in both systems although US customary
+/// practice has its own (oil flow in l/min, the viscosity–temperature β in 1/°C): the
+/// key's unit is a contract, so a US deck keeps the metric unit, and the screen says so
+/// and gives the US value beside it (issue 30 item 7).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UsCustomary {
+    /// The unit a US deck shows, marked as the metric one it stays (`"l/min (SI)"`).
+    pub label: &'static str,
+    /// The US customary unit an engineer expects (`"gal/min"`).
+    pub unit: &'static str,
+    /// Factor from the deck's unit to [`UsCustomary::unit`].
+    pub factor: f64,
+}
+
+impl Quantity {
+    /// The US customary counterpart of a quantity written in a metric unit in every
+    /// deck; `None` for the others (converted with the deck's units, or the same in both:
+    /// rpm, degrees, cSt, s).
+    pub fn us_customary(self) -> Option<UsCustomary> {
+        match self {
+            Quantity::VolumeFlowLMin => Some(UsCustomary {
+                label: "l/min (SI)",
+                unit: "gal/min",
+                factor: 1.0 / US_GALLON_L,
+            }),
+            // A coefficient per degree: per °F is per °C times 5/9.
+            Quantity::PerDegreeCelsius => Some(UsCustomary {
+                label: "1/°C (SI)",
+                unit: "1/°F",
+                factor: FAHRENHEIT_DEGREE_K,
+            }),
+            _ => None,
+        }
+    }
+}
+
 /// Converts °F to °C.
 pub fn fahrenheit_to_celsius(f: f64) -> f64 {
     (f - 32.0) * FAHRENHEIT_DEGREE_K

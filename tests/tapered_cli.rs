@@ -149,7 +149,8 @@ fn run_csv_rollers_table() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("index,azimuth_deg,state,outer_load_n,inner_load_n,flange_load_n,outer_moment_nm,inner_moment_nm,outer_edge_loaded,inner_edge_loaded,max_stress_outer_pa,max_stress_inner_pa")
+        // The shipped columns unchanged, then the common `number` (issue 30 item 10).
+        Some("index,azimuth_deg,state,outer_load_n,inner_load_n,flange_load_n,outer_moment_nm,inner_moment_nm,outer_edge_loaded,inner_edge_loaded,max_stress_outer_pa,max_stress_inner_pa,number")
     );
     assert_eq!(lines.count(), 37);
 }

@@ -96,6 +96,11 @@ pub trait FormSystem: Sync + Sized + 'static {
     fn set_fidelity(_input: &mut Self::Input, _f: Fidelity) -> bool {
         false
     }
+    /// Why this deck's answer does not depend on its fidelity settings, when it does not
+    /// ([`Case::fidelity_unused`]); `None` by default.
+    fn fidelity_unused(_input: &Self::Input) -> Option<String> {
+        None
+    }
 }
 
 impl<S: FormSystem> BearingSystem for S {
@@ -252,5 +257,9 @@ impl<S: FormSystem> Case for SystemCase<S> {
     fn with_fidelity(&self, f: Fidelity) -> Option<Box<dyn Case>> {
         let mut case = self.clone();
         S::set_fidelity(&mut case.form.value, f).then(|| Box::new(case) as Box<dyn Case>)
+    }
+
+    fn fidelity_unused(&self) -> Option<String> {
+        S::fidelity_unused(&self.form.value)
     }
 }

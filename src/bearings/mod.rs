@@ -307,6 +307,12 @@ pub trait Case: CaseDeck + Send + Sync {
         let _ = f;
         None
     }
+    /// Why this deck's answer does not depend on its fidelity settings (the ball's race
+    /// control solves no slices), said by `rollbench bench` instead of a table of zero
+    /// errors that recommends the coarsest cell (issue 30 item 17); `None` when it does.
+    fn fidelity_unused(&self) -> Option<String> {
+        None
+    }
 }
 
 /// Reads deck text of any system: its `type` picks the system, which parses, applies the

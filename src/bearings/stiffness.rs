@@ -47,6 +47,16 @@ impl Dof {
         }
     }
 
+    /// The symbol text and the screen use (`x` … `θy`; issue 30 item 10: one vocabulary,
+    /// no ASCII `theta_x` in text). JSON and CSV keep [`Dof::column`].
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Dof::ThetaX => "θx",
+            Dof::ThetaY => "θy",
+            other => other.column(),
+        }
+    }
+
     /// The row name: the generalised force conjugate to it (`F_x` … `M_y`).
     pub fn row(self) -> &'static str {
         match self {
@@ -254,7 +264,7 @@ impl StiffnessMatrix {
                 .join(" "),
             self.dofs
                 .iter()
-                .map(|d| d.column())
+                .map(|d| d.symbol())
                 .collect::<Vec<_>>()
                 .join(" ")
         );

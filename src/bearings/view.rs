@@ -18,8 +18,11 @@ pub enum Display {
     Force,
     /// Load per unit length: N/mm or lbf/in.
     LineLoad,
-    /// Deflections, approaches, offsets: mm or mil (0.001 in).
+    /// Positions along a roller or a contact, semi-axes, offsets: mm or mil (0.001 in).
     SmallLength,
+    /// Ring and element deflections and approaches: µm or µin, as the text reports print
+    /// them (issue 30 item 7: the workbench showed mil where the text said µin).
+    Deflection,
     /// Film thickness: µm or µin.
     Film,
     /// Contact stress: MPa or ksi.
@@ -64,8 +67,8 @@ impl Display {
             (Display::LineLoad, Units::Us) => v / LBF_N * INCH_M,
             (Display::SmallLength, Units::Si) => v * 1e3,
             (Display::SmallLength, Units::Us) => v / INCH_M * 1e3,
-            (Display::Film, Units::Si) => v * 1e6,
-            (Display::Film, Units::Us) => v / INCH_M * 1e6,
+            (Display::Film | Display::Deflection, Units::Si) => v * 1e6,
+            (Display::Film | Display::Deflection, Units::Us) => v / INCH_M * 1e6,
             (Display::Stress, Units::Si) => v / 1e6,
             (Display::Stress, Units::Us) => v / PSI_PA / 1e3,
             (Display::SmallAngle, _) => v * 1e3,
@@ -102,8 +105,8 @@ impl Display {
             (Display::LineLoad, Units::Us) => "lbf/in",
             (Display::SmallLength, Units::Si) => "mm",
             (Display::SmallLength, Units::Us) => "mil",
-            (Display::Film, Units::Si) => "µm",
-            (Display::Film, Units::Us) => "µin",
+            (Display::Film | Display::Deflection, Units::Si) => "µm",
+            (Display::Film | Display::Deflection, Units::Us) => "µin",
             (Display::Stress, Units::Si) => "MPa",
             (Display::Stress, Units::Us) => "ksi",
             (Display::SmallAngle, _) => "mrad",
@@ -302,6 +305,65 @@ pub struct Table {
     pub columns: Vec<Column>,
     /// Rows, each as long as `columns`.
     pub rows: Vec<Vec<Option<f64>>>,
+}
+
+/// Issue 30 item 10: the names every system's per-element CSV (and JSON element) carries
+/// for the same quantity, beside the system's own names (never renamed or dropped):
+/// (common name, the system's names it stands for, CSV style). `docs/outputs.md` holds the
+/// table across systems; `report::common_json_names` applies the JSON half.
+pub const COMMON_COLUMNS: [(&str, &[&str], CsvStyle); 5] = [
+    // The element's number from 1: the ball's `#` (its `index` counts from 0), the
+    // rollers' `index` (from 1), as JSON's `number` (issue 30 item 9).
+    ("number", &["number", "index"], CsvStyle::Integer),
+    (
+        "inner_load_n",
+        &["inner_normal_load_n"],
+        CsvStyle::Scientific,
+    ),
+    (
+        "outer_load_n",
+        &["outer_normal_load_n"],
+        CsvStyle::Scientific,
+    ),
+    (
+        "inner_contact_angle_deg",
+        &["inner_angle_deg"],
+        CsvStyle::Plain,
+    ),
+    (
+        "outer_contact_angle_deg",
+        &["outer_angle_deg"],
+        CsvStyle::Plain,
+    ),
+];
+
+impl Table {
+    /// This table with a CSV column appended for each [`COMMON_COLUMNS`] name it lacks as
+    /// a CSV column but holds under a system name (the ball's `inner_normal_load_n` gains
+    /// `inner_load_n`; the screen-only `#` gains the CSV's `number`, from 1). Appended at
+    /// the end: the existing columns keep their places.
+    pub fn with_common_names(&self) -> Table {
+        let mut t = self.clone();
+        for (common, names, style) in COMMON_COLUMNS {
+            if t.columns.iter().any(|c| c.key == common && c.csv.is_some()) {
+                continue;
+            }
+            // The first of `names` (in their order of preference) the table holds.
+            let Some(i) = names
+                .iter()
+                .find_map(|n| t.columns.iter().position(|c| c.key == *n))
+            else {
+                continue;
+            };
+            let quantity = t.columns[i].quantity;
+            t.columns.push(Column::new(common, quantity, style));
+            for row in &mut t.rows {
+                let v = row.get(i).copied().flatten();
+                row.push(v);
+            }
+        }
+        t
+    }
 }
 
 /// Whether a key output decides the recommended fidelity or only guards it.

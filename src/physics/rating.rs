@@ -758,13 +758,22 @@ pub fn life_json(
     serde_json::Value::Object(m)
 }
 
-/// The text report's LIFE lines shared by the systems (SI: Mrev, h, N).
-pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife) -> String {
+/// The text report's LIFE lines shared by the systems: lives in Mrev and h, forces
+/// (capacities, ratings, the equivalent load, the fatigue limit) in the deck's unit (N or
+/// lbf; issue 30 item 7: a US deck read `C_r 87137 N`).
+pub fn life_text(
+    reference: &Result<ReferenceLifeNumbers, String>,
+    iso: &IsoLife,
+    units: crate::units::Units,
+) -> String {
+    use crate::units::Quantity;
     use std::fmt::Write;
     let f = |x: Option<f64>, prec: usize| match x {
         Some(v) => format!("{v:.prec$}"),
         None => "—".to_string(),
     };
+    let force = |x: Option<f64>| x.map(|v| Quantity::Force.from_si(v, units));
+    let n = Quantity::Force.unit(units);
     let mut s = String::from("\nLIFE\n");
     let d = iso.rating_direction.subscript();
     // Radial lines read as they always have ("P"); a thrust bearing's load is P_a.
@@ -776,13 +785,13 @@ pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife
         Ok(r) => {
             let _ = writeln!(
                 s,
-                "  reference (load distribution): L10 inner {} Mrev, outer {} Mrev, bearing {} Mrev = {} h; capacities {} / {} N",
+                "  reference (load distribution): L10 inner {} Mrev, outer {} Mrev, bearing {} Mrev = {} h; capacities {} / {} {n}",
                 f(r.l10_inner_mrev, 2),
                 f(r.l10_outer_mrev, 2),
                 f(r.l10_bearing_mrev, 2),
                 f(r.l10_bearing_h, 1),
-                f(r.capacity_inner_n, 0),
-                f(r.capacity_outer_n, 0)
+                f(force(r.capacity_inner_n), 0),
+                f(force(r.capacity_outer_n), 0)
             );
         }
         Err(e) => {
@@ -791,22 +800,22 @@ pub fn life_text(reference: &Result<ReferenceLifeNumbers, String>, iso: &IsoLife
     }
     let _ = writeln!(
         s,
-        "  ISO 281: C_{d} {} N, {p_name} {} N, L10 {} Mrev = {} h; κ {}, e_C {}, C_u {} N, a_ISO {}, L10m {} Mrev = {} h",
-        f(iso.basic_dynamic_rating_n, 0),
-        f(iso.equivalent_load_n, 1),
+        "  ISO 281: C_{d} {} {n}, {p_name} {} {n}, L10 {} Mrev = {} h; κ {}, e_C {}, C_u {} {n}, a_ISO {}, L10m {} Mrev = {} h",
+        f(force(iso.basic_dynamic_rating_n), 0),
+        f(force(iso.equivalent_load_n), 1),
         f(iso.basic_l10_mrev, 2),
         f(iso.basic_l10_h, 1),
         f(iso.kappa, 3),
         iso.contamination_factor,
-        f(iso.fatigue_load_limit_n, 0),
+        f(force(iso.fatigue_load_limit_n), 0),
         f(iso.a_iso, 3),
         f(iso.modified_l10_mrev, 2),
         f(iso.modified_l10_h, 1)
     );
     let _ = writeln!(
         s,
-        "  ISO 76: C_0{d} {} N, static safety s0 {}",
-        f(iso.basic_static_rating_n, 0),
+        "  ISO 76: C_0{d} {} {n}, static safety s0 {}",
+        f(force(iso.basic_static_rating_n), 0),
         f(iso.static_safety, 3)
     );
     for r in &iso.reasons {

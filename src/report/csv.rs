@@ -13,6 +13,8 @@ pub fn to_string(view: &View) -> String {
     else {
         return String::new();
     };
+    // The common names beside the system's own (issue 30 item 10).
+    let t = &t.with_common_names();
     let columns: Vec<(usize, CsvStyle, &str)> = t
         .columns
         .iter()

@@ -203,6 +203,10 @@ pub struct FidelityTable {
     /// Whether the deck's own fidelity [meets the target](Row::meets_target); None when it
     /// is not a cell of the grid.
     pub default_meets_target: Option<bool>,
+    /// Why the deck's answer does not depend on the grid ([`Case::fidelity_unused`]), or
+    /// that every cell solved gave the reference's key outputs exactly (issue 30 item 17:
+    /// a table of zeros recommending the coarsest cell, unexplained).
+    pub measures_nothing: Option<String>,
 }
 
 impl FidelityTable {
@@ -331,8 +335,23 @@ pub fn measure_with(
         default,
         recommended,
         default_meets_target: None,
+        measures_nothing: None,
     };
     table.default_meets_target = table.default_row().map(Row::meets_target);
+    // Every cell solved and equal to the reference: nothing was measured. The system's
+    // reason when it knows one, else the fact.
+    let flat = table
+        .rows
+        .iter()
+        .all(|r| r.failure.is_none() && r.errors.iter().all(|e| e.error.is_none_or(|x| x == 0.0)));
+    table.measures_nothing = case.fidelity_unused().or_else(|| {
+        flat.then(|| {
+            format!(
+                "every cell gave the reference's key outputs exactly (every error 0): this deck's answer does not depend on {} or the tolerance, so the grid measures nothing here",
+                table.grid.resolution_key
+            )
+        })
+    });
     Ok(table)
 }
 
@@ -466,6 +485,9 @@ pub fn to_text(t: &FidelityTable) -> String {
         "deck default: {sym} = {}, tolerance {:.0e}{verdict}",
         t.default.resolution, t.default.tolerance
     );
+    if let Some(why) = &t.measures_nothing {
+        let _ = writeln!(s, "measures nothing: {why}");
+    }
     let targets = target_names(t);
     match t.recommended {
         Some(r) => {
@@ -553,6 +575,10 @@ pub fn to_json(t: &FidelityTable) -> serde_json::Value {
     m.insert(
         "default_meets_target".into(),
         t.default_meets_target.map_or(Value::Null, Value::from),
+    );
+    m.insert(
+        "measures_nothing".into(),
+        t.measures_nothing.clone().map_or(Value::Null, Value::from),
     );
     Value::Object(m)
 }

@@ -178,12 +178,38 @@ impl DeckDoc {
         self.case.fields().into_iter().find(|f| f.key == key)
     }
 
-    /// Unit label of `key` in `units` (empty for dimensionless and choices).
+    /// Unit label of `key` in `units` (empty for dimensionless and choices). A key written
+    /// in a metric unit in every deck (l/min, 1/°C) is marked so in US: `l/min (SI)`.
     pub fn unit(&self, key: &str, units: Units) -> &'static str {
         match self.field(key) {
-            Some(s) if matches!(s.kind, FieldKind::Real | FieldKind::RealOr(_)) => s.unit(units),
+            Some(s) if matches!(s.kind, FieldKind::Real | FieldKind::RealOr(_)) => {
+                match (units, s.quantity.us_customary()) {
+                    (Units::Us, Some(c)) => c.label,
+                    _ => s.unit(units),
+                }
+            }
             _ => "",
         }
+    }
+
+    /// For a key written in a metric unit in every deck, shown in US: that it stays metric
+    /// and its value in the US customary unit (`0.1 l/min = 0.0264172 gal/min (written
+    /// in l/min in every deck, US ones too)`).
+    pub fn us_customary_note(&self, key: &str, units: Units) -> Option<String> {
+        let spec = self.field(key)?;
+        let c = spec.quantity.us_customary()?;
+        if units != Units::Us {
+            return None;
+        }
+        let v = spec.from_si(self.case.field_si(key)?, units);
+        Some(format!(
+            "{} {} = {} {} (written in {} in every deck, US ones too)",
+            fmt_num(v),
+            spec.unit(units),
+            fmt_num(v * c.factor),
+            c.unit,
+            spec.unit(units),
+        ))
     }
 
     /// The allowed values of a choice field (`None` for numbers).

@@ -19,6 +19,9 @@ use crate::bearings::view::View;
 use crate::bearings::{Detail, SolveError};
 use crate::numerics::cancel::Cancel;
 
+#[path = "issue30_tests.rs"]
+mod issue30;
+
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
 }

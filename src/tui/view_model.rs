@@ -614,6 +614,26 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
     )
 }
 
+/// The first failed point of a sweep and why, the swept value in display units
+/// (`first failure at 42500 rpm: …`), as the CLI's row gives it; `None` when none failed
+/// (issue 30 item 17: the pane said "4 failed" without the reason).
+pub fn sweep_first_failure(p: &PlanProgress, u: Units) -> Option<String> {
+    let pt = p.points.iter().find(|pt| pt.failure.is_some())?;
+    let x = p.x_quantity.map_or(pt.value, |q| q.from_si(pt.x_si, u));
+    let unit = p.x_unit[usize::from(u == Units::Us)];
+    let value = crate::deck::format_short(x);
+    let at = if unit.is_empty() {
+        value
+    } else {
+        format!("{value} {unit}")
+    };
+    Some(format!(
+        "first failure at {} = {at}: {}",
+        p.plan.key,
+        pt.failure.as_deref().unwrap_or_default()
+    ))
+}
+
 /// One node of the thermal pane's list, display units.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct NodeRow {

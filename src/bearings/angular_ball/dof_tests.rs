@@ -403,7 +403,7 @@ mod stiffness {
             crate::bearings::angular_ball::report::stiffness_lines(&a, crate::units::Units::Si);
         assert_eq!(
             lines[0],
-            "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z theta_x theta_y)"
+            "Stiffness matrix (rows F_x F_y F_z M_x M_y; columns x y z θx θy)"
         );
     }
 

@@ -313,7 +313,8 @@ impl BallLife {
         v
     }
 
-    /// The text report's LIFE section.
+    /// The text report's LIFE section, in SI as the rest of the ball's text report
+    /// (which says "values in SI" on a US deck).
     pub fn text(&self) -> String {
         rating::life_text(
             &self
@@ -322,6 +323,7 @@ impl BallLife {
                 .map(|r| r.numbers())
                 .map_err(Clone::clone),
             &self.iso,
+            crate::units::Units::Si,
         )
     }
 }

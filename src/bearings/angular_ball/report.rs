@@ -332,18 +332,20 @@ pub fn text(a: &BallAnalysis, units: Units) -> String {
     }
     let _ = writeln!(
         s,
-        "\nRACE CONTROL ({} race controls)\n  #  cage rpm  ωsi rad/s  ωso rad/s  roll i  roll o  s/r i   s/r o   u i m/s  u o m/s  H W   hc,i µm hc,o µm",
+        "\nRACE CONTROL ({} race controls)\n  #  cage rpm  ωsi rad/s  ωso rad/s  ωri rad/s  ωro rad/s  s/r i   s/r o   u i m/s  u o m/s  H W   hc,i µm hc,o µm",
         a.balls.first().map(|b| race_name(b.control)).unwrap_or("outer")
     );
     for (j, b) in a.balls.iter().enumerate() {
         let (i, o) = (&b.inner, &b.outer);
         let _ = writeln!(
             s,
-            "{:3} {:8.1} {:10.2} {:10.2} {:7.1} {:7.1} {:7.4} {:7.4} {:8.3} {:8.3} {:6.3} {:7.3} {:7.3}",
+            "{:3} {:8.1} {:10.2} {:10.2} {:10.1} {:10.1} {:7.4} {:7.4} {:8.3} {:8.3} {:6.3} {:7.3} {:7.3}",
             element_number(j),
             b.cage_rad_s * RPM_PER_RAD_S,
             i.kinematics.spin_rad_s,
             o.kinematics.spin_rad_s,
+            // The roll speeds ω_r (rad/s; issue 30 item 7: the header said "roll i"
+            // with no unit).
             i.kinematics.roll_rad_s,
             o.kinematics.roll_rad_s,
             i.kinematics.spin_to_roll,

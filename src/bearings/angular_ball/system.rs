@@ -163,6 +163,14 @@ impl FormSystem for AngularBall {
         input.dynamics.tolerance = f.tolerance;
         true
     }
+
+    /// Race control (the default method) solves the load distribution with no slices and
+    /// no use of `dynamics.tolerance`: every cell of the grid is the reference's answer.
+    fn fidelity_unused(input: &BallInput) -> Option<String> {
+        (input.dynamics.method == super::input::Method::RaceControl).then(|| {
+            "dynamics.method = \"race-control\" slices no contact and uses no dynamics.tolerance, so every cell equals the reference and the grid measures nothing here; bench a method that slices the contacts: --set dynamics.method=quasi-static (or time-simulation)".to_string()
+        })
+    }
 }
 
 /// A validated ball bearing deck.

@@ -658,8 +658,8 @@ fn trace(a: &BallAnalysis) -> Option<Trace> {
                 ),
                 line(
                     "ring ax,rad",
-                    Display::SmallLength,
-                    TraceFormat::Signed(5),
+                    Display::Deflection,
+                    TraceFormat::Signed(3),
                     t.ring_m.to_vec(),
                 ),
                 line(

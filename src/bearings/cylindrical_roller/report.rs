@@ -8,7 +8,7 @@ use serde_json::{json, Value};
 use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
 
 use super::analysis::CylindricalAnalysis;
-use crate::bearings::view::element_number;
+use crate::bearings::view::{element_number, Display};
 use crate::units::{Quantity, Units};
 
 /// Azimuth of a roller in [0, 360) deg.
@@ -145,7 +145,7 @@ pub const NO_Z_NOTE: &str = "z: not a degree of freedom here: the raceways are c
 /// What z means with ribs.
 pub const RIB_Z_NOTE: &str = "z: the axial displacement of the inner ring against the outer: only the roller end-rib point contacts resist it (the raceways carry no axial load)";
 /// Why there are no tilts.
-pub const NO_TILT_NOTE: &str = "theta_x, theta_y: not computed: the quasi-static model holds the rings parallel (no misalignment degree of freedom), though a cylindrical roller bearing does resist tilt";
+pub const NO_TILT_NOTE: &str = "θx, θy: not computed: the quasi-static model holds the rings parallel (no misalignment degree of freedom), though a cylindrical roller bearing does resist tilt";
 
 /// The ring stiffness on the shared type (issue 29): (x, y), or (x, y, z) when ribs carry
 /// axial load, analytic (the ring Newton's Jacobian), SI, with what z and the tilts mean.
@@ -243,18 +243,20 @@ fn ribs_json(a: &CylindricalAnalysis) -> Value {
 /// report's section and the workbench's Stiffness pane.
 pub fn stiffness_lines(a: &CylindricalAnalysis, units: Units) -> Vec<String> {
     let q = &a.statics;
-    let len = Quantity::Length;
+    // Ring deflections in µm / µin, as every system's text and the workbench show them
+    // (issue 30 item 7).
+    let len = crate::bearings::view::Display::Deflection;
     let mut v = stiffness_matrix(a).lines(units);
     v.push(format!(
-        "Static offset of the inner ring  x = {:.4e}  y = {:.4e} {}",
-        len.from_si(q.displacement_m[0], units),
-        len.from_si(q.displacement_m[1], units),
+        "Static offset of the inner ring  x = {:.4}  y = {:.4} {}",
+        len.convert(q.displacement_m[0], units),
+        len.convert(q.displacement_m[1], units),
         len.unit(units)
     ));
     if q.stiffness_xyz_n_m.is_some() {
         v.push(format!(
-            "Axial displacement of the inner ring  z = {:.4e} {}",
-            len.from_si(q.axial_displacement_m, units),
+            "Axial displacement of the inner ring  z = {:.4} {}",
+            len.convert(q.axial_displacement_m, units),
             len.unit(units)
         ));
     }
@@ -310,12 +312,19 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
     let _ = writeln!(
         s,
         "  {:>3} {:>7} {:>11} {:>11} {:>11} {:>7} {:>11}",
-        "#", "phi deg", "W_i", "W_o", "h_min um", "Lambda", "p_max"
+        "#",
+        "ψ deg",
+        "W_i",
+        "W_o",
+        format!("h_min {}", Display::Film.unit(units)),
+        "Λ",
+        "p_max"
     );
     for (i, (r, f)) in a.statics.rollers.iter().zip(&a.films).enumerate() {
-        let h = f
-            .min_film_m
-            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", h * 1e6));
+        let h = f.min_film_m.map_or_else(
+            || "-".to_string(),
+            |h| format!("{:.4}", Display::Film.convert(h, units)),
+        );
         let l = f
             .lambda
             .map_or_else(|| "-".to_string(), |l| format!("{l:.3}"));
@@ -344,7 +353,7 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
         let _ = writeln!(
             s,
             "  {:>3} {:>7} {:>11} {:>12}",
-            "#", "phi deg", "rib load", "tilt mrad"
+            "#", "ψ deg", "rib load", "tilt mrad"
         );
         for (i, r) in a.statics.rollers.iter().enumerate() {
             let _ = writeln!(
@@ -364,7 +373,7 @@ pub fn text(a: &CylindricalAnalysis, units: Units) -> String {
     if let Some(t) = &a.tribo {
         s.push_str(&super::report_tribo::text(t, units));
     }
-    s.push_str(&super::life::life(a).text());
+    s.push_str(&super::life::life(a).text(units));
     for w in &a.warnings {
         let _ = writeln!(s, "\nWarning: {w}");
     }

@@ -173,7 +173,7 @@ pub fn text(t: &Tribodynamics, units: Units) -> String {
     );
     let _ = writeln!(
         s,
-        "  total {:.3} {fu}  boundary {:.3} {fu}  viscous {:.3} {fu}  mu = {:.5}  power {:.3} {pu}",
+        "  total {:.3} {fu}  boundary {:.3} {fu}  viscous {:.3} {fu}  µ = {:.5}  power {:.3} {pu}",
         force(f.total_n),
         force(f.boundary_n),
         force(f.viscous_n),
@@ -184,7 +184,7 @@ pub fn text(t: &Tribodynamics, units: Units) -> String {
         let _ = writeln!(
             s,
             "  roller 1, inner contact:  {:>8} {:>10} {:>8} {:>10} {:>10} {:>10} {:>8} {:>9}",
-            "cage deg", "W", "Lambda", "boundary", "viscous", "total", "mu", "power"
+            "cage deg", "W", "Λ", "boundary", "viscous", "total", "µ", "power"
         );
         for p in &t.positions {
             let m = &p.friction;

@@ -48,7 +48,7 @@ pub const ROLLER_COLUMNS: [Column; 7] = [
         "azimuth_deg",
         Quantity::Angle,
         CsvStyle::Plain,
-        "θ deg",
+        "ψ deg",
         Display::Plain,
         1,
         6,
@@ -134,7 +134,7 @@ pub fn view(a: &CylindricalAnalysis) -> View {
         title: "Roller loads against azimuth (load zone: W > 0)".to_string(),
         title_us: None,
         x: ChartAxis {
-            label: "θ deg",
+            label: "ψ deg",
             display: Display::Plain,
             bounds: Some([0.0, 360.0]),
         },

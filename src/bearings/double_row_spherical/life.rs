@@ -105,9 +105,9 @@ impl DoubleRowLife {
         }
     }
 
-    /// The text report's LIFE section.
-    pub fn text(&self) -> String {
-        rating::life_text(&Ok(self.reference), &self.iso)
+    /// The text report's LIFE section, forces in `units`.
+    pub fn text(&self, units: crate::units::Units) -> String {
+        rating::life_text(&Ok(self.reference), &self.iso, units)
     }
 }
 

@@ -148,7 +148,6 @@ fn stiffness_json(a: &DoubleRowAnalysis, k: [[f64; 2]; 2]) -> Value {
 /// ring deflection in `units`.
 pub fn stiffness_lines(a: &DoubleRowAnalysis, units: Units) -> Vec<String> {
     let ks = Quantity::LinearStiffness;
-    let len = Quantity::Length;
     let mut v = match &a.stiffness {
         Ok(m) => m.lines(units),
         Err(reason) => {
@@ -168,11 +167,14 @@ pub fn stiffness_lines(a: &DoubleRowAnalysis, units: Units) -> Vec<String> {
             v
         }
     };
+    // µm / µin, as the Summary pane and every system's text show ring deflections
+    // (issue 30 item 7).
+    let defl = crate::bearings::view::Display::Deflection;
     v.push(format!(
-        "Inner ring deflection  x (radial) = {:.4e}  z (axial) = {:.4e} {}",
-        len.from_si(a.radial_deflection_m(), units),
-        len.from_si(a.axial_deflection_m(), units),
-        len.unit(units)
+        "Inner ring deflection  x (radial) = {:.3}  z (axial) = {:.3} {}",
+        defl.convert(a.radial_deflection_m(), units),
+        defl.convert(a.axial_deflection_m(), units),
+        defl.unit(units)
     ));
     v
 }
@@ -211,7 +213,7 @@ pub fn text(a: &DoubleRowAnalysis, units: Units) -> String {
         (Some(m), None) => s.push_str(&format!("Bearing L-10: {m:.4e} Mrev\n")),
         _ => s.push_str("Bearing L-10: no row loaded\n"),
     }
-    s.push_str(&super::life::life(a).text());
+    s.push_str(&super::life::life(a).text(units));
     for (i, row) in a.rows.iter().enumerate() {
         s.push_str(&format!(
             "\n==================== Row {} ====================\n",

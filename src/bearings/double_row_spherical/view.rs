@@ -186,14 +186,14 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
         Summary {
             label: "Δx",
             value: a.radial_deflection_m(),
-            display: Display::SmallLength,
-            precision: 4,
+            display: Display::Deflection,
+            precision: 3,
         },
         Summary {
             label: "Δz",
             value: a.axial_deflection_m(),
-            display: Display::SmallLength,
-            precision: 4,
+            display: Display::Deflection,
+            precision: 3,
         },
         Summary {
             label: "Q_max",

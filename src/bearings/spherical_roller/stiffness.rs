@@ -21,7 +21,7 @@ use crate::bearings::stiffness::{Dof, Method, StiffnessMatrix};
 use crate::bearings::SolveError;
 
 /// Why θ_x and θ_y carry no stiffness (the JSON `notes`, the text's last lines).
-pub const TILT_NOTE: &str = "theta_x, theta_y: zero stiffness by construction: the outer raceway is a sphere, so the inner ring and rollers turn about its centre without loading any contact (self-aligning; a rotor model sees a pinned support)";
+pub const TILT_NOTE: &str = "θx, θy: zero stiffness by construction: the outer raceway is a sphere, so the inner ring and rollers turn about its centre without loading any contact (self-aligning; a rotor model sees a pinned support)";
 
 /// Where the displacements are referred to.
 pub const REFERENCE_POINT: &str = "centre of the outer raceway's sphere on the bearing axis (x along the radial load, z along the axial load)";

@@ -311,7 +311,7 @@ pub fn pedestal_lines(a: &Analysis, units: Units) -> Vec<String> {
             };
             let _ = writeln!(
                 s,
-                "With the pedestal in series (eq. 9; pedestal x {} y {} z {} {} · theta_x {} theta_y {} {}):",
+                "With the pedestal in series (eq. 9; pedestal x {} y {} z {} {} · θx {} θy {} {}):",
                 show(0),
                 show(1),
                 show(2),
@@ -356,7 +356,7 @@ pub fn text(a: &Analysis, units: Units) -> String {
     );
     let _ = writeln!(
         s,
-        "n = {}  d = {:.4} {lu}  E = {:.4} {lu}  beta = {:.4} deg  l_e = {:.4} {lu}  slices = {}",
+        "n = {}  d = {:.4} {lu}  E = {:.4} {lu}  β = {:.4} deg  l_e = {:.4} {lu}  slices = {}",
         g.roller_count,
         len(g.roller_diameter_m),
         len(g.pitch_diameter_m),
@@ -367,7 +367,7 @@ pub fn text(a: &Analysis, units: Units) -> String {
     let _ = writeln!(s, "\nRoller geometry");
     let _ = writeln!(
         s,
-        "  tau/2 = {:.4} deg  R1 = {:.4} {lu}  R2 = {:.4} {lu}  crown R_c = {:.4} {lu}, drop V = {:.3e} {lu}",
+        "  τ/2 = {:.4} deg  R1 = {:.4} {lu}  R2 = {:.4} {lu}  crown R_c = {:.4} {lu}, drop V = {:.3e} {lu}",
         rg.half_cone_rad.to_degrees(),
         len(rg.r1_m),
         len(rg.r2_m),
@@ -376,10 +376,11 @@ pub fn text(a: &Analysis, units: Units) -> String {
     );
     let _ = writeln!(
         s,
-        "  flange angle alpha = {:.4} deg  lever arm = {:.4} {lu}  mass = {:.4e} kg  cg offset = {:.4e} {lu}",
+        "  flange angle α = {:.4} deg  lever arm = {:.4} {lu}  mass = {:.4e} {}  cg offset = {:.4e} {lu}",
         rg.flange_angle_rad.to_degrees(),
         len(rg.flange_lever_arm_m),
-        rg.mass_kg,
+        Quantity::Mass.from_si(rg.mass_kg, units),
+        Quantity::Mass.unit(units),
         len(rg.cg_offset_m)
     );
     let _ = writeln!(s, "\nSpeeds and inertia loads");
@@ -391,12 +392,16 @@ pub fn text(a: &Analysis, units: Units) -> String {
         force(dy.centrifugal_force_n),
         moment(dy.gyroscopic_moment_nm)
     );
+    // Ring deflections in µm / µin, as every system's text and the workbench show them
+    // (issue 30 item 7: the workbench showed mil, this line inches).
+    let defl = crate::bearings::view::Display::Deflection;
     let _ = writeln!(
         s,
-        "\nCone displacement (working)  x = {:.4e}  y = {:.4e}  z = {:.4e} {lu}",
-        len(sol.displacement_m[0]),
-        len(sol.displacement_m[1]),
-        len(sol.displacement_m[2])
+        "\nCone displacement (working)  x = {:.3}  y = {:.3}  z = {:.3} {}",
+        defl.convert(sol.displacement_m[0], units),
+        defl.convert(sol.displacement_m[1], units),
+        defl.convert(sol.displacement_m[2], units),
+        defl.unit(units)
     );
     let _ = writeln!(
         s,
@@ -410,17 +415,19 @@ pub fn text(a: &Analysis, units: Units) -> String {
     if let Some(m) = b.input.operating.applied_moment_nm() {
         let _ = writeln!(
             s,
-            "Applied moment My = {:.3} {mu}: the cone tilts theta_y = {:.4e} rad (solved; M_y balanced to {:.1e} {mu})",
+            "Applied moment My = {:.3} {mu}: the cone tilts θy = {:.4e} rad (solved; M_y balanced to {:.1e} {mu})",
             moment(m),
             sol.rotation_rad[1],
             moment((sol.reaction[4] - m).abs())
         );
     }
-    let _ = writeln!(s, "\nRollers ({fu}, {mu}, ksi/MPa)");
+    // The units of the columns shown (no stress column here: the Rollers pane and the
+    // JSON carry max_stress_*; issue 30 item 7).
+    let _ = writeln!(s, "\nRollers (P in {fu}, M in {mu})");
     let _ = writeln!(
         s,
         "  {:>3} {:>7} {:>15} {:>10} {:>10} {:>9} {:>9} {:>9} {:>5} {:>5}",
-        "#", "phi deg", "state", "P1 cup", "P2 cone", "P3 flg", "M1", "M2", "edg1", "edg2"
+        "#", "ψ deg", "state", "P1 cup", "P2 cone", "P3 flg", "M1", "M2", "edg1", "edg2"
     );
     for (q, (r, _, _)) in sol.rollers.iter().enumerate() {
         let (c, sn) = b.azimuth[q];
@@ -445,7 +452,7 @@ pub fn text(a: &Analysis, units: Units) -> String {
     }
     let _ = writeln!(s, "\nDamping: {DAMPING_NOTE}.");
     let life = super::life::life(a);
-    s.push_str(&life.text());
+    s.push_str(&life.text(units));
     if let Some(w) = crate::physics::rating::static_safety_warning(
         crate::physics::rating::ContactKind::Roller,
         life.max_contact_stress_pa,
@@ -505,7 +512,7 @@ fn lubrication_text(a: &Analysis, units: Units) -> String {
             Some(m) => {
                 let _ = writeln!(
                     s,
-                    "  {label:<13} h_min = {:.3} {ru}  Lambda = {:.2}  at roller {}, {}{}",
+                    "  {label:<13} h_min = {:.3} {ru}  Λ = {:.2}  at roller {}, {}{}",
                     rough.from_si(m.film_m, units),
                     m.lambda,
                     m.roller + 1,
@@ -524,11 +531,13 @@ fn lubrication_text(a: &Analysis, units: Units) -> String {
     }
     if let Some(r) = t.rollers.iter().find(|r| r.flange.load_n > 0.0) {
         let f = &r.flange;
+        let v = crate::bearings::view::Display::Speed;
+        let vu = v.unit(units);
         let _ = writeln!(
             s,
-            "  roller end / rib: sliding {:.3} m/s, entraining {:.3} m/s, h_min = {:.3} {ru}, Lambda = {:.2}, mu = {:.4}, k = {:.3}",
-            f.sliding_m_s,
-            f.entrainment_m_s,
+            "  roller end / rib: sliding {:.3} {vu}, entraining {:.3} {vu}, h_min = {:.3} {ru}, Λ = {:.2}, µ = {:.4}, k = {:.3}",
+            v.convert(f.sliding_m_s, units),
+            v.convert(f.entrainment_m_s, units),
             rough.from_si(f.min_film_m, units),
             f.lambda,
             f.friction_coefficient,
@@ -556,9 +565,9 @@ fn lubrication_text(a: &Analysis, units: Units) -> String {
             let tu = Quantity::Temperature.unit(units);
             let _ = writeln!(
                 s,
-                "\nTHERMAL (steady; heat in {:.1} {pu}, balance {:.2e} W)",
+                "\nTHERMAL (steady; heat in {:.1} {pu}, balance {:.2e} {pu})",
                 Quantity::Power.from_si(th.steady.heat_in_w, units),
-                th.steady.balance_w
+                Quantity::Power.from_si(th.steady.balance_w, units)
             );
             for n in &th.steady.nodes {
                 let _ = writeln!(

@@ -48,7 +48,7 @@ pub const ROLLER_COLUMNS: [Column; 12] = [
         "azimuth_deg",
         Quantity::Angle,
         CsvStyle::Plain,
-        "φ deg",
+        "ψ deg",
         Display::Plain,
         1,
         6,
@@ -245,7 +245,7 @@ pub fn view(a: &Analysis) -> View {
     let load_chart = Chart {
         title: "Roller loads against azimuth".to_string(),
         x: ChartAxis {
-            label: "φ deg",
+            label: "ψ deg",
             display: Display::Plain,
             bounds: Some([0.0, 360.0]),
         },
@@ -304,14 +304,14 @@ pub fn view(a: &Analysis) -> View {
         Summary {
             label: "δz",
             value: sol.displacement_m[2],
-            display: Display::SmallLength,
-            precision: 4,
+            display: Display::Deflection,
+            precision: 3,
         },
         Summary {
             label: "δx",
             value: sol.displacement_m[0],
-            display: Display::SmallLength,
-            precision: 4,
+            display: Display::Deflection,
+            precision: 3,
         },
         Summary {
             label: "F_c",

@@ -68,13 +68,37 @@ pub fn keys_table<T>(schema: &'static Schema<T>) -> String {
             FieldKind::RealOr(word) => format!("{} | \"{word}\"", f.allowed(u)),
             _ => f.allowed(u),
         };
-        let _ = writeln!(
-            s,
-            "{:<40} {:<36} {}",
-            f.key,
-            allowed(Units::Si),
-            allowed(Units::Us)
+        // An entry wider than its column (a long choice list, a range with its word) is
+        // wrapped at its `|`s in both columns (issue 30 item 17: long lists pushed the US
+        // column out); an entry that fits prints as it always has.
+        if allowed(Units::Si).chars().count() <= ALLOWED_WIDTH {
+            let _ = writeln!(
+                s,
+                "{:<40} {:<36} {}",
+                f.key,
+                allowed(Units::Si),
+                allowed(Units::Us)
+            );
+            continue;
+        }
+        let pieces = |u: Units| -> Vec<String> {
+            match f.kind {
+                FieldKind::Choice(list) => list.iter().map(|c| c.to_string()).collect(),
+                FieldKind::RealOr(word) => vec![f.allowed(u), format!("\"{word}\"")],
+                _ => vec![f.allowed(u)],
+            }
+        };
+        let (si, us) = (
+            wrap_choices(&pieces(Units::Si), ALLOWED_WIDTH),
+            wrap_choices(&pieces(Units::Us), ALLOWED_WIDTH),
         );
+        for i in 0..si.len().max(us.len()) {
+            let key = if i == 0 { f.key } else { "" };
+            let a = si.get(i).map_or("", String::as_str);
+            let b = us.get(i).map_or("", String::as_str);
+            let line = format!("{key:<40} {a:<ALLOWED_WIDTH$} {b}");
+            let _ = writeln!(s, "{}", line.trim_end());
+        }
     }
     let _ = writeln!(s, "{:<40} any string", "name");
     let presets: Vec<&str> = MATERIAL_PRESETS.iter().map(|(n, _)| *n).collect();
@@ -97,6 +121,36 @@ pub fn keys_table<T>(schema: &'static Schema<T>) -> String {
         );
     }
     s
+}
+
+/// Width of the `allowed (si)` column of [`keys_table`].
+const ALLOWED_WIDTH: usize = 36;
+
+/// `list` joined by ` | ` in lines of at most `width` characters (a single longer choice
+/// on a line of its own), each line but the last ending in ` |`.
+fn wrap_choices(list: &[String], width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for (i, c) in list.iter().enumerate() {
+        let last = i + 1 == list.len();
+        let piece = if last {
+            c.to_string()
+        } else {
+            format!("{c} |")
+        };
+        let sep = usize::from(!line.is_empty());
+        if !line.is_empty() && line.chars().count() + sep + piece.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(&piece);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
 }
 
 /// Levenshtein distance of two short keys (characters).

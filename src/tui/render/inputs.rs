@@ -159,7 +159,13 @@ pub(super) fn render_inputs(app: &App, area: Rect, buf: &mut Buffer) {
             .get(app.input_sel)
             .map(|f| {
                 let allowed = app.deck.allowed(f.key, app.display_units);
-                format!("{}: {}. Allowed {allowed}.", f.key, f.help)
+                // First, so the two lines never cut it (issue 30 item 7).
+                let note = app
+                    .deck
+                    .us_customary_note(f.key, app.display_units)
+                    .map(|n| format!("{n}. "))
+                    .unwrap_or_default();
+                format!("{}: {note}{}. Allowed {allowed}.", f.key, f.help)
             })
             .unwrap_or_default(),
     };

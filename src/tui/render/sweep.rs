@@ -3,10 +3,10 @@
 //! not the solution's view.
 
 use ratatui::buffer::Buffer;
-use ratatui::layout::Rect;
+use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
-use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget};
+use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{draw_chart, series_datasets};
 use super::{no_solution_text, pane_block};
@@ -62,5 +62,19 @@ pub(super) fn render_sweep(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
                 .data(&line),
         );
     }
+    // The first failure's reason under the chart, wrapped, as the CLI gives it (issue 30
+    // item 17); the chart keeps the rest of the pane.
+    let area = match view_model::sweep_first_failure(p, app.display_units) {
+        Some(why) if area.height > 8 => {
+            let [chart, below] =
+                Layout::vertical([Constraint::Min(0), Constraint::Length(2)]).areas(area);
+            Paragraph::new(why)
+                .style(Style::default().fg(Color::Red))
+                .wrap(Wrap { trim: true })
+                .render(below, buf);
+            chart
+        }
+        _ => area,
+    };
     draw_chart(&s, datasets, block, area, buf);
 }

@@ -1143,7 +1143,7 @@ fn race_control_table_shows_race_control_heat() {
     let mut lines = table.lines().skip(1);
     let header = lines.next().expect("header");
     assert!(header.contains(" H W "), "{header}");
-    // The heat is the 11th number of each row (#, cage, ωsi, ωso, roll i, roll o, s/r i,
+    // The heat is the 11th number of each row (#, cage, ωsi, ωso, ωri, ωro, s/r i,
     // s/r o, u i, u o, H).
     let heat: f64 = lines
         .take(a.balls.len())

@@ -37,7 +37,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     }
     let _ = writeln!(
         s,
-        "Z = {}  D = {:.4} {}  P_t = {:.4} {}  beta = {:.2} deg  laminae = {}",
+        "Z = {}  D = {:.4} {}  P_t = {:.4} {}  β = {:.2} deg  laminae = {}",
         b.geometry.roller_count,
         b.geometry.roller_diameter_m * d.len.0,
         d.len.1,
@@ -92,14 +92,14 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
     let _ = writeln!(
         s,
         "{:>3} {:>7} {:>10} {:>10} {:>10} {:>10} {:>7} {:>7} {:>4} {:>4}",
-        "j",
-        "phi",
+        "#",
+        "ψ deg",
         format!("e_a {}", d.small_len.1),
         format!("e_r {}", d.small_len.1),
         format!("Qi {}", d.force.1),
         format!("Qo {}", d.force.1),
-        "bi deg",
-        "bo deg",
+        "αi °",
+        "αo °",
         "ni",
         "no"
     );
@@ -129,14 +129,14 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
         let _ = writeln!(
             s,
             "{:>3} {:>4} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
-            "j",
+            "#",
             "race",
-            format!("Smax {}", d.stress.1),
-            format!("Smean {}", d.stress.1),
+            format!("σmax {}", d.stress.1),
+            format!("σmean {}", d.stress.1),
             format!("2a {}", d.len.1),
             format!("2b {}", d.len.1),
             format!("ecc {}", d.len.1),
-            format!("tau {}", d.stress.1),
+            format!("τ {}", d.stress.1),
             format!("z {}", d.small_len.1),
             format!("h {}", d.small_len.1),
             format!("Pe {}", d.force.1)
@@ -166,7 +166,7 @@ pub fn to_string(a: &Analysis, units: Units) -> String {
                 );
             }
         }
-        let _ = writeln!(s, "(tau = max principal (Tresca) subsurface shear under the equivalent Hertz ellipse, z its depth)");
+        let _ = writeln!(s, "(τ = max principal (Tresca) subsurface shear under the equivalent Hertz ellipse, z its depth)");
     }
     if let Some(l) = &a.life {
         let r = &l.result;
