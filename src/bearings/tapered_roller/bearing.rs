@@ -413,15 +413,17 @@ impl Bearing {
             line_search: Backtracking::default(),
         };
         let res = newton.solve(&mut sys, &mut x);
-        if let Some(e) = sys.error {
-            return Err(e);
-        }
         let ok = match res.termination {
             Termination::Converged { .. } => true,
             Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
             _ => false,
         };
         if !ok {
+            // See `RingSystem::evaluate`: a roller failure is reported only when it
+            // stopped the iteration.
+            if let Some(e) = sys.error {
+                return Err(e);
+            }
             return Err(BearingError::NotConverged {
                 termination: res.termination,
                 tolerance_n: tolerance,
@@ -475,15 +477,17 @@ impl Bearing {
         };
         let mut x = Vector4::new(x3[0], x3[1], x3[2], rm * theta0);
         let res = newton.solve(&mut sys, &mut x);
-        if let Some(e) = sys.error {
-            return Err(e);
-        }
         let ok = match res.termination {
             Termination::Converged { .. } => true,
             Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
             _ => false,
         };
         if !ok {
+            // See `RingSystem::evaluate`: a roller failure is reported only when it
+            // stopped the iteration.
+            if let Some(e) = sys.error {
+                return Err(e);
+            }
             return Err(BearingError::NotConverged {
                 termination: res.termination,
                 tolerance_n: tolerance,
@@ -612,7 +616,11 @@ impl NewtonSystem<3> for RingSystem<'_> {
                 RingEval { r, j, state: st }
             }
             Err(e) => {
-                self.error.get_or_insert(e);
+                // A ring trial where some roller has no equilibrium (a slice beyond
+                // Lundberg's range, eq. 71, or a roller Newton that failed) is a NaN
+                // residual: the line search backtracks toward the accepted ring position.
+                // The latest failure is kept as the reason should the solve not converge.
+                self.error = Some(e);
                 RingEval {
                     r: Vector3::repeat(f64::NAN),
                     j: Matrix3::zeros(),
@@ -709,7 +717,11 @@ impl NewtonSystem<4> for MomentSystem<'_> {
                 MomentEval { r, j, state: st }
             }
             Err(e) => {
-                self.error.get_or_insert(e);
+                // A ring trial where some roller has no equilibrium (a slice beyond
+                // Lundberg's range, eq. 71, or a roller Newton that failed) is a NaN
+                // residual: the line search backtracks toward the accepted ring position.
+                // The latest failure is kept as the reason should the solve not converge.
+                self.error = Some(e);
                 MomentEval {
                     r: Vector4::repeat(f64::NAN),
                     j: Matrix4::zeros(),
