@@ -262,3 +262,37 @@ fn tilt_is_continuous_in_the_moment() {
     }
     eprintln!("worst step mismatch {worst:.3e}");
 }
+
+/// A moment no tilt can balance is refused before iterating, with the numbers: the
+/// 32007 deck with no moment about the reference point (the radial load's line of action
+/// gives 219.5 N·m, the contact moments at most 216.5 N·m: M_y ≥ 3.0 N·m is necessary,
+/// computed by hand from R_m, F_r/cos β, l_e/2 and F_a/sin β), and with F_r = 100 N under
+/// the deck's 267.2 N·m (0.73 + 216.5 at most). Before, both ended in a slice error of a
+/// far Newton trial.
+#[test]
+fn moment_beyond_reach_is_refused_with_numbers() {
+    use super::bearing::BearingError;
+    let mut low_radial = trb_32007_with_moment(267.2);
+    low_radial.operating.radial_load_n = 100.0;
+    for (input, low, high) in [
+        (trb_32007_with_moment(0.0), 2.98, 436.06),
+        (low_radial, -215.8, 217.3),
+    ] {
+        match Bearing::new(&input).unwrap().solve() {
+            Err(
+                e @ BearingError::MomentBeyondReach {
+                    low_nm, high_nm, ..
+                },
+            ) => {
+                assert!((low_nm - low).abs() < 0.05, "{low_nm} vs {low}");
+                assert!((high_nm - high).abs() < 0.05, "{high_nm} vs {high}");
+                let msg = e.to_string();
+                assert!(msg.contains("cannot be balanced at any tilt"), "{msg}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    // Just inside the necessary range the check lets the solver decide.
+    let b = Bearing::new(&trb_32007_with_moment(150.0)).unwrap();
+    assert!(b.solve().is_ok());
+}
