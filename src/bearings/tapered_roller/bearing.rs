@@ -89,6 +89,21 @@ pub enum BearingError {
         /// scaled by √(F_a/thrust) (F_c grows as the cage speed squared, eq. 38).
         limit_inner_speed_rpm: f64,
     },
+    /// The applied moment cannot be balanced at any tilt (a necessary condition of
+    /// equilibrium fails; see [`Bearing::solve_with_moment`]).
+    #[error("applied moment {moment_nm:.4e} N·m about y cannot be balanced at any tilt: the roller loads that carry the radial load give R_m·F_r/cos β = {radial_moment_nm:.4e} N·m about the reference point, and the rollers' own contact moments can add at most ±{contact_limit_nm:.4e} N·m (every roller's cup load F_a/(n sin β) on average, all of it at an end of the effective length, eqs. 96–99): the cone tips; hold the tilt (operating.moment = \"held\") or give a moment within {low_nm:.4e}…{high_nm:.4e} N·m")]
+    MomentBeyondReach {
+        /// M_y applied, N·m.
+        moment_nm: f64,
+        /// R_m·F_r/cos β, N·m.
+        radial_moment_nm: f64,
+        /// √((l_e/2)² + V²)·F_a/sin β, N·m.
+        contact_limit_nm: f64,
+        /// The necessary range's lower end, N·m.
+        low_nm: f64,
+        /// Its upper end, N·m.
+        high_nm: f64,
+    },
     /// A roller has no equilibrium.
     #[error("roller {index} (azimuth {azimuth_deg:.2}°): {source}")]
     Roller {
@@ -413,15 +428,17 @@ impl Bearing {
             line_search: Backtracking::default(),
         };
         let res = newton.solve(&mut sys, &mut x);
-        if let Some(e) = sys.error {
-            return Err(e);
-        }
         let ok = match res.termination {
             Termination::Converged { .. } => true,
             Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
             _ => false,
         };
         if !ok {
+            // See `RingSystem::evaluate`: a roller failure is reported only when it
+            // stopped the iteration.
+            if let Some(e) = sys.error {
+                return Err(e);
+            }
             return Err(BearingError::NotConverged {
                 termination: res.termination,
                 tolerance_n: tolerance,
@@ -456,6 +473,28 @@ impl Bearing {
     ) -> Result<BearingSolution, BearingError> {
         let op = &self.input.operating;
         let rm = self.geometry.moment_radius_m;
+        // A necessary condition, checked before iterating (without it a moment no tilt can
+        // balance ended in a slice error of some far Newton trial). At any equilibrium
+        // Σ P₁ cos φ = F_x/cos β (eq. 97) and Σ P₁ = F_z/sin β (eq. 99, P₁ ≥ 0), and each
+        // roller's cup moment about its midpoint is |M₁| ≤ P₁·max|X|, its contact lying
+        // within the effective length (eqs. 52–53: |X| ≤ (l_e/2) cos θ + V sin θ ≤
+        // √((l_e/2)² + V²)). By eq. 96, M_y − R_m·F_x/cos β = Σ M₁ cos φ, so
+        // |M_y − R_m·F_x/cos β| ≤ √((l_e/2)² + V²)·F_z/sin β. (32007-X-XL: 219.5 ± 216.5
+        // N·m; the reachable range is narrower still, the rollers not all at φ = 0, π.)
+        let beta = self.input.geometry.cup_angle_rad;
+        let radial_moment = rm * op.radial_load_n / beta.cos();
+        let half_le = 0.5 * self.input.geometry.effective_length_m;
+        let contact_limit =
+            half_le.hypot(self.geometry.crown_drop_m) * op.axial_load_n / beta.sin();
+        if (moment - radial_moment).abs() > contact_limit {
+            return Err(BearingError::MomentBeyondReach {
+                moment_nm: moment,
+                radial_moment_nm: radial_moment,
+                contact_limit_nm: contact_limit,
+                low_nm: radial_moment - contact_limit,
+                high_nm: radial_moment + contact_limit,
+            });
+        }
         let mut sys = MomentSystem {
             bearing: self,
             theta_x: op.misalignment_rad[0],
@@ -475,15 +514,17 @@ impl Bearing {
         };
         let mut x = Vector4::new(x3[0], x3[1], x3[2], rm * theta0);
         let res = newton.solve(&mut sys, &mut x);
-        if let Some(e) = sys.error {
-            return Err(e);
-        }
         let ok = match res.termination {
             Termination::Converged { .. } => true,
             Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
             _ => false,
         };
         if !ok {
+            // See `RingSystem::evaluate`: a roller failure is reported only when it
+            // stopped the iteration.
+            if let Some(e) = sys.error {
+                return Err(e);
+            }
             return Err(BearingError::NotConverged {
                 termination: res.termination,
                 tolerance_n: tolerance,
@@ -612,7 +653,11 @@ impl NewtonSystem<3> for RingSystem<'_> {
                 RingEval { r, j, state: st }
             }
             Err(e) => {
-                self.error.get_or_insert(e);
+                // A ring trial where some roller has no equilibrium (a slice beyond
+                // Lundberg's range, eq. 71, or a roller Newton that failed) is a NaN
+                // residual: the line search backtracks toward the accepted ring position.
+                // The latest failure is kept as the reason should the solve not converge.
+                self.error = Some(e);
                 RingEval {
                     r: Vector3::repeat(f64::NAN),
                     j: Matrix3::zeros(),
@@ -709,7 +754,11 @@ impl NewtonSystem<4> for MomentSystem<'_> {
                 MomentEval { r, j, state: st }
             }
             Err(e) => {
-                self.error.get_or_insert(e);
+                // A ring trial where some roller has no equilibrium (a slice beyond
+                // Lundberg's range, eq. 71, or a roller Newton that failed) is a NaN
+                // residual: the line search backtracks toward the accepted ring position.
+                // The latest failure is kept as the reason should the solve not converge.
+                self.error = Some(e);
                 MomentEval {
                     r: Vector4::repeat(f64::NAN),
                     j: Matrix4::zeros(),

@@ -261,8 +261,10 @@ impl NewtonSystem<2> for System<'_> {
         match self.eval(x) {
             Ok(e) => e,
             Err(err) => {
-                // Only the first failure is kept; NaN ends the solve as NonFinite.
-                self.error.get_or_insert(err);
+                // A trial outside the slice law's range (eq. 71) is a NaN residual: the
+                // line search rejects it and backtracks toward the accepted iterate. The
+                // latest failure is kept as the reason should the solve not converge.
+                self.error = Some(err);
                 Eval {
                     r: Vector2::repeat(f64::NAN),
                     j: Matrix2::zeros(),
@@ -390,9 +392,6 @@ impl RollerModel {
         };
         let mut x = start;
         let res = newton.solve(&mut sys, &mut x);
-        if let Some(err) = sys.error {
-            return Err(err.into());
-        }
         let state = if with_cone {
             RollerState::BothRaces
         } else {
@@ -406,6 +405,12 @@ impl RollerModel {
             _ => false,
         };
         if !ok {
+            // A slice beyond Lundberg's range (eq. 71) that stopped the iteration is the
+            // reason to report; a trial that left it and was backtracked from is not: the
+            // accepted iterates, the answer among them, were all evaluated inside the range.
+            if let Some(err) = sys.error {
+                return Err(err.into());
+            }
             return Err(RollerError::NotConverged {
                 state: state.as_str(),
                 termination: res.termination,
