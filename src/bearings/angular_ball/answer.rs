@@ -98,16 +98,28 @@ pub fn answer(a: &BallAnalysis, life: &BallLife) -> Vec<AnswerLine> {
         "skidding balls",
         format!("{skidding} of {}", a.balls.len()),
     ));
+    // "heat" is the whole friction power, as on every system's Summary; the seed's
+    // sliding heat (spin or slice traction, the H of the bulk temperature 4-1) is its own
+    // line, so neither is mistaken for the other.
+    let fb = super::friction::friction(a);
     out.push(AnswerLine::number(
         FRICTION,
         "heat",
+        Some(fb.power_w()),
+        Display::Power,
+        2,
+        "/friction/power_w",
+        "",
+    ));
+    out.push(AnswerLine::number(
+        FRICTION,
+        "sliding heat",
         Some(a.total_heat_w),
         Display::Power,
         2,
         "/heat/total_w",
         "",
     ));
-    let fb = super::friction::friction(a);
     out.push(AnswerLine::number(
         FRICTION,
         "friction torque",
