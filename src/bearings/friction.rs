@@ -161,6 +161,117 @@ impl Default for CageLosses {
     }
 }
 
+/// The five `[cage]` field specs of a deck type whose [`CageLosses`] is reached by
+/// `|b| b.cage` (the ball and tapered decks; the spherical roller's keys and ranges):
+///
+/// ```ignore
+/// const CAGE: [FieldSpec<BallInput>; 5] = cage_loss_fields!(BallInput, |b| b.cage);
+/// ```
+#[macro_export]
+#[doc(hidden)]
+macro_rules! __cage_loss_fields {
+    ($T:ty, |$b:ident| $path:expr) => {{
+        use $crate::deck::form::{FieldKind, FieldMeta, FieldSpec, Presence};
+        use $crate::physics::heat::GuidingRing;
+        use $crate::units::Quantity;
+        const fn optional(
+            key: &'static str,
+            label: &'static str,
+            q: Quantity,
+            min: (f64, bool),
+            max: (f64, bool),
+            help: &'static str,
+        ) -> FieldMeta {
+            FieldMeta::new(
+                key,
+                "cage",
+                label,
+                q,
+                FieldKind::RealOr("none"),
+                min,
+                max,
+                Presence::Default(f64::NAN),
+                help,
+            )
+        }
+        [
+            FieldSpec::<$T> {
+                meta: optional(
+                    "cage.drag_factor",
+                    "Drag factor f₀",
+                    Quantity::Dimensionless,
+                    (0.0, false),
+                    (100.0, false),
+                    "Palmgren's f₀ of the churning (viscous drag) moment M₀ = 1e-7·f₀·(ν·n)^(2/3)·d_m³ N·mm (seed 000 eq. 9.5), mechanism viscous_drag; \"none\" (the default): no drag",
+                ),
+                get: |$b: &$T| $path.drag_factor,
+                set: |$b: &mut $T, v| $path.drag_factor = v,
+            },
+            FieldSpec::<$T> {
+                meta: optional(
+                    "cage.rail_width",
+                    "Cage rail width W_cr",
+                    Quantity::Length,
+                    (0.0, true),
+                    (1.0, false),
+                    "total width of a land-guided cage's rails for their Petroff shear (seed 000 eqs. 9.3–9.4), mechanism cage_rails; \"none\" (the default): the cage is guided by its rolling elements, no rails",
+                ),
+                get: |$b: &$T| $path.rail_width_m,
+                set: |$b: &mut $T, v| $path.rail_width_m = v,
+            },
+            FieldSpec::<$T> {
+                meta: optional(
+                    "cage.mean_diameter",
+                    "Cage rail diameter D_cr",
+                    Quantity::Length,
+                    (0.0, true),
+                    (10.0, false),
+                    "mean diameter of the cage rail/land interface (needed with cage.rail_width)",
+                ),
+                get: |$b: &$T| $path.mean_diameter_m,
+                set: |$b: &mut $T, v| $path.mean_diameter_m = v,
+            },
+            FieldSpec::<$T> {
+                meta: optional(
+                    "cage.diametral_clearance",
+                    "Cage rail clearance",
+                    Quantity::Length,
+                    (0.0, true),
+                    (0.1, false),
+                    "diametral clearance between the cage rails and the guiding land (needed with cage.rail_width)",
+                ),
+                get: |$b: &$T| $path.diametral_clearance_m,
+                set: |$b: &mut $T, v| $path.diametral_clearance_m = v,
+            },
+            FieldSpec::<$T> {
+                meta: FieldMeta::new(
+                    "cage.guided_by",
+                    "cage",
+                    "Cage guided by",
+                    Quantity::Dimensionless,
+                    FieldKind::Choice(&["inner", "outer"]),
+                    (0.0, false),
+                    (1.0, false),
+                    Presence::Default(1.0),
+                    "the ring whose land guides the cage (used with cage.rail_width)",
+                ),
+                get: |$b: &$T| match $path.guided_by {
+                    GuidingRing::Inner => 0.0,
+                    GuidingRing::Outer => 1.0,
+                },
+                set: |$b: &mut $T, v| {
+                    $path.guided_by = if v as usize == 0 {
+                        GuidingRing::Inner
+                    } else {
+                        GuidingRing::Outer
+                    }
+                },
+            },
+        ]
+    }};
+}
+pub use crate::__cage_loss_fields as cage_loss_fields;
+
 /// The operating state [`CageLosses::mechanisms`] needs, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CageState {

@@ -12,8 +12,9 @@ use crate::physics::contact::point::HertzMethod;
 use crate::physics::lubrication::rheology::ViscosityModel;
 use crate::units::{Quantity, Units};
 
-/// `cage.guided_by` choices (the spherical roller's).
-const CAGE_GUIDES: &[&str] = &["inner", "outer"];
+/// The `[cage]` section's keys (issue 28), shared with the other systems.
+const CAGE: [FieldSpec<BallInput>; 5] =
+    crate::bearings::friction::cage_loss_fields!(BallInput, |b| b.cage);
 const HERTZ: &[&str] = &["exact", "brewe-hamrock"];
 const PRELOAD: &[&str] = &["displacement", "force"];
 const RACE: &[&str] = &["outer", "inner", "auto"];
@@ -681,90 +682,11 @@ static FIELDS: [FieldSpec<BallInput>; 56] = [
         get: |b| b.surfaces.composite_rms_m.unwrap_or(f64::NAN),
         set: |b, v| b.surfaces.composite_rms_m = (!v.is_nan()).then_some(v),
     },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.drag_factor",
-            "cage",
-            "Drag factor f₀",
-            Quantity::Dimensionless,
-            FieldKind::RealOr("none"),
-            (0.0, false),
-            (100.0, false),
-            Presence::Default(f64::NAN),
-            "Palmgren's f₀ of the churning (viscous drag) moment M₀ = 1e-7·f₀·(ν·n)^(2/3)·d_m³ N·mm (seed 000 eq. 9.5), mechanism viscous_drag; \"none\" (the default): no drag",
-        ),
-        get: |b| b.cage.drag_factor,
-        set: |b, v| b.cage.drag_factor = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.rail_width",
-            "cage",
-            "Cage rail width W_cr",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (1.0, false),
-            Presence::Default(f64::NAN),
-            "total width of a land-guided cage's rails for their Petroff shear (seed 000 eqs. 9.3–9.4), mechanism cage_rails; \"none\" (the default): the cage is guided by its rolling elements, no rails",
-        ),
-        get: |b| b.cage.rail_width_m,
-        set: |b, v| b.cage.rail_width_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.mean_diameter",
-            "cage",
-            "Cage rail diameter D_cr",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (10.0, false),
-            Presence::Default(f64::NAN),
-            "mean diameter of the cage rail/land interface (needed with cage.rail_width)",
-        ),
-        get: |b| b.cage.mean_diameter_m,
-        set: |b, v| b.cage.mean_diameter_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.diametral_clearance",
-            "cage",
-            "Cage rail clearance",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (0.1, false),
-            Presence::Default(f64::NAN),
-            "diametral clearance between the cage rails and the guiding land (needed with cage.rail_width)",
-        ),
-        get: |b| b.cage.diametral_clearance_m,
-        set: |b, v| b.cage.diametral_clearance_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.guided_by",
-            "cage",
-            "Cage guided by",
-            Quantity::Dimensionless,
-            FieldKind::Choice(CAGE_GUIDES),
-            (0.0, false),
-            (1.0, false),
-            Presence::Default(1.0),
-            "the ring whose land guides the cage (used with cage.rail_width)",
-        ),
-        get: |b| match b.cage.guided_by {
-            crate::physics::heat::GuidingRing::Inner => 0.0,
-            crate::physics::heat::GuidingRing::Outer => 1.0,
-        },
-        set: |b, v| {
-            b.cage.guided_by = if v as usize == 0 {
-                crate::physics::heat::GuidingRing::Inner
-            } else {
-                crate::physics::heat::GuidingRing::Outer
-            }
-        },
-    },
+    CAGE[0],
+    CAGE[1],
+    CAGE[2],
+    CAGE[3],
+    CAGE[4],
 ];
 
 fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {

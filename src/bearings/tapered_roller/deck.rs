@@ -10,8 +10,9 @@ use crate::units::{Quantity, Units, INCH_M};
 
 use super::SYSTEM_ID;
 
-/// `cage.guided_by` choices (the spherical roller's).
-const CAGE_GUIDES: &[&str] = &["inner", "outer"];
+/// The `[cage]` section's keys (issue 28), shared with the other systems.
+const CAGE: [FieldSpec<TaperedInput>; 5] =
+    crate::bearings::friction::cage_loss_fields!(TaperedInput, |t| t.cage);
 const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
 const GYRO: &[&str] = &["polar", "transverse"];
 
@@ -314,90 +315,11 @@ static FIELDS: [FieldSpec<TaperedInput>; 69] = [
         get: |t| t.surfaces.asperity_slope,
         set: |t, v| t.surfaces.asperity_slope = v,
     },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.drag_factor",
-            "cage",
-            "Drag factor f₀",
-            Quantity::Dimensionless,
-            FieldKind::RealOr("none"),
-            (0.0, false),
-            (100.0, false),
-            Presence::Default(f64::NAN),
-            "Palmgren's f₀ of the churning (viscous drag) moment M₀ = 1e-7·f₀·(ν·n)^(2/3)·d_m³ N·mm (seed 000 eq. 9.5), mechanism viscous_drag; \"none\" (the default): no drag",
-        ),
-        get: |b| b.cage.drag_factor,
-        set: |b, v| b.cage.drag_factor = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.rail_width",
-            "cage",
-            "Cage rail width W_cr",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (1.0, false),
-            Presence::Default(f64::NAN),
-            "total width of a land-guided cage's rails for their Petroff shear (seed 000 eqs. 9.3–9.4), mechanism cage_rails; \"none\" (the default): the cage is guided by its rolling elements, no rails",
-        ),
-        get: |b| b.cage.rail_width_m,
-        set: |b, v| b.cage.rail_width_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.mean_diameter",
-            "cage",
-            "Cage rail diameter D_cr",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (10.0, false),
-            Presence::Default(f64::NAN),
-            "mean diameter of the cage rail/land interface (needed with cage.rail_width)",
-        ),
-        get: |b| b.cage.mean_diameter_m,
-        set: |b, v| b.cage.mean_diameter_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.diametral_clearance",
-            "cage",
-            "Cage rail clearance",
-            Quantity::Length,
-            FieldKind::RealOr("none"),
-            (0.0, true),
-            (0.1, false),
-            Presence::Default(f64::NAN),
-            "diametral clearance between the cage rails and the guiding land (needed with cage.rail_width)",
-        ),
-        get: |b| b.cage.diametral_clearance_m,
-        set: |b, v| b.cage.diametral_clearance_m = v,
-    },
-    FieldSpec {
-        meta: FieldMeta::new(
-            "cage.guided_by",
-            "cage",
-            "Cage guided by",
-            Quantity::Dimensionless,
-            FieldKind::Choice(CAGE_GUIDES),
-            (0.0, false),
-            (1.0, false),
-            Presence::Default(1.0),
-            "the ring whose land guides the cage (used with cage.rail_width)",
-        ),
-        get: |b| match b.cage.guided_by {
-            crate::physics::heat::GuidingRing::Inner => 0.0,
-            crate::physics::heat::GuidingRing::Outer => 1.0,
-        },
-        set: |b, v| {
-            b.cage.guided_by = if v as usize == 0 {
-                crate::physics::heat::GuidingRing::Inner
-            } else {
-                crate::physics::heat::GuidingRing::Outer
-            }
-        },
-    },
+    CAGE[0],
+    CAGE[1],
+    CAGE[2],
+    CAGE[3],
+    CAGE[4],
 ];
 
 /// Rules across keys: the roller must fit inside the pitch circle and the flat inside the
