@@ -310,6 +310,22 @@ impl CageLosses {
         v
     }
 
+    /// The deck rule both systems with a `[cage]` section check (issue 28): a land-guided
+    /// cage (`cage.rail_width` given) needs all its rail keys. The field to name and the
+    /// message, or `None` when the rails are whole or absent.
+    pub fn rail_key_problem(&self) -> Option<(&'static str, String)> {
+        let missing = self.missing_rail_keys();
+        (!missing.is_empty()).then(|| {
+            (
+                "cage.rail_width",
+                format!(
+                    "is given, so the cage is land-guided: give {} too (or leave cage.rail_width out for a cage guided by its rolling elements)",
+                    missing.join(" and ")
+                ),
+            )
+        })
+    }
+
     /// The `viscous_drag` and `cage_rails` mechanisms the deck asks for, in that order
     /// (none when neither is given). Errors (phrased for a person) when a rail key is
     /// missing or the Petroff law refuses its inputs (zero clearance).

@@ -691,17 +691,8 @@ static FIELDS: [FieldSpec<BallInput>; 56] = [
 
 fn cross_checks(b: &BallInput, units: Units) -> Vec<(&'static str, String)> {
     let mut v = Vec::new();
-    // A land-guided cage needs all its rail keys (issue 28's `[cage]` section).
-    let missing = b.cage.missing_rail_keys();
-    if !missing.is_empty() {
-        v.push((
-            "cage.rail_width",
-            format!(
-                "is given, so the cage is land-guided: give {} too (or leave cage.rail_width out for a cage guided by its rolling elements)",
-                missing.join(" and ")
-            ),
-        ));
-    }
+    // A land-guided cage needs all its rail keys (one rule: `CageLosses::rail_key_problem`).
+    v.extend(b.cage.rail_key_problem());
     if let Some(pd) = b.geometry.clearance_m {
         let two_a = 2.0 * b.geometry.centre_distance_m();
         if pd >= two_a {

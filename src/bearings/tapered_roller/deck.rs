@@ -334,17 +334,8 @@ fn cross(t: &TaperedInput, units: Units) -> Vec<(&'static str, String)> {
             "and the cage rails need a [lubricant] (lubricant.viscosity a number): the friction stage runs only with one".to_string(),
         ));
     }
-    // A land-guided cage needs all its rail keys (issue 28's `[cage]` section).
-    let missing = t.cage.missing_rail_keys();
-    if !missing.is_empty() {
-        v.push((
-            "cage.rail_width",
-            format!(
-                "is given, so the cage is land-guided: give {} too (or leave cage.rail_width out for a cage guided by its rolling elements)",
-                missing.join(" and ")
-            ),
-        ));
-    }
+    // A land-guided cage needs all its rail keys (one rule: `CageLosses::rail_key_problem`).
+    v.extend(t.cage.rail_key_problem());
     // θy is given one way: held at a rotation, or free under a moment (issue 29). Both
     // keys written (even `misalignment_y = 0.0`) are refused by the schema's
     // `one_holding`, with both lines; this value rule covers values set without a deck
