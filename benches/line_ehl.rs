@@ -1,8 +1,10 @@
 //! Criterion benchmarks of the line-contact EHL solver (issue 26 Speed): a cold solve of
 //! references.md's isothermal case at 401 nodes (target ≤ 50 ms) and a warm step along a
 //! cage cycle — the same contact at a 2 % higher load started from the previous
-//! solution (target ≤ 10 ms); each by the chord path (the default) and the reference
-//! path (Newton with the exact Jacobian factorised at every iteration).
+//! solution (target ≤ 10 ms); each by the Newton–Krylov path (the default: GMRES
+//! preconditioned with the last LU), the chord path and the reference path (Newton with
+//! the exact Jacobian factorised at every iteration). The same case in NumPy/SciPy (the
+//! reference path's algorithm, LAPACK's LU): `benches/line_ehl_scipy.py`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::physics::ehl::line::{solve_line_ehl_with, LineEhlProblem, NewtonStrategy};
@@ -40,12 +42,13 @@ fn reference(nodes: usize, w: f64) -> LineEhlProblem {
 fn benches(c: &mut Criterion) {
     let cold = reference(401, 5e4);
     let next = reference(401, 5.1e4);
-    // The chord path (the solver's default) and the reference path (the exact Jacobian
-    // factorised every iteration) side by side: the ratio is the speed-up, measured in
-    // one run on a shared machine.
+    // The Krylov path (the solver's default), the chord path and the reference path (the
+    // exact Jacobian factorised every iteration) side by side: the ratios are the
+    // speed-ups, measured in one run on a shared machine.
     for (name, strategy) in [
         ("chord", NewtonStrategy::Chord),
         ("full", NewtonStrategy::Full),
+        ("krylov", NewtonStrategy::Krylov),
     ] {
         c.bench_function(&format!("line_ehl_cold_401_{name}"), |b| {
             b.iter(|| solve_line_ehl_with(black_box(&cold), None, strategy))

@@ -30,17 +30,22 @@
 //! where holding P = 0 leaves the flow wanting a negative pressure), with H₀ as the extra
 //! unknown closed by the load balance. The Jacobian is exact: the Reynolds rows carry the
 //! dependence on every pressure through ε(H) and ρ̄H with H through the dense kernel.
-//! Dense LU with partial pivoting; a backtracking line search on the residual norm. By
-//! default the LU is reused as a chord matrix (Shamanskii: [`NewtonStrategy::Chord`])
-//! while the residual contracts, and carried to a warm start on the same scaled grid; the
-//! exact Jacobian at every iteration ([`NewtonStrategy::Full`]) is the reference path.
-//! Cold start: Hertz pressure and H₀ from Pan–Hamrock's central film; warm start: a
-//! previous solution interpolated in Hertz-scaled X.
+//! Dense LU with partial pivoting (blocked: `numerics::dense_lu`); a backtracking line
+//! search on the residual norm. By default the exact Jacobian is assembled at every
+//! iteration but factorised rarely: its Newton step is found by GMRES preconditioned with
+//! the last LU ([`NewtonStrategy::Krylov`]), and the LU is carried to a warm start on the
+//! same scaled grid. The exact Jacobian factorised at every iteration
+//! ([`NewtonStrategy::Full`]) is the reference path; the chord path
+//! ([`NewtonStrategy::Chord`], Shamanskii) reuses the LU as the matrix itself.
+//! Cold start: Hertz pressure with a small outlet tail and H₀ from Pan–Hamrock's central
+//! film; warm start: a previous solution interpolated in Hertz-scaled X.
 //!
 //! The film is clamped at h ≥ 0 where an iterate would make it negative (ε and ρh then
 //! use 0, their derivative with H is dropped), and the clamps are counted.
 
 use super::kernel::{deflection, line_kernel};
+use crate::numerics::dense_lu::{lu_factor, lu_solve};
+use crate::numerics::gmres::{gmres, GmresWork};
 use crate::physics::contact::line::line_contact_reduced;
 use crate::physics::lubrication::film::{pan_hamrock_central, FilmInputs};
 use crate::physics::lubrication::houpert::{Houpert, Isothermal};
@@ -199,7 +204,32 @@ pub enum NewtonStrategy {
     /// refactorised (then a full, line-searched Newton step). Converges to the same root
     /// (the residual is the same; only the matrix that finds the step differs).
     Chord,
+    /// Newton–Krylov (inexact Newton, Dembo–Eisenstat–Steihaug 1982): the exact Jacobian
+    /// assembled at every iteration (cheap: O(n²)) and its Newton step found by GMRES
+    /// preconditioned with the last factorised Newton matrix (of this solve or, on the
+    /// same grid, of the warm start), to a residual [`KRYLOV_TOLERANCE`] of ‖Φ‖; when
+    /// GMRES needs more than [`KRYLOV_ITERATIONS`] products the current Jacobian is
+    /// factorised instead (O(n³)) and becomes the preconditioner. The steps are Newton's
+    /// to that tolerance, line-searched as [`NewtonStrategy::Full`]'s, so the iterates
+    /// follow the reference path and reach the same root with few factorisations.
+    Krylov,
 }
+
+/// The cold start's outlet pressure tail at X = 1, in p_H (see `solve_line_ehl_with`):
+/// large enough to put the start's meniscus beyond the solution's (1.1–1.3 half-widths on
+/// the test grid), small against the Hertz pressure it is added to.
+pub const COLD_START_TAIL: f64 = 0.02;
+
+/// GMRES's relative residual for a Newton–Krylov step: the forcing term of the inexact
+/// Newton method (a step this accurate converges as the exact Newton step does until
+/// ‖Φ‖ is 10⁻⁶ of its start, far beyond the step tolerance 10⁻⁸ the solves use).
+pub const KRYLOV_TOLERANCE: f64 = 1e-6;
+
+/// GMRES products allowed before the Jacobian is factorised instead: at 401 nodes a
+/// product with the dense matrix and a solve with the old factors cost about 1/25 of a
+/// factorisation (measured, `benches/line_ehl.rs`), so beyond about a dozen a fresh
+/// factorisation is cheaper, and the preconditioner has drifted too far to be kept.
+pub const KRYLOV_ITERATIONS: usize = 12;
 
 /// A chord step is kept when it cuts the merit ‖Φ‖ to at most this fraction (linear
 /// convergence at rate ≤ 0.5 bounds the remaining error by the last step, so the
@@ -583,13 +613,23 @@ impl Scaled<'_> {
             for e in coef_q.iter_mut() {
                 e.1 *= f.rho[e.0];
             }
+            // The coefficients of H_k summed per node k (i−2 … i+1), then one pass of the
+            // kernel row per k over two contiguous runs (j ≥ k, j < k) that vectorise.
+            let mut through_h = [0.0; 4];
             for (k, c) in coef_eps.iter().chain(coef_q.iter()) {
-                if *c == 0.0 {
+                through_h[*k + 2 - i] += s * c;
+            }
+            for (slot, a) in through_h.iter().enumerate() {
+                let a = *a;
+                if a == 0.0 || slot + i < 2 {
                     continue;
                 }
-                let a = s * c;
-                for (jj, slot) in row[..n].iter_mut().enumerate() {
-                    *slot += a * self.kernel[k.abs_diff(jj)];
+                let k = slot + i - 2;
+                for (v, kk) in row[k..n].iter_mut().zip(&self.kernel) {
+                    *v += a * kk;
+                }
+                for (v, kk) in row[..k].iter_mut().zip(self.kernel[1..=k].iter().rev()) {
+                    *v += a * kk;
                 }
                 row[n] += a;
             }
@@ -634,81 +674,40 @@ impl Work {
     }
 }
 
-/// LU factorisation with partial pivoting in place (A row-major m×m); the row
-/// exchanges in `piv`. `None` when a pivot vanishes or is not finite.
-fn lu_factor(a: &mut [f64], piv: &mut [usize], m: usize) -> Option<()> {
-    for k in 0..m {
-        let mut p = k;
-        let mut best = a[k * m + k].abs();
-        for r in k + 1..m {
-            let v = a[r * m + k].abs();
-            if v > best {
-                best = v;
-                p = r;
-            }
-        }
-        if !(best > 0.0 && best.is_finite()) {
-            return None;
-        }
-        piv[k] = p;
-        if p != k {
-            for c in 0..m {
-                a.swap(k * m + c, p * m + c);
-            }
-        }
-        let (top, rest) = a.split_at_mut((k + 1) * m);
-        let pivot_row = &top[k * m..(k + 1) * m];
-        let d = pivot_row[k];
-        for row in rest.chunks_exact_mut(m) {
-            let f = row[k] / d;
-            row[k] = f;
-            if f != 0.0 {
-                for (x, y) in row[k + 1..].iter_mut().zip(&pivot_row[k + 1..]) {
-                    *x -= f * y;
-                }
-            }
-        }
+/// out = A v for the row-major m × m matrix A.
+fn dense_product(a: &[f64], v: &[f64], out: &mut [f64], m: usize) {
+    for (o, row) in out.iter_mut().zip(a.chunks_exact(m)) {
+        *o = dot(row, v);
     }
-    Some(())
 }
 
-/// Solve with the factors of [`lu_factor`]: b is overwritten by x. `None` if x is not
-/// finite.
-fn lu_solve(a: &[f64], piv: &[usize], b: &mut [f64], m: usize) -> Option<()> {
-    // The row exchanges moved the stored multipliers along with the rows (LAPACK's
-    // layout), so all exchanges apply to b first, then L's forward substitution.
-    for (k, p) in piv.iter().enumerate().take(m) {
-        b.swap(k, *p);
-    }
-    for k in 0..m {
-        let bk = b[k];
-        if bk != 0.0 {
-            for r in k + 1..m {
-                b[r] -= a[r * m + k] * bk;
-            }
+/// x·y with four partial sums (lets the compiler use SIMD; the order of the additions
+/// changes the result at round-off only).
+fn dot(x: &[f64], y: &[f64]) -> f64 {
+    let mut acc = [0.0; 4];
+    let (xc, xr) = x.split_at(x.len() - x.len() % 4);
+    for (a, b) in xc.chunks_exact(4).zip(y.chunks_exact(4)) {
+        for l in 0..4 {
+            acc[l] += a[l] * b[l];
         }
     }
-    for k in (0..m).rev() {
-        let row = &a[k * m..(k + 1) * m];
-        let s: f64 = row[k + 1..]
-            .iter()
-            .zip(&b[k + 1..])
-            .map(|(x, y)| x * y)
-            .sum();
-        b[k] = (b[k] - s) / row[k];
+    let mut s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    for (a, b) in xr.iter().zip(&y[xc.len()..]) {
+        s += a * b;
     }
-    b.iter().all(|v| v.is_finite()).then_some(())
+    s
 }
 
 /// Solve a line-contact EHL problem, optionally warm-started from a previous solution
 /// (its pressure is carried over in Hertz-scaled X, its film constant in film units and,
-/// on the same scaled grid, its factorised Newton matrix): the chord path
-/// ([`NewtonStrategy::Chord`]).
+/// on the same scaled grid, its factorised Newton matrix): the Newton–Krylov path
+/// ([`NewtonStrategy::Krylov`]: the reference path's iterates with few factorisations,
+/// none on a warm step; measured against the chord path in `benches/line_ehl.rs`).
 pub fn solve_line_ehl(
     problem: &LineEhlProblem,
     warm: Option<&LineEhlSolution>,
 ) -> Result<LineEhlSolution, LineEhlError> {
-    solve_line_ehl_with(problem, warm, NewtonStrategy::Chord)
+    solve_line_ehl_with(problem, warm, NewtonStrategy::Krylov)
 }
 
 /// [`solve_line_ehl`] with the Newton strategy chosen ([`NewtonStrategy::Full`] is the
@@ -780,11 +779,27 @@ pub fn solve_line_ehl_with(
                 .map(|&xi| interpolate(&xs, &ps, xi).max(0.0))
                 .collect()
         }
-        _ => scaled
-            .x
-            .iter()
-            .map(|&xi| (1.0 - xi * xi).max(0.0).sqrt())
-            .collect(),
+        _ => {
+            // Hertz, with a small pressure tail over the outlet (COLD_START_TAIL of p_H at
+            // X = 1 falling linearly to 0 at the domain's end): the semismooth Newton
+            // moves the cavitation boundary by one node per iteration where nodes leave
+            // the cavitated set, but drops any number of them into it at once, so the
+            // start errs on the pressurised side of the outlet meniscus (measured on
+            // references.md's case at 401 nodes: 17 → 12 Newton iterations; the root is
+            // the same, the start only).
+            let x_end = scaled.x[n - 1];
+            scaled
+                .x
+                .iter()
+                .map(|&xi| {
+                    if xi > 1.0 && x_end > 1.0 {
+                        COLD_START_TAIL * (1.0 - (xi - 1.0) / (x_end - 1.0)).max(0.0)
+                    } else {
+                        (1.0 - xi * xi).max(0.0).sqrt()
+                    }
+                })
+                .collect()
+        }
     };
     p[0] = 0.0;
     p[n - 1] = 0.0;
@@ -815,20 +830,26 @@ pub fn solve_line_ehl_with(
     let m = n + 1;
     let mut ws = Work::new(n);
     let mut phi = vec![0.0; m];
+    // The Jacobian as assembled (the Krylov path's operator) and the LU factors in use.
     let mut jac = vec![0.0; m * m];
+    let mut lu = vec![0.0; m * m];
     let mut piv = vec![0usize; m];
-    // The chord path starts from a warm solution's factors when they belong to this grid.
+    let mut gmres_work = GmresWork::default();
+    let mut rhs = vec![0.0; m];
+    // The chord and Krylov paths start from a warm solution's factors when they belong to
+    // this grid.
     let mut have_factor = false;
-    if strategy == NewtonStrategy::Chord {
+    if strategy != NewtonStrategy::Full {
         if let Some(f) = warm
             .and_then(|s| s.factorisation.as_deref())
             .filter(|f| f.fits(n, x0, dx))
         {
-            jac.copy_from_slice(&f.lu);
+            lu.copy_from_slice(&f.lu);
             piv.copy_from_slice(&f.piv);
             have_factor = true;
         }
     }
+    let krylov = strategy == NewtonStrategy::Krylov;
     let mut trial_p = vec![0.0; n];
     let mut trial_phi = vec![0.0; m];
     let mut clamps_total = 0;
@@ -844,25 +865,46 @@ pub fn solve_line_ehl_with(
     let mut last_load = f64::INFINITY;
     let mut delta = vec![0.0; m];
     for iteration in 1..=problem.max_iterations {
-        let refactor = strategy == NewtonStrategy::Full || !have_factor;
+        let mut refactor = strategy == NewtonStrategy::Full || !have_factor;
         let (norm, _, clamps) = scaled.residual(
             &p,
             h0,
             &mut phi,
-            refactor.then_some(jac.as_mut_slice()),
+            (refactor || krylov).then_some(jac.as_mut_slice()),
             &mut ws,
         );
         clamps_total += clamps;
         if !norm.is_finite() {
             return Err(singular(iteration));
         }
+        rhs.iter_mut().zip(&phi).for_each(|(d, v)| *d = -v);
+        if krylov && !refactor {
+            // The exact Newton step by GMRES on the assembled Jacobian, preconditioned
+            // with the factors in hand; refactorised when that does not converge soon.
+            let outcome = gmres(
+                |v, out| dense_product(&jac, v, out, m),
+                |v| lu_solve(&lu, &piv, v, m),
+                &rhs,
+                &mut delta,
+                KRYLOV_TOLERANCE,
+                KRYLOV_ITERATIONS,
+                &mut gmres_work,
+            );
+            refactor = !outcome.converged;
+        }
         if refactor {
-            lu_factor(&mut jac, &mut piv, m).ok_or_else(|| singular(iteration))?;
+            lu.copy_from_slice(&jac);
+            lu_factor(&mut lu, &mut piv, m).ok_or_else(|| singular(iteration))?;
             factorisations += 1;
             have_factor = true;
         }
-        delta.iter_mut().zip(&phi).for_each(|(d, v)| *d = -v);
-        lu_solve(&jac, &piv, &mut delta, m).ok_or_else(|| singular(iteration))?;
+        if refactor || !krylov {
+            delta.copy_from_slice(&rhs);
+            lu_solve(&lu, &piv, &mut delta, m).ok_or_else(|| singular(iteration))?;
+        }
+        // The step was an exact (or GMRES-accurate) Newton step unless it is a chord
+        // step with stale factors.
+        let newton_step = refactor || krylov;
         // Damping: backtracking until ‖Φ‖ decreases (Armijo), from a first step that
         // moves no pressure by more than p_H (a trust bound against the viscosity's
         // exponential growth). The Reynolds rows are scaled (see `residual`) so that the
@@ -873,7 +915,7 @@ pub fn solve_line_ehl_with(
         let mut alpha = if largest > 1.0 { 1.0 / largest } else { 1.0 };
         let h_c_now = interpolate(&scaled.x, &ws.h, 0.0).max(1e-12);
         let mut accepted = None;
-        if !refactor {
+        if !newton_step {
             // A chord step (a stale matrix): kept whole only if it contracts the residual
             // by CHORD_CONTRACTION (or, at round-off, is below the tolerance and does not
             // raise it); otherwise discarded and the exact Jacobian factorised next.
@@ -938,15 +980,8 @@ pub fn solve_line_ehl_with(
         // short damped step proves nothing) is below the tolerance.
         let full_step = largest.max(delta[n].abs() / h_c_scaled);
         if full_step < problem.tolerance && new_load.abs() <= LOAD_BALANCE_TOLERANCE {
-            let factor = (strategy == NewtonStrategy::Chord).then(|| {
-                Arc::new(Factorisation {
-                    n,
-                    x0,
-                    dx,
-                    lu: jac,
-                    piv,
-                })
-            });
+            let factor = (strategy != NewtonStrategy::Full)
+                .then(|| Arc::new(Factorisation { n, x0, dx, lu, piv }));
             return Ok(finish(
                 problem,
                 &scaled,
