@@ -178,7 +178,8 @@ use crate::physics::lubrication::cage_film::{
     PocketGeometry,
 };
 use crate::physics::lubrication::guide_ring::{
-    guide_ring_balance, EndContactInput, GuideRingError, GuideRingGeometry, GuideRingSolution,
+    guide_ring_balance_with_land, CageLandOnRing, EndContactInput, GuideRingError,
+    GuideRingGeometry, GuideRingSolution,
 };
 use crate::physics::lubrication::lamina_friction::{
     lamina_friction, lamina_friction_and_slope, FilmRheology, LaminaFrictionError, LaminaSlice,
@@ -614,7 +615,23 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
                     radial_sliding_m_s: r.spin_rad_s * end_offset * sk.skew_rad,
                 })
                 .collect();
-            Some(guide_ring_balance(g, lub.law, rh, wi, &ends)?)
+            // A cage piloted on the ring drives it through the land film (Newton's third
+            // law: the land's torque on the cage below, opposite on the ring; srb10).
+            let land = &inputs.cage_land;
+            let on_ring = (land.kind == CageLandKind::GuideRing).then_some(CageLandOnRing {
+                radius_m: land.radius_m,
+                width_m: land.width_m,
+                radial_clearance_m: land.radial_clearance_m,
+                cage_speed_rad_s: wc,
+            });
+            Some(guide_ring_balance_with_land(
+                g,
+                lub.law,
+                rh,
+                wi,
+                &ends,
+                on_ring.as_ref(),
+            )?)
         }
         None => None,
     };

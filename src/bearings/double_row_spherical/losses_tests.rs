@@ -325,9 +325,24 @@ fn seed_shapes_print() {
 ///   0.63 %: the skew's size moves toward the seed, the raceway and guide-ring shares do
 ///   not (the loaded rollers' net axial traction points away from the guide ring).
 ///
+/// * srb10, the cage's land film reacting on the guide ring (Newton's third law; before,
+///   only the cage felt it): computed cage 1221.3 / 1221.6 / 1221.2 rpm, total 247.8 /
+///   274.3 / 248.2 W, raceways 91.8 / 95.9 / 93.0 %, guide ring 0.87 / 1.02 / 0.88 %
+///   (ring 2107 / 1977 / 2103 rpm, was 2505 rpm), pockets + land 5.35 / 2.07 / 4.75 %,
+///   skew 2.00 / 1.09 / 1.33 %, M_fi 0.455 / 0.550 / 0.462 > M_fo 0.269 / 0.287 / 0.274
+///   N·m. **The guide-ring band cannot be met with this deck's ring**: whatever loads the
+///   roller ends, the ring's torque balance caps its loss at k_b·(ω_i − ω_c)² = 5.8 W
+///   (its bore's Petroff coefficient k_b = 1.67e-4 N·m·s), 2.1–2.3 % of the loss
+///   (`guide_ring_loss_is_bounded_by_its_bore`); the loaded rollers' axial components
+///   Q·sin(α − α⁰) that a roller unable to walk would put on it are ≤ 0.4 / 6.4 / 1.9 N
+///   and a symmetric roller walks instead (SKF: "self-guiding rollers … a floating guide
+///   ring guides unloaded rollers"); `guide_ring_physics_print`, docs "Why the guide
+///   ring takes about 1 %". With the guide ring's 4–19 % missing from the other terms,
+///   the raceways' 65–85 % band cannot be met either.
+///
 /// Nothing is tuned to pass.
 #[test]
-#[ignore = "seed shapes fail on the shipped deck (computed cage): raceways 92-96 % (> 85 %), guide ring 0.6-0.8 % (< 5 %, larger under axial), M_fo/M_fi lower under axial; skew 1.1-2.0 %, cage >= 2 %, M_fi > M_fo hold; see the doc comment"]
+#[ignore = "seed shapes fail on the shipped deck (computed cage): raceways 92-96 % (> 85 %), guide ring 0.9-1.0 % (< 5 %: capped at 2.1-2.3 % by its bore, guide_ring_loss_is_bounded_by_its_bore), larger under axial, M_fo/M_fi lower under axial; skew 1.1-2.0 %, cage >= 2 %, M_fi > M_fo hold; see the doc comment"]
 fn seed_shapes() {
     let d = directions();
     for (what, l) in &d {
@@ -581,7 +596,10 @@ fn losses_stage_cost_print() {
 /// traction that is ~ μ_fl·Q·ψ·u/(|v_sl|+ψ·u) ~ 0.01–0.03·Q, 30–100 N at Q ≈ 3.5 kN) and by
 /// end faces that touch the ring off the roller axis (~1 mm: sliding ω_s·1 mm ≈ 0.8 m/s
 /// from the spin alone): 10 loaded rollers × μ 0.05 × 50 N × 1–3 m/s ≈ 25–75 W, 10–25 %
-/// of the loss — the seed's range. Neither is in the model: the statics' rollers have no
+/// of the loss — the seed's range. (srb10: not so for a floating ring. Its torque balance
+/// caps the ends' circumferential sliding loss with the bore's, at k_b·(ω_i − ω_c)² ≈ 6 W
+/// on this deck, `guide_ring_loss_is_bounded_by_its_bore`; only end points off the roller
+/// axis, swept by the spin, escape the cap.) Neither is in the model: the statics' rollers have no
 /// skew degree of freedom (the loaded rollers' axial balance closes on the raceways with
 /// 0 N at the ring) and the derived end contact lies on the axis (the 22308's end and
 /// ring geometry is not published). So the share stays < 1 % and `seed_shapes` keeps that
@@ -820,6 +838,147 @@ fn skew_couplings_print() {
             s.skew,
             s.guide_ring,
             s.cage_pockets + s.cage_land,
+        );
+    }
+}
+
+/// The guide ring's own Petroff coefficient k_b = 2π·η·R_b³·L_b/c_b, N·m·s (the bore on the
+/// inner ring, `losses::derived_geometry`), computed here from the deck.
+fn bore_petroff_coefficient(b: &DoubleRowInput) -> f64 {
+    let rb = super::losses::derived_geometry(b).guide_bore_radius_m;
+    2.0 * std::f64::consts::PI * b.viscosity_pa_s() * rb.powi(3) * b.guide_ring.width_m
+        / (0.5 * b.guide_ring.bore_clearance_m)
+}
+
+/// The ceiling on the guide ring's loss (srb10), a consequence of its torque balance alone:
+/// the ring turns between the cage and the inner ring, driven by its bore film (torque
+/// T_b ≥ 0 toward ω_i) and braked by the roller ends (and the cage's land, when the cage
+/// is piloted on it). Its loss is the bore's T_b·(ω_i − ω_g) plus the ends' Σ|F_k|·|v_k|
+/// with v_k = (ω_g − ω_c)·r_g − u_k (u_k the end point's own speed); the ends' torque
+/// Σ F_k·r_g is at most T_b (the land brakes too), so
+/// P_ring ≤ T_b·(ω_i − ω_c) + Σ|F_k|·|u_k| ≤ k_b·(ω_i − ω_c)² + Σ|F_k|·|u_k|,
+/// k_b = 2π·η·R_b³·L_b/c_b the bore's Petroff coefficient. Checked on the shipped deck's
+/// three cases to 1e-9 (the balance's residual), **whatever loads the ends**: so with the
+/// deck's ring (bore 1.45 mm wide, 30 µm radial clearance, R_b 28.4 mm, 60 °C) the ring
+/// cannot take more than k_b·(ω_i − ω_c)² ≈ 6 W, 2.1–2.4 % of the loss, unless its end
+/// contacts lie off the roller axis (u_k ≠ 0: the spin sweeps them) — the derived end
+/// geometry puts them on the axis (|u_k| ≤ 4e-5 m·|ω_s|). The seed's 10–15 % (issue band
+/// 5–20 %) is therefore out of reach of this deck's guide ring; asserted below 5 %.
+#[test]
+fn guide_ring_loss_is_bounded_by_its_bore() {
+    for (fr, fa) in [(20_000.0, 0.0), (0.0, 6_000.0), (20_000.0, 2_000.0)] {
+        let b = with_loads(fr, fa);
+        let (_, l) = breakdown(&b);
+        let g = l.guide_ring.as_ref().expect("the deck has a guide ring");
+        let wi = b.operating.inner_speed_rad_s;
+        let wc = l.losses.cage_speed_rpm * std::f64::consts::PI / 30.0;
+        let rg = super::losses::derived_geometry(&b).guide_contact_radius_m;
+        let kb = bore_petroff_coefficient(&b);
+        let own: f64 = g
+            .contacts
+            .iter()
+            .map(|c| {
+                let u = (g.speed_rad_s - wc) * rg - c.sliding_speed_m_s;
+                c.force_on_roller_n.abs() * u.abs()
+            })
+            .sum();
+        let bound = kb * (wi - wc).powi(2) + own;
+        let p = l.losses.guide_ring_w;
+        eprintln!(
+            "({fr}, {fa}): guide ring {p:.3} W ({:.2} %), ceiling {bound:.3} W ({:.2} % of {:.1} W; ends' own sliding {own:.2e} W), ring {:.1} rpm, cage {:.1} rpm",
+            l.losses.shares_pct.guide_ring,
+            100.0 * bound / l.losses.total_w,
+            l.losses.total_w,
+            g.speed_rad_s * 30.0 / std::f64::consts::PI,
+            l.losses.cage_speed_rpm
+        );
+        assert!(p <= bound * (1.0 + 1e-9), "({fr}, {fa}): {p} W > {bound} W");
+        assert!(
+            bound < 0.05 * l.losses.total_w,
+            "({fr}, {fa}): the ceiling {bound} W is 5 % of {} W or more",
+            l.losses.total_w
+        );
+    }
+}
+
+/// Issue 27 / srb10 item 1: what could load the guide ring of a 22308 CC, measured on the
+/// shipped deck (three cases, computed cage). Printed, not asserted (the assertions are
+/// `guide_ring_loss_is_bounded_by_its_bore` and
+/// `guide_ring_end_loads_are_the_unloaded_rollers_centrifugal_push`):
+/// (a) the loaded rollers' contact angles α_i ≠ α_o and the axial components
+///     Q·sin(α − α⁰) of each raceway's resultant along the roller axis — what a roller that
+///     could not walk along its crown would press on the ring —, the roller's actual walk
+///     against the end gap, and the ring force the statics finds;
+/// (b) the ring's bore and the cage's land films at the balanced ring speed, and the
+///     ceiling k_b·(ω_i − ω_c)²;
+/// (c) the ends: Σ Q_end, their loss, and what an end contact 1 mm off the roller axis
+///     (spin sweeping it at ω_s·1 mm) would dissipate at μ_fl.
+#[test]
+#[ignore = "diagnostic print"]
+fn guide_ring_physics_print() {
+    for (fr, fa) in [(20_000.0, 0.0), (0.0, 6_000.0), (20_000.0, 2_000.0)] {
+        let b = with_loads(fr, fa);
+        let (a, l) = breakdown(&b);
+        let a0 = b.geometry.contact_angle_rad;
+        let (mut worst_da, mut worst_fi, mut worst_fo, mut worst_walk) =
+            (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        let (mut loaded, mut loaded_ring) = (0, 0.0f64);
+        for r in &a.combined.rollers {
+            if r.inner.normal_load_n <= 0.0 || r.outer.normal_load_n <= 0.0 {
+                continue;
+            }
+            loaded += 1;
+            let (ai, ao) = (
+                r.inner.contact_angle_deg.to_radians(),
+                r.outer.contact_angle_deg.to_radians(),
+            );
+            worst_da = worst_da.max((ai - ao).abs().to_degrees());
+            worst_fi = worst_fi.max((r.inner.normal_load_n * (ai - a0).sin()).abs());
+            worst_fo = worst_fo.max((r.outer.normal_load_n * (ao - a0).sin()).abs());
+            worst_walk = worst_walk.max(r.axial_displacement_m.abs());
+            loaded_ring = loaded_ring.max(r.guide_force_n);
+        }
+        let g = l.guide_ring.as_ref().expect("guide ring");
+        let wi = b.operating.inner_speed_rad_s;
+        let wc = l.losses.cage_speed_rpm * std::f64::consts::PI / 30.0;
+        let kb = bore_petroff_coefficient(&b);
+        let rh = loss_inputs(&a)
+            .expect("inputs")
+            .lubricant
+            .rheology
+            .limiting_traction_coefficient;
+        let q_end: f64 = l.rollers.iter().map(|r| r.guide_ring_load_n).sum();
+        let spin = l
+            .rollers
+            .iter()
+            .map(|r| r.spin_rad_s.abs())
+            .fold(0.0, f64::max);
+        eprintln!(
+            "({fr}, {fa}) (a) {loaded} loaded rollers: |α_i − α_o| ≤ {worst_da:.3}°, |Q_i·sin(α_i − α⁰)| ≤ {worst_fi:.1} N, |Q_o·sin(α_o − α⁰)| ≤ {worst_fo:.1} N, walk ≤ {:.2} µm (end gap at rest {:.1} µm), ring force on a loaded roller ≤ {loaded_ring:.3} N",
+            worst_walk * 1e6,
+            b.guide_gap_m() * 1e6
+        );
+        eprintln!(
+            "({fr}, {fa}) (b) ring {:.1} rpm, cage {:.1} rpm, inner {:.1} rpm; bore {:.3} W (T_b {:.4} N·m, k_b {kb:.3e} N·m·s), land torque on the ring {:.4} N·m; ceiling k_b(ω_i − ω_c)² = {:.3} W; guide ring {:.3} W = {:.2} % of {:.1} W",
+            g.speed_rad_s * 30.0 / std::f64::consts::PI,
+            l.losses.cage_speed_rpm,
+            wi * 30.0 / std::f64::consts::PI,
+            g.bore_power_w,
+            g.bore_torque_nm,
+            g.land_torque_nm,
+            kb * (wi - wc).powi(2),
+            l.losses.guide_ring_w,
+            l.losses.shares_pct.guide_ring,
+            l.losses.total_w
+        );
+        eprintln!(
+            "({fr}, {fa}) (c) Σ Q_end {q_end:.2} N on {} rollers, ends {:.3} W (sliding ≤ {:.3} m/s); at 1 mm off the axis: μ_fl·ΣQ·ω_s·1 mm ≤ {:.3} W (ω_s ≤ {spin:.0} rad/s); the seed's 10–15 % would need {:.0}–{:.0} W",
+            l.rollers.iter().filter(|r| r.guide_ring_load_n > 0.0).count(),
+            g.ends_power_w,
+            g.contacts.iter().map(|c| c.sliding_speed_m_s.abs()).fold(0.0, f64::max),
+            rh * q_end * spin * 1e-3,
+            0.10 / 0.90 * (l.losses.total_w - l.losses.guide_ring_w),
+            0.15 / 0.85 * (l.losses.total_w - l.losses.guide_ring_w),
         );
     }
 }

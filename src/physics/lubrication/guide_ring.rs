@@ -26,6 +26,16 @@
 //! (every torque pushes the ring towards the bracket), so the root is bracketed; it is
 //! found by the Illinois variant of regula falsi, and a failure is a typed error with the
 //! bracket and residuals.
+//!
+//! # The cage's land on the ring
+//! Where the cage is piloted on the guide ring (deck `land = "guide-ring"`) the land film
+//! between them is a second Petroff journal (`cage_film::land_torque_on_cage_nm`): its
+//! torque brakes the cage toward the ring's speed and, by Newton's third law, drives the
+//! ring toward the cage's, T_land = −2π·η·R_l³·L_l·(ω_g − ω_c)/c_l. It enters the ring's
+//! balance G(ω_g) = T_ends + T_bore + T_land = 0 ([`guide_ring_balance_with_land`]); ω_c is
+//! added to the bracket (the land, too, pushes the ring towards it). Without it (srb-loss
+//! to srb-kellstrom) the cage received the land torque and the ring did not: the two
+//! bodies' torques did not cancel (srb10).
 
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
@@ -35,6 +45,7 @@ use thiserror::Error;
 
 use crate::physics::contact::point::{CurvatureSum, HertzMethod, HertzPointContact};
 use crate::physics::heat::{cage_rail_friction_force_n, HeatError};
+use crate::physics::lubrication::cage_film::land_torque_on_cage_nm;
 use crate::physics::lubrication::film_point::PointFilmInputs;
 use crate::physics::lubrication::lamina_friction::{FilmRheology, RacewayTractionLaw};
 use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
@@ -128,6 +139,48 @@ pub struct EndContactInput {
     pub radial_sliding_m_s: f64,
 }
 
+/// The cage's land film on the guide ring's outer surface (deck `land = "guide-ring"`),
+/// SI: a Petroff journal whose torque acts on the cage and, opposite, on the ring (module
+/// notes "The cage's land on the ring").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct CageLandOnRing {
+    /// R_l, land radius, m.
+    pub radius_m: f64,
+    /// L_l, land width, m.
+    pub width_m: f64,
+    /// c_l, radial clearance of the land, m.
+    pub radial_clearance_m: f64,
+    /// ω_c, the cage's speed, rad/s.
+    pub cage_speed_rad_s: f64,
+}
+
+impl CageLandOnRing {
+    /// The land film's torque on the ring at ring speed ω_g, N·m, opposing ω_g − ω_c:
+    /// −2π·η·R_l³·L_l·(ω_g − ω_c)/c_l (`cage_film::land_torque_on_cage_nm` with the
+    /// ring as the moving body).
+    ///
+    /// # Errors
+    /// [`GuideRingError::BadInput`] for a non-positive radius, width or clearance.
+    pub fn torque_on_ring_nm(
+        &self,
+        viscosity_pa_s: f64,
+        ring_speed_rad_s: f64,
+    ) -> Result<f64, GuideRingError> {
+        land_torque_on_cage_nm(
+            viscosity_pa_s,
+            self.radius_m,
+            self.width_m,
+            self.radial_clearance_m,
+            ring_speed_rad_s - self.cage_speed_rad_s,
+        )
+        .map_err(|_| GuideRingError::BadInput {
+            name: "cage land on the guide ring (radius, width, clearance)",
+            value: self.radial_clearance_m,
+            allowed: "positive and finite",
+        })
+    }
+}
+
 /// Result of one end contact at a given ring speed.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct EndContact {
@@ -161,6 +214,10 @@ pub struct GuideRingSolution {
     pub bore_power_w: f64,
     /// Bore torque on the ring (signed, about the bearing axis), N·m.
     pub bore_torque_nm: f64,
+    /// The cage land's torque on the ring (signed; 0 unless the cage is piloted on it),
+    /// N·m.
+    #[serde(default)]
+    pub land_torque_nm: f64,
     /// Torque balance residual at ω_g, N·m.
     pub residual_nm: f64,
 }
@@ -398,6 +455,22 @@ pub fn guide_ring_balance(
     inner_speed_rad_s: f64,
     rollers: &[EndContactInput],
 ) -> Result<GuideRingSolution, GuideRingError> {
+    guide_ring_balance_with_land(geometry, law, rheology, inner_speed_rad_s, rollers, None)
+}
+
+/// As [`guide_ring_balance`], with the cage's land film on the ring (`land`, module notes
+/// "The cage's land on the ring") in the ring's torque balance.
+///
+/// # Errors
+/// As [`guide_ring_balance`]; [`GuideRingError::BadInput`] for an unusable land.
+pub fn guide_ring_balance_with_land(
+    geometry: &GuideRingGeometry,
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    inner_speed_rad_s: f64,
+    rollers: &[EndContactInput],
+    land: Option<&CageLandOnRing>,
+) -> Result<GuideRingSolution, GuideRingError> {
     let hertz = end_contact_model(geometry)?;
     let eta = rheology.viscosity_pa_s;
     if !(eta.is_finite() && eta >= 0.0) {
@@ -432,8 +505,22 @@ pub fn guide_ring_balance(
         lo = lo.min(w);
         hi = hi.max(w);
     }
+    if let Some(c) = land {
+        if !c.cage_speed_rad_s.is_finite() {
+            return Err(GuideRingError::BadInput {
+                name: "cage_speed_rad_s",
+                value: c.cage_speed_rad_s,
+                allowed: "finite",
+            });
+        }
+        lo = lo.min(c.cage_speed_rad_s);
+        hi = hi.max(c.cage_speed_rad_s);
+    }
+    let land_torque = |w: f64| -> Result<f64, GuideRingError> {
+        land.map_or(Ok(0.0), |c| c.torque_on_ring_nm(eta, w))
+    };
     let residual = |w: f64| -> Result<f64, GuideRingError> {
-        let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s)?;
+        let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s)? + land_torque(w)?;
         for k in rollers {
             t -= end_contact(geometry, &hertz, law, rheology, k, w)?.force_on_roller_n * r;
         }
@@ -459,8 +546,9 @@ pub fn guide_ring_balance(
         .map(|k| end_contact(geometry, &hertz, law, rheology, k, speed))
         .collect::<Result<Vec<_>, _>>()?;
     let bore_torque_nm = geometry.bore_torque_nm(eta, speed, inner_speed_rad_s)?;
+    let land_torque_nm = land_torque(speed)?;
     let ends_power_w: f64 = contacts.iter().map(|c| c.power_w).sum();
-    let residual_nm = bore_torque_nm
+    let residual_nm = bore_torque_nm + land_torque_nm
         - contacts
             .iter()
             .map(|c| c.force_on_roller_n * r)
@@ -471,6 +559,7 @@ pub fn guide_ring_balance(
         ends_power_w,
         bore_power_w: (bore_torque_nm * (speed - inner_speed_rad_s)).abs(),
         bore_torque_nm,
+        land_torque_nm,
         residual_nm,
     })
 }
@@ -579,6 +668,67 @@ mod tests {
     /// nothing. With loaded ends it settles strictly between the inner ring's speed and
     /// the roller ends' speed, the torques balance (residual below 1e-9 of the bore torque),
     /// and each side's power is positive.
+    /// Two Petroff films in series (srb10): a ring touched by no roller end, between the
+    /// bore on the inner ring (k_b = 2π·η·R_b³·L_b/c_b) and the cage's land on its outer
+    /// surface (k_l = 2π·η·R_l³·L_l/c_l), runs where the two torques cancel,
+    /// ω_g = (k_b·ω_i + k_l·ω_c)/(k_b + k_l), and the two films dissipate
+    /// k_b·k_l/(k_b + k_l)·(ω_i − ω_c)² — the closed form, computed here from the Petroff
+    /// coefficients directly, to 1e-12 (the Illinois search's tolerance is 1e-13 of the
+    /// speed). Without the land the ring would run with the inner ring (0 W): the land's
+    /// reaction is what the balance must carry. With loaded ends the land still enters the
+    /// balance (the residual, with the land's torque, ≤ 1e-9 of it) and slows the ring.
+    #[test]
+    fn cage_land_on_the_ring_is_in_its_balance() {
+        let (wi, wc) = (400.0, 160.0);
+        let g = ring();
+        let eta = oil().viscosity_pa_s;
+        let land = CageLandOnRing {
+            radius_m: 0.031,
+            width_m: 0.004,
+            radial_clearance_m: 2e-4,
+            cage_speed_rad_s: wc,
+        };
+        let k = |r: f64, l: f64, c: f64| 2.0 * std::f64::consts::PI * eta * r.powi(3) * l / c;
+        let kb = k(g.bore_radius_m, g.width_m, g.bore_clearance_m);
+        let kl = k(land.radius_m, land.width_m, land.radial_clearance_m);
+        let free = vec![
+            EndContactInput {
+                load_n: 0.0,
+                roller_end_speed_m_s: 0.0,
+                orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
+            };
+            13
+        ];
+        let law = RacewayTractionLaw::Atz;
+        let s =
+            guide_ring_balance_with_land(&g, law, &oil(), wi, &free, Some(&land)).expect("balance");
+        let w = (kb * wi + kl * wc) / (kb + kl);
+        assert!(
+            (s.speed_rad_s - w).abs() <= 1e-12 * wi,
+            "{} vs {w}",
+            s.speed_rad_s
+        );
+        let p = kb * kl / (kb + kl) * (wi - wc).powi(2);
+        let land_w = s.land_torque_nm.abs() * (s.speed_rad_s - wc).abs();
+        assert!((s.bore_power_w + land_w - p).abs() <= 1e-10 * p);
+        assert!((s.land_torque_nm + kl * (s.speed_rad_s - wc)).abs() <= 1e-10 * kl * wi);
+        let loaded: Vec<_> = (0..13)
+            .map(|k| EndContactInput {
+                load_n: 1.0 + 0.1 * k as f64,
+                roller_end_speed_m_s: 0.0,
+                orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
+            })
+            .collect();
+        let without = guide_ring_balance(&g, law, &oil(), wi, &loaded).expect("balance");
+        let with = guide_ring_balance_with_land(&g, law, &oil(), wi, &loaded, Some(&land))
+            .expect("balance");
+        assert!(with.speed_rad_s < without.speed_rad_s);
+        assert!(with.residual_nm.abs() <= 1e-9 * with.bore_torque_nm.abs());
+        assert_eq!(without.land_torque_nm, 0.0);
+    }
+
     #[test]
     fn balance_bracket_and_residual() {
         let (wi, wc) = (400.0, 160.0);
