@@ -2,11 +2,12 @@
 //! Speed): 100 shaft revolutions of the truck bearing (seed 003, ρ = 5 µm, rtol 1e-8)
 //! with the film off (target ≤ 30 ms) and in the deflection (≤ 100 ms), ρ = 0 with the
 //! film off (contact loss events), and the Hann-windowed FFT of 2^16 points (≤ 0.2 ms;
-//! group `fft_2_16`, see [`fft`]).
+//! group `fft_2_16`, see [`fft`]). The film-off cases run on the Nyström 8(6) pair, as
+//! `simulate` does; `100_rev_rho5_film_off_dop853` is the same run on DOP853 (before).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::cylindrical_roller::dynamics::{
-    simulate, DynamicsModel, FilmLaw, Squeeze,
+    simulate_with, DynamicsModel, FilmLaw, Integrator, Squeeze,
 };
 use rollbench::numerics::cancel::Cancel;
 use rollbench::numerics::spectrum::{amplitude_spectrum, SpectrumPlan};
@@ -29,20 +30,34 @@ fn dynamics(c: &mut Criterion) {
     let mut g = c.benchmark_group("crb_dynamics");
     g.sample_size(10);
     let cases = [
-        ("100_rev_rho5_film_off", DynamicsModel::truck(5e-6)),
+        (
+            "100_rev_rho5_film_off",
+            DynamicsModel::truck(5e-6),
+            Integrator::Auto,
+        ),
+        (
+            "100_rev_rho5_film_off_dop853",
+            DynamicsModel::truck(5e-6),
+            Integrator::Dop853,
+        ),
         (
             "100_rev_rho5_film_on",
             DynamicsModel {
                 film: Some(film()),
                 ..DynamicsModel::truck(5e-6)
             },
+            Integrator::Auto,
         ),
-        ("100_rev_rho0_film_off", DynamicsModel::truck(0.0)),
+        (
+            "100_rev_rho0_film_off",
+            DynamicsModel::truck(0.0),
+            Integrator::Auto,
+        ),
     ];
-    for (name, model) in cases {
+    for (name, model, integrator) in cases {
         g.bench_function(name, |b| {
             b.iter(|| {
-                simulate(std::hint::black_box(&model), Cancel::NONE)
+                simulate_with(std::hint::black_box(&model), integrator, Cancel::NONE)
                     .unwrap_or_else(|e| panic!("{e}"))
             })
         });

@@ -23,6 +23,7 @@ mod explicit;
 mod fixed;
 mod implicit;
 mod problem;
+mod rkn;
 mod solution;
 #[cfg(test)]
 mod tests;
@@ -34,6 +35,9 @@ use explicit::Dopri5;
 pub use fixed::{solve_dop853_fixed, EventSet, FixedSolution, FixedSystem, NoEvents};
 use implicit::Rodas4;
 pub use problem::{Direction, Event, FnEvent, FnSystem, Method, OdeOptions, OdeSystem, Output};
+pub use rkn::{
+    solve_rkn86, NoNystromEvents, NystromEvents, NystromOptions, NystromSolution, NystromSystem,
+};
 pub use solution::{EventRecord, OdeError, OdeSolution, OdeStats, Termination};
 
 /// A system plus the work counters every evaluation must update.

@@ -8,7 +8,7 @@ use super::kernel::dry_sums_ten_ninths;
 use super::DynamicsError;
 #[cfg(test)]
 use crate::numerics::ode::Event;
-use crate::numerics::ode::{EventSet, FixedSystem, OdeSystem};
+use crate::numerics::ode::{EventSet, FixedSystem, NystromEvents, NystromSystem, OdeSystem};
 use std::cell::Cell;
 
 /// The model reduced for the hot loop.
@@ -147,6 +147,57 @@ impl<const N: usize> FixedSystem<N> for Rhs {
         let mut out = [0.0; N];
         self.eval(t, y, &mut out);
         out
+    }
+}
+
+/// Eq. (1) in the Nyström form q'' = f(t, q) for an undamped model whose force depends
+/// on position and time only (film off, or the steady film `Squeeze::None`: its
+/// squeeze factor is 1 whatever the approach rate): q = (x, y, P), f = (ẍ, ÿ, Q̇) with
+/// Q = Ṗ the energy integral ∫∂V/∂t dt / E_ref (film off: its rate depends on x, y
+/// and t only; P is not used). Without the energy integral the third component is 0.
+impl NystromSystem<3> for Rhs {
+    #[inline]
+    fn acceleration(&self, t: f64, q: &[f64; 3]) -> [f64; 3] {
+        let (s0, c0) = self.cage_angle.sin_cos(self.cage_speed_rad_s * t);
+        let [fx, fy, dv] = if self.law.film.is_none() {
+            self.dry_sums(q[0], q[1], s0, c0)
+        } else {
+            // The steady film: the approach rate enters only the squeeze factor (1).
+            self.film_sums(q[0], q[1], 0.0, 0.0, s0, c0)
+        };
+        [
+            (self.force_n[0] - fx) / self.mass_kg,
+            (self.force_n[1] - fy) / self.mass_kg,
+            if self.energy_integral {
+                self.cage_speed_rad_s * dv / self.energy_ref
+            } else {
+                0.0
+            },
+        ]
+    }
+}
+
+/// [`ContactEvents`] on the Nyström integrator's (q, v): the same functions of the
+/// state (x, y, ẋ/ω_ref, ẏ/ω_ref).
+pub(crate) struct NystromContactEvents<'e, 'a>(pub &'e ContactEvents<'a>);
+
+impl NystromContactEvents<'_, '_> {
+    #[inline]
+    fn state(&self, q: &[f64; 3], v: &[f64; 3]) -> [f64; 4] {
+        let w = self.0.rhs.omega_ref;
+        [q[0], q[1], v[0] / w, v[1] / w]
+    }
+}
+
+impl NystromEvents<3> for NystromContactEvents<'_, '_> {
+    fn len(&self) -> usize {
+        EventSet::<4>::len(self.0)
+    }
+    fn values(&self, t: f64, q: &[f64; 3], v: &[f64; 3], out: &mut [f64]) {
+        self.0.values(t, &self.state(q, v), out);
+    }
+    fn value(&self, i: usize, t: f64, q: &[f64; 3], v: &[f64; 3]) -> f64 {
+        self.0.value(i, t, &self.state(q, v))
     }
 }
 
