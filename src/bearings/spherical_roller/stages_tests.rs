@@ -62,8 +62,7 @@ fn friction_matches_the_reference_on_every_spherical_deck() {
             let mut total = 0.0;
             for (j, rc) in a.contacts.iter().enumerate() {
                 for (i, pair) in rc.iter().enumerate() {
-                    for k in 0..2 {
-                        let c = &pair[k];
+                    for (k, c) in pair.iter().enumerate() {
                         let got = fr.laminae[j][i][k];
                         if c.load_n <= 0.0 {
                             assert_eq!(got.heat_w, 0.0);

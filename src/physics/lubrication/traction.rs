@@ -587,7 +587,18 @@ impl PreparedTraction {
             }
             let s_right = s_min.max(s_lo);
             if s_max > s_right && g(s_max) > 0.0 && g(s_right) < 0.0 {
-                if let Some(p) = newton(s_max) {
+                // Start at one fixed-point step from p_max, p₁ = (ln p_max − c)/α: at the
+                // root r, α·eʳ = r − c, so p₁ lies between the root and p_max (g(s_max) > 0),
+                // on the same rising side, and Newton descends monotonically from it as from
+                // ln p_max, in 4 steps where it took 6 (the same root: the step test leaves
+                // it at round-off either way).
+                let s1 = ((s_max - c) / alpha).ln();
+                let start = if s1.is_finite() && s1 < s_max {
+                    s1
+                } else {
+                    s_max
+                };
+                if let Some(p) = newton(start) {
                     out.push(p);
                 }
             }
