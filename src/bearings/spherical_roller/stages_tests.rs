@@ -36,10 +36,10 @@ fn shipped() -> Vec<(String, Bearing)> {
 }
 
 /// Issue 31: the friction stage (the law's constants hoisted out of the lamina loop) gives
-/// each loaded lamina's traction and heat of the old path to 1e-12 relative, for the EHD
+/// each loaded lamina's traction and heat of the old path bit for bit, for the EHD
 /// and the lost-lubrication law, on every shipped spherical deck; the roller and bearing
-/// totals follow. Same integral, same nodes: only the inlined exp at a piece's peak
-/// (≤ 4.5e-16) and round-off differ.
+/// totals follow (1e-12: a sum of the same terms). Same integral, same nodes, the same
+/// constants: each lamina's numbers are equal bit for bit.
 #[test]
 fn friction_matches_the_reference_on_every_spherical_deck() {
     let decks = shipped();
@@ -82,7 +82,7 @@ fn friction_matches_the_reference_on_every_spherical_deck() {
                         total += want.heat_w;
                         for (g, r) in [(got.traction_n, want.force_n), (got.heat_w, want.heat_w)] {
                             assert!(
-                                (g - r).abs() <= 1e-12 * r.abs(),
+                                g == r,
                                 "{name} roller {j} lamina {i} raceway {k} lost {lost}: {g} vs {r}"
                             );
                         }
