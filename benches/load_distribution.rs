@@ -107,5 +107,78 @@ fn edit_latency(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench, edit_latency);
+/// Issue 31: the aerospace deck's pipeline (its default fidelity, thermal steady, no
+/// transient) and each of its stages alone on the solved analysis, so the closing note can
+/// say where the time goes: the load stage (coarse pre-solve, fine solve, dynamic-load
+/// iteration, contact geometry, §7 speeds), the stiffness matrix every analysis carries,
+/// stresses, film, life, sliding and heat (§8–9), the thermal steady state. The number of
+/// loaded lamina contacts (what the friction stage's cost is per) is printed once.
+fn stages(c: &mut Criterion) {
+    use rollbench::bearings::spherical_roller::pipeline::run_with_thermal;
+    use rollbench::bearings::spherical_roller::{contacts, stages, stiffness};
+    use rollbench::thermal::{solve_steady, HeatInput, HeatSource};
+    let Some((_, deck)) = decks().into_iter().find(|(n, _)| n == "aerospace") else {
+        return;
+    };
+    let b = deck.value.clone();
+    let tm = deck.thermal_model().ok().flatten();
+    let req = Request::default();
+    let a = run_with_thermal(&b, tm.as_ref(), &req, None).expect("aerospace solves");
+    let sp = stages::internal_speeds(&b, &a.load, &a.contacts);
+    let st = a.stresses.clone().expect("stresses");
+    let fi = a.films.clone().expect("films");
+    let fr = a.friction.clone().expect("friction");
+    let loaded: usize = a
+        .contacts
+        .iter()
+        .zip(&a.load.mirror)
+        .filter(|(_, m)| m.is_none())
+        .map(|(rc, _)| rc.iter().flatten().filter(|c| c.load_n > 0.0).count())
+        .sum();
+    eprintln!(
+        "aerospace: {} laminae, {loaded} loaded lamina contacts (unique rollers), {} lamina evaluations",
+        b.solver.laminae, a.load.stats.lamina_evaluations
+    );
+    let load_only = Request {
+        contact: false,
+        heat: false,
+        ..Request::default()
+    };
+    let heat = HeatInput::new()
+        .with(HeatSource::InnerContacts, fr.heat.inner_contacts_w)
+        .with(HeatSource::OuterContacts, fr.heat.outer_contacts_w)
+        .with(HeatSource::CageRails, fr.heat.cage_rails_w)
+        .with(HeatSource::ViscousDrag, fr.heat.viscous_drag_w);
+    let mut g = c.benchmark_group("stages_aerospace");
+    g.bench_function("pipeline_thermal_steady", |bch| {
+        bch.iter(|| run_with_thermal(&b, tm.as_ref(), &req, None))
+    });
+    g.bench_function("load_stage_and_stiffness", |bch| {
+        bch.iter(|| run(&b, &load_only, None))
+    });
+    g.bench_function("stiffness", |bch| {
+        bch.iter(|| stiffness::stiffness(&b, Default::default(), &a.load))
+    });
+    g.bench_function("contacts", |bch| {
+        bch.iter(|| contacts::contacts(&b, &a.load))
+    });
+    g.bench_function("stresses", |bch| {
+        bch.iter(|| stages::stresses(&b, &a.load, &a.contacts))
+    });
+    g.bench_function("films", |bch| {
+        bch.iter(|| stages::films(&b, &a.contacts, &sp))
+    });
+    g.bench_function("life", |bch| bch.iter(|| stages::life(&b, &a.load, &fi)));
+    g.bench_function("friction", |bch| {
+        bch.iter(|| stages::friction(&b, &a.load, &a.contacts, &st, &fi, &sp, false))
+    });
+    if let Some(tm) = &tm {
+        g.bench_function("thermal_steady", |bch| {
+            bch.iter(|| solve_steady(&tm.network, &heat))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, edit_latency, stages);
 criterion_main!(benches);

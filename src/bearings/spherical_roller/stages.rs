@@ -516,11 +516,13 @@ pub fn friction(
     let spin = spins(b, speeds);
     let wc = speeds.cage_speed_rad_s;
     let ring_w = [b.operating.inner_speed_rad_s, b.operating.outer_speed_rad_s];
-    let model = if lost_lubrication {
+    // The law's constants once for every lamina (issue 31).
+    let law = if lost_lubrication {
         TractionModel::lost_lubrication(&b.lubricant)
     } else {
         TractionModel::ehd(&b.lubricant)
-    };
+    }
+    .prepared();
     let beta = b.geometry.contact_angle_rad;
     let mut laminae: Vec<Vec<[LaminaFriction; 2]>> = Vec::with_capacity(contacts.len());
     let mut roller_heat: Vec<[f64; 2]> = Vec::with_capacity(contacts.len());
@@ -570,7 +572,7 @@ pub fn friction(
                         continue;
                     }
                     let hz = &stresses.laminae[j][i][k];
-                    let t = model.lamina_traction(
+                    let t = law.lamina_traction(
                         &traction::HertzStrip {
                             load_n: contact.load_n,
                             half_width_m: hz.half_width_m,
@@ -599,3 +601,7 @@ pub fn friction(
         lost_lubrication,
     })
 }
+
+#[cfg(test)]
+#[path = "stages_tests.rs"]
+mod tests;

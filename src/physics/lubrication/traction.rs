@@ -258,8 +258,38 @@ impl TractionModel {
         sliding_velocity_m_s: f64,
         film_thickness_m: f64,
     ) -> LaminaTraction {
-        self.lamina_traction_parts(contact, sliding_velocity_m_s, film_thickness_m)
-            .0
+        self.prepared()
+            .lamina_traction(contact, sliding_velocity_m_s, film_thickness_m)
+    }
+
+    /// This law with its contact-independent constants computed once
+    /// ([`PreparedTraction`]): what a caller integrating many laminae with one law keeps.
+    pub fn prepared(&self) -> PreparedTraction {
+        let (ln_mu, ln_tr, s_lo, s_min) = match *self {
+            TractionModel::Ehd {
+                pressure_viscosity_pa_inv: alpha,
+                transition_shear_stress_pa: tr,
+                limiting_traction_coefficient: mu,
+                ..
+            } => (
+                mu.ln(),
+                tr.ln(),
+                if tr > 0.0 {
+                    (tr / mu).ln()
+                } else {
+                    f64::NEG_INFINITY
+                },
+                -alpha.ln(),
+            ),
+            TractionModel::Constant { .. } => (f64::NAN, f64::NAN, f64::NAN, f64::NAN),
+        };
+        PreparedTraction {
+            model: *self,
+            ln_mu,
+            ln_tr,
+            s_lo,
+            s_min,
+        }
     }
 
     /// [`TractionModel::lamina_traction`] and its slope ∂F/∂v, N/(m/s). On a Newtonian
@@ -291,102 +321,15 @@ impl TractionModel {
             let slope = 2.0 * contact.width_m * contact.half_width_m * i;
             return (LaminaTraction::default(), slope);
         }
-        let (t, newtonian) = self.lamina_traction_parts(contact, v, film_thickness_m);
+        let (t, newtonian) = self
+            .prepared()
+            .lamina_traction_parts(contact, v, film_thickness_m);
         let slope = if v.is_finite() && v != 0.0 {
             2.0 * contact.width_m * contact.half_width_m * newtonian / v.abs()
         } else {
             0.0
         };
         (t, slope)
-    }
-
-    /// The force and heat, and the Newtonian pieces' share of the φ-integral (Pa).
-    fn lamina_traction_parts(
-        &self,
-        contact: &HertzStrip,
-        sliding_velocity_m_s: f64,
-        film_thickness_m: f64,
-    ) -> (LaminaTraction, f64) {
-        let p0 = contact.peak_pressure_pa();
-        let v = sliding_velocity_m_s;
-        if p0 <= 0.0 || !v.is_finite() || v == 0.0 {
-            return (LaminaTraction::default(), 0.0);
-        }
-        let h = if film_thickness_m.is_finite() {
-            film_thickness_m
-        } else {
-            0.0
-        };
-        // Pieces in p, from p₀ down to 0, split at the law's kinks, each with its branch
-        // (any interior pressure identifies it: the branch is constant between kinks).
-        // Adjacent pieces on the same branch are merged: a kink of one branch's formula inside
-        // another branch's range (the limit's kink τ_tr/μ where the film is Newtonian, say)
-        // is no break of the law, and splitting there only cost a quadrature panel and an
-        // acos (on the aerospace deck 3.8 Newtonian pieces per contact before, ~1 after).
-        let mut kinks = self.kinks(v, h, p0);
-        let mut bounds = [0.0f64; 6];
-        let mut branch = [Regime::Newtonian; 5];
-        bounds[0] = p0;
-        let mut n = 0;
-        let interior = kinks
-            .sorted_descending()
-            .iter()
-            .copied()
-            .filter(|&pk| pk > 0.0 && pk < p0);
-        for pk in interior.chain(std::iter::once(0.0)) {
-            let hi = bounds[n];
-            if pk >= hi {
-                continue; // a repeated kink
-            }
-            let r = self.regime(0.5 * (hi + pk), v, h);
-            if n > 0 && branch[n - 1] == r {
-                bounds[n] = pk;
-            } else {
-                branch[n] = r;
-                n += 1;
-                bounds[n] = pk;
-            }
-        }
-        // The pieces in φ (p = p₀ cos φ): (φ, cos φ = p/p₀ exactly, sin φ = √(1 − cos²)), so
-        // one acos per real break and no trigonometric call per piece.
-        let at = |i: usize| {
-            if i == 0 {
-                (0.0, 1.0, 0.0)
-            } else if i == n {
-                (std::f64::consts::FRAC_PI_2, 0.0, 1.0)
-            } else {
-                let c = bounds[i] / p0;
-                (c.acos(), c, (1.0 - c * c).max(0.0).sqrt())
-            }
-        };
-        let mut integral = 0.0;
-        let mut newtonian = 0.0;
-        let mut start = at(0);
-        for (i, r) in branch[..n].iter().enumerate() {
-            let end = at(i + 1);
-            let ((a, ca, sa), (b, cb, sb)) = (start, end);
-            integral += match *r {
-                Regime::Newtonian => {
-                    let piece = self.newtonian_piece(p0, v, h, (a, ca, sa), (b, cb));
-                    newtonian += piece;
-                    piece
-                }
-                Regime::Transition(tau) => tau * (sb - sa),
-                Regime::Coulomb(mu) => {
-                    // ∫cos²φ dφ = φ/2 + sin φ·cos φ/2
-                    mu * p0 * 0.5 * ((b - a) + (sb * cb - sa * ca))
-                }
-            };
-            start = end;
-        }
-        let force = 2.0 * contact.width_m * contact.half_width_m * integral * v.signum();
-        (
-            LaminaTraction {
-                force_n: force,
-                heat_w: (force * v).abs(),
-            },
-            newtonian,
-        )
     }
 
     /// ∫_a^b τ_N(p₀ cos φ)·cos φ dφ on a Newtonian piece by composite 8-point
@@ -451,6 +394,128 @@ impl TractionModel {
         }
         peak * half * sum
     }
+}
+
+/// A traction law with what does not depend on the contact computed once (issue 31: four
+/// logarithms per lamina contact were a tenth of the friction stage): ln μ, ln τ_tr,
+/// ln(τ_tr/μ) and −ln α, the constants of the kink search ([`PreparedTraction::kinks`]).
+/// The same numbers as computing them per contact, so the same answer bit for bit (every
+/// system's traction goes through it: the double-row roller's cage balance reacts to
+/// round-off, so nothing here may change a bit); the spherical roller's friction stage
+/// prepares it once per solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedTraction {
+    model: TractionModel,
+    /// ln μ (EHD), NaN for the constant law (unused there).
+    ln_mu: f64,
+    /// ln τ_tr.
+    ln_tr: f64,
+    /// ln(τ_tr/μ): the limit's kink in s = ln p (−∞ without a transition stress).
+    s_lo: f64,
+    /// −ln α: where the kink function g(s) has its minimum.
+    s_min: f64,
+}
+
+impl PreparedTraction {
+    /// [`TractionModel::lamina_traction`] of this law.
+    pub fn lamina_traction(
+        &self,
+        contact: &HertzStrip,
+        sliding_velocity_m_s: f64,
+        film_thickness_m: f64,
+    ) -> LaminaTraction {
+        self.lamina_traction_parts(contact, sliding_velocity_m_s, film_thickness_m)
+            .0
+    }
+
+    /// The force and heat, and the Newtonian pieces' share of the φ-integral (Pa).
+    fn lamina_traction_parts(
+        &self,
+        contact: &HertzStrip,
+        sliding_velocity_m_s: f64,
+        film_thickness_m: f64,
+    ) -> (LaminaTraction, f64) {
+        let p0 = contact.peak_pressure_pa();
+        let v = sliding_velocity_m_s;
+        if p0 <= 0.0 || !v.is_finite() || v == 0.0 {
+            return (LaminaTraction::default(), 0.0);
+        }
+        let h = if film_thickness_m.is_finite() {
+            film_thickness_m
+        } else {
+            0.0
+        };
+        // Pieces in p, from p₀ down to 0, split at the law's kinks, each with its branch
+        // (any interior pressure identifies it: the branch is constant between kinks).
+        // Adjacent pieces on the same branch are merged: a kink of one branch's formula inside
+        // another branch's range (the limit's kink τ_tr/μ where the film is Newtonian, say)
+        // is no break of the law, and splitting there only cost a quadrature panel and an
+        // acos (on the aerospace deck 3.8 Newtonian pieces per contact before, ~1 after).
+        let mut kinks = self.kinks(v, h, p0);
+        let mut bounds = [0.0f64; 6];
+        let mut branch = [Regime::Newtonian; 5];
+        bounds[0] = p0;
+        let mut n = 0;
+        let interior = kinks
+            .sorted_descending()
+            .iter()
+            .copied()
+            .filter(|&pk| pk > 0.0 && pk < p0);
+        for pk in interior.chain(std::iter::once(0.0)) {
+            let hi = bounds[n];
+            if pk >= hi {
+                continue; // a repeated kink
+            }
+            let r = self.model.regime(0.5 * (hi + pk), v, h);
+            if n > 0 && branch[n - 1] == r {
+                bounds[n] = pk;
+            } else {
+                branch[n] = r;
+                n += 1;
+                bounds[n] = pk;
+            }
+        }
+        // The pieces in φ (p = p₀ cos φ): (φ, cos φ = p/p₀ exactly, sin φ = √(1 − cos²)), so
+        // one acos per real break and no trigonometric call per piece.
+        let at = |i: usize| {
+            if i == 0 {
+                (0.0, 1.0, 0.0)
+            } else if i == n {
+                (std::f64::consts::FRAC_PI_2, 0.0, 1.0)
+            } else {
+                let c = bounds[i] / p0;
+                (c.acos(), c, (1.0 - c * c).max(0.0).sqrt())
+            }
+        };
+        let mut integral = 0.0;
+        let mut newtonian = 0.0;
+        let mut start = at(0);
+        for (i, r) in branch[..n].iter().enumerate() {
+            let end = at(i + 1);
+            let ((a, ca, sa), (b, cb, sb)) = (start, end);
+            integral += match *r {
+                Regime::Newtonian => {
+                    let piece = self.model.newtonian_piece(p0, v, h, (a, ca, sa), (b, cb));
+                    newtonian += piece;
+                    piece
+                }
+                Regime::Transition(tau) => tau * (sb - sa),
+                Regime::Coulomb(mu) => {
+                    // ∫cos²φ dφ = φ/2 + sin φ·cos φ/2
+                    mu * p0 * 0.5 * ((b - a) + (sb * cb - sa * ca))
+                }
+            };
+            start = end;
+        }
+        let force = 2.0 * contact.width_m * contact.half_width_m * integral * v.signum();
+        (
+            LaminaTraction {
+                force_n: force,
+                heat_w: (force * v).abs(),
+            },
+            newtonian,
+        )
+    }
 
     /// Pressures (Pa) where the law τ(p) = min(τ_N, max(τ_tr, μp)) can change branch at
     /// sliding speed v and film h: p = τ_tr/μ (kink of the limit), the crossing
@@ -464,7 +529,7 @@ impl TractionModel {
             pressure_viscosity_pa_inv: alpha,
             transition_shear_stress_pa: tr,
             limiting_traction_coefficient: mu,
-        } = *self
+        } = self.model
         else {
             return Kinks::default();
         };
@@ -482,9 +547,11 @@ impl TractionModel {
         }
         let ln_a = (eta * v.abs() / h).ln();
         if tr > 0.0 {
-            out.push((tr.ln() - ln_a) / alpha);
+            out.push((self.ln_tr - ln_a) / alpha);
         }
-        if mu > 0.0 {
+        // Both root searches below look only above the limit's kink (s > s_lo): a strip whose
+        // peak is at or below τ_tr/μ has none to find, and skips the logarithm of its peak.
+        if mu > 0.0 && !(tr > 0.0 && p_max <= tr / mu) {
             // In s = ln p, g(s) = ln A − ln μ + α·eˢ − s is convex with its minimum at
             // s = −ln α. Its roots are branch changes of the law only above the limit's kink
             // p = τ_tr/μ (below it the limit is τ_tr, and where τ_N meets μp does not
@@ -496,15 +563,10 @@ impl TractionModel {
             // sign on its side. Three-digit accuracy would do (a misplaced kink costs only
             // second order); the step test stops at 1e-9, after which the quadratic
             // convergence has already put the root at round-off.
-            let c = ln_a - mu.ln();
+            let c = ln_a - self.ln_mu;
             let g = |s: f64| c + alpha * exp_fast(s) - s;
-            let s_min = -alpha.ln();
+            let (s_min, s_lo) = (self.s_min, self.s_lo);
             let s_max = p_max.ln();
-            let s_lo = if tr > 0.0 {
-                (tr / mu).ln()
-            } else {
-                f64::NEG_INFINITY
-            };
             let newton = |mut s: f64| {
                 for _ in 0..100 {
                     let e = alpha * exp_fast(s);
@@ -688,6 +750,9 @@ enum Regime {
     /// τ = μ·p with this μ.
     Coulomb(f64),
 }
+
+#[cfg(test)]
+pub(crate) mod reference;
 
 #[cfg(test)]
 mod tests {
@@ -1026,5 +1091,50 @@ mod tests {
             assert!(f - prev < 0.05 * limited, "jump at v = {v}");
             prev = f;
         }
+    }
+
+    /// Issue 31's hoisting changes no number: the prepared law against the lamina integral
+    /// as it stood before ([`super::reference`], libm's exp at the piece's peak and every
+    /// logarithm per contact), over peaks from 10 MPa to 3 GPa, sliding speeds from 1e-6 to
+    /// 30 m/s of both signs and films from none to 2 µm, with and without a transition
+    /// stress (every branch order of the law), and the constant law: bit for bit (the
+    /// hoisted constants are the same numbers).
+    #[test]
+    fn prepared_law_matches_the_reference_over_a_sweep() {
+        let (b, w) = (60e-6, 0.55e-3);
+        let mut worst = 0.0f64;
+        let mut compared = 0;
+        for m in [
+            ehd(0.0045, 1.1e-8, 0.0, 0.06),
+            ehd(0.0045, 1.1e-8, 1000.0 * PSI_PA, 0.06),
+            ehd(0.0045, 1.1e-8, 10_000.0 * PSI_PA, 0.06),
+            ehd(0.05, 2.2e-8, 1000.0 * PSI_PA, 0.09),
+            TractionModel::Constant { mu: 0.1 },
+        ] {
+            let law = m.prepared();
+            for p0 in [10e6, 50e6, 115e6, 150e6, 600e6, 1.2e9, 2.5e9, 3e9] {
+                let c = HertzStrip {
+                    load_n: p0 * std::f64::consts::PI * b * w / 2.0,
+                    half_width_m: b,
+                    width_m: w,
+                };
+                for v in [-3.0, -1e-4, 1e-6, 1e-4, 1e-3, 0.05, 0.4, 1.0, 7.0, 30.0] {
+                    for h in [0.0, 0.02e-6, 0.1e-6, 0.5e-6, 2e-6] {
+                        let got = law.lamina_traction(&c, v, h);
+                        let via_model = m.lamina_traction(&c, v, h);
+                        let want = reference::lamina_traction(&m, &c, v, h);
+                        assert_eq!(got, via_model, "p0 {p0} v {v} h {h}");
+                        for (g, r) in [(got.force_n, want.force_n), (got.heat_w, want.heat_w)] {
+                            let rel = (g - r).abs() / r.abs().max(f64::MIN_POSITIVE);
+                            assert!(g == r, "{m:?} p0 {p0} v {v} h {h}: {g} vs {r}");
+                            worst = worst.max(rel);
+                        }
+                        compared += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(compared, 5 * 8 * 10 * 5);
+        eprintln!("prepared law against the reference: worst relative difference {worst:.1e}");
     }
 }
