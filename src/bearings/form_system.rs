@@ -62,6 +62,10 @@ pub trait FormSystem: Sync + Sized + 'static {
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None
     }
+    /// See [`BearingSystem::study_keys`].
+    fn study_keys(&self) -> &'static [&'static str] {
+        &[]
+    }
     /// See [`BearingSystem::run_job`].
     fn run_job(
         &self,
@@ -134,6 +138,10 @@ impl<S: FormSystem> BearingSystem for S {
 
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         FormSystem::fidelity_grid(self)
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        FormSystem::study_keys(self)
     }
 
     fn run_job(

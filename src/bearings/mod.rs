@@ -176,6 +176,13 @@ pub trait BearingSystem: Sync {
     fn fidelity_grid(&self) -> Option<FidelityGrid> {
         None
     }
+    /// The deck keys the workbench's Study pane tolerances by default (±1 %, uniform),
+    /// in order of preference: the system's main geometry and operating keys. The pane
+    /// takes the first three the deck gives a non-zero number; empty: the system names
+    /// none (the pane then needs a study file).
+    fn study_keys(&self) -> &'static [&'static str] {
+        &[]
+    }
     /// The table `rollbench keys --type` prints: every key `--set` accepts, with units and
     /// allowed range.
     fn keys_table(&self) -> String;

@@ -488,6 +488,12 @@ pub enum PaneKind {
     /// (a load sweep, an optimisation) run by the worker while the pane is on screen,
     /// drawn from the [`JobView`]s it reports as it goes; the next edit cancels it.
     Job(usize),
+    /// A small design study of the open deck (a study file beside the decks that names
+    /// it, else a ±1 % tolerance Monte Carlo of the system's
+    /// [`crate::bearings::BearingSystem::study_keys`]), run by the worker while the pane
+    /// is on screen: the histogram of one output and the sensitivities; the next edit
+    /// cancels it. Every system offers it.
+    Study,
 }
 
 /// A pane a bearing system offers: its kind and the title it goes by ("Rollers", "Balls").

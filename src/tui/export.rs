@@ -242,6 +242,22 @@ pub fn pane_export(app: &App) -> Result<PaneExport, String> {
             let (s, _, note) = view_model::sweep_series(p, u);
             Ok(chart(vec![s], &format!("{title} ({note})")))
         }
+        Pane::Study => {
+            let (_, p) = app
+                .study
+                .as_ref()
+                .filter(|(g, p)| *g == app.generation && p.error.is_none())
+                .ok_or_else(|| format!("nothing to export from {title}: not started"))?;
+            Ok(PaneExport {
+                contents: crate::studies::study::output::csv(&p.result()),
+                what: format!(
+                    "{title} rows, {} of {} points, as `rollbench study --format csv` writes them (inputs in deck units, outputs SI)",
+                    p.rows.len(),
+                    p.total
+                ),
+                extension: "csv",
+            })
+        }
         Pane::Job(n) => {
             let (_, _, v) = app
                 .job

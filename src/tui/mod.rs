@@ -20,6 +20,8 @@ pub mod worker;
 #[cfg(test)]
 mod export_tests;
 #[cfg(test)]
+mod study_tests;
+#[cfg(test)]
 mod summary_tests;
 #[cfg(test)]
 mod tests;

@@ -25,7 +25,7 @@ mod issue30;
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))
 }
-fn ch(c: char) -> AppEvent {
+pub(super) fn ch(c: char) -> AppEvent {
     key(KeyCode::Char(c))
 }
 fn ctrl(c: char) -> AppEvent {
@@ -111,6 +111,40 @@ fn job_sync(app: &mut App, job: &app::SolveJob) {
     });
 }
 
+/// The job's Study pane study (the pane on screen), run inline to the end as the worker
+/// runs it, its last report fed back; finished studies are kept per deck text and
+/// request, so the snapshots at several sizes run each study once.
+pub(super) fn study_sync(app: &mut App, job: &app::SolveJob) {
+    use crate::studies::study::workbench::{self, StudyProgress};
+    type Done = Vec<(String, app::StudyRequest, Arc<StudyProgress>)>;
+    static DONE: std::sync::Mutex<Done> = std::sync::Mutex::new(Vec::new());
+    let Some(request) = &job.study else { return };
+    let text = job.case.text();
+    let cached = DONE
+        .lock()
+        .expect("cache")
+        .iter()
+        .find(|(t, r, _)| *t == text && r == request)
+        .map(|(_, _, p)| Arc::clone(p));
+    let progress = cached.unwrap_or_else(|| {
+        let never = std::sync::atomic::AtomicBool::new(false);
+        let p = match workbench::for_deck(&*job.case, request.deck_path.as_deref(), request.samples)
+        {
+            Ok(study) => workbench::run(&study, &never, &mut |_| {}).expect("not cancelled"),
+            Err(e) => StudyProgress::failed(e),
+        };
+        let p = Arc::new(p);
+        DONE.lock()
+            .expect("cache")
+            .push((text.clone(), request.clone(), Arc::clone(&p)));
+        p
+    });
+    app.handle(AppEvent::StudyProgress {
+        generation: job.generation,
+        progress,
+    });
+}
+
 /// Feeds every solve command back as a result, like the worker would (but inline).
 fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
     let mut other = Vec::new();
@@ -124,6 +158,7 @@ fn run_sync(app: &mut App, cmds: Vec<Command>) -> Vec<Command> {
                 });
                 sweep_sync(app, &job);
                 job_sync(app, &job);
+                study_sync(app, &job);
                 other.extend(run_sync(app, more));
             }
             c => other.push(c),
@@ -153,7 +188,7 @@ fn solved_app(pane: Pane, w: u16, h: u16) -> App {
     app
 }
 
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+pub(super) fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
     t.draw(|f| f.render_widget(app, f.area())).expect("draw");
     t
@@ -485,7 +520,7 @@ fn tui_stepper_bars_hold_every_lamina_at_every_size() {
 
 /// A shipped deck (`decks/{stem}.toml`, as the snapshots draw it), solved at `w`×`h`
 /// and focused on the pane titled `title`.
-fn shipped_app(stem: &str, title: &str, w: u16, h: u16) -> App {
+pub(super) fn shipped_app(stem: &str, title: &str, w: u16, h: u16) -> App {
     let path = PathBuf::from(format!("{}/decks/{stem}.toml", env!("CARGO_MANIFEST_DIR")));
     let deck = shipped_deck_for_snapshots(&path);
     let mut app = App::new(deck, Some(PathBuf::from(format!("decks/{stem}.toml"))));
@@ -1035,7 +1070,7 @@ fn tui_open_and_revert() {
 
 // ---------------------------------------------------------------- snapshots
 
-fn snap(name: &str, app: &App, w: u16, h: u16) {
+pub(super) fn snap(name: &str, app: &App, w: u16, h: u16) {
     let t = draw(app, w, h);
     assert_snapshot!(format!("{name}_{w}x{h}"), t.backend());
 }
@@ -1138,6 +1173,7 @@ fn job(generation: u64) -> app::SolveJob {
         detail: Detail::default(),
         sweep: None,
         job: None,
+        study: None,
     }
 }
 
@@ -1281,8 +1317,15 @@ fn tui_snapshot_shipped_decks() {
         let deck = shipped_deck_for_snapshots(&path);
         let panes = App::new(deck.clone(), None).panes();
         let mut shots: Vec<(Pane, u16, u16)> = Vec::new();
+        // The Study pane runs a study of 64 solves or more: its screens are drawn for a
+        // few decks of their own (`study_tests`), not for every deck here.
         for (w, h) in [(60, 20), (80, 24)] {
-            shots.extend(panes.iter().map(|&p| (p, w, h)));
+            shots.extend(
+                panes
+                    .iter()
+                    .filter(|&&p| p != Pane::Study)
+                    .map(|&p| (p, w, h)),
+            );
         }
         shots.extend(
             [
@@ -1348,7 +1391,7 @@ pub(super) fn shipped_deck_for_snapshots(path: &std::path::Path) -> DeckDoc {
 
 /// Like [`run_sync`], but a deck that does not solve shows its failure (as the worker
 /// would report it) instead of failing the test.
-fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
+pub(super) fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
     for c in cmds {
         if let Command::Solve(job) = c {
             let outcome = solve_view(&job).map(Arc::new).map_err(|e| e.to_string());
@@ -1360,6 +1403,7 @@ fn run_sync_tolerant(app: &mut App, cmds: Vec<Command>) {
             if solved {
                 sweep_sync(app, &job);
                 job_sync(app, &job);
+                study_sync(app, &job);
             }
             run_sync_tolerant(app, more);
         }

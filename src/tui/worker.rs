@@ -215,6 +215,7 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
             detail,
             sweep,
             job: pane_job,
+            study,
         } = &job.job;
         // A chart the session streams (the ball's Skid chart) goes to the UI as it grows;
         // a send to a closed UI is noticed after the solve.
@@ -282,6 +283,58 @@ fn worker_loop(rx: Receiver<Job>, events: Sender<AppEvent>, solver: Solver) {
                 break;
             }
         }
+        // The Study pane on screen: its study, the rows so far sent after each batch;
+        // a newer job's submit raises the flag and the study stops.
+        if let (true, Some(request)) = (solved, study) {
+            if run_study(&**case, request, *generation, &job.cancel, &events) {
+                break;
+            }
+        }
+    }
+}
+
+/// Runs the Study pane's study of `case` for solve `generation`, sending the rows so far
+/// as [`AppEvent::StudyProgress`] (at most one per 50 ms, the last always); true when the
+/// UI is gone.
+fn run_study(
+    case: &dyn Case,
+    request: &super::app::StudyRequest,
+    generation: u64,
+    cancel: &AtomicBool,
+    events: &Sender<AppEvent>,
+) -> bool {
+    use crate::studies::study::workbench::{self, StudyProgress};
+    let send = |p: StudyProgress| {
+        events
+            .send(AppEvent::StudyProgress {
+                generation,
+                progress: Arc::new(p),
+            })
+            .is_err()
+    };
+    let mut gone = false;
+    let mut last: Option<std::time::Instant> = None;
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        let study = workbench::for_deck(case, request.deck_path.as_deref(), request.samples)?;
+        Ok::<_, String>(workbench::run(&study, cancel, &mut |p| {
+            let due = last.is_none_or(|t| t.elapsed() >= std::time::Duration::from_millis(50));
+            if (due || p.finished) && !cancel.load(Ordering::Acquire) {
+                gone |= send(p.clone());
+                last = Some(std::time::Instant::now());
+            }
+        }))
+    }));
+    if gone || cancel.load(Ordering::Acquire) {
+        return gone; // superseded: its rows are stale
+    }
+    match outcome {
+        Ok(Ok(Some(done))) => send(done),
+        Ok(Ok(None)) => false,
+        Ok(Err(e)) => send(StudyProgress::failed(e)),
+        Err(p) => send(StudyProgress::failed(format!(
+            "the study panicked: {}",
+            panic_text(p.as_ref())
+        ))),
     }
 }
 

@@ -88,7 +88,7 @@ impl FormSystem for AngularBall {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 8] = [
+        const PANES: [PaneSpec; 9] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -121,8 +121,23 @@ impl FormSystem for AngularBall {
                 kind: PaneKind::Thermal,
                 title: "Thermal",
             },
+            PaneSpec {
+                kind: PaneKind::Study,
+                title: "Study",
+            },
         ];
         &PANES
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        // The Study pane's default tolerance study varies the first three of these
+        // the deck gives a non-zero number (the main geometry and operating keys).
+        &[
+            "geometry.free_contact_angle",
+            "operating.axial_load",
+            "operating.radial_load",
+            "operating.inner_speed",
+        ]
     }
 
     fn example_deck(&self) -> &'static str {

@@ -113,7 +113,7 @@ impl FormSystem for CylindricalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 12] = [
+        const PANES: [PaneSpec; 13] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -162,8 +162,22 @@ impl FormSystem for CylindricalRoller {
                 kind: PaneKind::Thermal,
                 title: "Thermal",
             },
+            PaneSpec {
+                kind: PaneKind::Study,
+                title: "Study",
+            },
         ];
         &PANES
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        // The Study pane's default tolerance study varies the first three of these
+        // the deck gives a non-zero number (the main geometry and operating keys).
+        &[
+            "operating.radial_load",
+            "geometry.radial_interference",
+            "geometry.roller_diameter",
+        ]
     }
 
     fn example_deck(&self) -> &'static str {

@@ -51,7 +51,7 @@ impl FormSystem for DoubleRowSpherical {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 9] = [
+        const PANES: [PaneSpec; 10] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -88,8 +88,22 @@ impl FormSystem for DoubleRowSpherical {
                 kind: PaneKind::Thermal,
                 title: "Thermal",
             },
+            PaneSpec {
+                kind: PaneKind::Study,
+                title: "Study",
+            },
         ];
         &PANES
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        // The Study pane's default tolerance study varies the first three of these
+        // the deck gives a non-zero number (the main geometry and operating keys).
+        &[
+            "operating.radial_load",
+            "operating.axial_load",
+            "geometry.diametral_clearance",
+        ]
     }
 
     fn example_deck(&self) -> &'static str {

@@ -67,7 +67,7 @@ impl FormSystem for SphericalRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 6] = [
+        const PANES: [PaneSpec; 7] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -92,8 +92,23 @@ impl FormSystem for SphericalRoller {
                 kind: PaneKind::Stepper,
                 title: "Stepper",
             },
+            PaneSpec {
+                kind: PaneKind::Study,
+                title: "Study",
+            },
         ];
         &PANES
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        // The Study pane's default tolerance study varies the first three of these
+        // the deck gives a non-zero number (the main geometry and operating keys).
+        &[
+            "geometry.roller_diameter",
+            "geometry.diametral_clearance",
+            "operating.radial_load",
+            "operating.axial_load",
+        ]
     }
 
     fn fidelity_grid(&self) -> Option<FidelityGrid> {

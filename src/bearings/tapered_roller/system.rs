@@ -95,7 +95,7 @@ impl FormSystem for TaperedRoller {
     }
 
     fn panes(&self) -> &'static [PaneSpec] {
-        const PANES: [PaneSpec; 7] = [
+        const PANES: [PaneSpec; 8] = [
             PaneSpec {
                 kind: PaneKind::Inputs,
                 title: "Inputs",
@@ -124,8 +124,22 @@ impl FormSystem for TaperedRoller {
                 kind: PaneKind::Thermal,
                 title: "Thermal",
             },
+            PaneSpec {
+                kind: PaneKind::Study,
+                title: "Study",
+            },
         ];
         &PANES
+    }
+
+    fn study_keys(&self) -> &'static [&'static str] {
+        // The Study pane's default tolerance study varies the first three of these
+        // the deck gives a non-zero number (the main geometry and operating keys).
+        &[
+            "operating.radial_load",
+            "operating.axial_load",
+            "geometry.roller_diameter",
+        ]
     }
 
     fn example_deck(&self) -> &'static str {

@@ -25,6 +25,7 @@ pub mod part;
 pub mod plan;
 pub mod random;
 pub mod summary;
+pub mod workbench;
 
 use std::path::Path;
 
@@ -136,6 +137,9 @@ pub struct Prepared {
     pub header: Header,
     /// Each input key's value in the unmodified deck (shown where a duty case keeps it).
     base_inputs: Vec<String>,
+    /// Each output column's quantity (a key output's, for display units; `None`: a JSON
+    /// pointer, or the deck did not solve to say).
+    pub output_quantities: Vec<Option<crate::units::Quantity>>,
 }
 
 /// 64-bit FNV-1a (Fowler–Noll–Vo): a stable hash of bytes, the same on every machine and
@@ -184,6 +188,29 @@ pub fn prepare_text(text: &str, path: &Path) -> Result<Prepared, String> {
         .map_err(|e| format!("{}: deck = {}: {e}", file.source, file.deck.display()))?;
     let base = crate::bearings::load_case(&deck_text, &file.deck.display().to_string(), &[])
         .map_err(|e| e.to_string())?;
+    prepare_parsed(file, text, base, &deck_text)
+}
+
+/// [`prepare_text`] over a deck already loaded (`base`, whose text is `deck_text`): the
+/// workbench's Study pane runs a study on the deck under edit, not on the file's.
+pub fn prepare_on(text: &str, path: &Path, base: Box<dyn Case>) -> Result<Prepared, String> {
+    let file = file::parse(text, path).map_err(|errs| {
+        errs.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("\n")
+    })?;
+    let deck_text = base.text();
+    prepare_parsed(file, text, base, &deck_text)
+}
+
+/// The study of a parsed file over its loaded deck (see [`prepare`]).
+fn prepare_parsed(
+    file: StudyFile,
+    text: &str,
+    base: Box<dyn Case>,
+    deck_text: &str,
+) -> Result<Prepared, String> {
     let plan = Plan::new(&file);
     // A key the deck does not know is wrong for every point: say so once, with the deck's
     // own message (close matches), before anything is solved.
@@ -214,7 +241,7 @@ pub fn prepare_text(text: &str, path: &Path) -> Result<Prepared, String> {
         .iter()
         .map(|k| base.get(k).unwrap_or_default())
         .collect();
-    let outputs = output_columns(&file, base.as_ref())?;
+    let (outputs, output_quantities) = output_columns(&file, base.as_ref())?;
     let duty = match &file.design {
         Design::Duty(d) => {
             for name in std::iter::once(&d.life).chain(d.power.iter()) {
@@ -236,7 +263,7 @@ pub fn prepare_text(text: &str, path: &Path) -> Result<Prepared, String> {
     };
     let header = Header {
         format: PART_FORMAT.to_string(),
-        study_hash: study_hash(text, &deck_text),
+        study_hash: study_hash(text, deck_text),
         study: file.source.clone(),
         deck: base.name().to_string(),
         system: base.system().id().to_string(),
@@ -255,13 +282,14 @@ pub fn prepare_text(text: &str, path: &Path) -> Result<Prepared, String> {
         base,
         header,
         base_inputs,
+        output_quantities,
     })
 }
 
 /// The output columns: the file's list, each checked against one solve of the unmodified
 /// deck (a key output it has, or a JSON pointer to a number), or that solve's key outputs
 /// when the file lists none.
-fn output_columns(file: &StudyFile, base: &dyn Case) -> Result<Vec<String>, String> {
+fn output_columns(file: &StudyFile, base: &dyn Case) -> Result<Columns, String> {
     let solved = base.solve(
         RunOptions {
             skip_transient: true,
@@ -277,12 +305,21 @@ fn output_columns(file: &StudyFile, base: &dyn Case) -> Result<Vec<String>, Stri
             ))
         }
         // The deck as written fails but its points may not: the names cannot be checked.
-        Err(_) => return Ok(file.outputs.clone()),
+        Err(_) => return Ok((file.outputs.clone(), vec![None; file.outputs.len()])),
     };
     let view = solution.view();
     let names: Vec<&str> = view.key_outputs.iter().map(|o| o.name).collect();
+    let quantity = |name: &str| {
+        view.key_outputs
+            .iter()
+            .find(|o| o.name == name)
+            .map(|o| o.quantity)
+    };
     if file.outputs.is_empty() {
-        return Ok(names.iter().map(|s| s.to_string()).collect());
+        return Ok((
+            names.iter().map(|s| s.to_string()).collect(),
+            names.iter().map(|n| quantity(n)).collect(),
+        ));
     }
     let json = file
         .outputs
@@ -307,8 +344,12 @@ fn output_columns(file: &StudyFile, base: &dyn Case) -> Result<Vec<String>, Stri
             ));
         }
     }
-    Ok(file.outputs.clone())
+    let quantities = file.outputs.iter().map(|o| quantity(o)).collect();
+    Ok((file.outputs.clone(), quantities))
 }
+
+/// Output column names and their quantities.
+type Columns = (Vec<String>, Vec<Option<crate::units::Quantity>>);
 
 /// A panic's message.
 fn panic_text(p: &(dyn std::any::Any + Send)) -> String {
@@ -323,6 +364,13 @@ impl Prepared {
     /// transient, reduced to the output columns. Never fails: a refused value, a solver
     /// failure or a panic inside a solver is the row's `failure`.
     pub fn solve(&self, index: usize) -> Row {
+        self.solve_with(index, Cancel::NONE)
+    }
+
+    /// [`Prepared::solve`] with a cancel flag checked inside the point's solve (the
+    /// workbench's Study pane: the next edit stops it; a cancelled point's row says so
+    /// and is dropped by the caller).
+    pub fn solve_with(&self, index: usize, cancel: Cancel) -> Row {
         let texts = self.plan.point(index);
         let keys = self.plan.keys();
         let assignments: Vec<String> = keys
@@ -352,7 +400,7 @@ impl Prepared {
                 RunOptions {
                     skip_transient: true,
                 },
-                Cancel::NONE,
+                cancel,
             )
             .map(|s| (s.view().key_outputs, need_json.then(|| s.json())))
         }));

@@ -186,7 +186,7 @@ pub fn duty(header: &Header, rows: &[Row]) -> Option<DutyResult> {
 }
 
 /// A number for the text summary: six significant digits.
-fn num(v: f64) -> String {
+pub fn num(v: f64) -> String {
     let a = v.abs();
     if v == 0.0 {
         "0".to_string()
@@ -199,7 +199,7 @@ fn num(v: f64) -> String {
 }
 
 /// Inputs that vary over the rows (sensitivities are about them only).
-fn varied_inputs(r: &StudyResult) -> Vec<usize> {
+pub fn varied_inputs(r: &StudyResult) -> Vec<usize> {
     (0..r.header.inputs.len())
         .filter(|&i| {
             let mut vals = r.rows.iter().filter_map(|row| row.inputs.get(i));

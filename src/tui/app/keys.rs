@@ -282,6 +282,16 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "Load (when shown)",
         "load chart: roller loads ↔ load per length along the roller",
     ),
+    (
+        "j k / ↓ ↑",
+        "Study",
+        "output shown: its histogram, mean, σ, P5, P95 and sensitivities",
+    ),
+    (
+        "h l / ← →",
+        "Study",
+        "samples of the default tolerance study: 32, 64, 128, 256 (re-runs it)",
+    ),
     ("u", "any", "display units SI ↔ US"),
     ("r", "any", "re-solve now"),
     ("Ctrl-z / Ctrl-y", "any", "undo / redo an edit"),

@@ -27,6 +27,7 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use crate::bearings::view::{PaneKind, View};
 use crate::bearings::{Case, Detail};
+use crate::studies::study::workbench::StudyProgress;
 use crate::studies::sweep::PlanProgress;
 use crate::units::Units;
 
@@ -72,6 +73,14 @@ pub enum AppEvent {
         pane: usize,
         /// The job so far.
         view: Arc<crate::bearings::view::JobView>,
+    },
+    /// The worker's Study pane study for solve `generation` has these rows so far
+    /// (`progress.finished` once every point is in).
+    StudyProgress {
+        /// Job generation.
+        generation: u64,
+        /// The study so far.
+        progress: Arc<StudyProgress>,
     },
     /// The solver sent chart `chart_index` of job `generation` as it grows (a stage
     /// still running, e.g. the ball's skidding search; [`crate::bearings::Session::solve_streaming`]).
@@ -124,6 +133,19 @@ pub struct SolveJob {
     pub sweep: Option<usize>,
     /// The job pane on screen (`PaneKind::Job(n)`), run after the case.
     pub job: Option<usize>,
+    /// The Study pane on screen (`PaneKind::Study`): its study, run after the case.
+    pub study: Option<StudyRequest>,
+}
+
+/// What the Study pane asks the worker to run: the study file beside the deck that
+/// names it, else the default tolerance study of `samples` points
+/// ([`crate::studies::study::workbench::for_deck`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StudyRequest {
+    /// The deck's file (where study files naming it are looked for).
+    pub deck_path: Option<PathBuf>,
+    /// Samples of the default study.
+    pub samples: usize,
 }
 
 impl std::fmt::Debug for SolveJob {
@@ -134,6 +156,7 @@ impl std::fmt::Debug for SolveJob {
             .field("detail", &self.detail)
             .field("sweep", &self.sweep)
             .field("job", &self.job)
+            .field("study", &self.study)
             .finish()
     }
 }
@@ -144,6 +167,7 @@ impl PartialEq for SolveJob {
             && self.detail == other.detail
             && self.sweep == other.sweep
             && self.job == other.job
+            && self.study == other.study
             && self.case.system().id() == other.case.system().id()
             && self.case.text() == other.case.text()
     }
@@ -339,6 +363,15 @@ pub struct App {
     /// so far); dropped when a new solve is submitted (it was of another deck or is
     /// started again).
     pub job: Option<(u64, usize, Arc<crate::bearings::view::JobView>)>,
+    /// The Study pane's request of the last submitted solve.
+    pub last_study: Option<StudyRequest>,
+    /// The newest Study pane progress of the current generation: (generation, the study
+    /// so far); dropped when a new solve is submitted.
+    pub study: Option<(u64, Arc<StudyProgress>)>,
+    /// The Study pane's output shown (an index into the study's outputs).
+    pub study_output: usize,
+    /// Samples of the Study pane's default tolerance study (`h`/`l`).
+    pub study_samples: usize,
     /// The chart the running solve is filling: (generation, chart index, chart so far);
     /// drawn in place of the last solution's while that solve runs.
     pub streamed: Option<(u64, usize, Arc<crate::bearings::view::Chart>)>,
@@ -410,6 +443,10 @@ impl App {
             sweep: None,
             last_job: None,
             job: None,
+            last_study: None,
+            study: None,
+            study_output: 0,
+            study_samples: crate::studies::study::workbench::DEFAULT_SAMPLES,
             streamed: None,
             solve: SolveState::Idle,
             view: None,
@@ -476,8 +513,12 @@ impl App {
     /// pane, else the first chart.
     pub fn chart_slot(&self) -> Pane {
         match self.focus {
-            p
-            @ (Pane::Summary | Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_)) => p,
+            p @ (Pane::Summary
+            | Pane::Chart(_)
+            | Pane::Text(_)
+            | Pane::Sweep(_)
+            | Pane::Job(_)
+            | Pane::Study) => p,
             _ => Pane::Chart(0),
         }
     }
@@ -492,9 +533,12 @@ impl App {
                 Pane::Stepper => {
                     self.focus == Pane::Stepper || !self.panes().contains(&Pane::Thermal)
                 }
-                Pane::Summary | Pane::Chart(_) | Pane::Text(_) | Pane::Sweep(_) | Pane::Job(_) => {
-                    self.chart_slot() == pane
-                }
+                Pane::Summary
+                | Pane::Chart(_)
+                | Pane::Text(_)
+                | Pane::Sweep(_)
+                | Pane::Job(_)
+                | Pane::Study => self.chart_slot() == pane,
                 _ => true,
             }
         } else {
@@ -604,6 +648,15 @@ impl App {
             } => {
                 if generation == self.generation {
                     self.job = Some((generation, pane, view));
+                }
+                Vec::new()
+            }
+            AppEvent::StudyProgress {
+                generation,
+                progress,
+            } => {
+                if generation == self.generation {
+                    self.study = Some((generation, progress));
                 }
                 Vec::new()
             }

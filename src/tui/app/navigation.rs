@@ -39,6 +39,19 @@ impl App {
                 Vec::new()
             }
             Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
+            // The output whose histogram is drawn, cyclically.
+            Pane::Study => {
+                let n = self
+                    .study
+                    .as_ref()
+                    .map_or(0, |(_, p)| p.header.outputs.len());
+                if n > 0 {
+                    let by = by.clamp(-(n as isize), n as isize);
+                    self.study_output =
+                        (self.study_output as isize + by).rem_euclid(n as isize) as usize;
+                }
+                Vec::new()
+            }
             Pane::Summary => {
                 // The renderer clamps to what is left below the pane's last line.
                 self.summary_scroll = (self.summary_scroll as isize)
@@ -115,6 +128,18 @@ impl App {
                         (self.roller_sel as isize + by).rem_euclid(n as isize) as usize;
                     self.step = 0;
                 }
+                self.resolve_if_needed()
+            }
+            // The default study's samples, one choice up or down (bounded: the pane is
+            // for a quick look; `rollbench study` runs any size); the study re-runs.
+            Pane::Study => {
+                use crate::studies::study::workbench::SAMPLE_CHOICES;
+                let here = SAMPLE_CHOICES
+                    .iter()
+                    .position(|&s| s >= self.study_samples)
+                    .unwrap_or(SAMPLE_CHOICES.len() - 1) as isize;
+                let i = (here + by.signum()).clamp(0, SAMPLE_CHOICES.len() as isize - 1);
+                self.study_samples = SAMPLE_CHOICES[i as usize];
                 self.resolve_if_needed()
             }
             _ => Vec::new(),

@@ -3,7 +3,7 @@
 //! that needs more than the last job gave, and the chart the running job streams. Apart
 //! because it is the one place that builds a solve job and decides what it asks for.
 
-use super::{App, Command, Pane, SolveJob, SolveState};
+use super::{App, Command, Pane, SolveJob, SolveState, StudyRequest};
 use crate::bearings::Detail;
 
 impl App {
@@ -51,14 +51,25 @@ impl App {
         })
     }
 
+    /// The Study pane's request when it is on screen (the worker runs a study only for
+    /// a visible pane).
+    pub fn wanted_study(&self) -> Option<StudyRequest> {
+        self.visible(Pane::Study).then(|| StudyRequest {
+            deck_path: self.path.clone(),
+            samples: self.study_samples,
+        })
+    }
+
     pub(super) fn submit(&mut self) -> Command {
         self.generation += 1;
         self.last_request = self.wanted_request();
         self.last_sweep = self.wanted_sweep();
         self.last_job = self.wanted_job();
+        self.last_study = self.wanted_study();
         // The worker cancels the running job with this submit: what it reported is of the
         // old deck (or starts over), so it is dropped.
         self.job = None;
+        self.study = None;
         self.solve = SolveState::Running;
         Command::Solve(Box::new(SolveJob {
             generation: self.generation,
@@ -66,6 +77,7 @@ impl App {
             detail: self.last_request,
             sweep: self.last_sweep,
             job: self.last_job,
+            study: self.last_study.clone(),
         }))
     }
 
@@ -79,7 +91,9 @@ impl App {
         let need_sweep = want_sweep.is_some() && want_sweep != self.last_sweep;
         let want_job = self.wanted_job();
         let need_job = want_job.is_some() && want_job != self.last_job;
-        if need_trace || need_thermal || need_sweep || need_job {
+        let want_study = self.wanted_study();
+        let need_study = want_study.is_some() && want_study != self.last_study;
+        if need_trace || need_thermal || need_sweep || need_job || need_study {
             vec![self.submit()]
         } else {
             Vec::new()

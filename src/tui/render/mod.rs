@@ -19,6 +19,7 @@ mod job;
 mod overlays;
 pub(crate) mod status;
 mod stepper;
+mod study;
 mod summary;
 mod sweep;
 mod text;
@@ -193,6 +194,7 @@ fn render_pane(app: &App, pane: Pane, area: Rect, buf: &mut Buffer) {
         Pane::Text(n) => render_text(app, n, area, buf),
         Pane::Sweep(n) => render_sweep(app, n, area, buf),
         Pane::Job(n) => job::render_job(app, n, area, buf),
+        Pane::Study => study::render_study(app, area, buf),
     }
 }
 

@@ -96,6 +96,7 @@ pub(super) fn pane_help(app: &App) -> Vec<(String, String, String)> {
         Pane::Thermal => "the thermal network: each node's steady temperature, the transient of the chosen node".into(),
         Pane::Stepper => format!("the equilibrium iterations of the selected {el}, step by step: displacements, residuals, loads along it"),
         Pane::Job(_) => "a long study, run while the pane is on screen (the next edit cancels it)".into(),
+        Pane::Study => "a small design study of this deck (a study file naming it, else ±1 % tolerances of its main keys), run while the pane is on screen: one output's histogram, mean/σ/P5/P95, the inputs' rank correlations with it; the next edit cancels it".into(),
     };
     let mut rows = vec![(
         app.pane_title(app.focus).to_string(),

@@ -146,6 +146,7 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
             let mut first = match app.focus {
                 Pane::Text(_) => v(&["jk/hl scroll"]),
                 Pane::Sweep(_) | Pane::Job(_) => Vec::new(),
+                Pane::Study => v(&["jk output", "hl samples"]),
                 Pane::Inputs => v(&[
                     "jk move",
                     "Enter edit",
