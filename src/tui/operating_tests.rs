@@ -105,8 +105,10 @@ fn the_operating_marker_sits_at_the_deck_value() {
                 "{stem} {pane} {w}×{h}: marker at {x} (cell {cell}), deck {want}:\n{}",
                 screen_rows(&t).join("\n")
             );
+            // The legend (ratatui hides it when it would take over half the plot, as on
+            // the 60×20 Sweep) names the deck's value at 80×24.
             assert!(
-                screen_rows(&t).join("\n").contains("deck "),
+                w < 80 || screen_rows(&t).join("\n").contains("deck "),
                 "{stem} {pane} {w}×{h}: the legend names the deck's value"
             );
         }
