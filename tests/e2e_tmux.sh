@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end run of the real workbench binary in an 80×24 tmux session: switch panes,
 # move the roller selection, open the stepper, edit a deck value (valid and invalid),
-# export a pane and the report (refusing to replace a file without consent), then quit
+# export a pane and the report (refusing to replace a file without consent), pin a
+# baseline and see the Summary's deltas after an edit, then quit
 # through the unsaved-changes prompt. Then, in a shell, each termination signal
 # (TERM, INT, HUP, QUIT) sent to the workbench restores the terminal (echo, canonical
 # mode, main screen, cursor shown) and exits with 128 + signal. Asserts on
@@ -285,6 +286,30 @@ wait_for "ball_report.json"
 keys Enter
 wait_for "wrote ball_report" 60
 grep -qF '"balls"' "$WORK/ball_report.json" || fail "the report lacks its balls"
+# 8e. Baseline (issue 30 item 21): b pins the solution, the status line names it; an edit
+#     of the axial load re-solves and the Summary shows Δ lines against the pinned
+#     solution; D drops the baseline and the Δ lines go.
+keys b
+wait_for "baseline: ball.toml (pinned)"
+keys 1
+keys /
+keys A x i a l Space l o a d Enter
+keys Enter
+keys End BSpace BSpace BSpace BSpace BSpace BSpace 1 2 0 0 Enter
+wait_for "1200 N"
+wait_solved
+keys 2
+wait_for "Δ = now − baseline"
+for ((i = 0; i < 100; i++)); do
+    if screen | grep -qE -- 'Δ [+-][0-9]'; then break; fi
+    sleep 0.1
+done
+screen | grep -qE -- 'Δ [+-][0-9]' || fail "expected a Δ line on the Summary"
+wait_for "baseline: ball.toml (pinned)"
+keys D
+wait_for "baseline cleared"
+absent "Δ = now − baseline"
+absent "baseline: ball.toml"
 keys q
 wait_for "Unsaved changes"
 keys y

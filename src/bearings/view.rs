@@ -437,6 +437,18 @@ pub struct Chart {
     /// True when point `i` of every series belongs to element `i` (the pane marks the
     /// selected element).
     pub per_element: bool,
+    /// The deck's operating value on the x axis (issue 30 item 19: the ball's speed on
+    /// its Skid chart), drawn as a vertical marker; `None`: the chart has none.
+    pub operating: Option<OperatingPoint>,
+}
+
+/// The deck's own value of a chart's x quantity, marked on the chart.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingPoint {
+    /// The value, SI in the chart's x quantity (converted by the x axis's display).
+    pub x: f64,
+    /// What it is, for the legend (`"deck"`): the value and unit are appended.
+    pub label: &'static str,
 }
 
 impl Chart {

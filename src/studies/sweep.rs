@@ -586,6 +586,9 @@ pub struct PlanProgress {
     pub x_unit: [&'static str; 2],
     /// The units the plan's values are written in (the deck's).
     pub deck_units: crate::units::Units,
+    /// The deck's own value of the swept key, in deck units and SI (the Sweep chart's
+    /// operating marker); `None` when the key holds no number.
+    pub deck_value: Option<(f64, f64)>,
     /// The points solved so far, in sweep order.
     pub points: Vec<PlanPoint>,
     /// Every point has been solved (or failed).
@@ -609,6 +612,10 @@ pub fn run_plan(
         x_label: meta.map_or(plan.key, |m| m.label),
         x_unit: meta.map_or(["", ""], |m| [m.unit_si, m.unit_us]),
         deck_units: case.units(),
+        deck_value: case
+            .get(plan.key)
+            .and_then(|t| t.trim().parse::<f64>().ok())
+            .map(|v| (v, case.field_si(plan.key).unwrap_or(v))),
         points: Vec::with_capacity(plan.values.len()),
         done: plan.values.is_empty(),
         plan,

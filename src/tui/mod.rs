@@ -293,6 +293,10 @@ pub fn perform(app: &mut App, cmds: Vec<Command>, worker: &mut Worker) {
                 let r = DeckDoc::load(&path).map(|d| (Box::new(d), path));
                 app.handle(AppEvent::Opened(r))
             }
+            Command::OpenBaseline(path) => {
+                worker.open_baseline(path);
+                Vec::new()
+            }
             Command::Quit => {
                 if save_failed && app.signal.is_none() {
                     app.quit = false; // never lose a deck: stay when the save failed

@@ -19,8 +19,12 @@ use crate::bearings::view::View;
 use crate::bearings::{Detail, SolveError};
 use crate::numerics::cancel::Cancel;
 
+#[path = "baseline_tests.rs"]
+mod baseline;
 #[path = "issue30_tests.rs"]
 mod issue30;
+#[path = "operating_tests.rs"]
+mod operating;
 
 fn key(c: KeyCode) -> AppEvent {
     AppEvent::Key(KeyEvent::new(c, KeyModifiers::NONE))

@@ -3,7 +3,11 @@
 //! (strings with fixed precision, or `f64` pairs for charts) in the chosen display
 //! [`Units`]. The view comes from the bearing system; nothing here knows which one.
 
-use crate::bearings::view::{Chart, Display, Screen, ThermalResults, Trace, TraceFormat, View};
+use crate::bearings::view::{
+    significant, AnswerLine, AnswerValue, Chart, Display, Screen, ThermalResults, Trace,
+    TraceFormat, View,
+};
+use crate::report::diff::{Diff, Row as DiffRow};
 
 use crate::studies::sweep::{PlanPoint, PlanProgress};
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
@@ -314,6 +318,59 @@ pub struct ChartSeries {
     pub x_bounds: [f64; 2],
     /// Y bounds (0 to a rounded-up maximum).
     pub y_bounds: [f64; 2],
+    /// The deck's operating value on the x axis, drawn as a vertical marker when it lies
+    /// within [`ChartSeries::x_bounds`] (issue 30 item 19).
+    pub operating: Option<Operating>,
+}
+
+/// The deck's operating value on a chart's x axis, in display units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Operating {
+    /// The value, display units of the x axis.
+    pub x: f64,
+    /// The legend's name with the value and unit (`deck 12000 rpm`).
+    pub name: String,
+}
+
+impl Operating {
+    /// The marker named `label` at `x` (display units, unit `unit`), with as many
+    /// decimals as its size needs to read back to about 0.1 %.
+    pub fn new(label: &str, x: f64, unit: &str) -> Operating {
+        let prec = match x.abs() {
+            m if m >= 100.0 || m == 0.0 => 0,
+            m if m >= 10.0 => 1,
+            m if m >= 1.0 => 2,
+            _ => 4,
+        };
+        let value = fixed(x, prec);
+        let name = if unit.is_empty() {
+            format!("{label} {value}")
+        } else {
+            format!("{label} {value} {unit}")
+        };
+        Operating { x, name }
+    }
+
+    /// True when the marker lies on an axis spanning `b`.
+    pub fn within(&self, b: [f64; 2]) -> bool {
+        self.x >= b[0].min(b[1]) && self.x <= b[0].max(b[1])
+    }
+}
+
+/// `title` with the note that the operating marker is off an x axis spanning `b`
+/// (issue 30 item 19: say so when the deck's value is not in the range drawn).
+fn note_off_axis(title: String, op: Option<&Operating>, b: [f64; 2]) -> String {
+    match op {
+        Some(o) if !o.within(b) => {
+            let note = format!("{} off the axis", o.name);
+            if title.is_empty() {
+                note
+            } else {
+                format!("{title} · {note}")
+            }
+        }
+        _ => title,
+    }
 }
 
 /// Rounds a positive maximum up to 1, 2 or 5 × 10ⁿ so axis labels are short and stable.
@@ -425,20 +482,24 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
     } else {
         [-xmax, xmax]
     };
+    // Bounds are given in SI, like the points.
+    let x_bounds =
+        c.x.bounds
+            .map_or(x_auto, |b| b.map(|v| c.x.display.convert(v, u)));
+    let operating = c
+        .operating
+        .map(|o| Operating::new(o.label, c.x.display.convert(o.x, u), c.x.display.unit(u)));
     ChartSeries {
-        title: c.title_in(u).to_string(),
+        title: note_off_axis(c.title_in(u).to_string(), operating.as_ref(), x_bounds),
         x_label: c.x.display.header(c.x.label, u),
         y_label: c.y.display.header(c.y.label, u),
         series,
-        // Bounds are given in SI, like the points.
-        x_bounds: c
-            .x
-            .bounds
-            .map_or(x_auto, |b| b.map(|v| c.x.display.convert(v, u))),
+        x_bounds,
         y_bounds: c
             .y
             .bounds
             .map_or([y_floor, y_top], |b| b.map(|v| c.y.display.convert(v, u))),
+        operating,
     }
 }
 
@@ -488,6 +549,7 @@ pub fn chart_panels(c: &Chart, u: Units) -> Vec<ChartSeries> {
                     })
                     .collect(),
                 per_element: c.per_element,
+                operating: c.operating,
             };
             let mut p = chart_series(&sub, u);
             p.x_bounds = whole.x_bounds;
@@ -592,6 +654,12 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
     } else {
         "value".to_string()
     };
+    // The deck's own value of the swept key (issue 30 item 19), converted as the plan's
+    // values are.
+    let operating = p.deck_value.map(|(v, si)| {
+        let x = p.x_quantity.map_or(v, |q| q.from_si(si, u));
+        Operating::new("deck", x, unit)
+    });
     let failed = p.points.iter().filter(|pt| pt.failure.is_some()).count();
     let mut note = format!("{}/{} points", p.points.len(), p.plan.values.len());
     if failed > 0 {
@@ -599,7 +667,7 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
     }
     (
         ChartSeries {
-            title: p.plan.title.clone(),
+            title: note_off_axis(p.plan.title.clone(), operating.as_ref(), x_bounds),
             x_label,
             y_label,
             series: series
@@ -608,6 +676,7 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
                 .collect(),
             x_bounds,
             y_bounds,
+            operating,
         },
         marker,
         note,
@@ -975,6 +1044,7 @@ mod series_display_tests {
                 display: None,
             }],
             per_element: false,
+            operating: None,
         };
         let b = |ys: &[f64]| chart_series(&chart(ys), Units::Si).y_bounds;
         assert_eq!(b(&[-354.0, 0.0]), [-500.0, 0.0]);
@@ -1014,6 +1084,7 @@ mod series_display_tests {
                 },
             ],
             per_element: false,
+            operating: None,
         };
         let si = chart_series(&c, Units::Si);
         assert_eq!(si.series[1].0, "heat W");
@@ -1056,6 +1127,7 @@ mod series_display_tests {
                 },
             ],
             per_element: false,
+            operating: None,
         };
         let p = chart_panels(&c, Units::Si);
         assert_eq!(p.len(), 2);
@@ -1080,4 +1152,58 @@ mod series_display_tests {
             vec![chart_series(&one, Units::Si)]
         );
     }
+}
+
+/// Issue 30 item 21: for each line of `view.answer` (the current design, B of `d`), its
+/// row of the comparison with the baseline (A), matched as `rollbench diff` matches them
+/// (section, label and unit, in order); `None` for a name or a line the baseline lacks.
+pub fn answer_deltas<'a>(d: &'a Diff, view: &View, u: Units) -> Vec<Option<&'a DiffRow>> {
+    let mut used = vec![false; d.outputs.len()];
+    view.answer
+        .iter()
+        .map(|l| {
+            if matches!(l.value, AnswerValue::Name(_)) {
+                return None;
+            }
+            let unit = l.display.unit(u);
+            let k = d.outputs.iter().enumerate().position(|(k, r)| {
+                !used[k] && r.section == l.section && r.quantity == l.label && r.unit == unit
+            })?;
+            used[k] = true;
+            d.outputs.get(k)
+        })
+        .collect()
+}
+
+/// A comparison row as the Summary shows it under a line: `Δ +12.3 N (+4.5 %)`, the
+/// difference current − baseline with as many decimals as the line's value shows, and
+/// the change relative to the baseline; `None` when either side has no number.
+pub fn delta_text(r: &DiffRow, line: &AnswerLine) -> Option<String> {
+    let (d, now) = (r.delta()?, r.b?);
+    let decimals = match line.display {
+        Display::Mrev | Display::Hours => {
+            let digits = significant(now, line.precision);
+            digits.split_once('.').map_or(0, |(_, f)| f.len())
+        }
+        _ => line.precision,
+    };
+    let unit = if r.unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {}", r.unit)
+    };
+    // No sign on a change that rounds to nothing (`Δ 0.000 (0.0 %)`).
+    let sign = |v: f64, prec: usize| {
+        let s = fixed(v, prec);
+        if s.chars().all(|c| matches!(c, '0' | '.')) {
+            s
+        } else {
+            signed(v, prec)
+        }
+    };
+    let pct = match r.percent() {
+        Some(p) => format!("{} %", sign(p, 1)),
+        None => "baseline 0".to_string(),
+    };
+    Some(format!("Δ {}{unit} ({pct})", sign(d, decimals)))
 }

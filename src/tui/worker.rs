@@ -151,6 +151,53 @@ impl Worker {
     }
 }
 
+impl Worker {
+    /// Reads the deck at `path` and solves it as `rollbench run` does (no transient: the
+    /// comparison reads no time history) on a thread of its own, then reports
+    /// [`AppEvent::BaselineOpened`]: the baseline, or the whole reason (the deck's
+    /// errors with their lines, the solver's failure).
+    pub fn open_baseline(&self, path: std::path::PathBuf) {
+        let events = self.events.clone();
+        let for_thread = path.clone();
+        let spawned = thread::Builder::new()
+            .name(SOLVER_THREAD.into())
+            .spawn(move || {
+                let path = for_thread;
+                let outcome =
+                    catch_unwind(AssertUnwindSafe(|| baseline_of(&path))).unwrap_or_else(|p| {
+                        Err(format!("the solve panicked: {}", panic_text(p.as_ref())))
+                    });
+                let _ = events.send(AppEvent::BaselineOpened { path, outcome });
+            });
+        if let Err(e) = spawned {
+            let _ = self.events.send(AppEvent::BaselineOpened {
+                path,
+                outcome: Err(format!("cannot start the solve: {e}")),
+            });
+        }
+    }
+}
+
+/// The deck at `path` read (through the deck reader: bounded, UTF-8, validated) and
+/// solved; see [`Worker::open_baseline`].
+pub fn baseline_of(path: &std::path::Path) -> Result<super::app::Baseline, String> {
+    let deck = super::deck_io::DeckDoc::load(path)?;
+    let case = deck.case();
+    let solution = case
+        .solve(
+            crate::bearings::RunOptions {
+                skip_transient: true,
+            },
+            Cancel::NONE,
+        )
+        .map_err(|e| format!("solve failed: {e}"))?;
+    Ok(super::app::Baseline::new(
+        path.display().to_string(),
+        deck.system(),
+        Arc::new(solution.view()),
+    ))
+}
+
 /// Solves `case` as `rollbench run` does and writes its report (see
 /// [`Worker::export_report`]); the status line's sentence, or why not.
 fn report_to(

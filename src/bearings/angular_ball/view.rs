@@ -3,9 +3,9 @@
 
 use super::analysis::{BallAnalysis, BallResult, ContactResult};
 use crate::bearings::view::{
-    element_number, Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole, Series,
-    SolveStats, Summary, Table, Trace, TraceColumn, TraceFormat, TraceLine, TraceStep, View, FLAG,
-    NUMBER_COLUMN,
+    element_number, Chart, ChartAxis, Column, CsvStyle, Display, KeyOutput, KeyRole,
+    OperatingPoint, Series, SolveStats, Summary, Table, Trace, TraceColumn, TraceFormat, TraceLine,
+    TraceStep, View, FLAG, NUMBER_COLUMN,
 };
 use crate::units::{Quantity, Units};
 
@@ -336,7 +336,19 @@ fn short_label(name: &str) -> &'static str {
 /// against the relative ring speed (rpm) at the speeds the threshold search solved; the
 /// crossing is the threshold.
 pub fn skid_chart(a: &BallAnalysis) -> Chart {
+    // The deck's relative ring speed, the chart's x quantity (issue 30 item 19), and the
+    // threshold's margin to it: (deck − threshold)/threshold, + when the deck runs
+    // above the threshold (its balls skid by 2-4), − when below.
+    let op = &a.input.operating;
+    let deck_rpm = (op.inner_speed_rad_s - op.outer_speed_rad_s).abs() * RPM_PER_RAD_S;
     let title = match a.skid.speed_rad_s {
+        Some(n) if n > 0.0 => {
+            let threshold = n * RPM_PER_RAD_S;
+            format!(
+                "skidding from {threshold:.0} rpm · deck {deck_rpm:.0} rpm · margin {:+.0} %",
+                100.0 * (deck_rpm - threshold) / threshold
+            )
+        }
         Some(n) => format!("skidding from {:.0} rpm", n * RPM_PER_RAD_S),
         // A failed search is not "no skidding": the pane says so and why (the reason
         // names the speed whose load solve failed).
@@ -344,9 +356,16 @@ pub fn skid_chart(a: &BallAnalysis) -> Chart {
             "skidding search failed: {}",
             a.skid.reason.as_deref().unwrap_or("")
         ),
-        None => "no skidding below the search limit".to_string(),
+        None => format!(
+            "no skidding below the search limit · deck {deck_rpm:.0} rpm, limit {:.0} rpm",
+            a.skid.limit_rad_s * RPM_PER_RAD_S
+        ),
     };
     let mut chart = skid_chart_of(&a.skid.samples, title);
+    chart.operating = Some(OperatingPoint {
+        x: deck_rpm,
+        label: "deck",
+    });
     // The crossing marked: a vertical line at the threshold (the root, not a sample),
     // from 0 to the larger moment there.
     if let Some(n) = a.skid.speed_rad_s {
@@ -386,9 +405,11 @@ fn skid_chart_of(samples: &[(f64, f64, f64)], title: String) -> Chart {
     };
     Chart {
         title,
+        // Display::Rpm (rpm in both systems, as Plain) so the operating marker's legend
+        // names the unit; the header still reads "speed rpm".
         x: ChartAxis {
-            label: "speed rpm",
-            display: Display::Plain,
+            label: "speed",
+            display: Display::Rpm,
             bounds: None,
         },
         y: ChartAxis {
@@ -410,6 +431,7 @@ fn skid_chart_of(samples: &[(f64, f64, f64)], title: String) -> Chart {
         ],
         title_us: None,
         per_element: false,
+        operating: None,
     }
 }
 
@@ -485,6 +507,7 @@ pub fn traction_chart(a: &BallAnalysis) -> Chart {
         },
         series,
         per_element: false,
+        operating: None,
     }
 }
 
@@ -574,6 +597,7 @@ pub fn dynamics_chart(a: &BallAnalysis) -> Chart {
         },
         series,
         per_element: true,
+        operating: None,
     }
 }
 
@@ -618,6 +642,7 @@ pub fn ball_charts(a: &BallAnalysis) -> Vec<Chart> {
                 },
             ],
             per_element: false,
+            operating: None,
         })
         .collect()
 }

@@ -142,6 +142,7 @@ fn profile_charts(rows: &[ContactRow]) -> Vec<Chart> {
             },
             series: pressure,
             per_element: false,
+            operating: None,
         },
         Chart {
             title: format!("h against x at {top:.0}°"),
@@ -154,6 +155,7 @@ fn profile_charts(rows: &[ContactRow]) -> Vec<Chart> {
             },
             series: film,
             per_element: false,
+            operating: None,
         },
     ]
 }

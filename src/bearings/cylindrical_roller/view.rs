@@ -148,6 +148,7 @@ pub fn view(a: &CylindricalAnalysis) -> View {
             series("outer W_o", &|r| r.outer_load_n),
         ],
         per_element: true,
+        operating: None,
     };
     // The flat ends where the dub-off starts, ±(l/2 − l_d) from the roller's middle.
     let g = &a.input.geometry;
@@ -210,6 +211,7 @@ pub fn view(a: &CylindricalAnalysis) -> View {
                 },
                 series,
                 per_element: false,
+                operating: None,
             }
         })
         .collect();

@@ -34,6 +34,7 @@ fn empty(title: &str) -> Chart {
         },
         series: Vec::new(),
         per_element: false,
+        operating: None,
     }
 }
 
@@ -111,6 +112,7 @@ fn orbit(t: &Tribodynamics) -> Chart {
         },
         series,
         per_element: false,
+        operating: None,
     }
 }
 
@@ -180,6 +182,7 @@ fn spectrum(t: &Tribodynamics, roller: bool) -> Chart {
             display: None,
         }],
         per_element: false,
+        operating: None,
     }
 }
 
@@ -254,6 +257,7 @@ fn cycle(t: &Tribodynamics) -> Chart {
             },
         ],
         per_element: false,
+        operating: None,
     }
 }
 

@@ -91,6 +91,7 @@ pub fn torque_charts(points: &[Vec<TorquePoint>], f_max: f64) -> Vec<Chart> {
             })
             .collect(),
         per_element: false,
+        operating: None,
     };
     vec![
         chart("M_fi against F/C", |p| p.friction_torque_inner_nm),
@@ -331,6 +332,7 @@ fn fig3_charts(
             },
         ],
         per_element: false,
+        operating: None,
     };
     let c = Chart {
         title: "C = C_r × (L10/L10 nominal)^¼".into(),
@@ -351,6 +353,7 @@ fn fig3_charts(
             display: None,
         }],
         per_element: false,
+        operating: None,
     };
     vec![m, c]
 }

@@ -180,6 +180,7 @@ pub fn view(a: &DoubleRowAnalysis) -> View {
         },
         series,
         per_element: true,
+        operating: None,
     };
     let k = stiffness_xz(a);
     let summary = vec![

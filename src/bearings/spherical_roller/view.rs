@@ -354,6 +354,7 @@ pub fn view(a: &Analysis) -> View {
         ],
         title_us: None,
         per_element: true,
+        operating: None,
     };
     View {
         system: super::SYSTEM_ID,
@@ -632,6 +633,7 @@ fn lamina_chart(r: &RollerResult) -> Chart {
         ],
         title_us: None,
         per_element: false,
+        operating: None,
     }
 }
 

@@ -261,6 +261,7 @@ pub fn view(a: &Analysis) -> View {
         ],
         title_us: None,
         per_element: true,
+        operating: None,
     };
     let element_charts = a
         .slices
@@ -292,6 +293,7 @@ pub fn view(a: &Analysis) -> View {
             ],
             title_us: None,
             per_element: false,
+            operating: None,
         })
         .collect();
     let k = &a.stiffness;

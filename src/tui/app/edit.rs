@@ -13,7 +13,7 @@ impl App {
         let buffer = match (kind, &self.path) {
             (PromptKind::SaveAs, Some(p)) => p.display().to_string(),
             (PromptKind::SaveAs, None) => "deck.toml".to_string(),
-            (PromptKind::Open, _) | (PromptKind::Export(_), _) => String::new(),
+            (PromptKind::Open | PromptKind::Baseline | PromptKind::Export(_), _) => String::new(),
         };
         self.mode = Mode::Prompt { kind, buffer };
     }
@@ -236,6 +236,7 @@ impl App {
                     // another path: ask first if it exists (checked by the runtime)
                     PromptKind::SaveAs => vec![Command::CheckSaveTarget(path)],
                     PromptKind::Open => vec![Command::Open(path)],
+                    PromptKind::Baseline => vec![Command::OpenBaseline(path)],
                     // ask first if it exists (checked by the runtime), as save-as does
                     PromptKind::Export(what) => vec![Command::CheckExportTarget { path, what }],
                 };

@@ -163,6 +163,9 @@ impl App {
                     Vec::new()
                 }
             },
+            KeyCode::Char('b') => self.pin_baseline(),
+            KeyCode::Char('B') => self.open_baseline_prompt(),
+            KeyCode::Char('D') => self.clear_baseline(),
             KeyCode::Char('?') => {
                 self.mode = Mode::Help;
                 Vec::new()
@@ -309,6 +312,17 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "export the report as `run` writes it (.json, .csv, else text)…",
     ),
     ("R", "any", "revert to the saved file"),
+    (
+        "b",
+        "any",
+        "pin the solution on screen as the baseline: Summary shows Δ = now − baseline",
+    ),
+    (
+        "B",
+        "any",
+        "open a deck file as the baseline (solved once; another system: shared lines only)…",
+    ),
+    ("D", "any", "drop (clear) the baseline"),
     ("e", "any", "the last error, whole (any key closes)"),
     (
         "w",

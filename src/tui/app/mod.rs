@@ -11,12 +11,14 @@
 //! `navigation` (focus, selection, the stepper's steps), `solve` (what to ask the
 //! solver and when).
 
+mod baseline;
 mod edit;
 mod export;
 mod keys;
 mod navigation;
 mod solve;
 
+pub use baseline::Baseline;
 pub use keys::{keys_markdown, KEYS};
 
 use std::collections::BTreeMap;
@@ -111,6 +113,14 @@ pub enum AppEvent {
     },
     /// An export finished: what was written where, or why not.
     Exported(Result<String, String>),
+    /// The deck at `path` was read and solved as the baseline ([`Command::OpenBaseline`]),
+    /// or why not.
+    BaselineOpened {
+        /// The typed path.
+        path: PathBuf,
+        /// The solved baseline, or the whole reason it is not.
+        outcome: Result<Baseline, String>,
+    },
     /// The runtime looked at a save-as target ([`Command::CheckSaveTarget`]).
     SaveTargetChecked {
         /// The typed path.
@@ -187,6 +197,9 @@ pub enum Command {
     },
     /// Load a deck from this path, then report [`AppEvent::Opened`].
     Open(PathBuf),
+    /// Read the deck at this path and solve it (in the background) as the baseline, then
+    /// report [`AppEvent::BaselineOpened`].
+    OpenBaseline(PathBuf),
     /// Save as: see whether this path already exists, then report
     /// [`AppEvent::SaveTargetChecked`] (the app asks before replacing it).
     CheckSaveTarget(PathBuf),
@@ -264,6 +277,8 @@ pub enum PromptKind {
     Open,
     /// Export the focused pane or the report to a file.
     Export(ExportWhat),
+    /// A deck file to solve as the baseline (issue 30 item 21).
+    Baseline,
 }
 
 /// Input mode (which keys mean what).
@@ -408,6 +423,9 @@ pub struct App {
     pub help_scroll: usize,
     /// The termination signal that ended the app, if any ([`AppEvent::Signal`]).
     pub signal: Option<i32>,
+    /// The design the panes compare the current solution with (issue 30 item 21): set
+    /// by `b` (pin) or `B` (a deck file), cleared by `D`; never changed by an edit.
+    pub baseline: Option<Baseline>,
 }
 
 /// Terminal size at or above which all panes are shown together.
@@ -463,6 +481,7 @@ impl App {
             quit_after_save: false,
             help_scroll: 0,
             signal: None,
+            baseline: None,
         }
     }
 
@@ -747,6 +766,7 @@ impl App {
                 self.mode = Mode::Error;
                 Vec::new()
             }
+            AppEvent::BaselineOpened { path, outcome } => self.baseline_opened(outcome, path),
             AppEvent::Signal(n) => {
                 // A signal is not a question: quit even with unsaved changes or a prompt open.
                 self.signal = Some(n);

@@ -14,6 +14,10 @@ use super::{no_solution_text, pane_block, stale_note, DIM, SERIES_COLOURS};
 use crate::tui::app::{App, Pane};
 use crate::tui::view_model;
 
+/// The colour of the deck's operating marker (no series has it; the selected element's
+/// marks are white blocks, not a line).
+pub(super) const OPERATING: Color = Color::White;
+
 /// Decimals that keep an axis's labels distinct: none from 100 up, more below, and at
 /// least enough that the three labels (ends and middle) differ in their last two digits
 /// (±1 mm/s at three decimals of m/s would read 0.001, 0.000, -0.001).
@@ -188,6 +192,26 @@ pub(super) fn draw_chart(
 ) {
     let inner = block.inner(area);
     block.render(area, buf);
+    // The deck's operating value (issue 30 item 19): a vertical line across the plot
+    // when it lies on the x axis (the title says so when it does not), in the legend
+    // with its value, so the legend placement below keeps it clear of the data too.
+    let mut datasets = datasets;
+    let marker: Vec<(f64, f64)> = s
+        .operating
+        .as_ref()
+        .filter(|o| o.within(s.x_bounds))
+        .map(|o| vec![(o.x, s.y_bounds[0]), (o.x, s.y_bounds[1])])
+        .unwrap_or_default();
+    if let (Some(o), false) = (&s.operating, marker.is_empty()) {
+        datasets.push(
+            Dataset::default()
+                .name(o.name.clone())
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(Style::default().fg(OPERATING))
+                .data(&marker),
+        );
+    }
     // Two decimals on a short x axis (a roller's laminae in mm), none on a long one.
     let x_prec = label_precision(s.x_bounds);
     let make = |legend: Option<LegendPosition>| {
@@ -344,6 +368,7 @@ mod tests {
             ],
             x_bounds: [0.0, 1.0],
             y_bounds: [0.0, 1.0],
+            operating: None,
         }
     }
 

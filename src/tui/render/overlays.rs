@@ -205,6 +205,7 @@ pub(super) fn render_prompt(kind: PromptKind, text: &str, area: Rect, buf: &mut 
     let title = match kind {
         PromptKind::SaveAs => " Save deck as (Enter save, Esc cancel) ",
         PromptKind::Open => " Open deck (Enter open, Esc cancel) ",
+        PromptKind::Baseline => " Baseline deck (Enter solve it, Esc cancel) ",
         PromptKind::Export(ExportWhat::Pane) => " Export the pane to (Enter write, Esc cancel) ",
         PromptKind::Export(ExportWhat::Report) => {
             " Report to (.json, .csv, else text; Enter write) "

@@ -79,9 +79,17 @@ pub(super) fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
     Line::from(spans).render(area, buf);
 }
 
-/// The status line after the solver state: warnings, unsaved, edits not solved, message.
+/// The status line after the solver state: the baseline, warnings, unsaved, edits not
+/// solved, message.
 fn status_extras(app: &App) -> Vec<Span<'static>> {
     let mut spans = Vec::new();
+    // First: what the Summary's Δ are against (issue 30 item 21).
+    if let Some(b) = &app.baseline {
+        spans.push(Span::styled(
+            format!(" │ baseline: {}", b.name),
+            Style::default().fg(Color::Magenta),
+        ));
+    }
     let warnings = app.view.as_ref().map_or(0, |v| v.warnings.len());
     if warnings > 0 && matches!(app.solve, SolveState::Solved { .. }) {
         spans.push(Span::styled(

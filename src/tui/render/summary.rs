@@ -11,8 +11,13 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use super::{no_solution_text, pane_block, stale_note, ACCENT, DIM};
 use crate::bearings::view::{AnswerValue, View};
+use crate::report::diff::Diff;
 use crate::tui::app::{App, Pane, SolveState};
+use crate::tui::view_model;
 use crate::units::Units;
+
+/// The colour of a line giving the change from the baseline.
+const DELTA: ratatui::style::Color = ratatui::style::Color::Magenta;
 
 /// How a line of the pane is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -23,6 +28,8 @@ pub(crate) enum Kind {
     Value,
     /// Where a value occurs, or the continuation of a wrapped line.
     Note,
+    /// The change of the value above from the baseline's.
+    Delta,
 }
 
 /// The pane's lines for `view` in `units`, wrapped to `width` cells (the labels in a
@@ -32,6 +39,7 @@ pub(crate) fn summary_lines(
     solver: &str,
     units: Units,
     width: usize,
+    baseline: Option<&Diff>,
 ) -> Vec<(Kind, String)> {
     let width = width.max(20);
     let label_w = view
@@ -42,9 +50,27 @@ pub(crate) fn summary_lines(
         .unwrap_or(0)
         .min(width / 2);
     let mut out = Vec::new();
+    // Issue 30 item 21: what the deltas are against, first; of another system, that
+    // only the lines both report are compared (the `diff` command's rule).
+    let deltas = baseline.map(|d| view_model::answer_deltas(d, view, units));
+    if let Some(d) = baseline {
+        out.push((Kind::Section, "Baseline".to_string()));
+        let head = format!(" {} ({})", d.a.0, d.a.1);
+        push_wrapped(&mut out, Kind::Value, "", &head, 2, width);
+        let note = if d.a.1 == d.b.1 {
+            "Δ = now − baseline, % of the baseline".to_string()
+        } else {
+            format!(
+                "another system: only the {} lines both report are compared; Δ = now − \
+                 baseline",
+                d.outputs.len()
+            )
+        };
+        push_wrapped(&mut out, Kind::Note, " ", &note, 2, width);
+    }
     let mut section = "";
     let mut said: Vec<&str> = Vec::new();
-    for a in &view.answer {
+    for (i, a) in view.answer.iter().enumerate() {
         if a.section != section {
             section = a.section;
             out.push((Kind::Section, section.to_string()));
@@ -65,15 +91,32 @@ pub(crate) fn summary_lines(
             Some(p) => format!("{head}{value}  {p}"),
             None => format!("{head}{value}"),
         };
+        let indent = head.chars().count().min(width / 2);
         if joined.chars().count() <= width {
             out.push((Kind::Value, joined));
-            continue;
+        } else {
+            // Too wide: the value wraps under its own column, the place on a line of its
+            // own.
+            push_wrapped(&mut out, Kind::Value, &head, &value, indent, width);
+            if let Some(p) = place {
+                push_wrapped(&mut out, Kind::Note, &" ".repeat(indent), &p, indent, width);
+            }
         }
-        // Too wide: the value wraps under its own column, the place on a line of its own.
-        let indent = head.chars().count().min(width / 2);
-        push_wrapped(&mut out, Kind::Value, &head, &value, indent, width);
-        if let Some(p) = place {
-            push_wrapped(&mut out, Kind::Note, &" ".repeat(indent), &p, indent, width);
+        // The change from the baseline on a line of its own under the value (a column
+        // would not fit 60 columns), wrapped, never cut.
+        let delta = deltas
+            .as_ref()
+            .and_then(|d| d.get(i).copied().flatten())
+            .and_then(|r| view_model::delta_text(r, a));
+        if let Some(t) = delta {
+            push_wrapped(
+                &mut out,
+                Kind::Delta,
+                &" ".repeat(indent),
+                &t,
+                indent,
+                width,
+            );
         }
     }
     out.push((Kind::Section, "Solver".into()));
@@ -166,7 +209,14 @@ pub(super) fn render_summary(app: &App, area: Rect, buf: &mut Buffer) {
     };
     let inner_w = area.width.saturating_sub(2) as usize;
     let inner_h = area.height.saturating_sub(2) as usize;
-    let lines = summary_lines(view, &solver_state(app), app.display_units, inner_w);
+    let diff = app.baseline_diff();
+    let lines = summary_lines(
+        view,
+        &solver_state(app),
+        app.display_units,
+        inner_w,
+        diff.as_ref(),
+    );
     let max_scroll = lines.len().saturating_sub(inner_h);
     let scroll = app.summary_scroll.min(max_scroll);
     let below = lines.len().saturating_sub(scroll + inner_h);
@@ -190,6 +240,7 @@ pub(super) fn render_summary(app: &App, area: Rect, buf: &mut Buffer) {
             )),
             Kind::Value => Line::raw(text),
             Kind::Note => Line::from(Span::styled(text, Style::default().fg(DIM))),
+            Kind::Delta => Line::from(Span::styled(text, Style::default().fg(DELTA))),
         })
         .collect();
     Paragraph::new(drawn).render(inner, buf);

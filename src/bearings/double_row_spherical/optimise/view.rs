@@ -137,5 +137,6 @@ pub fn fig3_chart(o: &Optimisation, v: usize) -> Option<Chart> {
             },
         ],
         per_element: false,
+        operating: None,
     })
 }
