@@ -809,6 +809,17 @@ impl AnswerLine {
     }
 }
 
+/// `v` with `prec` decimals; a result that rounds to zero prints without a sign, so
+/// last-bit noise (−0.00 vs 0.00) never reaches a pane or a snapshot.
+pub fn fixed(v: f64, prec: usize) -> String {
+    let s = format!("{v:.prec$}");
+    if s.chars().all(|c| matches!(c, '-' | '0' | '.')) {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
 /// `x` to `digits` significant figures, without an exponent (lives of 0.02 to 10⁷ Mrev).
 pub fn significant(x: f64, digits: usize) -> String {
     if x == 0.0 || !x.is_finite() {

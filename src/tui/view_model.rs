@@ -42,16 +42,7 @@ pub fn small_length_unit(u: Units) -> &'static str {
     Display::SmallLength.unit(u)
 }
 
-/// `v` with `prec` decimals; a result that rounds to zero prints without a sign, so
-/// last-bit noise (−0.00 vs 0.00) never reaches a pane or a snapshot.
-pub fn fixed(v: f64, prec: usize) -> String {
-    let s = format!("{v:.prec$}");
-    if s.chars().all(|c| matches!(c, '-' | '0' | '.')) {
-        s.trim_start_matches('-').to_string()
-    } else {
-        s
-    }
-}
+pub use crate::bearings::view::fixed;
 
 /// Like [`fixed`] with an explicit `+` on positive values.
 pub fn signed(v: f64, prec: usize) -> String {

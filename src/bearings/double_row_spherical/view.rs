@@ -398,8 +398,8 @@ pub fn loss_bars(l: &LossBreakdown, units: Units) -> Vec<String> {
         x.cage_slip_pct,
     ));
     v.push(format!(
-        "cage imbalance {:.4} {u}",
-        t.from_si(x.cage_torque_imbalance_nm, units)
+        "cage imbalance {} {u}",
+        crate::bearings::view::fixed(t.from_si(x.cage_torque_imbalance_nm, units), 4)
     ));
     if let Some(g) = &l.guide_ring {
         v.push(format!(
