@@ -69,6 +69,13 @@ fn summary_deltas_read_back_as_the_two_json_reports() {
         outcome,
     });
     assert!(app.baseline.is_some(), "{:?}", app.error);
+    // At 60 columns the status line names the baseline's file whole (not a path cut
+    // after its directory); the Summary's Baseline section gives the path.
+    let status = screen_rows(&draw(&app, 60, 20)).join("\n");
+    assert!(
+        status.contains("baseline: trb_afapl_lubricated.toml"),
+        "{status}"
+    );
     let base = crate::bearings::load_file(&other, &[]).expect("loads");
     checked += check_deltas(&app, &json_of(base.as_ref()), &json_of(&*app.deck.case()));
     assert!(checked >= 20, "only {checked} deltas checked");

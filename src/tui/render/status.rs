@@ -84,9 +84,14 @@ pub(super) fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
 fn status_extras(app: &App) -> Vec<Span<'static>> {
     let mut spans = Vec::new();
     // First: what the Summary's Δ are against (issue 30 item 21).
+    // The file name only: the status line is one row (a deck path cut at 60 columns said
+    // nothing); the Summary's Baseline section gives the whole path.
     if let Some(b) = &app.baseline {
+        let name = std::path::Path::new(&b.name)
+            .file_name()
+            .map_or_else(|| b.name.clone(), |n| n.to_string_lossy().into_owned());
         spans.push(Span::styled(
-            format!(" │ baseline: {}", b.name),
+            format!(" │ baseline: {name}"),
             Style::default().fg(Color::Magenta),
         ));
     }
