@@ -306,6 +306,21 @@ for ((i = 0; i < 100; i++)); do
 done
 screen | grep -qE -- 'Δ [+-][0-9]' || fail "expected a Δ line on the Summary"
 wait_for "baseline: ball.toml (pinned)"
+#     The Balls table: d shows each cell's change from the baseline, then in %, then the
+#     values again; the Skid chart overlays the baseline dimmed.
+keys 3
+keys d
+wait_for "Δ now − baseline"
+wait_for "ΔQi N"
+keys d
+wait_for "Δ % of baseline"
+wait_for "ΔQi %"
+keys d
+wait_for "┌ Balls · columns"
+absent "ΔQi"
+keys 4
+wait_for "baseline (dim)"
+keys 2
 keys D
 wait_for "baseline cleared"
 absent "Δ = now − baseline"

@@ -44,17 +44,27 @@ pub struct Row {
 impl Row {
     /// Δ = B − A.
     pub fn delta(&self) -> Option<f64> {
-        Some(self.b? - self.a?)
+        change(self.a, self.b)
     }
 
     /// Δ% = 100·(B − A)/|A|; 0 when both are 0, none when only A is.
     pub fn percent(&self) -> Option<f64> {
-        let (a, b) = (self.a?, self.b?);
-        if a == 0.0 {
-            (b == 0.0).then_some(0.0)
-        } else {
-            Some(100.0 * (b - a) / a.abs())
-        }
+        percent_change(self.a, self.b)
+    }
+}
+
+/// Δ = B − A; none when either is absent.
+pub fn change(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    Some(b? - a?)
+}
+
+/// Δ% = 100·(B − A)/|A|; 0 when both are 0, none when only A is (or either is absent).
+pub fn percent_change(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    let (a, b) = (a?, b?);
+    if a == 0.0 {
+        (b == 0.0).then_some(0.0)
+    } else {
+        Some(100.0 * (b - a) / a.abs())
     }
 }
 
@@ -157,23 +167,17 @@ fn element_rows(a: Side, b: Side, u: Units) -> Result<Vec<Row>, String> {
     let (Some(ta), Some(tb)) = (a.view.element_table(), b.view.element_table()) else {
         return Err("not compared: no element table".into());
     };
-    if ta.rows.len() != tb.rows.len() {
-        return Err(format!(
-            "not compared: A has {} {}s, B {}",
-            ta.rows.len(),
-            a.element,
-            tb.rows.len()
-        ));
-    }
-    let keys = |t: &Table| t.columns.iter().map(|c| c.key).collect::<Vec<_>>();
-    if keys(&ta) != keys(&tb) {
-        return Err("not compared: the tables have different columns".into());
-    }
+    tables_compare(&ta, &tb, a.element)?;
+    let matched = matching_columns(&ta, &tb);
     let mut rows = Vec::new();
     for (i, (ra, rb)) in ta.rows.iter().zip(&tb.rows).enumerate() {
-        for (c, col) in ta.columns.iter().enumerate() {
-            // The element's number and position are the row's name, not a result.
-            if matches!(col.key, "number" | "index") {
+        for ((c, col), jb) in ta.columns.iter().enumerate().zip(&matched) {
+            // The element's number and position are the row's name, not a result; a
+            // column only A has (a film B's deck does not compute) is not compared.
+            let Some(jb) = *jb else {
+                continue;
+            };
+            if names_the_row(col.key) {
                 continue;
             }
             let (unit, quantity) = match col.screen {
@@ -182,18 +186,49 @@ fn element_rows(a: Side, b: Side, u: Units) -> Result<Vec<Row>, String> {
                 }
                 _ => (String::new(), col.header_in(u)),
             };
-            let cell =
-                |r: &Vec<Option<f64>>| r.get(c).copied().flatten().map(|v| col.value_in(v, u));
+            let cell = |r: &Vec<Option<f64>>, k: usize| {
+                r.get(k).copied().flatten().map(|v| col.value_in(v, u))
+            };
             rows.push(Row {
                 section: format!("{} {}", a.element, crate::bearings::view::element_number(i)),
                 quantity,
                 unit,
-                a: cell(ra),
-                b: cell(rb),
+                a: cell(ra, c),
+                b: cell(rb, jb),
             });
         }
     }
     Ok(rows)
+}
+
+/// Whether two element tables of one system compare element by element — as many
+/// `element`s — or why not (the workbench's element table says it in its title). Their
+/// columns are matched by key ([`matching_columns`]): two decks of one system may
+/// differ in what they compute (a film only where a lubricant is given).
+pub fn tables_compare(ta: &Table, tb: &Table, element: &str) -> Result<(), String> {
+    if ta.rows.len() != tb.rows.len() {
+        return Err(format!(
+            "not compared: A has {} {element}s, B {}",
+            ta.rows.len(),
+            tb.rows.len()
+        ));
+    }
+    Ok(())
+}
+
+/// For each column of `ta`, the index of `tb`'s column holding the same quantity (the
+/// same machine key); `None` where `tb` has no such column.
+pub fn matching_columns(ta: &Table, tb: &Table) -> Vec<Option<usize>> {
+    ta.columns
+        .iter()
+        .map(|c| tb.columns.iter().position(|d| d.key == c.key))
+        .collect()
+}
+
+/// Whether column `key` names the row (the element's number or position) rather than
+/// holding a result: never differenced.
+pub fn names_the_row(key: &str) -> bool {
+    matches!(key, "number" | "index")
 }
 
 fn units_name(u: Units) -> &'static str {

@@ -7,7 +7,9 @@ use crate::bearings::view::{
     significant, AnswerLine, AnswerValue, Chart, Display, Screen, ThermalResults, Trace,
     TraceFormat, View,
 };
-use crate::report::diff::{Diff, Row as DiffRow};
+use crate::report::diff::{
+    change, matching_columns, names_the_row, percent_change, Diff, Row as DiffRow,
+};
 
 use crate::studies::sweep::{PlanPoint, PlanProgress};
 use crate::units::{Units, FAHRENHEIT_PER_KELVIN};
@@ -154,9 +156,84 @@ pub const MAX_SPREAD: usize = 4;
 /// [`MAX_SPREAD`] more cells each) instead of leaving the right of the pane blank.
 /// Formatting only: the values come from the bearing system's view.
 pub fn table_cells(view: &View, u: Units, width: usize, first: usize) -> TableCells {
+    table_cells_against(view, None, u, width, first)
+}
+
+/// What the element table shows against a baseline (issue 30 item 21): its values, or
+/// for every result column the change from the baseline's same element, absolute
+/// (`ΔQi N`, in the column's unit and decimals) or relative (`ΔQi %`, one decimal).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TableDelta {
+    /// The values (no baseline, or `d` cycled back).
+    #[default]
+    Values,
+    /// Δ = now − baseline, in the column's unit.
+    Change,
+    /// Δ% = 100·(now − baseline)/|baseline|.
+    Percent,
+}
+
+impl TableDelta {
+    /// The next mode `d` cycles to.
+    pub fn next(self) -> TableDelta {
+        match self {
+            TableDelta::Values => TableDelta::Change,
+            TableDelta::Change => TableDelta::Percent,
+            TableDelta::Percent => TableDelta::Values,
+        }
+    }
+}
+
+/// Whether `base`'s element table compares with `view`'s cell by cell (one system, as
+/// many elements called `element`, the same columns), or why not, as `rollbench diff`
+/// says it.
+pub fn tables_against(view: &View, base: &View, element: &str) -> Result<(), String> {
+    if view.system != base.system {
+        return Err(format!(
+            "not compared: two systems ({} now, {} as the baseline)",
+            view.system, base.system
+        ));
+    }
+    match (view.screen_table(), base.screen_table()) {
+        (Some(t), Some(b)) => crate::report::diff::tables_compare(b, t, element),
+        _ => Err("not compared: no element table".into()),
+    }
+}
+
+/// A change as a table cell: signed (`+1.25`, `-0.40`), no sign on one that rounds to
+/// nothing, as [`fit_number`] fits it to `width`.
+fn fit_change(v: f64, prec: usize, width: usize) -> String {
+    let plain = fit_number(v, prec, width);
+    let rounds_to_zero = !plain.chars().any(|c| matches!(c, '1'..='9'));
+    if v > 0.0 && !rounds_to_zero {
+        let s = fit_number(v, prec, width.saturating_sub(1));
+        format!("+{s}")
+    } else {
+        plain
+    }
+}
+
+/// [`table_cells`] with, when `against` holds a baseline's view and a mode other than
+/// [`TableDelta::Values`], each result cell the change from the baseline's same cell
+/// (the element's number stays; a state column shows the current state; `—` where
+/// either side has no number, or for Δ% where the baseline's is 0 and the current's not).
+/// The caller checks the tables compare ([`tables_against`]); columns are matched by
+/// key, and a column (or row) the baseline lacks shows `—`.
+pub fn table_cells_against(
+    view: &View,
+    against: Option<(&View, TableDelta)>,
+    u: Units,
+    width: usize,
+    first: usize,
+) -> TableCells {
     let Some(t) = view.screen_table() else {
         return TableCells::default();
     };
+    let against = against
+        .filter(|(_, m)| *m != TableDelta::Values)
+        .and_then(|(b, m)| Some((b.screen_table()?, m)));
+    // The baseline's column of each of this table's (by key; `None`: it has none).
+    let matched = against.map_or_else(Vec::new, |(b, _)| matching_columns(t, b));
     let shown: Vec<(usize, Screen)> = t
         .columns
         .iter()
@@ -171,25 +248,72 @@ pub fn table_cells(view: &View, u: Units, width: usize, first: usize) -> TableCe
         .chain(shown.iter().skip(1 + first))
         .copied()
         .collect();
+    // The columns differenced against the baseline: results, not the row's name or a
+    // state.
+    let differenced: Vec<bool> = shown
+        .iter()
+        .map(|&(i, s)| {
+            against.is_some()
+                && !matches!(s.display, Display::Choice(_))
+                && t.columns.get(i).is_some_and(|c| !names_the_row(c.key))
+        })
+        .collect();
     let values: Vec<Vec<Option<f64>>> = t
         .rows
         .iter()
-        .map(|row| {
+        .enumerate()
+        .map(|(r, row)| {
             shown
                 .iter()
-                .map(|&(i, s)| {
-                    row.get(i)
-                        .copied()
-                        .flatten()
-                        .map(|v| s.display.convert(v, u))
+                .zip(&differenced)
+                .map(|(&(i, s), &diff)| {
+                    let at = |row: &Vec<Option<f64>>, k: usize| {
+                        row.get(k)
+                            .copied()
+                            .flatten()
+                            .map(|v| s.display.convert(v, u))
+                    };
+                    let now = at(row, i);
+                    match against {
+                        Some((b, mode)) if diff => {
+                            let base = matched
+                                .get(i)
+                                .copied()
+                                .flatten()
+                                .and_then(|k| at(b.rows.get(r)?, k));
+                            match mode {
+                                TableDelta::Percent => percent_change(base, now),
+                                _ => change(base, now),
+                            }
+                        }
+                        _ => now,
+                    }
                 })
                 .collect()
         })
         .collect();
+    // A column's decimals: a percentage has one.
+    let precision = |c: usize, s: &Screen| match against {
+        Some((_, TableDelta::Percent)) if differenced[c] => 1,
+        _ => s.precision,
+    };
     let headers: Vec<String> = shown
         .iter()
-        .map(|(_, s)| s.display.header(s.label, u))
+        .enumerate()
+        .map(|(c, (_, s))| match against {
+            Some((_, TableDelta::Percent)) if differenced[c] => format!("Δ{} %", s.label),
+            Some(_) if differenced[c] => format!("Δ{}", s.display.header(s.label, u)),
+            _ => s.display.header(s.label, u),
+        })
         .collect();
+    // A change is signed; a value is not.
+    let format_cell = |c: usize, v: f64, prec: usize, w: usize| {
+        if differenced[c] {
+            fit_change(v, prec, w)
+        } else {
+            fit_number(v, prec, w)
+        }
+    };
     let natural: Vec<usize> = shown
         .iter()
         .enumerate()
@@ -197,7 +321,9 @@ pub fn table_cells(view: &View, u: Units, width: usize, first: usize) -> TableCe
             let cells = values.iter().map(|r| match r.get(c).copied().flatten() {
                 Some(v) => match s.display.choice(v) {
                     Some(name) => name.chars().count(),
-                    None => fixed(v, s.precision).chars().count(),
+                    None => format_cell(c, v, precision(c, s), usize::MAX)
+                        .chars()
+                        .count(),
                 },
                 None => DASH.chars().count(),
             });
@@ -273,7 +399,7 @@ pub fn table_cells(view: &View, u: Units, width: usize, first: usize) -> TableCe
                 .map(|(c, ((_, s), &w))| match row.get(c).copied().flatten() {
                     Some(v) => match s.display.choice(v) {
                         Some(name) => name.to_string(),
-                        None => fit_number(v, s.precision, w),
+                        None => format_cell(c, v, precision(c, s), w),
                     },
                     None => DASH.to_string(),
                 })
@@ -312,6 +438,9 @@ pub struct ChartSeries {
     /// The deck's operating value on the x axis, drawn as a vertical marker when it lies
     /// within [`ChartSeries::x_bounds`] (issue 30 item 19).
     pub operating: Option<Operating>,
+    /// The baseline's same series (issue 30 item 21), drawn dimmed under
+    /// [`ChartSeries::series`]; empty: no baseline, or its chart is not this one.
+    pub baseline: Vec<(String, Vec<(f64, f64)>)>,
 }
 
 /// The deck's operating value on a chart's x axis, in display units.
@@ -491,7 +620,43 @@ pub fn chart_series(c: &Chart, u: Units) -> ChartSeries {
             .bounds
             .map_or([y_floor, y_top], |b| b.map(|v| c.y.display.convert(v, u))),
         operating,
+        baseline: Vec::new(),
     }
+}
+
+/// Whether `b` draws what `c` draws — the same axes (quantity and unit) and series — so
+/// one can be laid over the other. Titles may differ: they carry each design's numbers.
+fn same_chart(c: &Chart, b: &Chart) -> bool {
+    let axis = |a: &crate::bearings::view::ChartAxis| (a.label, a.display);
+    let names = |c: &Chart| {
+        c.series
+            .iter()
+            .map(|s| (s.name, s.display))
+            .collect::<Vec<_>>()
+    };
+    axis(&c.x) == axis(&b.x) && axis(&c.y) == axis(&b.y) && names(c) == names(b)
+}
+
+/// [`chart_panels`] with, when `base` is the baseline's same chart ([`same_chart`]), its
+/// series in each panel's [`ChartSeries::baseline`] and the panel's bounds widened to
+/// hold both designs (issue 30 item 21: charts overlay the baseline, dimmed). A chart
+/// of another kind gets no overlay.
+pub fn chart_panels_against(c: &Chart, base: Option<&Chart>, u: Units) -> Vec<ChartSeries> {
+    let mut panels = chart_panels(c, u);
+    let Some(b) = base.filter(|b| same_chart(c, b)) else {
+        return panels;
+    };
+    let theirs = chart_panels(b, u);
+    if theirs.len() != panels.len() {
+        return panels;
+    }
+    let union = |a: [f64; 2], b: [f64; 2]| [a[0].min(b[0]), a[1].max(b[1])];
+    for (p, t) in panels.iter_mut().zip(theirs) {
+        p.x_bounds = union(p.x_bounds, t.x_bounds);
+        p.y_bounds = union(p.y_bounds, t.y_bounds);
+        p.baseline = t.series;
+    }
+    panels
 }
 
 /// Chart `c` in display units `u` as panels sharing one x axis, one per y unit (issue 30
@@ -668,6 +833,7 @@ pub fn sweep_series(p: &PlanProgress, u: Units) -> (ChartSeries, Option<f64>, St
             x_bounds,
             y_bounds,
             operating,
+            baseline: Vec::new(),
         },
         marker,
         note,

@@ -11,6 +11,7 @@ use std::sync::Arc;
 use super::{App, Command, Mode, PromptKind};
 use crate::bearings::view::View;
 use crate::report::diff::{compare, Diff, Side};
+use crate::tui::view_model::{tables_against, TableDelta};
 
 /// A solved design the panes compare with.
 #[derive(Debug, Clone)]
@@ -57,8 +58,39 @@ impl App {
         Vec::new()
     }
 
+    /// `d`: the element table's values → Δ → Δ% → values (with a baseline).
+    pub(super) fn cycle_table_delta(&mut self) -> Vec<Command> {
+        if self.baseline.is_none() {
+            self.message =
+                Some("no baseline: b pins the solution on screen, B opens a deck".into());
+            return Vec::new();
+        }
+        self.table_delta = self.table_delta.next();
+        self.message = Some(
+            match self.table_delta {
+                TableDelta::Values => "element table: values",
+                TableDelta::Change => "element table: Δ = now − baseline",
+                TableDelta::Percent => "element table: Δ % of the baseline",
+            }
+            .into(),
+        );
+        Vec::new()
+    }
+
+    /// What the element table is differenced against (issue 30 item 21): `None` when it
+    /// shows values (no baseline, or `d` cycled back); else the baseline's view and the
+    /// mode, or why the tables do not compare (two systems, element counts).
+    pub fn table_baseline(&self) -> Option<Result<(&View, TableDelta), String>> {
+        if self.table_delta == TableDelta::Values {
+            return None;
+        }
+        let (b, view) = (self.baseline.as_ref()?, self.view.as_deref()?);
+        Some(tables_against(view, &b.view, b.element).map(|()| (&*b.view, self.table_delta)))
+    }
+
     /// `D`: no baseline.
     pub(super) fn clear_baseline(&mut self) -> Vec<Command> {
+        self.table_delta = TableDelta::Values;
         self.message = Some(match self.baseline.take() {
             Some(b) => format!("baseline cleared: {}", b.name),
             None => "no baseline to clear".into(),

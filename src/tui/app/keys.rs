@@ -166,6 +166,7 @@ impl App {
             KeyCode::Char('b') => self.pin_baseline(),
             KeyCode::Char('B') => self.open_baseline_prompt(),
             KeyCode::Char('D') => self.clear_baseline(),
+            KeyCode::Char('d') => self.cycle_table_delta(),
             KeyCode::Char('?') => {
                 self.mode = Mode::Help;
                 Vec::new()
@@ -321,6 +322,11 @@ pub const KEYS: &[(&str, &str, &str)] = &[
         "B",
         "any",
         "open a deck file as the baseline (solved once; another system: shared lines only)…",
+    ),
+    (
+        "d",
+        "any (with a baseline)",
+        "element table: values → Δ = now − baseline → Δ % of the baseline → values",
     ),
     ("D", "any", "drop (clear) the baseline"),
     ("e", "any", "the last error, whole (any key closes)"),

@@ -426,6 +426,8 @@ pub struct App {
     /// The design the panes compare the current solution with (issue 30 item 21): set
     /// by `b` (pin) or `B` (a deck file), cleared by `D`; never changed by an edit.
     pub baseline: Option<Baseline>,
+    /// The element table's values or its changes from the baseline (`d`).
+    pub table_delta: crate::tui::view_model::TableDelta,
 }
 
 /// Terminal size at or above which all panes are shown together.
@@ -482,6 +484,7 @@ impl App {
             help_scroll: 0,
             signal: None,
             baseline: None,
+            table_delta: Default::default(),
         }
     }
 

@@ -74,8 +74,25 @@ pub(super) fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
         pane_block(app, pane, "").render(area, buf);
         return;
     };
+    // The baseline's same chart, overlaid dimmed (issue 30 item 21): a design of the
+    // same system, its chart `n` or the same element's chart.
+    let base = app
+        .baseline
+        .as_ref()
+        .filter(|b| view.is_some_and(|v| v.system == b.view.system))
+        .and_then(|b| {
+            if element_mode {
+                let same_count =
+                    view.is_some_and(|v| v.element_charts.len() == b.view.element_charts.len());
+                same_count
+                    .then(|| b.view.element_charts.get(app.roller_sel))
+                    .flatten()
+            } else {
+                b.view.charts.get(n)
+            }
+        });
     // One panel per y unit (issue 30 item 1), stacked on one x axis.
-    let panels = view_model::chart_panels(c, app.display_units);
+    let panels = view_model::chart_panels_against(c, base, app.display_units);
     let Some(s) = panels.first() else {
         pane_block(app, pane, "").render(area, buf);
         return;
@@ -117,14 +134,16 @@ pub(super) fn render_load(app: &App, n: usize, area: Rect, buf: &mut Buffer) {
     let rows = Layout::vertical(vec![Constraint::Fill(1); panels.len()]).split(inner);
     let mut colour = 0;
     for ((p, m), r) in panels.iter().zip(&marked).zip(rows.iter()) {
+        // The dimmed baseline comes first, then the panel's series, then the marks.
+        let own = p.baseline.len()..p.baseline.len() + p.series.len();
         let datasets = with_marks(p, m, &mark_name)
             .into_iter()
             .enumerate()
             .map(|(k, d)| {
-                if k < p.series.len() {
+                if own.contains(&k) {
                     d.style(
                         Style::default().fg(SERIES_COLOURS
-                            .get(colour + k)
+                            .get(colour + k - own.start)
                             .copied()
                             .unwrap_or(Color::White)),
                     )
@@ -158,21 +177,34 @@ fn with_marks<'a>(
     datasets
 }
 
-/// One line per series of `s`, in the series colours.
+/// One line per series of `s`, in the series colours, over the baseline's series
+/// (drawn first, dimmed, one legend entry `baseline (dim)` for them all).
 pub(super) fn series_datasets(s: &view_model::ChartSeries) -> Vec<Dataset<'_>> {
-    s.series
-        .iter()
-        .enumerate()
-        .map(|(k, (name, points))| {
-            Dataset::default()
-                .name(name.as_str())
-                .marker(Marker::Braille)
-                .graph_type(GraphType::Line)
-                .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
-                .data(points)
-        })
-        .collect()
+    let baseline = s.baseline.iter().enumerate().map(|(k, (_, points))| {
+        let d = Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::default().fg(DIM))
+            .data(points);
+        if k == 0 {
+            d.name(BASELINE_LEGEND)
+        } else {
+            d
+        }
+    });
+    let own = s.series.iter().enumerate().map(|(k, (name, points))| {
+        Dataset::default()
+            .name(name.as_str())
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(Style::default().fg(SERIES_COLOURS.get(k).copied().unwrap_or(Color::White)))
+            .data(points)
+    });
+    baseline.chain(own).collect()
 }
+
+/// The legend's name for the baseline's series overlaid on a chart.
+pub(super) const BASELINE_LEGEND: &str = "baseline (dim)";
 
 /// Draws `datasets` on `s`'s axes inside `block`. Nothing is drawn over the data
 /// (issue 30 item 3): the axis titles go on a row of their own above the plot (`▲ y`
@@ -369,6 +401,7 @@ mod tests {
             x_bounds: [0.0, 1.0],
             y_bounds: [0.0, 1.0],
             operating: None,
+            baseline: Vec::new(),
         }
     }
 

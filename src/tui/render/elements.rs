@@ -17,9 +17,23 @@ use crate::tui::view_model::{self, DASH};
 pub(super) fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
     let u = app.display_units;
     // The table is laid out for the pane's inner width (2 border cells).
+    // Against a baseline (issue 30 item 21): the changes, or why they are not shown.
+    let against = app.table_baseline();
     let cells = app.view.as_deref().map(|v| {
-        view_model::table_cells(v, u, area.width.saturating_sub(2) as usize, app.col_scroll)
+        view_model::table_cells_against(
+            v,
+            against.as_ref().and_then(|a| a.as_ref().ok().copied()),
+            u,
+            area.width.saturating_sub(2) as usize,
+            app.col_scroll,
+        )
     });
+    let delta = match &against {
+        None => String::new(),
+        Some(Ok((_, view_model::TableDelta::Percent))) => " · Δ % of baseline".into(),
+        Some(Ok(_)) => " · Δ now − baseline".into(),
+        Some(Err(why)) => format!(" · Δ {why}"),
+    };
     // What is in view of how many, and how to reach the rest (issue 30 item 15).
     let hidden = match &cells {
         Some(c) if c.hidden > 0 => format!(
@@ -28,7 +42,11 @@ pub(super) fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
         ),
         _ => String::new(),
     };
-    let block = pane_block(app, Pane::Elements, &format!("{}{hidden}", stale_note(app)));
+    let block = pane_block(
+        app,
+        Pane::Elements,
+        &format!("{delta}{}{hidden}", stale_note(app)),
+    );
     let inner = block.inner(area);
     block.render(area, buf);
     let (Some(view), Some(cells)) = (app.view.as_deref(), cells) else {

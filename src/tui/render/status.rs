@@ -167,7 +167,14 @@ fn hint_items(app: &App) -> (Vec<String>, Vec<String>) {
                     "^z/^y undo/redo",
                     "^s save",
                 ]),
-                Pane::Elements => vec![format!("jk {el}"), "hl columns".into()],
+                Pane::Elements => {
+                    let mut h = vec![format!("jk {el}"), "hl columns".into()];
+                    // With a baseline, how to see the table's changes from it.
+                    if app.baseline.is_some() {
+                        h.push("d Δ".into());
+                    }
+                    h
+                }
                 Pane::Chart(n) => {
                     let mut h = vec![format!("jk {el}")];
                     if app
