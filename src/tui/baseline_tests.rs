@@ -426,6 +426,12 @@ fn tui_snapshot_element_table_deltas() {
         app.focus = Pane::Elements;
         app.handle(ch('d'));
         snap("baseline_chen_b_balls_delta", &app, w, h);
+        // The title's notes fit the border whole, in their short form where they must
+        // (at 60 columns "· h l scroll" was cut to "· h l scro").
+        let rows = screen_rows(&draw(&app, w, h));
+        let top = rows.iter().find(|r| r.contains("┌ Balls")).expect("title");
+        assert!(top.contains(" · Δ") && top.contains("h l"), "{top}");
+        assert!(top.trim_end().ends_with("─┐"), "{top}");
         app.focus = Pane::Chart(0);
         snap("baseline_chen_b_chart_overlay", &app, w, h);
     }

@@ -216,9 +216,12 @@ pub fn for_deck(
     })
 }
 
-/// A number exactly as the study draws from it (shortest round-trip form).
+/// A number as the study draws from it, to 12 significant figures (shortest form of
+/// that): the ±1 % band of 0.0008 in reads `0.000008`, not the `0.000008000000000000001`
+/// its product is in binary. The study's own text keeps the exact value.
 fn short(v: f64) -> String {
-    format!("{v}")
+    let rounded: f64 = format!("{v:.11e}").parse().unwrap_or(v);
+    format!("{rounded}")
 }
 
 /// A percentage to three decimals, trailing zeros dropped (`1`, `0.5`).
@@ -425,6 +428,18 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The pane's description shows 12 significant figures: binary round-off of a band
+    /// (0.0008 × 0.01) is not shown as data; a value with fewer figures is unchanged.
+    #[test]
+    fn description_numbers_drop_binary_round_off() {
+        assert_eq!(short(0.0008 * 0.01), "0.000008");
+        assert_eq!(format!("{}", 0.0008 * 0.01), "0.000008000000000000001");
+        assert_eq!(short(0.1 + 0.2), "0.3");
+        assert_eq!(short(12345.678), "12345.678");
+        assert_eq!(short(1.0 / 3.0), "0.333333333333");
+        assert_eq!(short(-2.5e7), "-25000000");
+    }
 
     fn case(name: &str) -> Box<dyn Case> {
         let path = format!("{}/decks/{name}.toml", env!("CARGO_MANIFEST_DIR"));

@@ -28,25 +28,35 @@ pub(super) fn render_rollers(app: &App, area: Rect, buf: &mut Buffer) {
             app.col_scroll,
         )
     });
-    let delta = match &against {
-        None => String::new(),
-        Some(Ok((_, view_model::TableDelta::Percent))) => " · Δ % of baseline".into(),
-        Some(Ok(_)) => " · Δ now − baseline".into(),
-        Some(Err(why)) => format!(" · Δ {why}"),
+    // Each note in its long and short form: the short ones when the long ones do not
+    // fit the border (at 60 columns "· h l scroll" was cut to "· h l scro").
+    let delta = |short: bool| match (&against, short) {
+        (None, _) => String::new(),
+        (Some(Ok((_, view_model::TableDelta::Percent))), false) => " · Δ % of baseline".into(),
+        (Some(Ok((_, view_model::TableDelta::Percent))), true) => " · Δ %".into(),
+        (Some(Ok(_)), false) => " · Δ now − baseline".into(),
+        (Some(Ok(_)), true) => " · Δ".into(),
+        (Some(Err(why)), _) => format!(" · Δ {why}"),
     };
     // What is in view of how many, and how to reach the rest (issue 30 item 15).
-    let hidden = match &cells {
-        Some(c) if c.hidden > 0 => format!(
+    let hidden = |short: bool| match &cells {
+        Some(c) if c.hidden > 0 && !short => format!(
             " · columns {}–{} of {} · h l scroll",
             c.range[0], c.range[1], c.total
         ),
+        Some(c) if c.hidden > 0 => format!(" · {}–{}/{} h l", c.range[0], c.range[1], c.total),
         _ => String::new(),
     };
-    let block = pane_block(
-        app,
-        Pane::Elements,
-        &format!("{delta}{}{hidden}", stale_note(app)),
-    );
+    let stale = stale_note(app);
+    // Room inside the border: 2 corners and the 2 spaces around the title.
+    let room =
+        usize::from(area.width).saturating_sub(4 + app.pane_title(Pane::Elements).chars().count());
+    let title = [false, true]
+        .iter()
+        .map(|&short| format!("{}{stale}{}", delta(short), hidden(short)))
+        .find(|t| t.chars().count() <= room)
+        .unwrap_or_else(|| format!("{}{stale}{}", delta(true), hidden(true)));
+    let block = pane_block(app, Pane::Elements, &title);
     let inner = block.inner(area);
     block.render(area, buf);
     let (Some(view), Some(cells)) = (app.view.as_deref(), cells) else {
