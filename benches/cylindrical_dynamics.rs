@@ -4,6 +4,9 @@
 //! film off (contact loss events), and the Hann-windowed FFT of 2^16 points (≤ 0.2 ms;
 //! group `fft_2_16`, see [`fft`]). The film-off cases run on the Nyström 8(6) pair, as
 //! `simulate` does; `100_rev_rho5_film_off_dop853` is the same run on DOP853 (before).
+//! `100_rev_rho5_film_on` is the steady film (`Squeeze::None`, the Nyström pair);
+//! `100_rev_rho5_film_on_normalised` the squeeze reading `decks/crb_truck.toml` ships
+//! (the force depends on the approach rate: DOP853).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rollbench::bearings::cylindrical_roller::dynamics::{
@@ -44,6 +47,17 @@ fn dynamics(c: &mut Criterion) {
             "100_rev_rho5_film_on",
             DynamicsModel {
                 film: Some(film()),
+                ..DynamicsModel::truck(5e-6)
+            },
+            Integrator::Auto,
+        ),
+        (
+            "100_rev_rho5_film_on_normalised",
+            DynamicsModel {
+                film: Some(FilmLaw {
+                    squeeze: Squeeze::Normalised,
+                    ..film()
+                }),
                 ..DynamicsModel::truck(5e-6)
             },
             Integrator::Auto,

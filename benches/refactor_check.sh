@@ -45,12 +45,21 @@ tapered_variants=(
   "--set operating.axial_load=-3000"
   "--set pedestal.stiffness_x=1e6"
 )
+# Cylindrical: the film off (the Nyström pair), the steady film (the pair with the film),
+# contact loss (ρ = 0: events), the printed squeeze.
+cylindrical_variants=(
+  "--set dynamics.film_in_deflection=false"
+  "--set dynamics.squeeze=none"
+  "--set geometry.radial_interference=0 --set dynamics.film_in_deflection=false"
+  "--set dynamics.squeeze=printed --set dynamics.revolutions=40"
+)
 fail=0; n=0
 for deck in decks/*.toml; do
   own=()
   case "$(grep -m1 '^type' "$deck")" in
     *angular-contact-ball*) own=("${ball_variants[@]}") ;;
     *tapered-roller*) own=("${tapered_variants[@]}") ;;
+    *cylindrical-roller*) own=("${cylindrical_variants[@]}") ;;
   esac
   for v in "${variants[@]}" "${own[@]}"; do
     n=$((n + 1))

@@ -12,12 +12,12 @@
 //! The general path ([`super::solve`]) stays for everything else (any dimension, the
 //! other methods, `Output::Steps`, non-terminal events).
 
+use super::control::{check_times, weight, Proposal, StepControl, StretchedNorm};
 use super::dense::brent;
 use super::dop853::{A, C, D, E3, E5, ERROR_EXPONENT};
 use super::{
     initial_step, validate, Counted, OdeError, OdeOptions, OdeStats, OdeSystem, Output,
-    Termination, Tol, MAX_DECREASE, MAX_DECREASE_DOP853, MAX_INCREASE_DOP853, MAX_NONFINITE_STREAK,
-    NONFINITE_SHRINK, SAFETY,
+    Termination, Tol,
 };
 use crate::numerics::cancel::Cancel;
 
@@ -192,19 +192,7 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
     let adapter: AsDyn<'_, S, N> = AsDyn(sys);
     validate(&adapter, t0, y0, t_end, opts, &Output::Final)?;
     let dir = if t_end >= t0 { 1.0 } else { -1.0 };
-    if let Some(&tr) = times
-        .iter()
-        .find(|&&tr| !tr.is_finite() || dir * (tr - t0) < 0.0 || dir * (tr - t_end) > 0.0)
-    {
-        return Err(OdeError::InvalidInput {
-            what: format!("output time {tr} is outside the integration interval [{t0}, {t_end}]"),
-        });
-    }
-    if times.windows(2).any(|w| dir * (w[1] - w[0]) < 0.0) {
-        return Err(OdeError::InvalidInput {
-            what: "output times must be ordered in the direction of integration".into(),
-        });
-    }
+    check_times(times, t0, t_end)?;
     if cancel.is_cancelled() {
         return Err(OdeError::Cancelled { t: t0 });
     }
@@ -260,10 +248,8 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         }
     } * dir;
 
-    let mut rejected_last = false;
+    let mut control = StepControl::new(ERROR_EXPONENT, Proposal::Quotient);
     let mut attempts = 0usize;
-    let mut nonfinite_streak = 0usize;
-    let mut last_failure_nonfinite = false;
     let mut hits: Vec<(f64, usize)> = Vec::new();
     loop {
         if attempts >= opts.max_steps {
@@ -281,11 +267,7 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         }
         let t_new = if last { t_end } else { t + h };
         if t_new == t || (!last && h.abs() <= 16.0 * f64::EPSILON * t.abs()) {
-            return Err(if last_failure_nonfinite {
-                OdeError::NonFinite { t }
-            } else {
-                OdeError::StepTooSmall { t, h }
-            });
+            return Err(control.too_small(t, h));
         }
         attempts += 1;
 
@@ -308,30 +290,23 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         let mut err = f64::NAN;
         if finite {
             y_new = stage_point(&k, &y, h, 12);
-            let (mut e5, mut e3) = (0.0, 0.0);
+            let mut norm = StretchedNorm::default();
             for i in 0..N {
                 let (a, b) = (y[i], y_new[i]);
                 if !b.is_finite() {
                     finite = false;
                     break;
                 }
-                let sk = tol.atol + tol.rtol * a.abs().max(b.abs());
                 let (mut r5, mut r3) = (0.0, 0.0);
                 for j in 0..12 {
                     let kji = k[j][i];
                     r5 += E5[j] * kji;
                     r3 += E3[j] * kji;
                 }
-                e5 += (r5 / sk) * (r5 / sk);
-                e3 += (r3 / sk) * (r3 / sk);
+                norm.add(r5, r3, weight(tol.atol, tol.rtol, a, b));
             }
             if finite {
-                let denom = e5 + 0.01 * e3;
-                err = if denom > 0.0 {
-                    h.abs() * e5 / (denom * N as f64).sqrt()
-                } else {
-                    0.0
-                };
+                err = norm.value(h, N);
                 finite = err.is_finite();
             }
         }
@@ -345,28 +320,18 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         }
         if !finite {
             stats.rejected += 1;
-            nonfinite_streak += 1;
-            if fixed.is_some() || nonfinite_streak > MAX_NONFINITE_STREAK {
-                return Err(OdeError::NonFinite { t });
-            }
-            last_failure_nonfinite = true;
-            rejected_last = true;
-            h *= NONFINITE_SHRINK;
+            h = control.nonfinite(t, h, fixed.is_some())?;
             continue;
         }
         if fixed.is_none() && err > 1.0 {
             stats.rejected += 1;
-            last_failure_nonfinite = false;
-            rejected_last = true;
-            let fac = (err.powf(ERROR_EXPONENT) / SAFETY).min(MAX_DECREASE);
-            h /= fac.max(1.0);
+            h = control.rejected(h, err);
             continue;
         }
 
         // ---- Accepted.
         stats.steps += 1;
-        nonfinite_streak = 0;
-        last_failure_nonfinite = false;
+        control.accepted();
         let mut dense: Option<Dense<N>> = None;
         let make_dense = |k: &mut [[f64; N]; 16], evals: &mut usize| -> Option<Dense<N>> {
             // Stages 13..=15 (C[S] < 1, so `t_new` is not taken).
@@ -462,13 +427,9 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         let h_next = if fixed.is_some() {
             h.abs()
         } else {
-            let fac = (err.powf(ERROR_EXPONENT) / SAFETY)
-                .clamp(1.0 / MAX_INCREASE_DOP853, MAX_DECREASE_DOP853);
-            let mut h_new = h / fac;
-            if rejected_last && h_new.abs() > h.abs() {
-                h_new = h;
-            }
-            h_new
+            // The magnitude from the shared controller, the direction restored (h/fac
+            // of a negative h is −(|h|/fac) exactly).
+            dir * control.proposal(h.abs(), h.abs(), err)
         };
         if let Some((index, te, ye)) = stop {
             return done(
@@ -489,7 +450,7 @@ pub fn solve_dop853_fixed<const N: usize, S: FixedSystem<N>, E: EventSet<N>>(
         if last {
             return done(evals, stats, t, y, Termination::ReachedEnd, h_next.abs());
         }
-        rejected_last = false;
+        control.advanced();
         h = if let Some(hf) = fixed {
             dir * hf
         } else {

@@ -17,6 +17,7 @@
 //! failures are reported as [`OdeError`] values carrying the numbers that explain
 //! them, and cancellation is polled before every step attempt.
 
+mod control;
 mod dense;
 mod dop853;
 mod explicit;

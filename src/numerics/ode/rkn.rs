@@ -25,11 +25,9 @@
 //!   infinite one is left out of the norm), the step kept by the eighth-order one
 //!   (local extrapolation).
 
+use super::control::{check_times, weight, Proposal, RmsNorm, StepControl};
 use super::dense::brent;
-use super::{
-    OdeError, OdeStats, Termination, MAX_DECREASE, MAX_INCREASE_DOP853, MAX_NONFINITE_STREAK,
-    NONFINITE_SHRINK, SAFETY,
-};
+use super::{OdeError, OdeStats, Termination};
 use crate::numerics::cancel::Cancel;
 
 /// Stages of the pair.
@@ -254,6 +252,41 @@ struct Trial<const D: usize> {
     f_new: [f64; D],
 }
 
+/// Stage `S` (1..=8) of a step of length `h` from (t, q, v): its position
+/// Q_S = q + c_S·h·v + h²·Σ_{j<S} a_Sj·f_j with `S` known at compile time (the tableau
+/// row a constant, its zero entries dropped and the loops unrolled, as DOP853's
+/// stages; the sum over ascending j, so the same roundings as a loop), f there into
+/// `k[S]`; `false` if not finite.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the step's state, each distinct
+fn stage<const D: usize, const S: usize, Sys: NystromSystem<D>>(
+    sys: &Sys,
+    evals: &mut usize,
+    k: &mut [[f64; D]; STAGES],
+    t: f64,
+    q: &[f64; D],
+    v: &[f64; D],
+    h: f64,
+    h2: f64,
+) -> bool {
+    let mut acc = [0.0; D];
+    for (j, &a) in A[S].iter().enumerate().take(S) {
+        if a != 0.0 {
+            for (acc_i, &kji) in acc.iter_mut().zip(&k[j]) {
+                *acc_i += a * kji;
+            }
+        }
+    }
+    let point: [f64; D] = std::array::from_fn(|i| q[i] + C[S] * h * v[i] + h2 * acc[i]);
+    *evals += 1;
+    let f = sys.acceleration(t + C[S] * h, &point);
+    if !f.iter().all(|x| x.is_finite()) {
+        return false;
+    }
+    k[S] = f;
+    true
+}
+
 /// The stages 2..=9 of a step of length `h` from (t, q, v); `None` if a stage is not
 /// finite. With `full = false` (a sub-step for an event) the last stage, whose weights
 /// in the eighth-order solution are zero, is skipped and no error is formed.
@@ -273,23 +306,19 @@ fn trial<const D: usize, S: NystromSystem<D>>(
     let mut k = [[0.0; D]; STAGES];
     k[0] = *f0;
     let h2 = h * h;
-    let last = if full { STAGES } else { STAGES - 1 };
-    for s in 1..last {
-        let mut acc = [0.0; D];
-        for (j, &a) in A[s].iter().enumerate().take(s) {
-            if a != 0.0 {
-                for (acc_i, &kji) in acc.iter_mut().zip(&k[j]) {
-                    *acc_i += a * kji;
-                }
-            }
-        }
-        let point: [f64; D] = std::array::from_fn(|i| q[i] + C[s] * h * v[i] + h2 * acc[i]);
-        *evals += 1;
-        let f = sys.acceleration(t + C[s] * h, &point);
-        if !f.iter().all(|x| x.is_finite()) {
-            return None;
-        }
-        k[s] = f;
+    // Stages 1..=7 (and 8 for a full step), each with its row known at compile time;
+    // the first that is not finite ends the trial.
+    let e = evals;
+    let finite = stage::<D, 1, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 2, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 3, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 4, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 5, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 6, S>(sys, e, &mut k, t, q, v, h, h2)
+        && stage::<D, 7, S>(sys, e, &mut k, t, q, v, h, h2)
+        && (!full || stage::<D, 8, S>(sys, e, &mut k, t, q, v, h, h2));
+    if !finite {
+        return None;
     }
     let mut out = Trial {
         q: [0.0; D],
@@ -329,24 +358,18 @@ fn error_norm<const D: usize>(
     v: &[f64; D],
     tr: &Trial<D>,
 ) -> f64 {
-    let (mut sum, mut count) = (0.0, 0usize);
+    let mut norm = RmsNorm::default();
     for i in 0..D {
         for (atol, a, b, e) in [
             (opts.atol_position[i], q[i], tr.q[i], tr.eq[i]),
             (opts.atol_velocity[i], v[i], tr.v[i], tr.ev[i]),
         ] {
             if atol.is_finite() {
-                let r = e / (atol + opts.rtol * a.abs().max(b.abs()));
-                sum += r * r;
-                count += 1;
+                norm.add(e, weight(atol, opts.rtol, a, b));
             }
         }
     }
-    if count > 0 {
-        (sum / count as f64).sqrt()
-    } else {
-        0.0
-    }
+    norm.value()
 }
 
 /// A first step from the scaled sizes of q, v and f (Hairer's HINIT in the Nyström
@@ -449,17 +472,7 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
     if !q0.iter().chain(v0).all(|x| x.is_finite()) {
         return invalid("the initial state must be finite".into());
     }
-    if let Some(&tr) = times
-        .iter()
-        .find(|&&tr| !tr.is_finite() || tr < t0 || tr > t_end)
-    {
-        return invalid(format!(
-            "output time {tr} is outside the integration interval [{t0}, {t_end}]"
-        ));
-    }
-    if times.windows(2).any(|w| w[1] < w[0]) {
-        return invalid("output times must be ordered".into());
-    }
+    check_times(times, t0, t_end)?;
     if let Some(hf) = opts.fixed_step {
         if !(hf.is_finite() && hf > 0.0) {
             return invalid(format!("fixed step {hf} must be finite and > 0"));
@@ -506,10 +519,8 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
         (None, Some(h0)) if h0 > 0.0 && h0.is_finite() => h0.min(h_max),
         _ => initial_step(sys, &mut evals, opts, t0, &q, &v, &f0, h_max),
     };
-    let mut rejected_last = false;
+    let mut control = StepControl::new(ERROR_EXPONENT, Proposal::Product);
     let mut attempts = 0usize;
-    let mut nonfinite_streak = 0usize;
-    let mut last_failure_nonfinite = false;
     let mut hits: Vec<(f64, usize)> = Vec::new();
     loop {
         if attempts >= opts.max_steps {
@@ -531,11 +542,7 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
         let step = if landing { target - t } else { h };
         let t_new = if landing { target } else { t + step };
         if t_new == t || (!landing && step <= 16.0 * f64::EPSILON * t.abs()) {
-            return Err(if last_failure_nonfinite {
-                OdeError::NonFinite { t }
-            } else {
-                OdeError::StepTooSmall { t, h: step }
-            });
+            return Err(control.too_small(t, step));
         }
         attempts += 1;
         let trial_step = trial(sys, &mut evals, t, &q, &v, &f0, step, true)
@@ -546,28 +553,18 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
             .filter(|(_, err)| err.is_finite());
         let Some((tr, err)) = trial_step else {
             stats.rejected += 1;
-            nonfinite_streak += 1;
-            if opts.fixed_step.is_some() || nonfinite_streak > MAX_NONFINITE_STREAK {
-                return Err(OdeError::NonFinite { t });
-            }
-            last_failure_nonfinite = true;
-            rejected_last = true;
-            h = step * NONFINITE_SHRINK;
+            h = control.nonfinite(t, step, opts.fixed_step.is_some())?;
             continue;
         };
         if opts.fixed_step.is_none() && err > 1.0 {
             stats.rejected += 1;
-            last_failure_nonfinite = false;
-            rejected_last = true;
-            let fac = (err.powf(ERROR_EXPONENT) / SAFETY).min(MAX_DECREASE);
-            h = step / fac.max(1.0);
+            h = control.rejected(step, err);
             continue;
         }
 
         // ---- Accepted.
         stats.steps += 1;
-        nonfinite_streak = 0;
-        last_failure_nonfinite = false;
+        control.accepted();
         // The controller's next step, from this step's error (also a restart's).
         // 0.9·step·err^(−1/7) predicts the best step whatever step was taken, so a step
         // shortened to land on an output time proposes as well as a full one; its growth
@@ -576,13 +573,7 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
             Some(hf) => hf,
             None => {
                 let base = if landing { step.max(h) } else { step };
-                let proposal = (SAFETY * step * err.powf(-ERROR_EXPONENT))
-                    .clamp(step / MAX_DECREASE_AFTER_ACCEPT, base * MAX_INCREASE_DOP853);
-                if rejected_last {
-                    proposal.min(step)
-                } else {
-                    proposal
-                }
+                control.proposal(step, base, err)
             }
         };
 
@@ -665,13 +656,10 @@ pub fn solve_rkn86<const D: usize, S: NystromSystem<D>, E: NystromEvents<D>>(
         if t >= t_end {
             return done(evals, stats, t, q, v, Termination::ReachedEnd, h_next);
         }
-        rejected_last = false;
+        control.advanced();
         h = h_next;
     }
 }
-
-/// The largest decrease of the step after an accepted step (DOP853's 3).
-const MAX_DECREASE_AFTER_ACCEPT: f64 = 3.0;
 
 #[cfg(test)]
 mod tests {

@@ -83,6 +83,8 @@ const PRINTED_COEFFICIENT: f64 = 1.3924;
 const PAN_HAMROCK_COEFFICIENT: f64 = 1.714;
 /// The film's load exponent e in h ∝ W^(−e).
 pub const LOAD_EXPONENT: f64 = 0.128;
+/// The squeeze factor's rate: eq. (4)'s exponent is −1.32·w/U.
+pub const SQUEEZE_RATE: f64 = 1.32;
 /// Cap on the per-roller film solve's iterations: safeguarded Newton needs 3–5, and
 /// bisection alone halves a 1e-5 m bracket to rounding in about 60.
 const MAX_FILM_ITERATIONS: usize = 80;
@@ -131,7 +133,7 @@ impl FilmCoefficients {
     /// The squeeze factor at squeeze velocity `w_m_s` (w < 0: approach).
     pub fn squeeze_factor(&self, w_m_s: f64) -> f64 {
         let u = self.entrainment_speed_m_s;
-        let raw = |w: f64| 1.0 - 0.75 * (-1.32 * w / u).exp();
+        let raw = |w: f64| 1.0 - 0.75 * (-SQUEEZE_RATE * w / u).exp();
         match self.squeeze {
             Squeeze::None => 1.0,
             Squeeze::Printed => raw(w_m_s),

@@ -18,7 +18,9 @@
 //! series evaluation per roller per right-hand side (the Newton solve remains for the
 //! sampled outputs: film, load and squeeze velocity per roller).
 
-use super::film::{ContactLaw, Squeeze, LOAD_EXPONENT, LOAD_FLOOR_N};
+use super::film::{
+    ContactLaw, FilmCoefficients, Squeeze, LOAD_EXPONENT, LOAD_FLOOR_N, SQUEEZE_RATE,
+};
 
 /// Chebyshev coefficients per segment (degree 8).
 const COEFFS: usize = 9;
@@ -41,8 +43,43 @@ pub(crate) struct FilmTable {
     sigma_lo: f64,
     /// Number of segments.
     segments: usize,
-    /// Chebyshev coefficients c_0..c_8 of each segment on τ ∈ [−1, 1].
+    /// Each segment's series in powers of τ ∈ [−1, 1] (its Chebyshev series c_0..c_8
+    /// converted once, see [`chebyshev_to_monomial`]), evaluated by Estrin's scheme: a
+    /// dependency chain of four multiplications instead of Clenshaw's eight
+    /// multiply-adds, so the rollers' evaluations overlap.
     coeffs: Vec<[f64; COEFFS]>,
+}
+
+/// The coefficients m_j of Σ_k c_k T_k(τ) = Σ_j m_j τ^j (degree 8), by the recurrence
+/// T_{k+1} = 2τ T_k − T_{k−1} on the monomial coefficients of each T_k (exact small
+/// integers up to 2^7), summed over k from the highest degree down. On a segment of
+/// 1/32 octave the c_k fall by about two decades per degree, so every m_j is the sum of
+/// terms far below |m_0| and the conversion and the power form round like Clenshaw (the
+/// 1e-14 test of the table holds both).
+fn chebyshev_to_monomial(c: &[f64; COEFFS]) -> [f64; COEFFS] {
+    let mut t_prev = [0.0; COEFFS];
+    let mut t_cur = [0.0; COEFFS];
+    t_prev[0] = 1.0; // T_0
+    t_cur[1] = 1.0; // T_1
+    let mut basis = [[0.0; COEFFS]; COEFFS];
+    basis[0] = t_prev;
+    basis[1] = t_cur;
+    for b in basis.iter_mut().skip(2) {
+        let mut next = [0.0; COEFFS];
+        for j in 0..COEFFS {
+            let shifted = if j > 0 { 2.0 * t_cur[j - 1] } else { 0.0 };
+            next[j] = shifted - t_prev[j];
+        }
+        *b = next;
+        t_prev = t_cur;
+        t_cur = next;
+    }
+    std::array::from_fn(|j| {
+        (0..COEFFS)
+            .rev()
+            .map(|k| c[k] * basis[k][j])
+            .fold(0.0, |acc, v| acc + v)
+    })
 }
 
 /// The root u > 0 of u − u^(−q) = σ (bisection-safeguarded Newton on a bracket that
@@ -121,7 +158,7 @@ impl FilmTable {
                 let w = if k == 0 { 1.0 } else { 2.0 };
                 w * s / COEFFS as f64
             });
-            coeffs.push(c);
+            coeffs.push(chebyshev_to_monomial(&c));
         }
         Some(FilmTable {
             q,
@@ -148,21 +185,65 @@ impl FilmTable {
         // z's mantissa in [1, 2): (m − 1)·32 − sub ∈ [0, 1) exactly, then τ ∈ [−1, 1).
         let m = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
         let tau = 2.0 * ((m - 1.0) * PER_OCTAVE as f64 - sub as f64) - 1.0;
-        // Clenshaw.
-        let two_tau = 2.0 * tau;
-        let (mut b1, mut b2) = (0.0, 0.0);
-        for &ck in c[1..].iter().rev() {
-            let b0 = ck + two_tau * b1 - b2;
-            b2 = b1;
-            b1 = b0;
-        }
-        Some(c[0] + tau * b1 - b2)
+        // Estrin.
+        let t2 = tau * tau;
+        let t4 = t2 * t2;
+        let low = (c[0] + c[1] * tau) + (c[2] + c[3] * tau) * t2;
+        let high = (c[4] + c[5] * tau) + (c[6] + c[7] * tau) * t2;
+        Some(low + (high + c[8] * t4) * t4)
     }
 
     /// Segments in use (for the tests' account of the setup cost).
     #[cfg(test)]
     pub(crate) fn segments(&self) -> usize {
         self.segments
+    }
+}
+
+/// Terms of the binomial series of (1 + u)^e (degree 11).
+const SERIES_TERMS: usize = 12;
+/// The series is used for |u| ≤ this (a squeeze factor within 1/32 of 1: the squeeze
+/// velocities of a loaded bearing, |w|/U ≲ 1e-3, give |u| ≈ 4|w|/U).
+const SERIES_RADIUS: f64 = 1.0 / 32.0;
+/// The largest tail of the series accepted, relative (below the ulp of 1).
+const SERIES_TAIL: f64 = 1e-17;
+
+/// (1 + u)^e for |u| ≤ [`SERIES_RADIUS`] by its binomial series Σ C(e, j) u^j to degree
+/// 11, evaluated by Estrin's scheme.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct PowerSeries {
+    c: [f64; SERIES_TERMS],
+}
+
+impl PowerSeries {
+    /// The series of (1 + u)^e, or `None` if its tail past degree 11 can exceed
+    /// [`SERIES_TAIL`] on |u| ≤ [`SERIES_RADIUS`]: C(e, j+1)/C(e, j) = (e − j)/(j + 1) has
+    /// magnitude ≤ 1 for j ≥ 12 when −1 < e ≤ 25, so the tail is below
+    /// |C(e, 12)|·r^12/(1 − r).
+    fn new(e: f64) -> Option<Self> {
+        if !(e > -1.0 && e <= 25.0) {
+            return None;
+        }
+        let mut c = [0.0; SERIES_TERMS];
+        let mut ck = 1.0;
+        for (j, cj) in c.iter_mut().enumerate() {
+            *cj = ck;
+            ck *= (e - j as f64) / (j as f64 + 1.0);
+        }
+        let tail = ck.abs() * SERIES_RADIUS.powi(SERIES_TERMS as i32) / (1.0 - SERIES_RADIUS);
+        (tail <= SERIES_TAIL).then_some(PowerSeries { c })
+    }
+
+    #[inline(always)]
+    fn eval(&self, u: f64) -> f64 {
+        let c = &self.c;
+        let u2 = u * u;
+        let u4 = u2 * u2;
+        let u8 = u4 * u4;
+        let q0 = (c[0] + c[1] * u) + (c[2] + c[3] * u) * u2;
+        let q1 = (c[4] + c[5] * u) + (c[6] + c[7] * u) * u2;
+        let q2 = (c[8] + c[9] * u) + (c[10] + c[11] * u) * u2;
+        q0 + q1 * u4 + q2 * u8
     }
 }
 
@@ -178,7 +259,26 @@ pub(crate) struct FastFilm {
     k_l0n: f64,
     /// 1/(1 + q).
     inv_1pq: f64,
+    /// f^(1/(1+q)) and f^(n/(1+q)) near f = 1 (the squeeze factor's scaling of L and of
+    /// k·L^n) by series instead of a `powf` and a root per roller (`None`: `powf`).
+    near_one: Option<(PowerSeries, PowerSeries)>,
+    /// z/w = 1.32/U, s/m (the normalised squeeze factor's exponent per squeeze velocity).
+    z_per_w: f64,
 }
+
+/// |z| up to which the normalised squeeze factor's e^z − 1 is summed as a series.
+const EXP_SERIES_RADIUS: f64 = 1.0 / 128.0;
+/// (e^z − 1)/z = Σ z^j/(j + 1)!, j = 0..=7.
+const EXPM1_OVER_Z: [f64; 8] = [
+    1.0,
+    1.0 / 2.0,
+    1.0 / 6.0,
+    1.0 / 24.0,
+    1.0 / 120.0,
+    1.0 / 720.0,
+    1.0 / 5040.0,
+    1.0 / 40320.0,
+];
 
 impl FastFilm {
     /// The table for contact law `law` (with a film) and loads up to `load_hi_n`, or
@@ -205,8 +305,38 @@ impl FastFilm {
             l0_m,
             k_l0n: k * law.power(l0_m),
             inv_1pq,
+            near_one: PowerSeries::new(inv_1pq).zip(PowerSeries::new(n * inv_1pq)),
+            z_per_w: SQUEEZE_RATE / film.entrainment_speed_m_s,
         };
-        (fast.l0_m.is_finite() && fast.k_l0n.is_finite() && fast.l0_m > 0.0).then_some(fast)
+        (fast.l0_m.is_finite()
+            && fast.k_l0n.is_finite()
+            && fast.l0_m > 0.0
+            && fast.z_per_w.is_finite())
+        .then_some(fast)
+    }
+
+    /// The squeeze factor f of eq. (4) at approach rate `p_dot_m_s` (squeeze velocity
+    /// w = −½ṗ) and u = f − 1. The normalised reading's f = 4 − 3·e^z, z = 1.32 w/U,
+    /// near w = 0 (|z| ≤ 1/128, the loaded bearing's squeeze velocities) as
+    /// u = −3·(e^z − 1) by the Taylor series of e^z − 1 to degree 8 (truncation below
+    /// 1e-21 relative; no `exp` call); elsewhere [`FilmCoefficients::squeeze_factor`].
+    #[inline(always)]
+    fn squeeze(&self, film: &FilmCoefficients, p_dot_m_s: f64) -> (f64, f64) {
+        let w = -0.5 * p_dot_m_s;
+        if film.squeeze == Squeeze::Normalised {
+            let z = self.z_per_w * w;
+            if z.abs() <= EXP_SERIES_RADIUS {
+                let z2 = z * z;
+                let z4 = z2 * z2;
+                let e = &EXPM1_OVER_Z;
+                let low = (e[0] + e[1] * z) + (e[2] + e[3] * z) * z2;
+                let high = (e[4] + e[5] * z) + (e[6] + e[7] * z) * z2;
+                let u = -3.0 * (z * (low + high * z4));
+                return (1.0 + u, u);
+            }
+        }
+        let factor = film.squeeze_factor(w);
+        (factor, factor - 1.0)
     }
 
     /// Roller load W of eqs. (2)–(4) for approach `p_m` and its rate, and whether the
@@ -220,7 +350,7 @@ impl FastFilm {
         };
         let k = law.stiffness;
         let s0 = 0.5 * p_m - law.clearance_m;
-        let factor = film.squeeze_factor(-0.5 * p_dot_m_s);
+        let (factor, u) = self.squeeze(&film, p_dot_m_s);
         // h at the floor: a·f·(1 N)^(−e) = a·f (film_unclamped(LOAD_FLOOR_N, f)).
         let h_floor_raw = film.scale * factor;
         let clamped = h_floor_raw < 0.0;
@@ -235,6 +365,9 @@ impl FastFilm {
         }
         let (l, k_ln) = if factor == 1.0 {
             (self.l0_m, self.k_l0n)
+        } else if let Some((root, power)) = self.near_one.filter(|_| u.abs() <= SERIES_RADIUS) {
+            // L = L0·f^(1/(1+q)) and k·L^n = k·L0^n·f^(n/(1+q)).
+            (self.l0_m * root.eval(u), self.k_l0n * power.eval(u))
         } else {
             let lf = factor.powf(self.inv_1pq);
             (self.l0_m * lf, self.k_l0n * law.power(lf))
@@ -276,6 +409,77 @@ mod tests {
         assert!(table.g(-2.5).is_none());
         assert!(table.g(1e6).is_none());
         assert!(table.g(f64::NAN).is_none());
+    }
+
+    #[test]
+    fn the_power_series_is_powf_near_one() {
+        // (1 + u)^e by the degree-11 series against `powf` (≤ 1 ulp) over |u| ≤ 1/32 for
+        // the truck film's 1/(1+q) and n/(1+q), a negative and a large exponent: within
+        // 1e-15 relative, 4.5 ulp (the tail is < 1e-17; the rest is the Estrin sum's
+        // rounding and powf's own ulp: measured 4.4e-16).
+        // Exponents whose tail the bound cannot hold get no series.
+        let q = 10.0 / 9.0 * 0.128;
+        for e in [1.0 / (1.0 + q), (10.0 / 9.0) / (1.0 + q), -0.5, 3.7] {
+            let series = PowerSeries::new(e).unwrap_or_else(|| panic!("no series for {e}"));
+            let mut worst: f64 = 0.0;
+            for j in -2000..=2000 {
+                let u = SERIES_RADIUS * f64::from(j) / 2000.0;
+                let exact = (1.0 + u).powf(e);
+                worst = worst.max((series.eval(u) / exact - 1.0).abs());
+            }
+            assert!(worst <= 1e-15, "{e}: {worst:e}");
+        }
+        assert!(PowerSeries::new(-1.5).is_none());
+        assert!(PowerSeries::new(40.0).is_none());
+    }
+
+    #[test]
+    fn the_squeeze_series_is_the_squeeze_factor() {
+        // The normalised factor near w = 0 by the series of e^z − 1 against eq. (4)'s
+        // `squeeze_factor` ((1 − 0.75e^z)/0.25 by `exp`: a few ulps itself): f within 8ε
+        // of it over |z| ≤ 1/128 and beyond, u = f − 1 within 1e-15 relative of
+        // −3·expm1(z) inside (the series is the more accurate near 0: f − 1 from `exp`
+        // cancels).
+        use super::super::film::FilmLaw;
+        let law = ContactLaw {
+            stiffness: 2.0e9,
+            exponent: 10.0 / 9.0,
+            clearance_m: -5e-6,
+            film: FilmLaw {
+                viscosity_pa_s: 0.0499,
+                pressure_viscosity_pa_inv: 1.39e-8,
+                reduced_modulus_pa: 210e9 / (1.0 - 0.09),
+                reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
+                length_m: 0.022,
+                entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
+                squeeze: Squeeze::Normalised,
+            }
+            .coefficients(),
+        };
+        let Some(film) = law.film else {
+            panic!("no film")
+        };
+        let fast = FastFilm::new(&law, 2e6).unwrap_or_else(|| panic!("no table"));
+        let u_ref = film.entrainment_speed_m_s;
+        for j in -1100i32..=1100 {
+            let z = EXP_SERIES_RADIUS * f64::from(j) / 1000.0;
+            let w = z * u_ref / SQUEEZE_RATE;
+            let p_dot = -2.0 * w;
+            let (f, u) = fast.squeeze(&film, p_dot);
+            let exact = film.squeeze_factor(-0.5 * p_dot);
+            assert!(
+                (f - exact).abs() <= 8.0 * f64::EPSILON * exact,
+                "{z}: {f} {exact}"
+            );
+            if j.abs() < 1000 {
+                let z_used = fast.z_per_w * (-0.5 * p_dot);
+                let u_exact = -3.0 * z_used.exp_m1();
+                assert!(
+                    (u - u_exact).abs() <= 1e-15 * u_exact.abs(),
+                    "{z}: {u} {u_exact}"
+                );
+            }
+        }
     }
 
     #[test]
