@@ -22,11 +22,36 @@
 //! while Δ is micrometres. The crowned intrusion (59) is computed as
 //! Δ + (l_F²/4 − X² + 2XH sin θ)/(√(R_c² − u²) + H cos θ), u = X − H sin θ, the same number
 //! without subtracting two lengths of 2.5 m.
+//!
+//! **Logarithmic profile** (`geometry.profile = "logarithmic"`, issue 29 session 11): the
+//! roller's drop below its straight generator is ISO/TS 16281:2008's for tapered rollers
+//! (its eq. 44; eq. 42 is the cylindrical roller's with 0.00035, eq. 43 the long one's),
+//! D(x) = 0.00045·D_we·ln[1/(1 − (2x/L_we)²)], x from the middle of the effective length
+//! L_we, D_we the mean roller diameter. Source: the public ISO/TS 16281 implementation
+//! minzhun/ISO16281 (`RollerBearing.py`, `__roller_profile`, "Equation 42 - 44", bearing
+//! type 2 = tapered roller), the same form as Lundberg's and Johns–Gohar's logarithmic
+//! crowns (the background) with ISO's fixed coefficient; rollbench's cylindrical system
+//! uses eq. 42 (`cylindrical_roller::quasi_static`). The standard evaluates D only at
+//! lamina centres x_k = (k − ½)·L_we/n_s − L_we/2, which never reach the ends, where D is
+//! infinite: the outermost lamina's drop is finite, a·ln(n_s²/(2n_s − 1)) with a =
+//! 0.00045·D_we. That is its end cutoff, and without one a tilted roller's contact is
+//! pushed to within nanometres of the end (a tilt of 0.01 rad over the 32007's half
+//! length needs a drop of 21a, ln(1/w) = 21) and the slices lose every digit. Here the
+//! cutoff is made continuous: D is ISO's for |2x/L_we| ≤ u_c = 1 − 1/30 (the outermost
+//! lamina centre at n_s = 30, a drop of 2.725a, 7.97 µm on the 32007) and continues
+//! along its tangent to the ends (10.8 µm there on the 32007), so D stays convex and C¹
+//! and the contact can reach the roller's ends (edge loaded, clamped there as the
+//! crowned contact is, eqs. 52–53, in the small-tilt form X = ±l_e/2). The intrusion is
+//! Δᵢ + X·tan θ − D(X) (the drop read at the race coordinate X; the crowned profile's
+//! exact rotation differs by O(θ²)·D, 1e-6 of it at the 32007's tilts), concave in X, so
+//! each end of the extent is found by Newton from the roller's end inward, which converges
+//! monotonically; its derivatives follow from the implicit function theorem,
+//! ∂X/∂(Δ, θ) = −(1, X/cos²θ)/∂ₓi, and a clamped end has none.
 
 use thiserror::Error;
 
 use super::geometry::RollerGeometry;
-use super::input::{Geometry, Materials};
+use super::input::{Geometry, Materials, RollerProfile};
 use crate::physics::contact::lundberg::{compliance, LundbergError, LundbergSlice, SliceLoad};
 
 /// Which race.
@@ -62,6 +87,69 @@ pub struct ContactError {
     pub source: LundbergError,
 }
 
+/// ISO/TS 16281:2008's coefficient of the tapered roller's logarithmic profile (eq. 44):
+/// D(x) = 0.00045·D_we·ln[1/(1 − (2x/L_we)²)].
+pub const ISO_16281_TAPERED_LOG_COEFFICIENT: f64 = 0.00045;
+
+/// Where the logarithmic profile's ISO form stops and its tangent takes over, as a
+/// fraction of the half length: the outermost lamina centre of n_s = 30 laminae (module
+/// notes).
+pub const LOG_PROFILE_CUTOFF: f64 = 1.0 - 1.0 / 30.0;
+
+/// The logarithmic profile's drop D(x) (m) at `x_m` from the middle of the effective
+/// length `effective_length_m` of a roller of mean diameter `diameter_m`: ISO/TS 16281
+/// eq. 44, a·ln[1/(1 − (2x/L_we)²)] with a = 0.00045·D_we, for |2x/L_we| ≤
+/// [`LOG_PROFILE_CUTOFF`], its tangent beyond (module notes).
+pub fn log_profile_drop(x_m: f64, effective_length_m: f64, diameter_m: f64) -> f64 {
+    let a = ISO_16281_TAPERED_LOG_COEFFICIENT * diameter_m;
+    log_drop(a, x_m / (0.5 * effective_length_m)).0
+}
+
+/// The drop (m) of the cut-off logarithmic profile at u = 2x/L_we and dD/du, for
+/// a = 0.00045·D_we (module notes).
+#[inline]
+fn log_drop(a: f64, u: f64) -> (f64, f64) {
+    let uc = LOG_PROFILE_CUTOFF;
+    let v = u.abs();
+    if v <= uc {
+        let w = (1.0 - u) * (1.0 + u);
+        (-a * w.ln(), 2.0 * a * u / w)
+    } else {
+        let wc = (1.0 - uc) * (1.0 + uc);
+        let slope = 2.0 * a * uc / wc;
+        (-a * wc.ln() + slope * (v - uc), slope * u.signum())
+    }
+}
+
+/// The right end u_A ∈ (u*, 1] (as a fraction of the half length) of the logarithmic
+/// contact i(u) = Δ + k·u − D(u) > 0 (k = (l_e/2)·tan θ, D cut off as in
+/// [`log_drop`]), given i(u*) > 0 at its maximum u*: the roller's end u = 1 when
+/// i(1) ≥ 0 (edge loaded), else Newton from u = 1 inward: i is concave, so every step
+/// stays outside the root and moves toward it (monotone). Returns (u_A, at the end).
+fn log_right_end(delta: f64, k: f64, a: f64, u_star: f64) -> (f64, bool) {
+    let g = |u: f64| {
+        let (d, dd) = log_drop(a, u);
+        (delta + k * u - d, k - dd)
+    };
+    if g(1.0).0 >= 0.0 {
+        return (1.0, true);
+    }
+    let mut u = 1.0_f64;
+    for _ in 0..200 {
+        let (gu, dg) = g(u);
+        if !(gu < 0.0) || !(dg < 0.0) {
+            break;
+        }
+        let next = (u - gu / dg).max(u_star);
+        let step = u - next;
+        u = next;
+        if step <= 1e-16 * u.abs().max(1e-300) {
+            break;
+        }
+    }
+    (u, false)
+}
+
 /// The roller profile seen from one race.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Profile {
@@ -70,6 +158,8 @@ struct Profile {
     rc: f64,
     h: f64,
     v: f64,
+    /// a = 0.00045·D_we of the logarithmic profile; `None`: flat and circular crowns.
+    log: Option<f64>,
 }
 
 /// One race contact: the roller profile and the slice law along the roller.
@@ -163,6 +253,12 @@ impl RaceContact {
                 rc: rg.crown_radius_m,
                 h: rg.crown_offset_m,
                 v: rg.crown_drop_m,
+                log: match g.profile {
+                    RollerProfile::Crowned => None,
+                    RollerProfile::Logarithmic => {
+                        Some(ISO_16281_TAPERED_LOG_COEFFICIENT * g.roller_diameter_m)
+                    }
+                },
             },
             slices: n.max(1),
             compliance: compliance(&mats.roller, &race_mat),
@@ -209,6 +305,12 @@ impl RaceContact {
     fn intrusion(&self, x: f64, delta: f64, theta: f64) -> (f64, f64, f64) {
         let p = &self.profile;
         let (s, c) = theta.sin_cos();
+        if let Some(a) = p.log {
+            // Δ + X·tan θ − D(X), D of ISO/TS 16281 eq. 44 cut off (module notes).
+            let tan = s / c;
+            let (d, dd) = log_drop(a, x / p.half_le);
+            return (delta + x * tan - d, x / (c * c), tan - dd / p.half_le);
+        }
         if x.abs() <= p.half_flat * c {
             let tan = s / c;
             return (delta + x * tan, x / (c * c), tan);
@@ -227,6 +329,9 @@ impl RaceContact {
     fn extent(&self, delta: f64, theta: f64) -> Option<Extent> {
         let p = &self.profile;
         let (s, c) = theta.sin_cos();
+        if let Some(a) = p.log {
+            return self.log_extent(a, delta, theta);
+        }
         let a = p.h * c - delta;
         // R_c − a = Δ + (R_c − H) + H(1 − cos θ), with R_c − H = (l_F/2)²/(R_c + H):
         // no difference of two crown-sized lengths.
@@ -285,6 +390,46 @@ impl RaceContact {
             dxb,
             dxa,
             edge,
+        })
+    }
+
+    /// The logarithmic profile's contact extent (module notes): i(u) = Δ + k·u − D(u)
+    /// with u = X/(l_e/2), k = (l_e/2)·tan θ, is concave with its maximum at u* where
+    /// D′(u*) = k: on the ISO part u* = k/(a + √(a² + k²)) (the root of k·u² + 2a·u − k
+    /// = 0), and at the end u = ±1 when that lies beyond the cutoff (the tangent's slope
+    /// is below |k| there). No contact unless i(u*) > 0.
+    fn log_extent(&self, a: f64, delta: f64, theta: f64) -> Option<Extent> {
+        let hl = self.profile.half_le;
+        let tan = theta.tan();
+        let k = hl * tan;
+        let mut u_star = k / (a + a.hypot(k));
+        if u_star.abs() > LOG_PROFILE_CUTOFF {
+            u_star = u_star.signum();
+        }
+        let peak = delta + k * u_star - log_drop(a, u_star).0;
+        if !(peak > 0.0) {
+            return None;
+        }
+        let (ua, edge_a) = log_right_end(delta, k, a, u_star);
+        let (ub, edge_b) = log_right_end(delta, -k, a, -u_star);
+        let ub = -ub;
+        if !(ua > ub) {
+            return None;
+        }
+        let (xa, xb) = (hl * ua, hl * ub);
+        let ends = |x: f64, edge: bool| {
+            if edge {
+                return [0.0, 0.0];
+            }
+            let (_, di_dtheta, di_dx) = self.intrusion(x, delta, theta);
+            [-1.0 / di_dx, -di_dtheta / di_dx]
+        };
+        Some(Extent {
+            xb,
+            xa,
+            dxb: ends(xb, edge_b),
+            dxa: ends(xa, edge_a),
+            edge: edge_a || edge_b,
         })
     }
 
@@ -380,7 +525,7 @@ impl RaceContact {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearings::tapered_roller::input::{Crown, TaperedInput};
+    use crate::bearings::tapered_roller::input::{Crown, RollerProfile, TaperedInput};
     use crate::physics::contact::lundberg::LundbergSlice;
 
     fn sample(n: usize) -> (TaperedInput, RollerGeometry, RaceContact, RaceContact) {
@@ -481,6 +626,183 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// The 32007-X-XL roller of decks/trb_32007.toml (d 6.5 mm, l_e 12.445 mm) with the
+    /// given profile.
+    fn roller_32007(profile: RollerProfile) -> (TaperedInput, RollerGeometry) {
+        let mut s = TaperedInput::afapl_sample();
+        let g = &mut s.geometry;
+        g.roller_count = 20;
+        g.roller_diameter_m = 0.0065;
+        g.pitch_diameter_m = 0.048;
+        g.cup_angle_rad = 16.70_f64.to_radians();
+        g.effective_length_m = 0.012445;
+        g.flat_length_m = 0.008;
+        g.crown = Crown::Radius(0.5);
+        g.small_end_break_m = 0.0005;
+        g.big_end_break_m = 0.0005;
+        g.profile = profile;
+        let rg = RollerGeometry::new(&s.geometry, &s.materials.roller).unwrap();
+        (s, rg)
+    }
+
+    /// The logarithmic profile's drop against ISO/TS 16281 eq. 44 in closed form,
+    /// 0.00045·D_we·ln[1/(1 − (2x/L_we)²)], at a few points inside the cutoff
+    /// 2x/L_we ≤ 29/30 (1e-12 relative), and its tangent beyond it (1e-12); the intrusion
+    /// the contact uses is Δ + X·tan θ − D(X) at those points (1e-12 of Δ) and the
+    /// extent's ends are where it vanishes. Fails if the coefficient, the argument, the
+    /// cutoff or the sign of the drop changes.
+    #[test]
+    fn log_profile_drop_is_iso_16281_eq_44() {
+        let (s, rg) = roller_32007(RollerProfile::Logarithmic);
+        let (d, le) = (s.geometry.roller_diameter_m, s.geometry.effective_length_m);
+        let a = 0.00045 * 0.0065;
+        let uc: f64 = 29.0 / 30.0;
+        let wc = 1.0 - uc * uc;
+        // Closed-form values, D_we = 6.5 mm, L_we = 12.445 mm: 2x/L_we = 0, 0.5, −0.9,
+        // 29/30 (the cutoff), then 0.99 and 1 on the tangent.
+        for (r, want) in [
+            (0.0, 0.0),
+            (0.5, a * (4.0_f64 / 3.0).ln()),
+            (-0.9, a * (1.0 / 0.19_f64).ln()),
+            (uc, a * (1.0 / wc).ln()),
+            (0.99, a * (1.0 / wc).ln() + 2.0 * a * uc / wc * (0.99 - uc)),
+            (-1.0, a * (1.0 / wc).ln() + 2.0 * a * uc / wc * (1.0 - uc)),
+        ] {
+            let x = r * 0.5 * le;
+            let got = log_profile_drop(x, le, d);
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs().max(1e-30),
+                "x {x}: {got} vs {want}"
+            );
+        }
+        // At 2x/L = 0.9: 2.925 µm·ln(1/0.19) = 4.858 µm; at the cutoff 7.97 µm, at the
+        // ends 10.85 µm (the numbers the docs quote).
+        assert!((log_profile_drop(0.45 * le, le, d) - 4.8577e-6).abs() < 1e-9);
+        assert!((log_profile_drop(0.5 * uc * le, le, d) - 7.970e-6).abs() < 1e-9);
+        assert!((log_profile_drop(0.5 * le, le, d) - 10.846e-6).abs() < 1e-9);
+        let cup = RaceContact::new(Race::Cup, &s.geometry, &rg, &s.materials, 21).unwrap();
+        let (delta, theta) = (4e-6, 3e-4);
+        for r in [-0.8, -0.3, 0.0, 0.6, 0.95, 0.99] {
+            let x = r * 0.5 * le;
+            let (i, _, _) = cup.intrusion(x, delta, theta);
+            let want = delta + x * theta.tan() - log_profile_drop(x, le, d);
+            assert!((i - want).abs() <= 1e-12 * delta, "{x}: {i} vs {want}");
+        }
+        // The extent's ends are where that intrusion vanishes (to 1e-12 of Δ), inside the
+        // effective length.
+        let e = cup.eval(delta, theta, None).unwrap();
+        assert!(!e.edge_loaded);
+        for x in e.extent_m {
+            assert!(x.abs() < 0.5 * le);
+            let want = delta + x * theta.tan() - log_profile_drop(x, le, d);
+            assert!(want.abs() <= 1e-12 * delta, "{x}: {want}");
+        }
+    }
+
+    /// The logarithmic contact's derivatives against central differences (as
+    /// `contact_derivatives_match_differences` for the crown), aligned and tilted both
+    /// ways, light and heavy (1e-6 of the row's scale).
+    #[test]
+    fn log_contact_derivatives_match_differences() {
+        let (s, rg) = roller_32007(RollerProfile::Logarithmic);
+        for race in [Race::Cup, Race::Cone] {
+            let c = RaceContact::new(race, &s.geometry, &rg, &s.materials, 21).unwrap();
+            for (delta, theta) in [
+                (5e-6, 0.0),
+                (5e-6, 2e-4),
+                (2e-6, -5e-4),
+                (3e-5, 1e-3),
+                (1e-6, 3e-3),
+                (4e-6, -1e-2),
+                (2e-5, 1e-2),
+            ] {
+                let e = c.eval(delta, theta, None).unwrap();
+                let fd = |dd: f64, dt: f64| {
+                    let a = c.eval(delta + dd, theta + dt, None).unwrap();
+                    let b = c.eval(delta - dd, theta - dt, None).unwrap();
+                    [
+                        (a.load_n - b.load_n) / (2.0 * (dd + dt)),
+                        (a.moment_nm - b.moment_nm) / (2.0 * (dd + dt)),
+                    ]
+                };
+                let [pd, md] = fd(1e-6 * delta, 0.0);
+                let [pt, mt] = fd(0.0, 1e-9);
+                let l = 0.5 * s.geometry.effective_length_m;
+                let scale_p = e.dload[0].abs().max(e.dload[1].abs() / l);
+                let scale_m = e.dmoment[0].abs().max(e.dmoment[1].abs() / l);
+                assert!(
+                    (pd - e.dload[0]).abs() < 1e-6 * scale_p,
+                    "{race:?} {delta} {theta} dP/dΔ {pd} {}",
+                    e.dload[0]
+                );
+                assert!(
+                    (pt - e.dload[1]).abs() / l < 1e-6 * scale_p,
+                    "{race:?} {delta} {theta} dP/dθ {pt} {}",
+                    e.dload[1]
+                );
+                assert!(
+                    (md - e.dmoment[0]).abs() < 1e-6 * scale_m,
+                    "{race:?} {delta} {theta} dM/dΔ {md} {}",
+                    e.dmoment[0]
+                );
+                assert!(
+                    (mt - e.dmoment[1]).abs() / l < 1e-6 * scale_m,
+                    "{race:?} {delta} {theta} dM/dθ {mt} {}",
+                    e.dmoment[1]
+                );
+            }
+        }
+    }
+
+    /// A uniformly loaded (aligned) roller of the 32007 deck at the same contact load, on
+    /// the cup, with either profile. The edge-to-centre ratio is max(p₀, p₂₀)/p₁₀ over
+    /// the 21 slices. The logarithmic profile never loads an end slice above the middle
+    /// one (no spike: ratio < 1 at every load; its end slices are edge loaded from about
+    /// 6 kN, where the approach passes its 10.85 µm end drop). It does **not** load its
+    /// ends less than the deck's assumed crown: that crown (flat 8 mm, R_c 0.5 m) drops
+    /// 22.7 µm at the ends, twice the ISO profile's 10.85 µm, and a slice model (no
+    /// coupling between slices, no edge factors) carries each slice by its own intrusion.
+    /// Measured (crowned, logarithmic): 2 kN 0.260, 0.259 (neither edge loaded); 6 kN
+    /// 0.146, 0.578 (the log edge loaded); 9 kN 0.247, 0.698 (both). Fails if a log end
+    /// slice exceeded the middle, or if these numbers moved by more than 1e-3.
+    #[test]
+    fn log_profile_relieves_the_edges() {
+        let ratio = |profile: RollerProfile, load: f64| {
+            let (s, rg) = roller_32007(profile);
+            let c = RaceContact::new(Race::Cup, &s.geometry, &rg, &s.materials, 21).unwrap();
+            // Bisect Δ for the load (P increases with Δ).
+            let (mut lo, mut hi) = (0.0, 1e-4);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if c.eval(mid, 0.0, None).unwrap().load_n < load {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let mut sl = Vec::new();
+            let e = c.eval(hi, 0.0, Some(&mut sl)).unwrap();
+            assert!((e.load_n / load - 1.0).abs() < 1e-9);
+            let end = sl[0].load_n_m.max(sl[20].load_n_m);
+            (end / sl[10].load_n_m, e.edge_loaded)
+        };
+        for (load, want_c, want_l, edges) in [
+            (2_000.0, 0.2601, 0.2589, (false, false)),
+            (6_000.0, 0.1459, 0.5776, (false, true)),
+            (9_000.0, 0.2473, 0.6977, (true, true)),
+        ] {
+            let (rc, edge_c) = ratio(RollerProfile::Crowned, load);
+            let (rl, edge_l) = ratio(RollerProfile::Logarithmic, load);
+            eprintln!("load {load} N: edge/centre crowned {rc:.4} (edge {edge_c}), logarithmic {rl:.4} (edge {edge_l})");
+            assert!(rl < 1.0, "{load}: a log end slice above the middle: {rl}");
+            assert!(
+                (rc - want_c).abs() < 1e-3 && (rl - want_l).abs() < 1e-3,
+                "{load}: {rc} {rl}"
+            );
+            assert_eq!((edge_c, edge_l), edges, "{load}");
         }
     }
 

@@ -2,7 +2,7 @@
 //! [`crate::deck::form::Schema`] over [`TaperedInput`]. Key names are a contract (issue 17).
 
 use super::geometry::{crown_drop_at_gauge, crown_radius};
-use super::input::{Clearance, Crown, GyroInertia, StiffnessMethod, TaperedInput};
+use super::input::{Clearance, Crown, GyroInertia, RollerProfile, StiffnessMethod, TaperedInput};
 use crate::deck::form::{
     material_fields, show, FieldKind, FieldMeta, FieldSpec, MaterialAccess, Presence, Schema,
 };
@@ -15,6 +15,7 @@ const CAGE: [FieldSpec<TaperedInput>; 5] =
     crate::bearings::friction::cage_loss_fields!(TaperedInput, |t| t.cage);
 const STIFFNESS: &[&str] = &["analytic", "finite-difference", "both"];
 const GYRO: &[&str] = &["polar", "transverse"];
+const PROFILES: &[&str] = &["crowned", "logarithmic"];
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 const RPM: f64 = std::f64::consts::PI / 30.0;
@@ -45,7 +46,7 @@ const CUP: [FieldSpec<TaperedInput>; 5] =
 const CONE: [FieldSpec<TaperedInput>; 5] =
     material_fields!(TaperedInput, "cone", "Cone", |t| t.materials.cone);
 
-static FIELDS: [FieldSpec<TaperedInput>; 69] = [
+static FIELDS: [FieldSpec<TaperedInput>; 70] = [
     FieldSpec {
         meta: meta("geometry.roller_count", "geometry", "Rollers n", Quantity::Count, INT, (3.0, false), (500.0, false), REQ, "number of rollers"),
         get: |t| t.geometry.roller_count as f64,
@@ -90,6 +91,20 @@ static FIELDS: [FieldSpec<TaperedInput>; 69] = [
         meta: meta("geometry.crown_gauge", "geometry", "Crown drop gauge point G", Quantity::Length, REAL, (0.0, false), (1.0, false), Presence::Default(0.03 * INCH_M), "distance from each end of the effective length to where the crown drop is measured"),
         get: |t| t.geometry.crown_gauge_m,
         set: |t, v| t.geometry.crown_gauge_m = v,
+    },
+    FieldSpec {
+        meta: meta("geometry.profile", "geometry", "Roller profile", Quantity::Dimensionless, FieldKind::Choice(PROFILES), (0.0, false), (1.0, false), Presence::Default(0.0), "the contacts' roller profile: crowned (flat middle and circular crowns, the crown keys; default) or logarithmic (ISO/TS 16281 eq. 44, 0.00045·d·ln[1/(1 − (2x/l_e)²)]; the crown keys then shape only the end faces)"),
+        get: |t| match t.geometry.profile {
+            RollerProfile::Crowned => 0.0,
+            RollerProfile::Logarithmic => 1.0,
+        },
+        set: |t, v| {
+            t.geometry.profile = if v as usize == 1 {
+                RollerProfile::Logarithmic
+            } else {
+                RollerProfile::Crowned
+            }
+        },
     },
     FieldSpec {
         meta: meta("geometry.small_end_break", "geometry", "Small-end corner break B₁", Quantity::Length, REAL, (0.0, false), (0.1, false), Presence::Default(0.0), "corner break at the roller's small end"),

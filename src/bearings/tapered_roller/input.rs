@@ -15,6 +15,20 @@ pub enum Crown {
     Drop(f64),
 }
 
+/// The roller profile the race contacts see (issue 29, session 11).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RollerProfile {
+    /// A flat middle `flat_length_m` long and circular crowns ([`Crown`]; seed 004
+    /// eqs. 17, 58–61): the default, every deck before session 11.
+    #[default]
+    Crowned,
+    /// ISO/TS 16281:2008's logarithmic profile for tapered rollers (its eq. 44),
+    /// drop(x) = 0.00045·D_we·ln[1/(1 − (2x/L_we)²)] along the effective length L_we
+    /// ([`crate::bearings::tapered_roller::contact::log_profile_drop`]). The crown keys
+    /// then shape only the roller's end faces (eqs. 20–21) and mass, not the contacts.
+    Logarithmic,
+}
+
 /// How the internal play is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Clearance {
@@ -51,6 +65,8 @@ pub struct Geometry {
     pub flat_length_m: f64,
     /// The crown.
     pub crown: Crown,
+    /// Which profile the contacts use (`geometry.profile`).
+    pub profile: RollerProfile,
     /// G, distance from each end of the effective length to the crown drop's gauge point,
     /// m (eqs. 34–35).
     pub crown_gauge_m: f64,
@@ -312,6 +328,7 @@ impl TaperedInput {
                 effective_length_m: 0.6001 * INCH_M,
                 flat_length_m: 0.0,
                 crown: Crown::Radius(100.0 * INCH_M),
+                profile: RollerProfile::Crowned,
                 crown_gauge_m: 0.03 * INCH_M,
                 small_end_break_m: 0.02 * INCH_M,
                 big_end_break_m: 0.03 * INCH_M,

@@ -146,6 +146,10 @@ pub fn json(a: &Analysis) -> Value {
             "big_end_radius_m": rg.r2_m,
             "crown_radius_m": rg.crown_radius_m,
             "crown_drop_m": rg.crown_drop_m,
+            "profile": match b.input.geometry.profile {
+                super::input::RollerProfile::Crowned => "crowned",
+                super::input::RollerProfile::Logarithmic => "logarithmic",
+            },
             "roller_mass_kg": rg.mass_kg,
             "cg_offset_m": rg.cg_offset_m,
             "polar_inertia_kg_m2": rg.polar_inertia_kg_m2,
@@ -374,6 +378,12 @@ pub fn text(a: &Analysis, units: Units) -> String {
         len(rg.crown_radius_m),
         len(rg.crown_drop_m)
     );
+    if g.profile == super::input::RollerProfile::Logarithmic {
+        let _ = writeln!(
+            s,
+            "  contact profile: logarithmic, ISO/TS 16281 eq. 44 (0.00045·d·ln[1/(1 − (2x/l_e)²)]); the crown shapes only the end faces"
+        );
+    }
     let _ = writeln!(
         s,
         "  flange angle α = {:.4} deg  lever arm = {:.4} {lu}  mass = {:.4e} {}  cg offset = {:.4e} {lu}",
