@@ -182,7 +182,7 @@ use crate::physics::lubrication::guide_ring::{
     GuideRingGeometry, GuideRingSolution,
 };
 use crate::physics::lubrication::lamina_friction::{
-    lamina_friction, lamina_friction_and_slope, FilmRheology, LaminaFrictionError, LaminaSlice,
+    lamina_friction_and_slope_prepared, FilmRheology, LaminaFrictionError, LaminaSlice,
     RacewayTractionLaw,
 };
 use crate::physics::lubrication::traction::HertzStrip;
@@ -1028,9 +1028,17 @@ thread_local! {
         const { std::cell::Cell::new((0, 0, 0)) };
 }
 
+#[cfg(test)]
+thread_local! {
+    /// The cage speeds (rad/s) [`CageEvaluations::eval`] was called at on this thread, in
+    /// order: the cage balance's iteration count for `losses_stage_cost_print`.
+    pub(super) static CAGE_TRACE: std::cell::RefCell<Vec<f64>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// [`spin_moment`] and, with `want_slope`, dM/dω_s (N·m·s): the laminae's part is
 /// −Σ F_k'(v_k)·m_k² exactly (v_k = u_k − m_k·ω_s, F' from
-/// [`lamina_friction_and_slope`]); the pocket's drag depends on ω_s directly and through
+/// [`lamina_friction_and_slope`](crate::physics::lubrication::lamina_friction::lamina_friction_and_slope)); the pocket's drag depends on ω_s directly and through
 /// the net traction and the yaw moment (dcirc/dω_s = −Σ F_k'·m_k, dyaw/dω_s =
 /// −Σ y_k·F_k'·m_k), taken as one directional difference of the two pocket formulas
 /// (closed forms, no lamina evaluated) — a slope for Newton's step only, so its accuracy
@@ -1047,23 +1055,23 @@ fn spin_moment_and_slope(
     let ring_w = [common.inner_speed_rad_s, common.outer_speed_rad_s];
     let (mut m, mut scale, mut circ, mut yaw) = (0.0, 0.0, 0.0, 0.0);
     let (mut dm, mut dcirc, mut dyaw) = (0.0, 0.0, 0.0);
+    // The law's constants once per moment, not per lamina (the same numbers, so the same
+    // answer bit for bit: `lamina_friction_and_slope_prepared`).
+    let atz = lub.rheology.atz().prepared();
     #[cfg(test)]
     let mut laminae = 0usize;
     for (k, side) in r.sides.iter().enumerate() {
         let raceway = if k == 0 { "inner" } else { "outer" };
         for (j, l) in side.iter().enumerate() {
             let s = slice_at(l, ring_w[k], wc, spin);
-            let (f, slope) = if want_slope {
-                lamina_friction_and_slope(lub.law, &lub.rheology, &s)
-            } else {
-                lamina_friction(lub.law, &lub.rheology, &s).map(|f| (f, 0.0))
-            }
-            .map_err(|source| LossError::Lamina {
-                roller,
-                raceway,
-                lamina: j,
-                source,
-            })?;
+            let (f, slope) =
+                lamina_friction_and_slope_prepared(lub.law, &lub.rheology, &atz, &s, want_slope)
+                    .map_err(|source| LossError::Lamina {
+                        roller,
+                        raceway,
+                        lamina: j,
+                        source,
+                    })?;
             #[cfg(test)]
             {
                 laminae += 1;
@@ -1718,6 +1726,8 @@ impl<'a> CageEvaluations<'a> {
 
     /// The balance at cage speed `w` (rad/s), the spins warm-started and remembered.
     fn eval(&mut self, w: f64) -> Result<CagePoint, LossError> {
+        #[cfg(test)]
+        CAGE_TRACE.with(|t| t.borrow_mut().push(w));
         let warm = self.warm(w);
         let spins = self.k.spins_from(w, warm.as_deref())?;
         if self.hist.len() == 2 {

@@ -3,12 +3,13 @@
 //! check against Palmgren's empirical friction moment).
 
 use super::input::{CageSpeedSource, DoubleRowInput};
-use super::losses::SPIN_COUNTS;
 use super::losses::{
     loss_breakdown, loss_inputs, loss_kinematics, losses, losses_skewed, LossBreakdown,
     CAGE_TORQUE_TOLERANCE, SPIN_MOMENT_TOLERANCE,
 };
+use super::losses::{CAGE_TRACE, SPIN_COUNTS};
 use super::statics::{analyse, DoubleRowAnalysis};
+use crate::physics::lubrication::traction::TRACTION_CALLS;
 
 fn solve(b: &DoubleRowInput) -> DoubleRowAnalysis {
     analyse(b, "test", None).unwrap_or_else(|e| panic!("{e}"))
@@ -555,11 +556,30 @@ fn losses_stage_cost_print() {
             let t = std::time::Instant::now();
             let mut total = 0.0;
             SPIN_COUNTS.with(|c| c.set((0, 0, 0)));
+            CAGE_TRACE.with(|c| c.borrow_mut().clear());
+            TRACTION_CALLS.with(|c| c.set(0));
             for _ in 0..3 {
                 total += losses(&a).unwrap_or_else(|e| panic!("{e}")).losses.total_w;
             }
             let ms = t.elapsed().as_secs_f64() / 3.0 * 1e3;
             let (solves, evals, laminae) = SPIN_COUNTS.with(std::cell::Cell::get);
+            let cage_evals = CAGE_TRACE.with(|c| c.borrow().len()) / 3;
+            let traction = TRACTION_CALLS.with(std::cell::Cell::get) / 3;
+            let loaded: [usize; 2] = [0, 1].map(|side| {
+                a.rows
+                    .iter()
+                    .flat_map(|r| r.contacts.iter())
+                    .map(|rc| rc.iter().filter(|l| l[side].load_n > 0.0).count())
+                    .sum()
+            });
+            let rollers = a.rows.iter().map(|r| r.load.rollers.len()).sum::<usize>();
+            eprintln!(
+                "  counts: {cage_evals} cage evaluations, {rollers} rollers, loaded laminae inner {} outer {} (of {} per raceway), {traction} traction integrations per losses() (spins {}, the rest breakdown + guide ring)",
+                loaded[0],
+                loaded[1],
+                a.rows.iter().flat_map(|r| r.load.rollers.iter()).map(|r| r.laminae.len()).sum::<usize>(),
+                laminae / 3,
+            );
             let l = losses(&a).unwrap_or_else(|e| panic!("{e}"));
             eprintln!(
                 "{fr} N radial, {fa} N axial, {cage:?}: {ms:.2} ms, per run {} spin solves, {:.2} moment evaluations per solve, {} lamina evaluations ({:.3} W, cage {:.3} rpm, imbalance {:.2e} N·m, noise {:.2e} N·m)",

@@ -60,7 +60,7 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
+use crate::physics::lubrication::traction::{HertzStrip, PreparedTraction, TractionModel};
 
 /// Traction coefficient above which the printed eq. 3 is flagged: no lubricant film
 /// transmits more than about 0.1 in EHD (limiting traction coefficients of bearing oils are
@@ -232,9 +232,36 @@ pub fn lamina_friction_and_slope(
     friction_and_slope(law, rheology, slice, true)
 }
 
+/// [`lamina_friction_and_slope`] with the ATZ law prepared by the caller
+/// (`rheology.atz().prepared()`, [`PreparedTraction`]): a caller evaluating many laminae with
+/// one rheology saves the law's four logarithms per lamina. The same arithmetic, so the same
+/// answer bit for bit; `prepared` must be `rheology.atz().prepared()`.
+///
+/// # Errors
+/// As [`lamina_friction`].
+pub fn lamina_friction_and_slope_prepared(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    prepared: &PreparedTraction,
+    slice: &LaminaSlice,
+    want_slope: bool,
+) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
+    friction_and_slope_with(law, rheology, Some(prepared), slice, want_slope)
+}
+
 fn friction_and_slope(
     law: RacewayTractionLaw,
     rheology: &FilmRheology,
+    slice: &LaminaSlice,
+    want_slope: bool,
+) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
+    friction_and_slope_with(law, rheology, None, slice, want_slope)
+}
+
+fn friction_and_slope_with(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    prepared: Option<&PreparedTraction>,
     slice: &LaminaSlice,
     want_slope: bool,
 ) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
@@ -273,6 +300,11 @@ fn friction_and_slope(
                 "positive for the printed eq. 3 (traction = \"newtonian-eq3\") at a sliding lamina",
         });
     }
+    let atz = || {
+        prepared
+            .copied()
+            .unwrap_or_else(|| rheology.atz().prepared())
+    };
     let (force, slope) = match law {
         RacewayTractionLaw::NewtonianEq3 => {
             let unit = LaminaSlice {
@@ -289,18 +321,17 @@ fn friction_and_slope(
         RacewayTractionLaw::Atz if v.abs() < ATZ_REGULARISATION_SLIDING_M_S => {
             // The chord of the law below v_reg (module notes "Regularisation"): F is odd in
             // v, F(v) = F(v_reg)·v/v_reg, slope F(v_reg)/v_reg.
-            let at = rheology
-                .atz()
+            let at = atz()
                 .lamina_traction(&strip, ATZ_REGULARISATION_SLIDING_M_S, h)
                 .force_n;
             let slope = at / ATZ_REGULARISATION_SLIDING_M_S;
             (slope * v, if want_slope { slope } else { 0.0 })
         }
         RacewayTractionLaw::Atz if want_slope => {
-            let (t, slope) = rheology.atz().lamina_traction_and_slope(&strip, v, h);
+            let (t, slope) = atz().lamina_traction_and_slope(&strip, v, h);
             (t.force_n, slope)
         }
-        RacewayTractionLaw::Atz => (rheology.atz().lamina_traction(&strip, v, h).force_n, 0.0),
+        RacewayTractionLaw::Atz => (atz().lamina_traction(&strip, v, h).force_n, 0.0),
     };
     let mu = force.abs() / q;
     let friction = LaminaFriction {

@@ -305,31 +305,8 @@ impl TractionModel {
         sliding_velocity_m_s: f64,
         film_thickness_m: f64,
     ) -> (LaminaTraction, f64) {
-        let v = sliding_velocity_m_s;
-        let p0 = contact.peak_pressure_pa();
-        if v == 0.0 && p0 > 0.0 && film_thickness_m.is_finite() {
-            let i = match *self {
-                TractionModel::Ehd { .. } => self.newtonian_piece(
-                    p0,
-                    1.0,
-                    film_thickness_m,
-                    (0.0, 1.0, 0.0),
-                    (std::f64::consts::FRAC_PI_2, 0.0),
-                ),
-                TractionModel::Constant { .. } => 0.0,
-            };
-            let slope = 2.0 * contact.width_m * contact.half_width_m * i;
-            return (LaminaTraction::default(), slope);
-        }
-        let (t, newtonian) = self
-            .prepared()
-            .lamina_traction_parts(contact, v, film_thickness_m);
-        let slope = if v.is_finite() && v != 0.0 {
-            2.0 * contact.width_m * contact.half_width_m * newtonian / v.abs()
-        } else {
-            0.0
-        };
-        (t, slope)
+        self.prepared()
+            .lamina_traction_and_slope(contact, sliding_velocity_m_s, film_thickness_m)
     }
 
     /// ∫_a^b τ_N(p₀ cos φ)·cos φ dφ on a Newtonian piece by composite 8-point
@@ -396,6 +373,13 @@ impl TractionModel {
     }
 }
 
+#[cfg(test)]
+thread_local! {
+    /// Lamina traction integrations ([`PreparedTraction::lamina_traction_parts`]) on this
+    /// thread: the cost counts the double-row roller's `losses_stage_cost_print` reports.
+    pub(crate) static TRACTION_CALLS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
 /// A traction law with what does not depend on the contact computed once (issue 31: four
 /// logarithms per lamina contact were a tenth of the friction stage): ln μ, ln τ_tr,
 /// ln(τ_tr/μ) and −ln α, the constants of the kink search ([`PreparedTraction::kinks`]).
@@ -428,6 +412,39 @@ impl PreparedTraction {
             .0
     }
 
+    /// [`TractionModel::lamina_traction_and_slope`] of this law (the same arithmetic: the
+    /// model's method prepares the law and calls this).
+    pub fn lamina_traction_and_slope(
+        &self,
+        contact: &HertzStrip,
+        sliding_velocity_m_s: f64,
+        film_thickness_m: f64,
+    ) -> (LaminaTraction, f64) {
+        let v = sliding_velocity_m_s;
+        let p0 = contact.peak_pressure_pa();
+        if v == 0.0 && p0 > 0.0 && film_thickness_m.is_finite() {
+            let i = match self.model {
+                TractionModel::Ehd { .. } => self.model.newtonian_piece(
+                    p0,
+                    1.0,
+                    film_thickness_m,
+                    (0.0, 1.0, 0.0),
+                    (std::f64::consts::FRAC_PI_2, 0.0),
+                ),
+                TractionModel::Constant { .. } => 0.0,
+            };
+            let slope = 2.0 * contact.width_m * contact.half_width_m * i;
+            return (LaminaTraction::default(), slope);
+        }
+        let (t, newtonian) = self.lamina_traction_parts(contact, v, film_thickness_m);
+        let slope = if v.is_finite() && v != 0.0 {
+            2.0 * contact.width_m * contact.half_width_m * newtonian / v.abs()
+        } else {
+            0.0
+        };
+        (t, slope)
+    }
+
     /// The force and heat, and the Newtonian pieces' share of the φ-integral (Pa).
     fn lamina_traction_parts(
         &self,
@@ -435,6 +452,8 @@ impl PreparedTraction {
         sliding_velocity_m_s: f64,
         film_thickness_m: f64,
     ) -> (LaminaTraction, f64) {
+        #[cfg(test)]
+        TRACTION_CALLS.with(|c| c.set(c.get() + 1));
         let p0 = contact.peak_pressure_pa();
         let v = sliding_velocity_m_s;
         if p0 <= 0.0 || !v.is_finite() || v == 0.0 {
