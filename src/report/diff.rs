@@ -310,40 +310,67 @@ pub fn to_text(d: &Diff) -> String {
     }
     match &d.elements {
         Err(why) => s.push_str(&format!("\nper-element tables: {why}\n")),
-        Ok(rows) => {
-            s.push_str(
-                "\nper-element tables: the largest change of each column (every cell: --format csv or json)\n",
-            );
-            let mut seen: Vec<(String, String)> = Vec::new();
-            for r in rows {
-                if !seen.iter().any(|(q, _)| *q == r.quantity) {
-                    seen.push((r.quantity.clone(), r.unit.clone()));
-                }
-            }
-            for (q, unit) in seen {
-                let col = rows.iter().filter(|r| r.quantity == q);
-                let worst = col
-                    .clone()
-                    .filter_map(|r| r.delta().map(|x| (x, r)))
-                    .max_by(|x, y| x.0.abs().total_cmp(&y.0.abs()));
-                let head = if unit.is_empty() {
-                    q.clone()
-                } else {
-                    format!("{q} {unit}")
-                };
-                match worst {
-                    Some((x, r)) => s.push_str(&format!(
-                        "  {head}: {} at {} ({} → {}{})\n",
-                        format_args!("{:+}", Shortened(x)),
-                        r.section,
-                        short(r.a),
-                        short(r.b),
-                        r.percent().map_or(String::new(), |p| format!(", {p:+.2}%")),
-                    )),
-                    None => s.push_str(&format!("  {head}: —\n")),
-                }
-            }
+        Ok(rows) => s.push_str(&element_text(rows)),
+    }
+    s
+}
+
+/// Per element column the largest change, where it is and from what to what; the columns no
+/// cell of which changed are named on one line (a zero "largest change at roller 37" would
+/// point at an arbitrary element), and two identical tables say so in one line.
+fn element_text(rows: &[Row]) -> String {
+    let mut columns: Vec<(String, String)> = Vec::new();
+    let mut elements: Vec<&str> = Vec::new();
+    for r in rows {
+        if !columns.iter().any(|(q, _)| *q == r.quantity) {
+            columns.push((r.quantity.clone(), r.unit.clone()));
         }
+        if !elements.contains(&r.section.as_str()) {
+            elements.push(&r.section);
+        }
+    }
+    let mut changed = String::new();
+    let mut unchanged: Vec<String> = Vec::new();
+    for (q, unit) in &columns {
+        let head = if unit.is_empty() {
+            q.clone()
+        } else {
+            format!("{q} {unit}")
+        };
+        let worst = rows
+            .iter()
+            .filter(|r| r.quantity == *q)
+            .filter_map(|r| r.delta().map(|x| (x, r)))
+            .max_by(|x, y| x.0.abs().total_cmp(&y.0.abs()));
+        match worst {
+            Some((x, _)) if x == 0.0 => unchanged.push(head),
+            Some((x, r)) => changed.push_str(&format!(
+                "  {head}: {} at {} ({} → {}{})\n",
+                format_args!("{:+}", Shortened(x)),
+                r.section,
+                short(r.a),
+                short(r.b),
+                r.percent().map_or(String::new(), |p| format!(", {p:+.2}%")),
+            )),
+            None => changed.push_str(&format!("  {head}: —\n")),
+        }
+    }
+    if changed.is_empty() {
+        return format!(
+            "\nper-element tables: every cell is identical ({} columns, {} elements)\n",
+            columns.len(),
+            elements.len()
+        );
+    }
+    let mut s = String::from(
+        "\nper-element tables: the largest change of each column (every cell: --format csv or json)\n",
+    );
+    s.push_str(&changed);
+    if !unchanged.is_empty() {
+        s.push_str(&format!(
+            "  unchanged in every element: {}\n",
+            unchanged.join(", ")
+        ));
     }
     s
 }
@@ -462,5 +489,43 @@ mod tests {
         assert_eq!(row(Some(0.0), Some(0.0)).percent(), Some(0.0));
         assert_eq!(row(Some(0.0), Some(1.0)).percent(), None);
         assert_eq!(row(None, Some(1.0)).delta(), None);
+    }
+
+    fn cell(element: &str, q: &str, a: f64, b: f64) -> Row {
+        Row {
+            section: element.into(),
+            quantity: q.into(),
+            unit: "N".into(),
+            a: Some(a),
+            b: Some(b),
+        }
+    }
+
+    /// A column whose every cell is equal has no "largest change at" an element: it is
+    /// named among the unchanged; two identical tables are one line.
+    #[test]
+    fn unchanged_columns_name_no_element() {
+        let same = [
+            cell("roller 1", "Q", 10.0, 10.0),
+            cell("roller 2", "Q", 20.0, 20.0),
+            cell("roller 1", "W", 1.0, 1.0),
+            cell("roller 2", "W", 2.0, 2.0),
+        ];
+        assert_eq!(
+            super::element_text(&same),
+            "\nper-element tables: every cell is identical (2 columns, 2 elements)\n"
+        );
+        let mut moved = same.to_vec();
+        moved[1].b = Some(21.0);
+        let text = super::element_text(&moved);
+        assert!(
+            text.contains("  Q N: +1 at roller 2 (20 → 21, +5.00%)\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains("  unchanged in every element: W N\n"),
+            "{text}"
+        );
+        assert!(!text.contains("W N: +0"), "{text}");
     }
 }
