@@ -343,7 +343,7 @@ fn element_text(rows: &[Row]) -> String {
             .filter_map(|r| r.delta().map(|x| (x, r)))
             .max_by(|x, y| x.0.abs().total_cmp(&y.0.abs()));
         match worst {
-            Some((x, _)) if x == 0.0 => unchanged.push(head),
+            Some((0.0, _)) => unchanged.push(head),
             Some((x, r)) => changed.push_str(&format!(
                 "  {head}: {} at {} ({} → {}{})\n",
                 format_args!("{:+}", Shortened(x)),
