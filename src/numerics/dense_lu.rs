@@ -145,28 +145,39 @@ pub fn lu_factor_unblocked(a: &mut [f64], piv: &mut [usize], m: usize) -> Option
 /// finite.
 pub fn lu_solve(a: &[f64], piv: &[usize], b: &mut [f64], m: usize) -> Option<()> {
     // The exchanges moved the stored multipliers along with the rows (LAPACK's layout),
-    // so all of them apply to b first, then L's forward substitution by columns.
+    // so all of them apply to b first. Both substitutions then go by rows: a row-major
+    // matrix read along its rows, with a four-way dot product, rather than down its
+    // columns (a cache line per element: measured as half the line-EHL warm step).
     for (k, p) in piv.iter().enumerate().take(m) {
         b.swap(k, *p);
     }
-    for k in 0..m {
-        let bk = b[k];
-        if bk != 0.0 {
-            for r in k + 1..m {
-                b[r] -= a[r * m + k] * bk;
-            }
-        }
+    for k in 1..m {
+        let (done, rest) = b.split_at_mut(k);
+        rest[0] -= dot(&a[k * m..k * m + k], done);
     }
     for k in (0..m).rev() {
         let row = &a[k * m..(k + 1) * m];
-        let s: f64 = row[k + 1..]
-            .iter()
-            .zip(&b[k + 1..])
-            .map(|(x, y)| x * y)
-            .sum();
+        let s = dot(&row[k + 1..], &b[k + 1..]);
         b[k] = (b[k] - s) / row[k];
     }
     b.iter().all(|v| v.is_finite()).then_some(())
+}
+
+/// x·y with four partial sums (lets the compiler use SIMD; the order of the additions
+/// changes the result at round-off only).
+pub fn dot(x: &[f64], y: &[f64]) -> f64 {
+    let mut acc = [0.0; 4];
+    let (xc, xr) = x.split_at(x.len() - x.len() % 4);
+    for (a, b) in xc.chunks_exact(4).zip(y.chunks_exact(4)) {
+        for l in 0..4 {
+            acc[l] += a[l] * b[l];
+        }
+    }
+    let mut s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    for (a, b) in xr.iter().zip(&y[xc.len()..]) {
+        s += a * b;
+    }
+    s
 }
 
 #[cfg(test)]

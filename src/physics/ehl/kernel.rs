@@ -18,6 +18,8 @@
 //! row. The constant (ln b, the far-field reference) is absorbed into the film constant
 //! h₀ of the load balance.
 
+use crate::numerics::dense_lu::dot;
+
 /// F(t) = t ln|t| − t, with its limit F(0) = 0.
 fn f(t: f64) -> f64 {
     if t == 0.0 {
@@ -43,13 +45,27 @@ pub fn line_kernel(n: usize, dx: f64) -> Vec<f64> {
 /// is ≤ 2.6·10⁶ multiply-adds, negligible beside the Newton solve's dense factorisation
 /// (O(n³)), so DC-FFT would not change the solve time (the factorisation dominates).
 pub fn deflection(kernel: &[f64], pressure: &[f64], out: &mut [f64]) {
+    deflection_symmetric(&symmetric_row(kernel), pressure, out);
+}
+
+/// The Toeplitz row written out both ways, S_{n−1+d} = K_{|d|} for d = −(n−1) … n−1, so
+/// that row i of the kernel matrix is the contiguous run S[n−1−i .. 2n−1−i]: products
+/// with it vectorise (an index |i − j| per term does not).
+pub fn symmetric_row(kernel: &[f64]) -> Vec<f64> {
+    kernel
+        .iter()
+        .skip(1)
+        .rev()
+        .chain(kernel.iter())
+        .copied()
+        .collect()
+}
+
+/// [`deflection`] with the row of [`symmetric_row`]: Δ̄_i = S[n−1−i ..]·P.
+pub fn deflection_symmetric(symmetric: &[f64], pressure: &[f64], out: &mut [f64]) {
     let n = pressure.len();
     for (i, o) in out.iter_mut().enumerate().take(n) {
-        let mut s = 0.0;
-        for (j, p) in pressure.iter().enumerate() {
-            s += kernel[i.abs_diff(j)] * p;
-        }
-        *o = s;
+        *o = dot(&symmetric[n - 1 - i..2 * n - 1 - i], pressure);
     }
 }
 
@@ -103,6 +119,22 @@ mod tests {
                 .sum();
             let expected = -s / std::f64::consts::PI;
             assert!((km - expected).abs() < 1e-6, "m = {m}: {km} vs {expected}");
+        }
+    }
+
+    /// The vectorised product is the Toeplitz sum Σ_j K_{|i−j|} P_j written out, to
+    /// round-off (1e-14 of the largest term: only the order of the additions differs).
+    #[test]
+    fn symmetric_row_product_is_the_toeplitz_sum() {
+        let n = 37;
+        let k = line_kernel(n, 0.05);
+        let p: Vec<f64> = (0..n).map(|j| (j as f64 * 0.3).sin().abs()).collect();
+        let mut fast = vec![0.0; n];
+        deflection(&k, &p, &mut fast);
+        let scale = k.iter().fold(0.0f64, |a, v| a.max(v.abs())) * n as f64;
+        for (i, v) in fast.iter().enumerate() {
+            let direct: f64 = (0..n).map(|j| k[i.abs_diff(j)] * p[j]).sum();
+            assert!((v - direct).abs() <= 1e-14 * scale, "{i}: {v} vs {direct}");
         }
     }
 }

@@ -43,8 +43,8 @@
 //! The film is clamped at h ≥ 0 where an iterate would make it negative (ε and ρh then
 //! use 0, their derivative with H is dropped), and the clamps are counted.
 
-use super::kernel::{deflection, line_kernel};
-use crate::numerics::dense_lu::{lu_factor, lu_solve};
+use super::kernel::{deflection_symmetric, line_kernel, symmetric_row};
+use crate::numerics::dense_lu::{dot, lu_factor, lu_solve};
 use crate::numerics::gmres::{gmres, GmresWork};
 use crate::physics::contact::line::line_contact_reduced;
 use crate::physics::lubrication::film::{pan_hamrock_central, FilmInputs};
@@ -455,6 +455,8 @@ struct Scaled<'a> {
     n: usize,
     dx: f64,
     x: Vec<f64>,
+    /// The kernel row written out both ways ([`symmetric_row`]): row i of the kernel
+    /// matrix is `kernel[n − 1 − i .. 2n − 1 − i]`.
     kernel: Vec<f64>,
     lambda: f64,
     sigma: f64,
@@ -488,7 +490,7 @@ impl Scaled<'_> {
 
     /// Film H, its clamp mask and count.
     fn film(&self, p: &[f64], h0: f64, h: &mut [f64], clamped: &mut [bool]) -> usize {
-        deflection(&self.kernel, p, h);
+        deflection_symmetric(&self.kernel, p, h);
         let mut count = 0;
         for i in 0..self.n {
             let v = h0 + 0.5 * self.x[i] * self.x[i] + h[i];
@@ -614,7 +616,7 @@ impl Scaled<'_> {
                 e.1 *= f.rho[e.0];
             }
             // The coefficients of H_k summed per node k (i−2 … i+1), then one pass of the
-            // kernel row per k over two contiguous runs (j ≥ k, j < k) that vectorise.
+            // kernel row per k: a contiguous run of the symmetric row (it vectorises).
             let mut through_h = [0.0; 4];
             for (k, c) in coef_eps.iter().chain(coef_q.iter()) {
                 through_h[*k + 2 - i] += s * c;
@@ -625,10 +627,7 @@ impl Scaled<'_> {
                     continue;
                 }
                 let k = slot + i - 2;
-                for (v, kk) in row[k..n].iter_mut().zip(&self.kernel) {
-                    *v += a * kk;
-                }
-                for (v, kk) in row[..k].iter_mut().zip(self.kernel[1..=k].iter().rev()) {
+                for (v, kk) in row[..n].iter_mut().zip(&self.kernel[n - 1 - k..]) {
                     *v += a * kk;
                 }
                 row[n] += a;
@@ -679,23 +678,6 @@ fn dense_product(a: &[f64], v: &[f64], out: &mut [f64], m: usize) {
     for (o, row) in out.iter_mut().zip(a.chunks_exact(m)) {
         *o = dot(row, v);
     }
-}
-
-/// x·y with four partial sums (lets the compiler use SIMD; the order of the additions
-/// changes the result at round-off only).
-fn dot(x: &[f64], y: &[f64]) -> f64 {
-    let mut acc = [0.0; 4];
-    let (xc, xr) = x.split_at(x.len() - x.len() % 4);
-    for (a, b) in xc.chunks_exact(4).zip(y.chunks_exact(4)) {
-        for l in 0..4 {
-            acc[l] += a[l] * b[l];
-        }
-    }
-    let mut s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
-    for (a, b) in xr.iter().zip(&y[xc.len()..]) {
-        s += a * b;
-    }
-    s
 }
 
 /// Solve a line-contact EHL problem, optionally warm-started from a previous solution
@@ -751,7 +733,7 @@ pub fn solve_line_ehl_with(
     let scaled = Scaled {
         n,
         dx,
-        kernel: line_kernel(n, dx),
+        kernel: symmetric_row(&line_kernel(n, dx)),
         lambda: 12.0 * eta0 * u * r * r / (b * b * b * p_h),
         sigma,
         prev,
@@ -823,7 +805,7 @@ pub fn solve_line_ehl_with(
         .unwrap_or(0.0),
     };
     let mut d = vec![0.0; n];
-    deflection(&scaled.kernel, &p, &mut d);
+    deflection_symmetric(&scaled.kernel, &p, &mut d);
     let centre = interpolate(&scaled.x, &d, 0.0);
     let mut h0 = central_guess / film_scale - centre;
 
