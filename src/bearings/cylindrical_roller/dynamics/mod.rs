@@ -4,9 +4,10 @@
 //! State (x, y, ẋ, ẏ) of the shaft centre; roller i at θ_i = ω_c t + θ₁ + 2π(i−1)/m;
 //! W_i = k_n δ_i^n (eq. 2) with 2δ_i = 2(h_i − C) + x cos θ_i + y sin θ_i (eq. 3), W = 0
 //! for δ ≤ 0; the film h_i of eq. (4) (read as documented in [`film`]) with the squeeze
-//! velocity w_i = −½ d/dt(x cos θ_i + y sin θ_i): in the right-hand side from a table
-//! of the film solve built once per run ([`film_table`], < 1e-14 from the Newton
-//! solve), for the sampled outputs per roller by safeguarded Newton. Integrated from
+//! velocity w_i = −½ d/dt(x cos θ_i + y sin θ_i): in the right-hand side and for the
+//! sampled outputs (load, film, squeeze velocity per roller) from a table of the film
+//! solve built once per run ([`film_table`], < 1e-13 from the safeguarded Newton solve,
+//! which remains where the table does not reach). Integrated from
 //! x = y = 0 at rest (the seed's start) by the shared DOP853 (measured: 26 k steps and
 //! 0.34 M evaluations for 100 revolutions of the truck bearing at rtol 1e-8 against
 //! DOPRI5's 153 k and 0.92 M), or, where the force depends on position and time only

@@ -106,7 +106,9 @@ impl Rhs {
 
     /// Every roller's contact at time `t` in state `y` = (x, y, ẋ, ẏ, …), in roller
     /// order, θ_i's sine and cosine by rotating (sin ω_c t, cos ω_c t) by each roller's
-    /// phase (one `sin_cos` per call, as the hot loop).
+    /// phase (one `sin_cos` per call, as the hot loop); with a film, from the tabulated
+    /// solve ([`FastFilm::contact`]: within 1e-13 of the Newton solve's load and 1e-12
+    /// of its film) instead of a Newton solve per roller and sample.
     pub fn rollers(&self, t: f64, y: &[f64], mut each: impl FnMut(usize, Contact)) {
         let (s0, c0) = (self.cage_speed_rad_s * t).sin_cos();
         let (x, yy, vx, vy) = (y[0], y[1], y[2] * self.omega_ref, y[3] * self.omega_ref);
@@ -114,7 +116,13 @@ impl Rhs {
             let (s, c) = (s0 * cp + c0 * sp, c0 * cp - s0 * sp);
             let p = x * c + yy * s;
             let p_dot = vx * c + vy * s + self.cage_speed_rad_s * (yy * c - x * s);
-            each(i, self.law.contact(p, p_dot));
+            each(
+                i,
+                match &self.fast_film {
+                    Some(fast) => fast.contact(&self.law, p, p_dot),
+                    None => self.law.contact(p, p_dot),
+                },
+            );
         }
     }
 
@@ -266,10 +274,27 @@ impl Rhs {
     }
 
     /// The film-in-the-deflection loop: each roller's eqs. (2)–(4) from the tabulated
-    /// solve ([`FastFilm`]; Newton by [`ContactLaw::contact`] without it); clamps at
-    /// h = 0 counted.
+    /// solve, by the lane kernel [`FastFilm::sums`] where the reading has one (the
+    /// normalised squeeze and the steady film), else roller by roller ([`FastFilm::load`];
+    /// Newton by [`ContactLaw::contact`] without a table); clamps at h = 0 counted.
     #[inline]
     fn film_sums(&self, x: f64, y: f64, vx: f64, vy: f64, s0: f64, c0: f64) -> [f64; 3] {
+        if let Some((sums, clamps)) = self.fast_film.as_ref().and_then(|fast| {
+            fast.sums(
+                &self.law,
+                &self.phase_sin,
+                &self.phase_cos,
+                [x, y, vx, vy],
+                self.cage_speed_rad_s,
+                s0,
+                c0,
+            )
+        }) {
+            if clamps > 0 {
+                self.clamps.set(self.clamps.get() + clamps);
+            }
+            return sums;
+        }
         let (mut fx, mut fy, mut dv) = (0.0, 0.0, 0.0);
         let mut clamps = 0;
         for &(sp, cp) in &self.phase_sin_cos {
