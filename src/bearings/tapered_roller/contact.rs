@@ -52,7 +52,9 @@ use thiserror::Error;
 
 use super::geometry::RollerGeometry;
 use super::input::{Geometry, Materials, RollerProfile};
-use crate::physics::contact::lundberg::{compliance, LundbergError, LundbergSlice, SliceLoad};
+use crate::physics::contact::lundberg::{
+    compliance, LundbergError, LundbergSlice, SliceLoad, LUNDBERG_CONSTANT,
+};
 
 /// Which race.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -148,6 +150,21 @@ fn log_right_end(delta: f64, k: f64, a: f64, u_star: f64) -> (f64, bool) {
         }
     }
     (u, false)
+}
+
+/// How many times the shortest length at which Lundberg's strip still carries approach
+/// δ the logarithm's length is floored at (module notes, "Short contacts").
+pub const SHORT_CONTACT_FACTOR: f64 = 2.0;
+
+/// The floor of the length in Lundberg's logarithm at slice approach `delta_m` (m):
+/// [`SHORT_CONTACT_FACTOR`] times L_v(δ) = e^(−(K − ½))·√(8·wf·δ/c), the length whose
+/// largest approach (eq. 71's validity limit L/(2b) = e^(−(K − ½)) ≈ 0.25) is δ
+/// (module notes, "Short contacts").
+#[inline]
+fn short_contact_length(law: &LundbergSlice, delta_m: f64) -> f64 {
+    SHORT_CONTACT_FACTOR
+        * (-(LUNDBERG_CONSTANT - 0.5)).exp()
+        * (8.0 * law.width_factor * delta_m / law.compliance).sqrt()
 }
 
 /// The roller profile seen from one race.
@@ -487,10 +504,20 @@ impl RaceContact {
             let mut stress = 0.0;
             let mut sl = SliceLoad::default();
             if i > 0.0 {
-                sl = law.load(i, length).map_err(fail)?;
-                let (p, pd, pl) = (sl.load_n_m, sl.dload_dapproach, sl.dload_dlength);
+                // The length in Lundberg's logarithm, floored for a contact too short to be
+                // a strip at this approach (module notes, "Short contacts").
+                let floor = short_contact_length(&law, i);
+                let l_log = length.max(floor);
+                sl = law.load(i, l_log).map_err(fail)?;
+                let (p, mut pd, mut pl) = (sl.load_n_m, sl.dload_dapproach, sl.dload_dlength);
                 // ∂p/∂(b² factor) at fixed δ, L: δ has −c·p/(2·wf) per unit wf.
-                let pw = pd * law.compliance * p / (2.0 * law.width_factor);
+                let mut pw = pd * law.compliance * p / (2.0 * law.width_factor);
+                if floor > length {
+                    // The floor ∝ √(wf·δ): its share of ∂p/∂δ and ∂p/∂wf, none of ∂p/∂L.
+                    pd += pl * floor / (2.0 * i);
+                    pw += pl * floor / (2.0 * law.width_factor);
+                    pl = 0.0;
+                }
                 let along = pd * di_dx + pw * dwf;
                 let d0 = pd + pl * dl[0] + along * dxk[0];
                 let d1 = pd * di_dtheta + pl * dl[1] + along * dxk[1];
