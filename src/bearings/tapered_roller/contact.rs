@@ -507,15 +507,19 @@ impl RaceContact {
                 // The length in Lundberg's logarithm, floored for a contact too short to be
                 // a strip at this approach (module notes, "Short contacts").
                 let floor = short_contact_length(&law, i);
-                let l_log = length.max(floor);
+                let l_e = 2.0 * self.profile.half_le;
+                let l_log = length.max(floor.min(l_e));
                 sl = law.load(i, l_log).map_err(fail)?;
                 let (p, mut pd, mut pl) = (sl.load_n_m, sl.dload_dapproach, sl.dload_dlength);
                 // ∂p/∂(b² factor) at fixed δ, L: δ has −c·p/(2·wf) per unit wf.
                 let mut pw = pd * law.compliance * p / (2.0 * law.width_factor);
-                if floor > length {
-                    // The floor ∝ √(wf·δ): its share of ∂p/∂δ and ∂p/∂wf, none of ∂p/∂L.
-                    pd += pl * floor / (2.0 * i);
-                    pw += pl * floor / (2.0 * law.width_factor);
+                if l_log > length {
+                    if floor < l_e {
+                        // The floor ∝ √(wf·δ): its share of ∂p/∂δ and ∂p/∂wf.
+                        pd += pl * floor / (2.0 * i);
+                        pw += pl * floor / (2.0 * law.width_factor);
+                    }
+                    // Floored (or at the effective length): none of ∂p/∂L.
                     pl = 0.0;
                 }
                 let along = pd * di_dx + pw * dwf;
