@@ -837,6 +837,81 @@ mod tests {
         }
     }
 
+    /// Issue 29 session 12, short contacts: the 32007 roller (crowned, and logarithmic)
+    /// tilted 0.02 rad on the cup, its big end just touching. At contact lengths from
+    /// about 1e-8 to 1e-4 m Lundberg's law at the contact's own length has no inverse for
+    /// the end slice (L/(2b) ≤ 0.25: the error these evaluations ended in before), while
+    /// the contact with the floored logarithm evaluates: its load is positive, rises with
+    /// the approach and vanishes with the length (P ≤ 1e-3 N at L ≤ 1e-6 m), and its
+    /// derivatives equal central differences to 1e-5 of the row's scale (steps 1e-4 of the
+    /// approach past the onset: the round-off of Δ ≈ 1e-5 m over those steps is ~1e-6).
+    /// Fails if the floor is removed (error) or its derivative terms are (differences).
+    #[test]
+    fn short_edge_contacts_are_floored_not_refused() {
+        for profile in [RollerProfile::Crowned, RollerProfile::Logarithmic] {
+            let (s, rg) = roller_32007(profile);
+            let c = RaceContact::new(Race::Cup, &s.geometry, &rg, &s.materials, 21).unwrap();
+            let theta = 0.02;
+            // The approach at which the big end starts to touch, by bisection.
+            let (mut lo, mut hi) = (-1e-3, 1e-3);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if c.touches(mid, theta) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            let mut last_p = 0.0;
+            let mut refused = 0;
+            for eps in [1e-8, 1e-7, 1e-6, 1e-5] {
+                let delta = hi + eps * theta;
+                let mut sl = Vec::new();
+                let e = c.eval(delta, theta, Some(&mut sl)).unwrap();
+                let length = e.extent_m[1] - e.extent_m[0];
+                let end = sl.last().unwrap();
+                let (law, _) = c.law(end.x_m).unwrap();
+                if law.load(end.intrusion_m, length).is_err() {
+                    refused += 1;
+                }
+                assert!(e.load_n > last_p, "{profile:?} {eps}: {} N", e.load_n);
+                if length <= 1e-6 {
+                    assert!(e.load_n <= 1e-3, "{profile:?} {eps}: {} N", e.load_n);
+                }
+                last_p = e.load_n;
+                let fd = |dd: f64, dt: f64| {
+                    let a = c.eval(delta + dd, theta + dt, None).unwrap();
+                    let b = c.eval(delta - dd, theta - dt, None).unwrap();
+                    [
+                        (a.load_n - b.load_n) / (2.0 * (dd + dt)),
+                        (a.moment_nm - b.moment_nm) / (2.0 * (dd + dt)),
+                    ]
+                };
+                let [pd, md] = fd(1e-4 * eps * theta, 0.0);
+                let [pt, mt] = fd(0.0, 1e-4 * eps);
+                let l = 0.5 * s.geometry.effective_length_m;
+                let scale_p = e.dload[0].abs().max(e.dload[1].abs() / l);
+                let scale_m = e.dmoment[0].abs().max(e.dmoment[1].abs() / l);
+                eprintln!(
+                    "{profile:?} L {length:.3e} m: P {:.3e} N, dP/dΔ {pd:.6e} vs {:.6e}, dP/dθ {pt:.6e} vs {:.6e}",
+                    e.load_n, e.dload[0], e.dload[1]
+                );
+                for (got, want, scale, what) in [
+                    (pd, e.dload[0], scale_p, "dP/dΔ"),
+                    (pt / l, e.dload[1] / l, scale_p, "dP/dθ"),
+                    (md, e.dmoment[0], scale_m, "dM/dΔ"),
+                    (mt / l, e.dmoment[1] / l, scale_m, "dM/dθ"),
+                ] {
+                    assert!(
+                        (got - want).abs() < 1e-5 * scale,
+                        "{profile:?} L {length:.3e}: {what} {got:.8e} vs {want:.8e}"
+                    );
+                }
+            }
+            assert!(refused >= 2, "{profile:?}: {refused}");
+        }
+    }
+
     /// An aligned crowned roller's load is centred but for the taper: the slices toward
     /// the big end are wider (larger dₓ, larger b, smaller logarithm in eq. 62) and carry a
     /// little more, a centre offset M/P of 1.6 µm here, under 1e-3 of the half length.
