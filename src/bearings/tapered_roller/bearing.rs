@@ -641,7 +641,11 @@ impl Bearing {
                 moment_nm: moment,
                 limit_nm: limit,
                 limit_tilt_rad: good.rotation_rad[1],
-                bound: if moment < limit { "at least" } else { "at most" },
+                bound: if moment < limit {
+                    "at least"
+                } else {
+                    "at most"
+                },
                 reason,
             }
         };
@@ -654,7 +658,11 @@ impl Bearing {
             }
             let theta = good.rotation_rad[1];
             let kc = condensed(&good.stiffness);
-            let mut target = if kc > 0.0 { theta - g_good / kc } else { f64::NAN };
+            let mut target = if kc > 0.0 {
+                theta - g_good / kc
+            } else {
+                f64::NAN
+            };
             match bracket {
                 Some((lo, hi)) => {
                     if !(target > lo && target < hi) {
@@ -695,10 +703,6 @@ impl Bearing {
                     }
                     Err(e) => {
                         last_err = Some(e);
-                        if let Some((lo, hi)) = bracket.as_mut() {
-                            // Inside a bracket a failed tilt cannot be stepped around.
-                            let _ = (lo, hi);
-                        }
                         step *= 0.5;
                         if step.abs() < 1e-9 {
                             break;

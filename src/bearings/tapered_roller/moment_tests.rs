@@ -507,8 +507,8 @@ fn diag_moment_against_held_tilt() {
 /// moments the tilt rises strictly and each step's change equals ΔM over the condensed
 /// tilt stiffness (trapezoid of the two ends' analytic K_c) to 10 % (the trapezoid's
 /// error from the curvature of θ(M): measured below 4 %, steepest at the small
-/// moments). Before session 12: 95–128 N·m failed with roller and slice errors
-/// (crowned: 117–128 in part, log: below ~101), and the moments below them too.
+/// moments). Before session 12 roller and slice errors ended the crowned deck below 129
+/// N·m (in part from 117, entirely below) and the log deck below about 101 N·m.
 #[test]
 fn moment_sweep_0_to_270() {
     use super::bearing::{BearingError, MAX_TILT_RAD};
@@ -564,7 +564,11 @@ fn moment_sweep_0_to_270() {
             let predicted = (m1 - m0) * 0.5 * (1.0 / k0 + 1.0 / k1);
             let rel = ((t1 - t0) / predicted - 1.0).abs();
             worst = worst.max(rel);
-            assert!(rel < 0.10, "log {log}: {m0}→{m1} N·m: Δθ {:.4e} vs {predicted:.4e}", t1 - t0);
+            assert!(
+                rel < 0.10,
+                "log {log}: {m0}→{m1} N·m: Δθ {:.4e} vs {predicted:.4e}",
+                t1 - t0
+            );
         }
         eprintln!(
             "log {log}: {} solved from {lowest_solved} N·m (θy {:.4e}), {} refused, limits {:?}, worst step mismatch {worst:.3e}",

@@ -191,7 +191,10 @@ fn continuation_solves_rollers_at_an_edge_contacts_onset() {
         let m = model_32007(log);
         let split = m.k * delta / (1.0 + m.k);
         let cold = m.newton_solve(delta, theta, true, Vector2::new(split, 0.5 * theta));
-        assert!(cold.is_err(), "log {log} ({delta}, {theta}): cold start converged");
+        assert!(
+            cold.is_err(),
+            "log {log} ({delta}, {theta}): cold start converged"
+        );
         let r = m
             .solve(delta, theta, None)
             .unwrap_or_else(|e| panic!("log {log} ({delta}, {theta}): {e}"));
