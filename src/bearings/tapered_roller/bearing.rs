@@ -397,13 +397,38 @@ impl Bearing {
             });
         }
         let rot = op.misalignment_rad;
-        // Start: every roller at the pure-thrust share P₁ = F_a/(n sin β), its Δ by a few
-        // Newton steps on one roller.
+        let mut x = if start.is_some() {
+            Vector3::zeros()
+        } else {
+            self.thrust_estimate()
+        };
+        if let Some(st) = start {
+            x = Vector3::new(
+                st.displacement_m[0],
+                st.displacement_m[1],
+                st.displacement_m[2],
+            );
+        }
+        let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
+        let tolerance = self.input.solver.force_tolerance * f_ref;
+        if let Some(moment) = op.applied_moment_nm() {
+            let theta0 = start.map_or(0.0, |st| st.rotation_rad[1]);
+            return self.solve_with_moment(start, x, theta0, moment, tolerance);
+        }
+        self.solve_held(start, x, rot, tolerance)
+    }
+
+    /// The cold start of the ring: every roller at the pure-thrust share
+    /// P₁ = F_a/(n sin β), its Δ by a few Newton steps on one roller, as the axial
+    /// displacement (δx = δy = 0).
+    fn thrust_estimate(&self) -> Vector3<f64> {
+        let op = &self.input.operating;
+        let beta = self.input.geometry.cup_angle_rad;
+        let z = self.input.geometry.roller_count as f64;
         let target = op.axial_load_n / (z * beta.sin());
         let mut delta = 1e-6;
         let mut warm = None;
-        let estimate_steps = if start.is_some() { 0 } else { 40 };
-        for _ in 0..estimate_steps {
+        for _ in 0..40 {
             // A failure here only ends the estimate: the equilibrium names the roller.
             let Ok(r) = self.model.solve(delta, 0.0, warm) else {
                 break;
@@ -421,21 +446,7 @@ impl Bearing {
         }
         let clearance = 0.5 * self.input.geometry.diametral_clearance_m() * beta.cos();
         let d0 = op.initial_displacement_m;
-        let mut x = Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2]);
-        if let Some(st) = start {
-            x = Vector3::new(
-                st.displacement_m[0],
-                st.displacement_m[1],
-                st.displacement_m[2],
-            );
-        }
-        let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
-        let tolerance = self.input.solver.force_tolerance * f_ref;
-        if let Some(moment) = op.applied_moment_nm() {
-            let theta0 = start.map_or(0.0, |st| st.rotation_rad[1]);
-            return self.solve_with_moment(start, x, theta0, moment, tolerance);
-        }
-        self.solve_held(start, x, rot, tolerance)
+        Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2])
     }
 
     /// The equilibrium with the rotations held at `rot` (the three forces solved, eqs.
@@ -619,13 +630,7 @@ impl Bearing {
         let theta_start = theta0.clamp(-MAX_TILT_RAD, MAX_TILT_RAD);
         let first = self
             .solve_held(start, x3, rot(theta_start), tolerance)
-            .or_else(|e| {
-                if theta_start != 0.0 {
-                    self.solve_held(None, x3, rot(0.0), tolerance)
-                } else {
-                    Err(e)
-                }
-            });
+            .or_else(|_| self.solve_held(None, self.thrust_estimate(), rot(0.0), tolerance));
         let mut good = match first {
             Ok(sol) => sol,
             Err(e) => return Err(newton_error.unwrap_or(e)),
