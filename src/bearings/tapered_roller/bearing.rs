@@ -37,6 +37,13 @@ use crate::numerics::newton::{Backtracking, Newton, NewtonSystem, Termination, T
 /// 5×5 matrix (x, y, z, θx, θy).
 pub type Matrix5 = SMatrix<f64, 5, 5>;
 
+/// The largest tilt |θy| (rad) the moment solve gives: the ring kinematics (eqs. 40, 42)
+/// are linear in the rotations, and the second-order term they drop, R_m·θ²/2 in the
+/// approach, is 1.25e-3·R_m at 0.05 rad (8.8 µm on the 32007-X-XL, R_m ≈ 7 mm: as large as
+/// its roller approaches), so tilts beyond it are outside the model. A moment that would
+/// need more is refused ([`BearingError::MomentBeyondModel`]).
+pub const MAX_TILT_RAD: f64 = 0.05;
+
 /// Why a bearing has no equilibrium.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum BearingError {
@@ -103,6 +110,23 @@ pub enum BearingError {
         low_nm: f64,
         /// Its upper end, N·m.
         high_nm: f64,
+    },
+    /// The applied moment lies outside the moments this model balances: the outer
+    /// solve on θy (see [`Bearing::solve_with_moment`]) reached the end of its range
+    /// (|θy| = [`MAX_TILT_RAD`], a fold K_c ≤ 0, or a tilt where the held-tilt solve has
+    /// no equilibrium) with the moment still beyond reach.
+    #[error("applied moment {moment_nm:.4e} N·m about y is beyond what this model balances: the cone's moment M′y at a held tilt is monotone in the tilt (K_c = dM′y/dθy > 0) and reaches {limit_nm:.4e} N·m at θy = {limit_tilt_rad:.4e} rad, where {reason}; give operating.moment {bound} {limit_nm:.4e} N·m, or hold the tilt (operating.moment = \"held\", operating.misalignment)")]
+    MomentBeyondModel {
+        /// M_y applied, N·m.
+        moment_nm: f64,
+        /// The moment at the end of the reachable range, N·m.
+        limit_nm: f64,
+        /// The tilt there, rad.
+        limit_tilt_rad: f64,
+        /// "at least" (the limit is the smallest moment reached) or "at most".
+        bound: &'static str,
+        /// Why the range ends there.
+        reason: String,
     },
     /// A roller has no equilibrium.
     #[error("roller {index} (azimuth {azimuth_deg:.2}°): {source}")]
@@ -373,13 +397,38 @@ impl Bearing {
             });
         }
         let rot = op.misalignment_rad;
-        // Start: every roller at the pure-thrust share P₁ = F_a/(n sin β), its Δ by a few
-        // Newton steps on one roller.
+        let mut x = if start.is_some() {
+            Vector3::zeros()
+        } else {
+            self.thrust_estimate()
+        };
+        if let Some(st) = start {
+            x = Vector3::new(
+                st.displacement_m[0],
+                st.displacement_m[1],
+                st.displacement_m[2],
+            );
+        }
+        let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
+        let tolerance = self.input.solver.force_tolerance * f_ref;
+        if let Some(moment) = op.applied_moment_nm() {
+            let theta0 = start.map_or(0.0, |st| st.rotation_rad[1]);
+            return self.solve_with_moment(start, x, theta0, moment, tolerance);
+        }
+        self.solve_held(start, x, rot, tolerance)
+    }
+
+    /// The cold start of the ring: every roller at the pure-thrust share
+    /// P₁ = F_a/(n sin β), its Δ by a few Newton steps on one roller, as the axial
+    /// displacement (δx = δy = 0).
+    fn thrust_estimate(&self) -> Vector3<f64> {
+        let op = &self.input.operating;
+        let beta = self.input.geometry.cup_angle_rad;
+        let z = self.input.geometry.roller_count as f64;
         let target = op.axial_load_n / (z * beta.sin());
         let mut delta = 1e-6;
         let mut warm = None;
-        let estimate_steps = if start.is_some() { 0 } else { 40 };
-        for _ in 0..estimate_steps {
+        for _ in 0..40 {
             // A failure here only ends the estimate: the equilibrium names the roller.
             let Ok(r) = self.model.solve(delta, 0.0, warm) else {
                 break;
@@ -397,20 +446,19 @@ impl Bearing {
         }
         let clearance = 0.5 * self.input.geometry.diametral_clearance_m() * beta.cos();
         let d0 = op.initial_displacement_m;
-        let mut x = Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2]);
-        if let Some(st) = start {
-            x = Vector3::new(
-                st.displacement_m[0],
-                st.displacement_m[1],
-                st.displacement_m[2],
-            );
-        }
-        let f_ref = op.axial_load_n.abs().max(op.radial_load_n.abs());
-        let tolerance = self.input.solver.force_tolerance * f_ref;
-        if let Some(moment) = op.applied_moment_nm() {
-            let theta0 = start.map_or(0.0, |st| st.rotation_rad[1]);
-            return self.solve_with_moment(start, x, theta0, moment, tolerance);
-        }
+        Vector3::new(0.0, 0.0, (delta + clearance) / beta.sin() - d0[2])
+    }
+
+    /// The equilibrium with the rotations held at `rot` (the three forces solved, eqs.
+    /// 97–106), started from ring position `x` and `start`'s rollers.
+    fn solve_held(
+        &self,
+        start: Option<&BearingSolution>,
+        mut x: Vector3<f64>,
+        rot: [f64; 2],
+        tolerance: f64,
+    ) -> Result<BearingSolution, BearingError> {
+        let op = &self.input.operating;
         let mut sys = RingSystem {
             bearing: self,
             rot,
@@ -519,27 +567,181 @@ impl Bearing {
             Termination::Stalled { residual, .. } => residual <= 10.0 * tolerance,
             _ => false,
         };
-        if !ok {
-            // See `RingSystem::evaluate`: a roller failure is reported only when it
-            // stopped the iteration.
-            if let Some(e) = sys.error {
-                return Err(e);
-            }
-            return Err(BearingError::NotConverged {
-                termination: res.termination,
-                tolerance_n: tolerance,
+        if ok && (x[3] / rm).abs() <= MAX_TILT_RAD {
+            let st = res.eval.state;
+            return Ok(BearingSolution {
+                displacement_m: [x[0], x[1], x[2]],
+                rotation_rad: [op.misalignment_rad[0], x[3] / rm],
+                reaction: st.reaction,
+                residual_n: res.eval.r.amax(),
+                rollers: st.rollers,
+                stiffness: st.k,
+                iterations: res.termination.iterations(),
+                unique_rollers: st.unique,
             });
         }
-        let st = res.eval.state;
-        Ok(BearingSolution {
-            displacement_m: [x[0], x[1], x[2]],
-            rotation_rad: [op.misalignment_rad[0], x[3] / rm],
-            reaction: st.reaction,
-            residual_n: res.eval.r.amax(),
-            rollers: st.rollers,
-            stiffness: st.k,
-            iterations: res.termination.iterations(),
-            unique_rollers: st.unique,
+        // The four-unknown Newton failed (or left the tilt range): the bracketed 1-D solve
+        // on θy over held-tilt solves decides, and names the limit if there is one.
+        let newton_error = if ok {
+            None
+        } else if let Some(e) = sys.error {
+            Some(e)
+        } else {
+            Some(BearingError::NotConverged {
+                termination: res.termination,
+                tolerance_n: tolerance,
+            })
+        };
+        self.solve_tilt_1d(start, x3, theta0, moment, tolerance, newton_error)
+    }
+
+    /// The equilibrium under an applied moment by a 1-D solve on the tilt θy (outer) with
+    /// the three forces solved at each held tilt (inner, [`Bearing::solve_held`], warm
+    /// started from the previous tilt's solution): g(θ) = M′y(θ) − M_y, g′ = K_c =
+    /// K_θθ − K_θx·K_xx⁻¹·K_xθ, the condensed tilt stiffness of the analytic K (eqs.
+    /// 107–120, forces held). Newton steps on g, safeguarded: before a sign change, a step
+    /// whose held solve fails is halved toward the last solved tilt; after one, the root is
+    /// bracketed and a step leaving the bracket is replaced by bisection. Converged when
+    /// |g|/R_m meets the bearing tolerance (the moment row's scaling of the 4-unknown
+    /// Newton), the forces meeting it by the inner solve. The tilt is kept within
+    /// ±[`MAX_TILT_RAD`]; a moment beyond the end of the solvable range (that bound, a fold
+    /// K_c ≤ 0, or a tilt whose held solve fails however short the step) is refused with
+    /// [`BearingError::MomentBeyondModel`], naming the moment reached there. `newton_error`
+    /// (the 4-unknown Newton's failure) is returned only if the first held solve fails.
+    fn solve_tilt_1d(
+        &self,
+        start: Option<&BearingSolution>,
+        x3: Vector3<f64>,
+        theta0: f64,
+        moment: f64,
+        tolerance: f64,
+        newton_error: Option<BearingError>,
+    ) -> Result<BearingSolution, BearingError> {
+        let op = &self.input.operating;
+        let rm = self.geometry.moment_radius_m;
+        let rot = |t: f64| [op.misalignment_rad[0], t];
+        let condensed = |k: &Matrix5| {
+            let a = k.fixed_view::<3, 3>(0, 0).into_owned();
+            let b = k.fixed_view::<3, 1>(0, 4).into_owned();
+            let c = k.fixed_view::<1, 3>(4, 0).into_owned();
+            a.try_inverse()
+                .map_or(f64::NAN, |inv| k[(4, 4)] - (c * inv * b)[(0, 0)])
+        };
+        let theta_start = theta0.clamp(-MAX_TILT_RAD, MAX_TILT_RAD);
+        let first = self
+            .solve_held(start, x3, rot(theta_start), tolerance)
+            .or_else(|_| self.solve_held(None, self.thrust_estimate(), rot(0.0), tolerance));
+        let mut good = match first {
+            Ok(sol) => sol,
+            Err(e) => return Err(newton_error.unwrap_or(e)),
+        };
+        let g_of = |sol: &BearingSolution| sol.reaction[4] - moment;
+        let mut g_good = g_of(&good);
+        // The bracket [lo, hi] on θ (g(lo) < 0 < g(hi)) once found.
+        let mut bracket: Option<(f64, f64)> = None;
+        let mut inner = good.iterations;
+        let beyond = |good: &BearingSolution, reason: String| {
+            let limit = good.reaction[4];
+            BearingError::MomentBeyondModel {
+                moment_nm: moment,
+                limit_nm: limit,
+                limit_tilt_rad: good.rotation_rad[1],
+                bound: if moment < limit {
+                    "at least"
+                } else {
+                    "at most"
+                },
+                reason,
+            }
+        };
+        for _ in 0..200 {
+            if (g_good / rm).abs() <= tolerance {
+                return Ok(BearingSolution {
+                    iterations: inner,
+                    ..good
+                });
+            }
+            let theta = good.rotation_rad[1];
+            let kc = condensed(&good.stiffness);
+            let mut target = if kc > 0.0 {
+                theta - g_good / kc
+            } else {
+                f64::NAN
+            };
+            match bracket {
+                Some((lo, hi)) => {
+                    if !(target > lo && target < hi) {
+                        target = 0.5 * (lo + hi);
+                    }
+                }
+                None => {
+                    if !(kc > 0.0) {
+                        return Err(beyond(
+                            &good,
+                            format!("the condensed tilt stiffness is {kc:.4e} N·m/rad (a fold: the cone tips)"),
+                        ));
+                    }
+                    let at_bound = theta.abs() >= MAX_TILT_RAD;
+                    target = target.clamp(-MAX_TILT_RAD, MAX_TILT_RAD);
+                    if at_bound && (target - theta).abs() < f64::EPSILON {
+                        return Err(beyond(
+                            &good,
+                            format!("the tilt reaches its bound |θy| = {MAX_TILT_RAD} rad (the ring kinematics, eqs. 40 and 42, are linear in the rotations)"),
+                        ));
+                    }
+                }
+            }
+            // Held solve at the target, halving the step toward the solved tilt on failure.
+            let mut step = target - theta;
+            let mut last_err = None;
+            let mut next = None;
+            for _ in 0..40 {
+                let x = Vector3::new(
+                    good.displacement_m[0],
+                    good.displacement_m[1],
+                    good.displacement_m[2],
+                );
+                match self.solve_held(Some(&good), x, rot(theta + step), tolerance) {
+                    Ok(sol) => {
+                        next = Some(sol);
+                        break;
+                    }
+                    Err(e) => {
+                        last_err = Some(e);
+                        step *= 0.5;
+                        if step.abs() < 1e-9 {
+                            break;
+                        }
+                    }
+                }
+            }
+            let Some(sol) = next else {
+                let reason = last_err.map_or_else(String::new, |e| e.to_string());
+                return Err(beyond(
+                    &good,
+                    format!("the held-tilt equilibrium a step further has none: {reason}"),
+                ));
+            };
+            inner += sol.iterations;
+            let g = g_of(&sol);
+            let t = sol.rotation_rad[1];
+            bracket = match bracket {
+                Some((lo, hi)) => Some(if g < 0.0 { (t, hi) } else { (lo, t) }),
+                None if g.signum() != g_good.signum() => {
+                    Some(if g < 0.0 { (t, theta) } else { (theta, t) })
+                }
+                None => None,
+            };
+            good = sol;
+            g_good = g;
+        }
+        Err(BearingError::NotConverged {
+            termination: Termination::NotConverged {
+                iterations: 200,
+                residual: (g_good / rm).abs(),
+                tolerance,
+            },
+            tolerance_n: tolerance,
         })
     }
 

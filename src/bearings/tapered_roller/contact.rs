@@ -47,12 +47,33 @@
 //! each end of the extent is found by Newton from the roller's end inward, which converges
 //! monotonically; its derivatives follow from the implicit function theorem,
 //! ∂X/∂(Δ, θ) = −(1, X/cos²θ)/∂ₓi, and a clamped end has none.
+//!
+//! **Short contacts** (issue 29 session 12): Lundberg's law (eq. 62) is inverted with the
+//! contact's length L in its logarithm, and has an inverse only while the approach is
+//! below δ_max(L) = c·L²·e^(2(K−½))/(8·wf) (eq. 71's L/(2b) = 0.25; wf = c·dₓ(1 + Cγ),
+//! K = 1.8864). A contact that has only just started at a tilted roller's end is
+//! short while its slices' intrusions are not (i ≈ slope·L against δ_max ∝ L²): the
+//! 32007 roller at 0.01 rad has no inverse below L ≈ 30 µm, so every roller whose ring
+//! state put its end contact there (1e-18 m, at round-off, up to micrometres) failed, and
+//! with it the bearing's solve at many tilts. The length in the logarithm is therefore
+//! floored at L_f = 2·L_v(i), L_v(i) = e^(−(K−½))·√(8·wf·i/c) the length whose δ_max is
+//! the slice's intrusion i (so the slice sits at a quarter of the floored length's
+//! δ_max, on the valid branch, L/(2b) ≈ 0.5), and capped at the effective length (a
+//! roller too short for the law everywhere stays a typed error). The floor changes
+//! nothing where the law held with a margin of 4 in approach; where it acts, the contact
+//! is point-like rather than a strip, which the slice model does not describe, and its
+//! load is small: 2.5e-5 N at L = 0.3 µm and 0.25 N at 26 µm
+//! on the 32007 cup (test `short_edge_contacts_are_floored_not_refused`). With the floor
+//! active ∂p/∂L = 0 and ∂p/∂δ, ∂p/∂wf gain the floor's ∂L_f/∂i = L_f/(2i),
+//! ∂L_f/∂wf = L_f/(2wf).
 
 use thiserror::Error;
 
 use super::geometry::RollerGeometry;
 use super::input::{Geometry, Materials, RollerProfile};
-use crate::physics::contact::lundberg::{compliance, LundbergError, LundbergSlice, SliceLoad};
+use crate::physics::contact::lundberg::{
+    compliance, LundbergError, LundbergSlice, SliceLoad, LUNDBERG_CONSTANT,
+};
 
 /// Which race.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -148,6 +169,21 @@ fn log_right_end(delta: f64, k: f64, a: f64, u_star: f64) -> (f64, bool) {
         }
     }
     (u, false)
+}
+
+/// How many times the shortest length at which Lundberg's strip still carries approach
+/// δ the logarithm's length is floored at (module notes, "Short contacts").
+pub const SHORT_CONTACT_FACTOR: f64 = 2.0;
+
+/// The floor of the length in Lundberg's logarithm at slice approach `delta_m` (m):
+/// [`SHORT_CONTACT_FACTOR`] times L_v(δ) = e^(−(K − ½))·√(8·wf·δ/c), the length whose
+/// largest approach (eq. 71's validity limit L/(2b) = e^(−(K − ½)) ≈ 0.25) is δ
+/// (module notes, "Short contacts").
+#[inline]
+fn short_contact_length(law: &LundbergSlice, delta_m: f64) -> f64 {
+    SHORT_CONTACT_FACTOR
+        * (-(LUNDBERG_CONSTANT - 0.5)).exp()
+        * (8.0 * law.width_factor * delta_m / law.compliance).sqrt()
 }
 
 /// The roller profile seen from one race.
@@ -487,10 +523,24 @@ impl RaceContact {
             let mut stress = 0.0;
             let mut sl = SliceLoad::default();
             if i > 0.0 {
-                sl = law.load(i, length).map_err(fail)?;
-                let (p, pd, pl) = (sl.load_n_m, sl.dload_dapproach, sl.dload_dlength);
+                // The length in Lundberg's logarithm, floored for a contact too short to be
+                // a strip at this approach (module notes, "Short contacts").
+                let floor = short_contact_length(&law, i);
+                let l_e = 2.0 * self.profile.half_le;
+                let l_log = length.max(floor.min(l_e));
+                sl = law.load(i, l_log).map_err(fail)?;
+                let (p, mut pd, mut pl) = (sl.load_n_m, sl.dload_dapproach, sl.dload_dlength);
                 // ∂p/∂(b² factor) at fixed δ, L: δ has −c·p/(2·wf) per unit wf.
-                let pw = pd * law.compliance * p / (2.0 * law.width_factor);
+                let mut pw = pd * law.compliance * p / (2.0 * law.width_factor);
+                if l_log > length {
+                    if floor < l_e {
+                        // The floor ∝ √(wf·δ): its share of ∂p/∂δ and ∂p/∂wf.
+                        pd += pl * floor / (2.0 * i);
+                        pw += pl * floor / (2.0 * law.width_factor);
+                    }
+                    // Floored (or at the effective length): none of ∂p/∂L.
+                    pl = 0.0;
+                }
                 let along = pd * di_dx + pw * dwf;
                 let d0 = pd + pl * dl[0] + along * dxk[0];
                 let d1 = pd * di_dtheta + pl * dl[1] + along * dxk[1];
@@ -803,6 +853,81 @@ mod tests {
                 "{load}: {rc} {rl}"
             );
             assert_eq!((edge_c, edge_l), edges, "{load}");
+        }
+    }
+
+    /// Issue 29 session 12, short contacts: the 32007 roller (crowned, and logarithmic)
+    /// tilted 0.02 rad on the cup, its big end just touching. At contact lengths from
+    /// about 1e-8 to 1e-4 m Lundberg's law at the contact's own length has no inverse for
+    /// the end slice (L/(2b) ≤ 0.25: the error these evaluations ended in before), while
+    /// the contact with the floored logarithm evaluates: its load is positive, rises with
+    /// the approach and vanishes with the length (P ≤ 1e-3 N at L ≤ 1e-6 m), and its
+    /// derivatives equal central differences to 1e-5 of the row's scale (steps 1e-4 of the
+    /// approach past the onset: the round-off of Δ ≈ 1e-5 m over those steps is ~1e-6).
+    /// Fails if the floor is removed (error) or its derivative terms are (differences).
+    #[test]
+    fn short_edge_contacts_are_floored_not_refused() {
+        for profile in [RollerProfile::Crowned, RollerProfile::Logarithmic] {
+            let (s, rg) = roller_32007(profile);
+            let c = RaceContact::new(Race::Cup, &s.geometry, &rg, &s.materials, 21).unwrap();
+            let theta = 0.02;
+            // The approach at which the big end starts to touch, by bisection.
+            let (mut lo, mut hi) = (-1e-3, 1e-3);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if c.touches(mid, theta) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            let mut last_p = 0.0;
+            let mut refused = 0;
+            for eps in [1e-8, 1e-7, 1e-6, 1e-5] {
+                let delta = hi + eps * theta;
+                let mut sl = Vec::new();
+                let e = c.eval(delta, theta, Some(&mut sl)).unwrap();
+                let length = e.extent_m[1] - e.extent_m[0];
+                let end = sl.last().unwrap();
+                let (law, _) = c.law(end.x_m).unwrap();
+                if law.load(end.intrusion_m, length).is_err() {
+                    refused += 1;
+                }
+                assert!(e.load_n > last_p, "{profile:?} {eps}: {} N", e.load_n);
+                if length <= 1e-6 {
+                    assert!(e.load_n <= 1e-3, "{profile:?} {eps}: {} N", e.load_n);
+                }
+                last_p = e.load_n;
+                let fd = |dd: f64, dt: f64| {
+                    let a = c.eval(delta + dd, theta + dt, None).unwrap();
+                    let b = c.eval(delta - dd, theta - dt, None).unwrap();
+                    [
+                        (a.load_n - b.load_n) / (2.0 * (dd + dt)),
+                        (a.moment_nm - b.moment_nm) / (2.0 * (dd + dt)),
+                    ]
+                };
+                let [pd, md] = fd(1e-4 * eps * theta, 0.0);
+                let [pt, mt] = fd(0.0, 1e-4 * eps);
+                let l = 0.5 * s.geometry.effective_length_m;
+                let scale_p = e.dload[0].abs().max(e.dload[1].abs() / l);
+                let scale_m = e.dmoment[0].abs().max(e.dmoment[1].abs() / l);
+                eprintln!(
+                    "{profile:?} L {length:.3e} m: P {:.3e} N, dP/dΔ {pd:.6e} vs {:.6e}, dP/dθ {pt:.6e} vs {:.6e}",
+                    e.load_n, e.dload[0], e.dload[1]
+                );
+                for (got, want, scale, what) in [
+                    (pd, e.dload[0], scale_p, "dP/dΔ"),
+                    (pt / l, e.dload[1] / l, scale_p, "dP/dθ"),
+                    (md, e.dmoment[0], scale_m, "dM/dΔ"),
+                    (mt / l, e.dmoment[1] / l, scale_m, "dM/dθ"),
+                ] {
+                    assert!(
+                        (got - want).abs() < 1e-5 * scale,
+                        "{profile:?} L {length:.3e}: {what} {got:.8e} vs {want:.8e}"
+                    );
+                }
+            }
+            assert!(refused >= 2, "{profile:?}: {refused}");
         }
     }
 

@@ -475,7 +475,68 @@ impl RollerModel {
                 return Ok(r);
             }
         }
-        self.newton_solve(delta, big_theta, true, Vector2::new(cold.0, cold.1))
+        match self.newton_solve(delta, big_theta, true, Vector2::new(cold.0, cold.1)) {
+            Ok(r) => Ok(r),
+            Err(e) => self.continuation(delta, big_theta, e),
+        }
+    }
+
+    /// The both-races equilibrium at (Δ, Θ) by continuation, when Newton from the warm
+    /// and cold starts failed: from the aligned roller at an approach Δ_a > 0 (Δ itself,
+    /// or |Δ| when a tilt alone brings a ring that backs off, Δ ≤ 0, into contact; no edge
+    /// contact's onset on the way in) along the straight path (Δ_a + s(Δ − Δ_a), s·Θ),
+    /// s: 0 → 1. The contact condition (the largest intrusion positive, roughly
+    /// Δ + c·|Θ| > 0 with the sign of Θ fixed along the path) holds at both ends and so
+    /// along it. Each step starts on the previous solution's tangent (its exact
+    /// ∂(Δ₁, θ₁)/∂(Δ, Θ) of eqs. 88–91). A step that fails is halved (a bracket on s: the
+    /// last solved s below, the failed one above), one that converges is doubled; where
+    /// an edge contact starts or stops along the path (the slice law's kink, eqs. 52–53)
+    /// the steps shrink until the predicted start lies where Newton converges. The answer
+    /// is an ordinary converged Newton solve at s = 1 (same tolerance, same acceptance);
+    /// when a step falls below 1e-9 of the path, `first`, the direct solve's error, is
+    /// returned (typed, with its numbers).
+    fn continuation(
+        &self,
+        delta: f64,
+        big_theta: f64,
+        first: RollerError,
+    ) -> Result<RollerSolution, RollerError> {
+        let delta_a = if delta > 0.0 { delta } else { delta.abs() };
+        if !(delta_a > 0.0) || (big_theta == 0.0 && delta_a == delta) {
+            return Err(first);
+        }
+        let split = self.k * delta_a / (1.0 + self.k);
+        let Ok(mut at) = self.newton_solve(delta_a, 0.0, true, Vector2::new(split, 0.0)) else {
+            return Err(first);
+        };
+        let (mut s, mut h) = (0.0_f64, 0.25_f64);
+        let mut solves = 0;
+        while s < 1.0 {
+            if h < 1e-9 || solves > 400 {
+                return Err(first);
+            }
+            let next = (s + h).min(1.0);
+            let (dd, dt) = ((next - s) * (delta - delta_a), (next - s) * big_theta);
+            let start = Vector2::new(
+                at.delta1_m + at.du[0][0] * dd + at.du[0][1] * dt,
+                at.theta1_rad + at.du[1][0] * dd + at.du[1][1] * dt,
+            );
+            solves += 1;
+            let (d_next, t_next) = if next == 1.0 {
+                (delta, big_theta)
+            } else {
+                (delta_a + next * (delta - delta_a), next * big_theta)
+            };
+            match self.newton_solve(d_next, t_next, true, start) {
+                Ok(r) => {
+                    at = r;
+                    s = next;
+                    h *= 2.0;
+                }
+                Err(_) => h *= 0.5,
+            }
+        }
+        Ok(at)
     }
 
     /// The roller's equilibrium at ring approach `delta` (m, eq. 40) and misalignment

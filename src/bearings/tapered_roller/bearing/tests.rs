@@ -905,3 +905,59 @@ fn non_convergence_is_worded() {
         "{m}"
     );
 }
+
+/// Issue 29 session 12: the 1-D solve on θy over held-tilt solves (the moment solve's
+/// fallback, `Bearing::solve_tilt_1d`) reaches the same equilibrium as the four-unknown
+/// Newton wherever both converge: the 32007 deck (crowned and logarithmic) at 267.2, 150,
+/// 120 and 100 N·m, started from θy = 0. Tilts agree to 1e-9 rad (each meets the moment
+/// tolerance 1e-9·F_r·R_m ≈ 2e-7 N·m; over K_c ≥ 2e3 N·m/rad that is 1e-10 rad), the
+/// displacements to 1e-9 of the axial one; the 1-D answer balances F_x, F_z (10× the
+/// bearing tolerance, the held solve's acceptance) and M_y (the tolerance at R_m). Fails
+/// if the bracket, the condensed K_c or the held solve's warm start were wrong (no
+/// convergence, or a different root).
+#[test]
+fn tilt_1d_solve_matches_the_four_unknown_newton() {
+    use crate::bearings::tapered_roller::deck::SCHEMA;
+    use crate::deck::form::Form;
+    for log in [false, true] {
+        for m in [267.2, 150.0, 120.0, 100.0] {
+            let deck = include_str!("../../../../decks/trb_32007.toml").replacen(
+                "moment = 267.2",
+                &format!("moment = {m:?}"),
+                1,
+            );
+            let mut input: TaperedInput = Form::parse(&deck, "trb_32007.toml", &SCHEMA)
+                .unwrap_or_else(|e| panic!("{e}"))
+                .value;
+            if log {
+                input.geometry.profile = super::super::input::RollerProfile::Logarithmic;
+            }
+            let b = Bearing::new(&input).unwrap();
+            let newton = b.solve().unwrap();
+            let op = &input.operating;
+            let tol = input.solver.force_tolerance * op.axial_load_n.max(op.radial_load_n);
+            let z0 = Vector3::new(0.0, 0.0, newton.displacement_m[2]);
+            let one_d = b.solve_tilt_1d(None, z0, 0.0, m, tol, None).unwrap();
+            let rm = b.geometry.moment_radius_m;
+            let (t_n, t_1) = (newton.rotation_rad[1], one_d.rotation_rad[1]);
+            assert!(
+                (t_n - t_1).abs() <= 1e-9,
+                "log {log} {m}: θy {t_n} vs {t_1}"
+            );
+            for i in 0..3 {
+                let d = (newton.displacement_m[i] - one_d.displacement_m[i]).abs();
+                assert!(
+                    d <= 1e-9 * newton.displacement_m[2].abs(),
+                    "log {log} {m}: δ{i} {d}"
+                );
+            }
+            assert!((one_d.reaction[0] - op.radial_load_n).abs() <= 10.0 * tol);
+            assert!((one_d.reaction[2] - op.axial_load_n).abs() <= 10.0 * tol);
+            assert!((one_d.reaction[4] - m).abs() / rm <= tol, "log {log} {m}");
+            eprintln!(
+                "log {log} {m} N·m: θy {t_1:.6e} rad (Newton {t_n:.6e}), 1-D inner iterations {}",
+                one_d.iterations
+            );
+        }
+    }
+}

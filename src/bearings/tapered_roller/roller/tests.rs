@@ -153,3 +153,66 @@ fn cone_contact_switch_is_continuous() {
     assert!((a.cup.load_n - b.cup.load_n).abs() < 1e-6 * dy.centrifugal_force_n);
     assert!(b.cone.load_n < 1e-6 * dy.centrifugal_force_n);
 }
+
+/// The rollers of decks/trb_32007.toml (crowned, or with the logarithmic profile), as the
+/// bearing builds them.
+fn model_32007(log: bool) -> RollerModel {
+    use crate::bearings::tapered_roller::bearing::Bearing;
+    use crate::bearings::tapered_roller::deck::SCHEMA;
+    use crate::deck::form::Form;
+    let deck = include_str!("../../../../decks/trb_32007.toml");
+    let mut input: TaperedInput = Form::parse(deck, "trb_32007.toml", &SCHEMA)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .value;
+    if log {
+        input.geometry.profile = crate::bearings::tapered_roller::input::RollerProfile::Logarithmic;
+    }
+    Bearing::new(&input).unwrap().model
+}
+
+/// Issue 29 session 12: rollers of the 32007 deck at ring states where an edge contact
+/// starts or stops (taken from the held-tilt scan `diag_moment_against_held_tilt`, whose
+/// solves failed there in session 11; barely touching rollers at the load zone's edge,
+/// 1e-6 to 0.3 N, their contact starting near an end of the roller): Newton from the cold
+/// start alone does not converge (it stalls or runs out of iterations), and the
+/// continuation from the aligned roller (`RollerModel::continuation`) reaches an
+/// equilibrium that is an ordinary converged Newton solve: the force residual meets the
+/// roller tolerance (or 100× it after a stall, the acceptance of `newton_solve`), the
+/// cone carries load, and re-solving from the answer returns it to 1e-12 of the load.
+#[test]
+fn continuation_solves_rollers_at_an_edge_contacts_onset() {
+    for (log, delta, theta) in [
+        (false, -1.6948e-5, -4.280e-3),
+        (false, -4.0398e-5, 1.011e-2),
+        (false, -5.1295e-5, 1.284e-2),
+        (true, -7.6005e-5, 1.427e-2),
+        (true, -8.3869e-5, 1.617e-2),
+    ] {
+        let m = model_32007(log);
+        let split = m.k * delta / (1.0 + m.k);
+        let cold = m.newton_solve(delta, theta, true, Vector2::new(split, 0.5 * theta));
+        assert!(
+            cold.is_err(),
+            "log {log} ({delta}, {theta}): cold start converged"
+        );
+        let r = m
+            .solve(delta, theta, None)
+            .unwrap_or_else(|e| panic!("log {log} ({delta}, {theta}): {e}"));
+        assert_eq!(r.state, RollerState::BothRaces);
+        assert!(r.cone.load_n > 0.0 && r.cup.load_n > 0.0);
+        assert!(
+            r.residual_n <= 100.0 * m.tolerance,
+            "log {log}: residual {} N (tolerance {} N)",
+            r.residual_n,
+            m.tolerance
+        );
+        let again = m
+            .newton_solve(delta, theta, true, Vector2::new(r.delta1_m, r.theta1_rad))
+            .unwrap();
+        assert!((again.cup.load_n - r.cup.load_n).abs() <= 1e-12 * r.cup.load_n.max(1.0));
+        eprintln!(
+            "log {log} Δ {delta:.4e} Θ {theta:.3e}: P₁ {:.4} N, P₂ {:.4} N, edge {}/{}",
+            r.cup.load_n, r.cone.load_n, r.cup.edge_loaded, r.cone.edge_loaded
+        );
+    }
+}
