@@ -145,9 +145,15 @@
 //! # Cage speed
 //! `cage.speed = "measured"`: the deck's speed, the imbalance reported. `"computed"` (the
 //! shipped deck's): the root of the cage's torque balance (imbalance 0) from the statics'
-//! §7 estimate, by secant steps until it is bracketed (within the rings' speeds), then
-//! Illinois, with every roller's spin solved inside each evaluation, warm-started from
-//! the previous cage speeds' spins ([`LossKinematics::balanced_cage`]); accepted within
+//! §7 estimate, by secant steps until it is accepted or bracketed (within the rings'
+//! speeds), then Illinois, with every roller's spin solved inside each evaluation,
+//! warm-started from the previous cage speeds' spins ([`LossKinematics::balanced_cage`]).
+//! An evaluation computes only what the balance reads afresh (srb12): each roller's
+//! raceway sums come from its spin solve's last moment evaluation (the breakdown's own
+//! numbers, not integrated again), the guide ring's search starts from the previous cage
+//! speeds' ring speed (its tolerance unchanged), and every lamina's ATZ kink search
+//! starts from its previous root (`lamina_friction_and_slope_hinted`); the breakdown at
+//! the accepted speed is the last evaluation's. Accepted within
 //! [`CAGE_TORQUE_TOLERANCE`] of its scale or the torque's resolution
 //! ([`LossBreakdown::cage_torque_noise_nm`]), or, where the torque steps across the balance
 //! (ATZ laminae at their rolling points), once the speed is bracketed to
@@ -164,11 +170,15 @@
 // Every public item of this physics module must say what it computes and in which units.
 #![warn(missing_docs)]
 
+use std::cell::Cell;
+
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::input::{CageLand as DeckCageLand, CageSpeedSource, DoubleRowInput, Traction};
-use super::skew::{roller_skew, roller_skew_at, RollerSkew, SkewGeometry};
+use super::skew::{
+    roller_skew, roller_skew_at, unskewed_from_contacts, RollerSkew, SkewGeometry, SkewedContact,
+};
 use super::statics::DoubleRowAnalysis;
 use crate::bearings::spherical_roller::load_distribution::DynamicSpeeds;
 use crate::physics::heat::{viscous_drag_power_w, MIN_RELATIVE_SPEED_RAD_S};
@@ -178,14 +188,14 @@ use crate::physics::lubrication::cage_film::{
     PocketGeometry,
 };
 use crate::physics::lubrication::guide_ring::{
-    guide_ring_balance_with_land, CageLandOnRing, EndContactInput, GuideRingError,
-    GuideRingGeometry, GuideRingSolution,
+    guide_ring_balance_near, CageLandOnRing, EndContactInput, GuideRingError, GuideRingGeometry,
+    GuideRingSolution, RingSpeedGuess,
 };
 use crate::physics::lubrication::lamina_friction::{
-    lamina_friction_and_slope_prepared, FilmRheology, LaminaFrictionError, LaminaSlice,
+    lamina_friction_and_slope_hinted, FilmRheology, LaminaFrictionError, LaminaSlice,
     RacewayTractionLaw,
 };
-use crate::physics::lubrication::traction::HertzStrip;
+use crate::physics::lubrication::traction::{HertzStrip, KinkHint};
 use crate::physics::lubrication::walther::WaltherError;
 
 /// Which surface pilots the cage.
@@ -569,6 +579,19 @@ fn finite(name: &'static str, value: f64) -> Result<f64, LossError> {
 /// fault; [`LossError::BadInput`] for a non-finite speed, a non-positive pitch diameter or
 /// density with drag on, or a guide-ring land without a guide ring.
 pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
+    breakdown_with(inputs, None, None)
+}
+
+/// [`loss_breakdown`] with each roller's skew given when the caller has it (`skews`, in
+/// roller order: the cage balance's unskewed rollers from their spin solves,
+/// [`unskewed_from_contacts`], the numbers [`roller_skews`] would integrate again) and the
+/// guide ring's search started from `ring` (a previous cage speed's ring speed,
+/// `guide_ring::guide_ring_balance_near`: the same tolerance, fewer residuals).
+fn breakdown_with(
+    inputs: &LossInputs,
+    skews: Option<Vec<RollerSkew>>,
+    ring: Option<RingSpeedGuess>,
+) -> Result<LossBreakdown, LossError> {
     let wi = finite("inner_speed_rad_s", inputs.inner_speed_rad_s)?;
     let wo = finite("outer_speed_rad_s", inputs.outer_speed_rad_s)?;
     let wc = finite("cage_speed_rad_s", inputs.cage_speed_rad_s)?;
@@ -592,7 +615,10 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
     }
 
     // Each roller's skew first (`skew.rs`): it sets the raceway tractions and the end loads.
-    let skews = roller_skews(inputs)?;
+    let skews = match skews {
+        Some(s) if s.len() == inputs.rollers.len() => s,
+        _ => roller_skews(inputs)?,
+    };
     let skew_end = skew_end_loads(inputs, &skews);
     let end_offset = inputs.guide_ring.as_ref().map_or(0.0, |g| {
         g.roller_end_radius_m - 0.5 * inputs.pocket.length_m
@@ -624,13 +650,14 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
                 radial_clearance_m: land.radial_clearance_m,
                 cage_speed_rad_s: wc,
             });
-            Some(guide_ring_balance_with_land(
+            Some(guide_ring_balance_near(
                 g,
                 lub.law,
                 rh,
                 wi,
                 &ends,
                 on_ring.as_ref(),
+                ring,
             )?)
         }
         None => None,
@@ -781,6 +808,18 @@ pub fn loss_breakdown(inputs: &LossInputs) -> Result<LossBreakdown, LossError> {
     })
 }
 
+/// The skew geometry of a roller without skew input ([`roller_skews`]' ψ_max = 0): the
+/// end contact's offset per unit skew r_e − L/2 from the guide ring (none without one).
+fn unskewed_geometry(inputs: &LossInputs) -> SkewGeometry {
+    SkewGeometry {
+        max_skew_rad: 0.0,
+        end_offset_per_rad_m: inputs
+            .guide_ring
+            .as_ref()
+            .map(|g| g.roller_end_radius_m - 0.5 * inputs.pocket.length_m),
+    }
+}
+
 /// Each roller at its skew (`skew.rs`): ψ_max = c_p/L from the pocket, the end contact's
 /// offset per unit skew r_e − L/2 from the guide ring (none without one). A roller without
 /// skew input is evaluated at ψ = 0 (its laminae as given).
@@ -802,10 +841,7 @@ fn roller_skews(inputs: &LossInputs) -> Result<Vec<RollerSkew>, LossError> {
             .as_ref()
             .map(|g| g.roller_end_radius_m - 0.5 * l),
     };
-    let off = SkewGeometry {
-        max_skew_rad: 0.0,
-        ..on
-    };
+    let off = unskewed_geometry(inputs);
     let none: &[f64] = &[];
     inputs
         .rollers
@@ -961,6 +997,10 @@ struct LaminaKinematics {
     /// The unit tangent of the contact in the meridian plane (normal to the lamina's
     /// contact normal, along +a): the direction of an axial traction (`kellstrom`).
     tangent: [f64; 2],
+    /// What the ATZ kink search found at this lamina's last evaluation: the next starts
+    /// there (`lamina_friction_and_slope_hinted`; the spin and cage balances evaluate each
+    /// lamina ~20–60 times at nearby sliding speeds).
+    hint: Cell<KinkHint>,
 }
 
 /// One roller's contacts with the speeds factored out.
@@ -1017,7 +1057,24 @@ fn spin_moment(
     wc: f64,
     spin: f64,
 ) -> Result<(f64, f64, f64), LossError> {
-    spin_moment_and_slope(r, roller, common, wc, spin, false).map(|(m, sc, c, _)| (m, sc, c))
+    spin_moment_and_slope(r, roller, common, wc, spin, false).map(|e| (e.moment, e.scale, e.circ))
+}
+
+/// One evaluation of a roller's moment balance ([`spin_moment_and_slope`]).
+struct SpinEval {
+    /// M(ω_s), N·m.
+    moment: f64,
+    /// Σ|F·m| + |pocket moment|, N·m.
+    scale: f64,
+    /// Σ F over both raceways, N.
+    circ: f64,
+    /// dM/dω_s, N·m·s (0 unless asked for).
+    slope: f64,
+    /// Each raceway's sums at this spin exactly as the breakdown's unskewed roller forms
+    /// them (`skew::contacts_at` at ψ = 0: the same laminae, forces and order of addition,
+    /// so the same numbers bit for bit): the cage balance reads them instead of
+    /// integrating every lamina once more per cage speed.
+    contacts: [SkewedContact; 2],
 }
 
 #[cfg(test)]
@@ -1050,28 +1107,37 @@ fn spin_moment_and_slope(
     wc: f64,
     spin: f64,
     want_slope: bool,
-) -> Result<(f64, f64, f64, f64), LossError> {
+) -> Result<SpinEval, LossError> {
     let lub = &common.lubricant;
     let ring_w = [common.inner_speed_rad_s, common.outer_speed_rad_s];
     let (mut m, mut scale, mut circ, mut yaw) = (0.0, 0.0, 0.0, 0.0);
     let (mut dm, mut dcirc, mut dyaw) = (0.0, 0.0, 0.0);
-    // The law's constants once per moment, not per lamina (the same numbers, so the same
-    // answer bit for bit: `lamina_friction_and_slope_prepared`).
+    let mut contacts = [SkewedContact::default(); 2];
+    // The law's constants once per moment, not per lamina (the same numbers:
+    // `lamina_friction_and_slope_prepared`), and each lamina's kink search started from its
+    // last (`lamina_friction_and_slope_hinted`: the same force to round-off).
     let atz = lub.rheology.atz().prepared();
     #[cfg(test)]
     let mut laminae = 0usize;
     for (k, side) in r.sides.iter().enumerate() {
         let raceway = if k == 0 { "inner" } else { "outer" };
+        let c = &mut contacts[k];
         for (j, l) in side.iter().enumerate() {
             let s = slice_at(l, ring_w[k], wc, spin);
-            let (f, slope) =
-                lamina_friction_and_slope_prepared(lub.law, &lub.rheology, &atz, &s, want_slope)
-                    .map_err(|source| LossError::Lamina {
-                        roller,
-                        raceway,
-                        lamina: j,
-                        source,
-                    })?;
+            let (f, slope) = lamina_friction_and_slope_hinted(
+                lub.law,
+                &lub.rheology,
+                &atz,
+                &s,
+                want_slope,
+                &l.hint,
+            )
+            .map_err(|source| LossError::Lamina {
+                roller,
+                raceway,
+                lamina: j,
+                source,
+            })?;
             #[cfg(test)]
             {
                 laminae += 1;
@@ -1083,6 +1149,12 @@ fn spin_moment_and_slope(
             dm -= slope * l.spin_arm_m * l.spin_arm_m;
             dcirc -= slope * l.spin_arm_m;
             dyaw -= slope * l.spin_arm_m * s.axial_offset_m;
+            // `skew::contacts_at` at ψ = 0 (`skewed_lamina` with v_a = 0), term by term (its
+            // skew power and axial force stay 0).
+            c.rolling_power_w += f.power_w;
+            c.yaw_moment_nm += s.axial_offset_m * f.force_n;
+            c.circumferential_n += f.force_n;
+            c.flagged += usize::from(f.exceeds_newtonian_bound);
         }
     }
     #[cfg(test)]
@@ -1107,7 +1179,13 @@ fn spin_moment_and_slope(
         let mp_d = pocket(spin + d, circ + d * dcirc, yaw + d * dyaw)?;
         dm += (mp_d - mp) / d;
     }
-    Ok((m + mp, scale + mp.abs(), circ, dm))
+    Ok(SpinEval {
+        moment: m + mp,
+        scale: scale + mp.abs(),
+        circ,
+        slope: dm,
+        contacts,
+    })
 }
 
 /// The lamina at the given speeds: sliding v = ring_arm·(ω_ring − ω_c) − m·ω_s and the
@@ -1135,9 +1213,9 @@ fn slice_at(l: &LaminaKinematics, ring_w: f64, wc: f64, spin: f64) -> LaminaSlic
 /// M is then vertical to round-off (a lamina on the Newtonian branch exactly at its
 /// rolling point, slope η·e^{αp}·A/h·m² ~ 1e15 N·m·s and more), the root is known to
 /// that width, and the spread below says what it leaves in the traction.
-/// Returns (spin rad/s, residual N·m, scale N·m, spread N): the spread is the change of
-/// the roller's net circumferential traction across the final bracket when the bracket's
-/// width stopped the search, 0 when the residual did.
+/// Returns the [`SpinRoot`]: its spread is the change of the roller's net circumferential
+/// traction across the final bracket when the bracket's width stopped the search, 0 when
+/// the residual did; its contacts are the last evaluation's, at the returned spin.
 fn solve_spin(
     r: &RollerKinematics,
     roller: usize,
@@ -1145,16 +1223,24 @@ fn solve_spin(
     wc: f64,
     guess: f64,
     step: f64,
-) -> Result<(f64, f64, f64, f64), LossError> {
+) -> Result<SpinRoot, LossError> {
     #[cfg(test)]
     SPIN_COUNTS.with(|c| {
         let (a, b, n) = c.get();
         c.set((a + 1, b, n));
     });
     let eval = |s: f64| spin_moment_and_slope(r, roller, common, wc, s, true);
-    let (m0, sc0, c0, d0) = eval(guess)?;
+    let root = |s: f64, e: &SpinEval, spread: f64| SpinRoot {
+        spin_rad_s: s,
+        residual_nm: e.moment,
+        scale_nm: e.scale,
+        spread_n: spread,
+        contacts: Some(e.contacts),
+    };
+    let e0 = eval(guess)?;
+    let (m0, sc0, c0, d0) = (e0.moment, e0.scale, e0.circ, e0.slope);
     if m0.abs() <= SPIN_MOMENT_TOLERANCE * sc0 {
-        return Ok((guess, m0, sc0, 0.0));
+        return Ok(root(guess, &e0, 0.0));
     }
     // M falls with ω_s: a positive moment means the root lies above.
     let dir = if m0 > 0.0 { 1.0 } else { -1.0 };
@@ -1176,12 +1262,12 @@ fn solve_spin(
         } else {
             a + dir * h
         };
-        (fb, _, cb, db) = {
-            let (m, sc, c, d) = eval(b)?;
-            if m.abs() <= SPIN_MOMENT_TOLERANCE * sc {
-                return Ok((b, m, sc, 0.0));
+        (fb, cb, db) = {
+            let e = eval(b)?;
+            if e.moment.abs() <= SPIN_MOMENT_TOLERANCE * e.scale {
+                return Ok(root(b, &e, 0.0));
             }
-            (m, sc, c, d)
+            (e.moment, e.circ, e.slope)
         };
         if fb.signum() != m0.signum() {
             break;
@@ -1213,11 +1299,12 @@ fn solve_spin(
             0.5 * (a + b)
         };
         widths = [width, widths[0]];
-        let (m, sc, c, d) = eval(s)?;
+        let e = eval(s)?;
+        let (m, sc, c, d) = (e.moment, e.scale, e.circ, e.slope);
         fs = m;
         scale = sc;
         if m.abs() <= SPIN_MOMENT_TOLERANCE * sc {
-            return Ok((s, m, sc, 0.0));
+            return Ok(root(s, &e, 0.0));
         }
         if m.signum() == fb.signum() {
             b = s;
@@ -1229,12 +1316,8 @@ fn solve_spin(
             ca = c;
         }
         if (b - a).abs() <= 1e-12 * s.abs().max(1.0) {
-            return Ok((
-                s,
-                m,
-                sc,
-                (ca - cb).abs().max((c - ca).abs()).max((c - cb).abs()),
-            ));
+            let spread = (ca - cb).abs().max((c - ca).abs()).max((c - cb).abs());
+            return Ok(root(s, &e, spread));
         }
         (x, fx, dx) = (s, m, d);
     }
@@ -1247,6 +1330,21 @@ fn solve_spin(
     })
 }
 
+/// A spin root ([`solve_spin`]).
+struct SpinRoot {
+    /// ω_s, rad/s.
+    spin_rad_s: f64,
+    /// M(ω_s), N·m.
+    residual_nm: f64,
+    /// Σ|F·m| + |pocket moment| there, N·m.
+    scale_nm: f64,
+    /// The net traction's spread across the final bracket, N.
+    spread_n: f64,
+    /// Each raceway's sums at ω_s ([`SpinEval::contacts`]); `None` from a solver that does
+    /// not keep them (the tests' reference).
+    contacts: Option<[SkewedContact; 2]>,
+}
+
 /// The Illinois false position the Newton replaced, kept as the tests' reference.
 #[cfg(test)]
 fn solve_spin_illinois(
@@ -1256,11 +1354,18 @@ fn solve_spin_illinois(
     wc: f64,
     guess: f64,
     step: f64,
-) -> Result<(f64, f64, f64, f64), LossError> {
+) -> Result<SpinRoot, LossError> {
+    let root = |s: f64, m: f64, sc: f64, spread: f64| SpinRoot {
+        spin_rad_s: s,
+        residual_nm: m,
+        scale_nm: sc,
+        spread_n: spread,
+        contacts: None,
+    };
     let eval = |s: f64| spin_moment(r, roller, common, wc, s);
     let (m0, sc0, c0) = eval(guess)?;
     if m0.abs() <= SPIN_MOMENT_TOLERANCE * sc0 {
-        return Ok((guess, m0, sc0, 0.0));
+        return Ok(root(guess, m0, sc0, 0.0));
     }
     // M falls with ω_s: a positive moment means the root lies above.
     let dir = if m0 > 0.0 { 1.0 } else { -1.0 };
@@ -1303,10 +1408,10 @@ fn solve_spin_illinois(
         fs = m;
         scale = sc;
         if m.abs() <= SPIN_MOMENT_TOLERANCE * sc {
-            return Ok((s, m, sc, 0.0));
+            return Ok(root(s, m, sc, 0.0));
         }
         if (b - a).abs() <= 1e-12 * s.abs().max(1.0) {
-            return Ok((
+            return Ok(root(
                 s,
                 m,
                 sc,
@@ -1339,15 +1444,9 @@ fn solve_spin_illinois(
     })
 }
 
-/// A spin root finder's signature ([`solve_spin`]): (spin, residual, scale, spread).
-type SpinSolver = fn(
-    &RollerKinematics,
-    usize,
-    &LossInputs,
-    f64,
-    f64,
-    f64,
-) -> Result<(f64, f64, f64, f64), LossError>;
+/// A spin root finder's signature ([`solve_spin`]).
+type SpinSolver =
+    fn(&RollerKinematics, usize, &LossInputs, f64, f64, f64) -> Result<SpinRoot, LossError>;
 
 /// One roller's spin at a cage speed: the solved spin and its balance.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -1369,6 +1468,11 @@ pub struct RollerSpin {
     pub rolling_spin_inner_rad_s: Option<f64>,
     /// As `rolling_spin_inner_rad_s`, outer contact.
     pub rolling_spin_outer_rad_s: Option<f64>,
+    /// Each raceway's sums at this spin, as the breakdown's unskewed roller forms them
+    /// ([`SpinEval::contacts`]; all 0 for a roller with no loaded lamina): what the cage
+    /// balance reads per cage speed. `None` from a solver that does not keep them.
+    #[serde(skip)]
+    pub(super) contacts: Option<[SkewedContact; 2]>,
 }
 
 impl LossKinematics {
@@ -1448,6 +1552,7 @@ impl LossKinematics {
                         circumferential_spread_n: 0.0,
                         rolling_spin_inner_rad_s: ri,
                         rolling_spin_outer_rad_s: ro,
+                        contacts: Some([SkewedContact::default(); 2]),
                     });
                 }
                 let (g, step) = match (warm.and_then(|w| w.get(k)), ri, ro) {
@@ -1457,15 +1562,16 @@ impl LossKinematics {
                     (None, None, None) => (guess, 0.05 * guess.abs()),
                 };
                 let step = step.max(1e-9 * g.abs()).max(1e-12);
-                let (s, m, sc, spread) = solver(r, k, &self.common, wc, g, step)?;
+                let root = solver(r, k, &self.common, wc, g, step)?;
                 Ok(RollerSpin {
-                    spin_rad_s: s,
-                    residual_nm: m,
-                    scale_nm: sc,
+                    spin_rad_s: root.spin_rad_s,
+                    residual_nm: root.residual_nm,
+                    scale_nm: root.scale_nm,
                     balanced: true,
-                    circumferential_spread_n: spread,
+                    circumferential_spread_n: root.spread_n,
                     rolling_spin_inner_rad_s: ri,
                     rolling_spin_outer_rad_s: ro,
+                    contacts: root.contacts,
                 })
             })
             .collect()
@@ -1492,6 +1598,32 @@ impl LossKinematics {
     pub fn inputs_at(&self, wc: f64) -> Result<LossInputs, LossError> {
         let spins = self.spins_at(wc)?;
         Ok(self.inputs_with(wc, &spins))
+    }
+
+    /// The breakdown at cage speed `wc` with the rollers at `spins`: the unskewed rollers'
+    /// raceway sums from their spin solves ([`RollerSpin::contacts`], what the breakdown's
+    /// `roller_skews` would integrate once more; skewed rollers are searched by the
+    /// breakdown), the guide ring's search from `ring`.
+    ///
+    /// # Errors
+    /// As [`loss_breakdown`].
+    pub(super) fn breakdown_at(
+        &self,
+        wc: f64,
+        spins: &[RollerSpin],
+        ring: Option<RingSpeedGuess>,
+    ) -> Result<LossBreakdown, LossError> {
+        let inputs = self.inputs_with(wc, spins);
+        let skews = if self.with_skew {
+            None
+        } else {
+            let geometry = unskewed_geometry(&inputs);
+            spins
+                .iter()
+                .map(|x| x.contacts.map(|c| unskewed_from_contacts(&geometry, c)))
+                .collect::<Option<Vec<_>>>()
+        };
+        breakdown_with(&inputs, skews, ring)
     }
 
     /// The loss inputs at cage speed `wc` with the rollers at `spins`.
@@ -1538,10 +1670,13 @@ impl LossKinematics {
     /// forces follow the rollers' mean slip), so: secant steps from `start` (the first
     /// step 1e-3 of the speed toward the root's side), each pushed 20 % past the secant's
     /// root until T changes sign (kept between the rings' speeds), then the Illinois false
-    /// position on that bracket. Every evaluation re-solves each roller's spin, warm-started
-    /// from the previous two cage speeds' spins (linear extrapolation per roller, the first
-    /// bracket step half the extrapolated change): 2–4 moment evaluations per roller
-    /// instead of ~20 from a cold start.
+    /// position on that bracket (srb12: the plain secant step, and a plain first Newton
+    /// step in the spin solves, were tried and made the radial and axial cases slower,
+    /// 139 → 195 and 250 → 523 ms in `double_row_losses`). Every evaluation re-solves each
+    /// roller's spin, warm-started from the previous two cage speeds' spins (linear
+    /// extrapolation per roller, the first bracket step half the extrapolated change): 2–4
+    /// moment evaluations per roller instead of ~20 from a cold start; and the guide
+    /// ring's balance from the previous speeds' ring speeds ([`CageEvaluations`]).
     ///
     /// # Errors
     /// [`LossError::CageBracket`] when the imbalance keeps its sign up to the ring speeds,
@@ -1678,11 +1813,16 @@ struct CagePoint {
 /// (one previous speed: its spins, the first bracket step the spin's relative change at
 /// most, ω_s scaling with a ring's speed relative to the cage; two: linear extrapolation
 /// per roller, the step half the extrapolated change), 1–3 moment evaluations per roller
-/// instead of ~20 from a cold start.
+/// instead of ~20 from a cold start. Per cage speed only what the balance reads is
+/// computed afresh: the unskewed rollers' raceway sums come from their spin solves' last
+/// evaluations ([`RollerSpin::contacts`], the numbers the breakdown would integrate once
+/// more), and the guide ring's search starts from the previous speeds' ring speeds
+/// (extrapolated like the spins; the same 1e-13 tolerance,
+/// `guide_ring::RING_SPEED_TOLERANCE`); the rest of the breakdown is closed forms.
 struct CageEvaluations<'a> {
     k: &'a LossKinematics,
-    /// The last two (cage speed, spins), oldest first.
-    hist: Vec<(f64, Vec<f64>)>,
+    /// The last two (cage speed, spins, guide ring speed), oldest first.
+    hist: Vec<(f64, Vec<f64>, Option<f64>)>,
 }
 
 impl<'a> CageEvaluations<'a> {
@@ -1701,11 +1841,11 @@ impl<'a> CageEvaluations<'a> {
         );
         match self.hist.as_slice() {
             [] => None,
-            [(w1, s1)] => {
+            [(w1, s1, _)] => {
                 let rel = (w - w1).abs() / (w1 - wo).abs().min((wi - w1).abs()).max(1e-9);
                 Some(s1.iter().map(|&x| (x, x.abs() * rel.max(1e-6))).collect())
             }
-            [.., (w0, s0), (w1, s1)] => {
+            [.., (w0, s0, _), (w1, s1, _)] => {
                 let d = w1 - w0;
                 Some(
                     s0.iter()
@@ -1724,19 +1864,43 @@ impl<'a> CageEvaluations<'a> {
         }
     }
 
-    /// The balance at cage speed `w` (rad/s), the spins warm-started and remembered.
+    /// The guide ring's start at cage speed `w`: the last ring speed with a step of the
+    /// cage's change (one previous speed), or the two last extrapolated linearly in the cage
+    /// speed with half the extrapolated change as the step; `None` without a history.
+    fn ring_guess(&self, w: f64) -> Option<RingSpeedGuess> {
+        match self.hist.as_slice() {
+            [.., (w0, _, Some(g0)), (w1, _, Some(g1))] if w1 != w0 => {
+                let g = g1 + (g1 - g0) / (w1 - w0) * (w - w1);
+                Some(RingSpeedGuess {
+                    speed_rad_s: g,
+                    step_rad_s: (0.5 * (g - g1).abs()).max(1e-9 * g1.abs()),
+                })
+            }
+            [.., (w1, _, Some(g1))] => Some(RingSpeedGuess {
+                speed_rad_s: *g1,
+                step_rad_s: (w - w1).abs().max(1e-9 * g1.abs()),
+            }),
+            _ => None,
+        }
+    }
+
+    /// The balance at cage speed `w` (rad/s), the spins and the guide ring warm-started and
+    /// remembered.
     fn eval(&mut self, w: f64) -> Result<CagePoint, LossError> {
         #[cfg(test)]
         CAGE_TRACE.with(|t| t.borrow_mut().push(w));
         let warm = self.warm(w);
         let spins = self.k.spins_from(w, warm.as_deref())?;
+        let mut b = self.k.breakdown_at(w, &spins, self.ring_guess(w))?;
         if self.hist.len() == 2 {
             self.hist.remove(0);
         }
-        self.hist
-            .push((w, spins.iter().map(|x| x.spin_rad_s).collect()));
+        self.hist.push((
+            w,
+            spins.iter().map(|x| x.spin_rad_s).collect(),
+            b.guide_ring.as_ref().map(|g| g.speed_rad_s),
+        ));
         let dm = self.k.common.pitch_diameter_m;
-        let mut b = loss_breakdown(&self.k.inputs_with(w, &spins))?;
         b.cage_torque_noise_nm = spins
             .iter()
             .map(|x| x.circumferential_spread_n)
@@ -1886,6 +2050,7 @@ pub fn loss_kinematics(a: &DoubleRowAnalysis) -> Result<LossKinematics, LossErro
                                 [-t[0], -t[1]]
                             }
                         },
+                        hint: Cell::default(),
                     });
                 }
             }
@@ -2006,7 +2171,8 @@ fn losses_of(k: LossKinematics) -> Result<LossBreakdown, LossError> {
         b.cage_speed_computed = true;
         b
     } else {
-        loss_breakdown(&k.inputs_at(k.statics_cage_rad_s)?)?
+        let wc = k.statics_cage_rad_s;
+        k.breakdown_at(wc, &k.spins_at(wc)?, None)?
     };
     b.centrifugal_cage_speed_rpm = k.statics_cage_rad_s * RPM;
     Ok(b)

@@ -220,6 +220,53 @@ fn contacts_at(
     Ok(out)
 }
 
+/// The roller at skew ψ from its two raceways' sums at ψ (`contacts_at`): the axial
+/// traction's end load and the ring's yaw moment.
+fn skew_of_contacts(
+    geometry: &SkewGeometry,
+    psi: f64,
+    inner: SkewedContact,
+    outer: SkewedContact,
+) -> RollerSkew {
+    let n = inner.axial_n + outer.axial_n;
+    let (q, mg) = match geometry.end_offset_per_rad_m {
+        Some(off) => {
+            let q = (-n).max(0.0);
+            (q, -off * psi * q)
+        }
+        None => (0.0, 0.0),
+    };
+    RollerSkew {
+        skew_rad: psi,
+        unskewed_yaw_moment_nm: 0.0,
+        ring_moment_nm: mg,
+        pocket_moment_nm: inner.yaw_moment_nm + outer.yaw_moment_nm + mg,
+        axial_traction_n: n,
+        guide_ring_load_n: q,
+        inner,
+        outer,
+        pocket_limited: false,
+        evaluations: 0,
+    }
+}
+
+/// The roller at ψ = 0 as [`roller_skew`] reports it before (or without) a search.
+fn unskewed(mut r0: RollerSkew) -> RollerSkew {
+    r0.unskewed_yaw_moment_nm = r0.pocket_moment_nm;
+    r0.evaluations = 1;
+    r0
+}
+
+/// [`roller_skew`] of a roller that does not skew (`geometry.max_skew_rad` = 0, the
+/// default losses) from its raceways' sums at ψ = 0 (`contacts`, [inner, outer], each as
+/// `contacts_at` forms it: Σ F·v, Σ y·F, Σ F, the flagged count; no axial terms): the same
+/// [`RollerSkew`] bit for bit, without integrating the laminae again (the double-row cage
+/// balance has the sums from each roller's spin solve).
+pub fn unskewed_from_contacts(geometry: &SkewGeometry, contacts: [SkewedContact; 2]) -> RollerSkew {
+    let [inner, outer] = contacts;
+    unskewed(skew_of_contacts(geometry, 0.0, inner, outer))
+}
+
 /// The skew of one roller (module notes): `laminae` = [inner, outer] with their
 /// circumferential sliding, `roller_speeds` the roller surface's circumferential speed ω_s·m
 /// at each lamina (m/s, same lengths; a missing entry counts as 0).
@@ -235,31 +282,10 @@ pub fn roller_skew(
 ) -> Result<RollerSkew, SkewLaminaError> {
     let eval = |psi: f64| -> Result<RollerSkew, SkewLaminaError> {
         let [inner, outer] = contacts_at(law, rheology, laminae, roller_speeds, psi)?;
-        let n = inner.axial_n + outer.axial_n;
-        let (q, mg) = match geometry.end_offset_per_rad_m {
-            Some(off) => {
-                let q = (-n).max(0.0);
-                (q, -off * psi * q)
-            }
-            None => (0.0, 0.0),
-        };
-        Ok(RollerSkew {
-            skew_rad: psi,
-            unskewed_yaw_moment_nm: 0.0,
-            ring_moment_nm: mg,
-            pocket_moment_nm: inner.yaw_moment_nm + outer.yaw_moment_nm + mg,
-            axial_traction_n: n,
-            guide_ring_load_n: q,
-            inner,
-            outer,
-            pocket_limited: false,
-            evaluations: 0,
-        })
+        Ok(skew_of_contacts(geometry, psi, inner, outer))
     };
-    let mut r0 = eval(0.0)?;
+    let r0 = unskewed(eval(0.0)?);
     let m0 = r0.pocket_moment_nm;
-    r0.unskewed_yaw_moment_nm = m0;
-    r0.evaluations = 1;
     let psi_max = geometry.max_skew_rad;
     if m0 == 0.0 || !(psi_max.is_finite() && psi_max > 0.0) {
         return Ok(r0);

@@ -43,12 +43,13 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::physics::contact::point::PointContact;
 use crate::physics::contact::point::{CurvatureSum, HertzMethod, HertzPointContact};
 use crate::physics::heat::{cage_rail_friction_force_n, HeatError};
 use crate::physics::lubrication::cage_film::land_torque_on_cage_nm;
 use crate::physics::lubrication::film_point::PointFilmInputs;
 use crate::physics::lubrication::lamina_friction::{FilmRheology, RacewayTractionLaw};
-use crate::physics::lubrication::traction::{HertzStrip, TractionModel};
+use crate::physics::lubrication::traction::{HertzStrip, PreparedTraction, TractionModel};
 
 /// 8-point Gauss–Legendre on [0, π/2] for the strips of a circle: nodes θ and weights
 /// (already scaled by π/4), from the [−1, 1] rule.
@@ -84,13 +85,47 @@ pub fn circular_contact_traction_n(
     sliding_m_s: f64,
     film_m: f64,
 ) -> f64 {
+    circular_traction(
+        &CircleRule::new(model),
+        radius_m,
+        peak_pressure_pa,
+        sliding_m_s,
+        film_m,
+    )
+}
+
+/// The circle's strip rule with what does not depend on the contact: the law prepared
+/// ([`TractionModel::prepared`]) and the nodes' cos θ with their weights, computed once per
+/// guide-ring balance instead of once per end contact and ring speed (the same numbers, so
+/// [`circular_contact_traction_n`] bit for bit).
+struct CircleRule {
+    law: PreparedTraction,
+    /// (cos θ, weight) per node of [`gl8_quarter`].
+    nodes: [(f64, f64); 8],
+}
+
+impl CircleRule {
+    fn new(model: &TractionModel) -> Self {
+        CircleRule {
+            law: model.prepared(),
+            nodes: gl8_quarter().map(|(theta, w)| (theta.cos(), w)),
+        }
+    }
+}
+
+fn circular_traction(
+    rule: &CircleRule,
+    radius_m: f64,
+    peak_pressure_pa: f64,
+    sliding_m_s: f64,
+    film_m: f64,
+) -> f64 {
     if !(radius_m > 0.0 && peak_pressure_pa > 0.0) || sliding_m_s == 0.0 {
         return 0.0;
     }
     let a = radius_m;
     let mut sum = 0.0;
-    for (theta, w) in gl8_quarter() {
-        let c = theta.cos();
+    for &(c, w) in &rule.nodes {
         let b = a * c;
         // Strip of unit width with peak p₀·cos θ: q = π·b·p/2 per metre of width.
         let strip = HertzStrip {
@@ -98,7 +133,10 @@ pub fn circular_contact_traction_n(
             half_width_m: b,
             width_m: 1.0,
         };
-        let f = model.lamina_traction(&strip, sliding_m_s, film_m).force_n;
+        let f = rule
+            .law
+            .lamina_traction(&strip, sliding_m_s, film_m)
+            .force_n;
         sum += w * f * a * c; // dy = a·cos θ dθ
     }
     2.0 * sum
@@ -330,6 +368,43 @@ pub fn end_contact(
     input: &EndContactInput,
     ring_speed_rad_s: f64,
 ) -> Result<EndContact, GuideRingError> {
+    let rule = CircleRule::new(&rheology.atz());
+    end_contact_in(
+        geometry,
+        hertz,
+        law,
+        rheology,
+        &rule,
+        None,
+        input,
+        ring_speed_rad_s,
+    )
+}
+
+/// The Hertz circle of an end contact under its load (`hertz.solve(Q)`): it does not
+/// depend on the ring speed, so a balance solves it once per roller.
+fn end_circle(hertz: &HertzPointContact, load_n: f64) -> Result<PointContact, GuideRingError> {
+    hertz.solve(load_n).map_err(|_| GuideRingError::BadInput {
+        name: "guide_ring_load_n",
+        value: load_n,
+        allowed: "a load the Hertz circle accepts",
+    })
+}
+
+/// [`end_contact`] with the strip rule prepared and, for a loaded end, its Hertz circle
+/// solved by the caller (`circle`, [`end_circle`] of the input's load; `None`: solved
+/// here). The same arithmetic, so the same answer bit for bit.
+#[allow(clippy::too_many_arguments)]
+fn end_contact_in(
+    geometry: &GuideRingGeometry,
+    hertz: &HertzPointContact,
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    rule: &CircleRule,
+    circle: Option<&PointContact>,
+    input: &EndContactInput,
+    ring_speed_rad_s: f64,
+) -> Result<EndContact, GuideRingError> {
     let q = input.load_n;
     if !(q.is_finite() && q >= 0.0) {
         return Err(GuideRingError::BadInput {
@@ -361,11 +436,10 @@ pub fn end_contact(
             ..EndContact::default()
         });
     }
-    let c = hertz.solve(q).map_err(|_| GuideRingError::BadInput {
-        name: "guide_ring_load_n",
-        value: q,
-        allowed: "a load the Hertz circle accepts",
-    })?;
+    let c = match circle {
+        Some(c) => *c,
+        None => end_circle(hertz, q)?,
+    };
     let a = c.semi_major_m;
     let p0 = c.max_pressure_pa;
     let u_e = 0.5 * (u_ring + u_roller);
@@ -386,9 +460,7 @@ pub fn end_contact(
         0.0
     } else {
         match law {
-            RacewayTractionLaw::Atz => {
-                circular_contact_traction_n(&rheology.atz(), a, p0, speed, film)
-            }
+            RacewayTractionLaw::Atz => circular_traction(rule, a, p0, speed, film),
             RacewayTractionLaw::NewtonianEq3 => {
                 if film <= 0.0 {
                     return Err(GuideRingError::NoFilm { sliding_m_s: speed });
@@ -471,6 +543,54 @@ pub fn guide_ring_balance_with_land(
     rollers: &[EndContactInput],
     land: Option<&CageLandOnRing>,
 ) -> Result<GuideRingSolution, GuideRingError> {
+    guide_ring_balance_near(
+        geometry,
+        law,
+        rheology,
+        inner_speed_rad_s,
+        rollers,
+        land,
+        None,
+    )
+}
+
+/// Where [`guide_ring_balance_near`] starts: a guess of the ring speed and the first
+/// bracketing step, rad/s (a previous, nearby balance's speed: the double-row cage
+/// balance's last iterates, `double_row_spherical::losses`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RingSpeedGuess {
+    /// The guess, rad/s (clamped into the balance's bracket).
+    pub speed_rad_s: f64,
+    /// The first step from it toward the root, rad/s (doubled until the residual changes
+    /// sign; at least 1e-12 of the bracket's speed scale).
+    pub step_rad_s: f64,
+}
+
+/// The ring speed's tolerance: the search stops once the root is bracketed to this
+/// fraction of the bracket's speed scale max(|ω_lo|, |ω_hi|) (or the residual is 0).
+pub const RING_SPEED_TOLERANCE: f64 = 1e-13;
+
+/// [`guide_ring_balance_with_land`] from a guess (`near`): the residual G(ω_g) is evaluated
+/// at the guess and then at steps toward its root (doubling) until it changes sign, inside
+/// the balance's bracket [ω_lo, ω_hi] (module notes), and the Illinois search closes that
+/// bracket to the same [`RING_SPEED_TOLERANCE`]; a guess whose search reaches the bracket's
+/// end without a sign change falls back to the bracket itself. Two to four residuals
+/// instead of the full bracket's ten or more when the guess is within a step of the root.
+/// `None`: the full bracket (the answer of [`guide_ring_balance_with_land`]). The Hertz
+/// circle of each loaded end and the strip rule are solved once per call (neither depends
+/// on the ring speed).
+///
+/// # Errors
+/// As [`guide_ring_balance_with_land`].
+pub fn guide_ring_balance_near(
+    geometry: &GuideRingGeometry,
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    inner_speed_rad_s: f64,
+    rollers: &[EndContactInput],
+    land: Option<&CageLandOnRing>,
+    near: Option<RingSpeedGuess>,
+) -> Result<GuideRingSolution, GuideRingError> {
     let hertz = end_contact_model(geometry)?;
     let eta = rheology.viscosity_pa_s;
     if !(eta.is_finite() && eta >= 0.0) {
@@ -516,34 +636,61 @@ pub fn guide_ring_balance_with_land(
         lo = lo.min(c.cage_speed_rad_s);
         hi = hi.max(c.cage_speed_rad_s);
     }
+    let rule = CircleRule::new(&rheology.atz());
+    // A loaded end's circle once (an unusable load is left to the contact, which reports
+    // it where it always did).
+    let circles: Vec<Option<PointContact>> = rollers
+        .iter()
+        .map(|k| {
+            (k.load_n.is_finite() && k.load_n > 0.0)
+                .then(|| end_circle(&hertz, k.load_n).ok())
+                .flatten()
+        })
+        .collect();
+    let contact = |k: &EndContactInput, c: &Option<PointContact>, w: f64| {
+        end_contact_in(geometry, &hertz, law, rheology, &rule, c.as_ref(), k, w)
+    };
     let land_torque = |w: f64| -> Result<f64, GuideRingError> {
         land.map_or(Ok(0.0), |c| c.torque_on_ring_nm(eta, w))
     };
     let residual = |w: f64| -> Result<f64, GuideRingError> {
         let mut t = geometry.bore_torque_nm(eta, w, inner_speed_rad_s)? + land_torque(w)?;
-        for k in rollers {
-            t -= end_contact(geometry, &hertz, law, rheology, k, w)?.force_on_roller_n * r;
+        for (k, c) in rollers.iter().zip(&circles) {
+            t -= contact(k, c, w)?.force_on_roller_n * r;
         }
         Ok(t)
     };
-    let (g_lo, g_hi) = (residual(lo)?, residual(hi)?);
-    let speed = if g_lo == 0.0 || hi == lo {
-        lo
-    } else if g_hi == 0.0 {
-        hi
-    } else if g_lo > 0.0 && g_hi < 0.0 {
-        illinois(&residual, (lo, g_lo), (hi, g_hi))?
-    } else {
-        return Err(GuideRingError::NoBalance {
-            lo_rad_s: lo,
-            hi_rad_s: hi,
-            g_lo_nm: g_lo,
-            g_hi_nm: g_hi,
-        });
+    let scale = lo.abs().max(hi.abs()).max(1e-9);
+    let full = || -> Result<f64, GuideRingError> {
+        let (g_lo, g_hi) = (residual(lo)?, residual(hi)?);
+        if g_lo == 0.0 || hi == lo {
+            Ok(lo)
+        } else if g_hi == 0.0 {
+            Ok(hi)
+        } else if g_lo > 0.0 && g_hi < 0.0 {
+            illinois(&residual, (lo, g_lo), (hi, g_hi), scale)
+        } else {
+            Err(GuideRingError::NoBalance {
+                lo_rad_s: lo,
+                hi_rad_s: hi,
+                g_lo_nm: g_lo,
+                g_hi_nm: g_hi,
+            })
+        }
+    };
+    let speed = match near {
+        Some(g) if hi > lo && g.speed_rad_s.is_finite() && g.step_rad_s.is_finite() => {
+            match near_root(&residual, g, (lo, hi), scale)? {
+                Some(x) => x,
+                None => full()?,
+            }
+        }
+        _ => full()?,
     };
     let contacts = rollers
         .iter()
-        .map(|k| end_contact(geometry, &hertz, law, rheology, k, speed))
+        .zip(&circles)
+        .map(|(k, c)| contact(k, c, speed))
         .collect::<Result<Vec<_>, _>>()?;
     let bore_torque_nm = geometry.bore_torque_nm(eta, speed, inner_speed_rad_s)?;
     let land_torque_nm = land_torque(speed)?;
@@ -564,15 +711,51 @@ pub fn guide_ring_balance_with_land(
     })
 }
 
-/// Illinois regula falsi on a bracket with g(lo) > 0 > g(hi); stops when the bracket is
-/// below 1e-13 of the speed scale or the residual is 0.
+/// The ring's root from a guess ([`guide_ring_balance_near`]): G falls with ω_g (every
+/// torque pushes the ring toward its bracket), so G > 0 means the root lies above. Steps
+/// from the guess toward it, doubling, inside [lo, hi]; `None` when a step reaches the
+/// bracket's end without a sign change (the caller then searches the whole bracket).
+fn near_root(
+    g: &dyn Fn(f64) -> Result<f64, GuideRingError>,
+    guess: RingSpeedGuess,
+    (lo, hi): (f64, f64),
+    scale: f64,
+) -> Result<Option<f64>, GuideRingError> {
+    let x0 = guess.speed_rad_s.clamp(lo, hi);
+    let f0 = g(x0)?;
+    if f0 == 0.0 {
+        return Ok(Some(x0));
+    }
+    let dir = if f0 > 0.0 { 1.0 } else { -1.0 };
+    let mut h = guess.step_rad_s.abs().max(1e-12 * scale);
+    let (mut a, mut fa) = (x0, f0);
+    for _ in 0..60 {
+        if (dir > 0.0 && a >= hi) || (dir < 0.0 && a <= lo) {
+            return Ok(None);
+        }
+        let b = (a + dir * h).clamp(lo, hi);
+        let fb = g(b)?;
+        if fb == 0.0 {
+            return Ok(Some(b));
+        }
+        if (fb > 0.0) != (fa > 0.0) {
+            return illinois(g, (a, fa), (b, fb), scale).map(Some);
+        }
+        (a, fa) = (b, fb);
+        h *= 2.0;
+    }
+    Ok(None)
+}
+
+/// Illinois regula falsi on a bracket with g(a)·g(b) < 0; stops when the bracket is
+/// below [`RING_SPEED_TOLERANCE`] of the speed scale `scale` or the residual is 0.
 fn illinois(
     g: &dyn Fn(f64) -> Result<f64, GuideRingError>,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),
+    scale: f64,
 ) -> Result<f64, GuideRingError> {
     let (lo0, hi0, g_lo0, g_hi0) = (a, b, fa, fb);
-    let scale = a.abs().max(b.abs()).max(1e-9);
     let mut side = 0i8;
     for _ in 0..200 {
         let x = (a * fb - b * fa) / (fb - fa);
@@ -582,7 +765,7 @@ fn illinois(
             0.5 * (a + b)
         };
         let fx = g(x)?;
-        if fx == 0.0 || (b - a).abs() < 1e-13 * scale {
+        if fx == 0.0 || (b - a).abs() < RING_SPEED_TOLERANCE * scale {
             return Ok(x);
         }
         if (fx > 0.0) == (fa > 0.0) {
@@ -774,6 +957,89 @@ mod tests {
             .map(|c| c.force_on_roller_n * c.sliding_speed_m_s)
             .sum();
         assert!((by_hand - s.ends_power_w).abs() < 1e-12 * s.ends_power_w);
+    }
+
+    /// A balance started from a guess (`guide_ring_balance_near`, srb12: the double-row
+    /// cage balance's warm start) finds the full bracket's ring speed to its tolerance
+    /// (both are bracketed to 1e-13 of the speed scale: agreement to 2e-13 relative; the
+    /// end forces themselves can be steep in ω_g, so they are checked bit for bit against
+    /// the public `end_contact` at the found speed), from guesses below, above and at the root,
+    /// with steps smaller and larger than the distance, inside and clamped at the bracket's
+    /// ends; with and without the cage's land on the ring.
+    #[test]
+    fn balance_from_a_guess_is_the_bracketed_balance() {
+        let (wi, wc) = (400.0, 160.0);
+        let loaded: Vec<_> = (0..13)
+            .map(|k| EndContactInput {
+                load_n: if k % 3 == 0 {
+                    0.0
+                } else {
+                    50.0 + 10.0 * k as f64
+                },
+                roller_end_speed_m_s: 0.05,
+                orbital_speed_rad_s: wc,
+                radial_sliding_m_s: 0.0,
+            })
+            .collect();
+        let land = CageLandOnRing {
+            radius_m: 0.033,
+            width_m: 0.004,
+            radial_clearance_m: 2e-4,
+            cage_speed_rad_s: wc,
+        };
+        for on_ring in [None, Some(&land)] {
+            let full = guide_ring_balance_with_land(
+                &ring(),
+                RacewayTractionLaw::Atz,
+                &oil(),
+                wi,
+                &loaded,
+                on_ring,
+            )
+            .expect("balance");
+            let w = full.speed_rad_s;
+            for (guess, step) in [
+                (w, 1e-3),
+                (w - 5.0, 0.01),
+                (w + 5.0, 20.0),
+                (w * (1.0 + 1e-9), 1e-12),
+                (0.0, 1.0),
+                (1e4, 1.0),
+            ] {
+                let near = guide_ring_balance_near(
+                    &ring(),
+                    RacewayTractionLaw::Atz,
+                    &oil(),
+                    wi,
+                    &loaded,
+                    on_ring,
+                    Some(RingSpeedGuess {
+                        speed_rad_s: guess,
+                        step_rad_s: step,
+                    }),
+                )
+                .expect("balance");
+                assert!(
+                    (near.speed_rad_s - w).abs() <= 2e-13 * wi,
+                    "guess {guess}: {} vs {w}",
+                    near.speed_rad_s
+                );
+                // The hoisted circle and strip rule are the public end contact's numbers.
+                let h = end_contact_model(&ring()).expect("model");
+                for (c, k) in near.contacts.iter().zip(&loaded) {
+                    let by_hand = end_contact(
+                        &ring(),
+                        &h,
+                        RacewayTractionLaw::Atz,
+                        &oil(),
+                        k,
+                        near.speed_rad_s,
+                    )
+                    .expect("contact");
+                    assert_eq!(*c, by_hand);
+                }
+            }
+        }
     }
 
     /// The end contact's film is the Hamrock–Dowson central film of a sphere on a flat

@@ -60,7 +60,11 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::physics::lubrication::traction::{HertzStrip, PreparedTraction, TractionModel};
+use std::cell::Cell;
+
+use crate::physics::lubrication::traction::{
+    HertzStrip, KinkHint, PreparedTraction, TractionModel,
+};
 
 /// Traction coefficient above which the printed eq. 3 is flagged: no lubricant film
 /// transmits more than about 0.1 in EHD (limiting traction coefficients of bearing oils are
@@ -246,7 +250,25 @@ pub fn lamina_friction_and_slope_prepared(
     slice: &LaminaSlice,
     want_slope: bool,
 ) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
-    friction_and_slope_with(law, rheology, Some(prepared), slice, want_slope)
+    friction_and_slope_with(law, rheology, Some(prepared), slice, want_slope, None)
+}
+
+/// [`lamina_friction_and_slope_prepared`] with the ATZ kink search hinted by what a
+/// previous call on the same lamina found (`hint`, updated;
+/// `PreparedTraction::lamina_traction_and_slope_hinted`): for a caller that evaluates one
+/// lamina at many nearby sliding speeds. The same force to round-off (not bit for bit).
+///
+/// # Errors
+/// As [`lamina_friction`].
+pub fn lamina_friction_and_slope_hinted(
+    law: RacewayTractionLaw,
+    rheology: &FilmRheology,
+    prepared: &PreparedTraction,
+    slice: &LaminaSlice,
+    want_slope: bool,
+    hint: &Cell<KinkHint>,
+) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
+    friction_and_slope_with(law, rheology, Some(prepared), slice, want_slope, Some(hint))
 }
 
 fn friction_and_slope(
@@ -255,7 +277,7 @@ fn friction_and_slope(
     slice: &LaminaSlice,
     want_slope: bool,
 ) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
-    friction_and_slope_with(law, rheology, None, slice, want_slope)
+    friction_and_slope_with(law, rheology, None, slice, want_slope, None)
 }
 
 fn friction_and_slope_with(
@@ -264,6 +286,7 @@ fn friction_and_slope_with(
     prepared: Option<&PreparedTraction>,
     slice: &LaminaSlice,
     want_slope: bool,
+    hint: Option<&Cell<KinkHint>>,
 ) -> Result<(LaminaFriction, f64), LaminaFrictionError> {
     let q = check("load_n", slice.load_n, false)?;
     let b = check("half_width_m", slice.half_width_m, false)?;
@@ -328,7 +351,10 @@ fn friction_and_slope_with(
             (slope * v, if want_slope { slope } else { 0.0 })
         }
         RacewayTractionLaw::Atz if want_slope => {
-            let (t, slope) = atz().lamina_traction_and_slope(&strip, v, h);
+            let (t, slope) = match hint {
+                Some(k) => atz().lamina_traction_and_slope_hinted(&strip, v, h, k),
+                None => atz().lamina_traction_and_slope(&strip, v, h),
+            };
             (t.force_n, slope)
         }
         RacewayTractionLaw::Atz => (atz().lamina_traction(&strip, v, h).force_n, 0.0),
