@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the line-contact EHL solver (issue 26 Speed): a cold solve of
 //! references.md's isothermal case at 401 nodes (target ≤ 50 ms) and a warm step along a
 //! cage cycle — the same contact at a 2 % higher load started from the previous
-//! solution (target ≤ 10 ms); each by the Newton–Krylov path (the default: GMRES
+//! solution (target ≤ 10 ms); each by the Newton–Krylov path (GMRES
 //! preconditioned with the last LU), the chord path and the reference path (Newton with
 //! the exact Jacobian factorised at every iteration). The same case in NumPy/SciPy (the
 //! reference path's algorithm, LAPACK's LU): `benches/line_ehl_scipy.py`.
@@ -42,7 +42,7 @@ fn reference(nodes: usize, w: f64) -> LineEhlProblem {
 fn benches(c: &mut Criterion) {
     let cold = reference(401, 5e4);
     let next = reference(401, 5.1e4);
-    // The Krylov path (the solver's default), the chord path and the reference path (the
+    // The Krylov path, the chord path (the solver's default) and the reference path (the
     // exact Jacobian factorised every iteration) side by side: the ratios are the
     // speed-ups, measured in one run on a shared machine.
     for (name, strategy) in [

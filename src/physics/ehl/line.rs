@@ -31,12 +31,13 @@
 //! unknown closed by the load balance. The Jacobian is exact: the Reynolds rows carry the
 //! dependence on every pressure through ε(H) and ρ̄H with H through the dense kernel.
 //! Dense LU with partial pivoting (blocked: `numerics::dense_lu`); a backtracking line
-//! search on the residual norm. By default the exact Jacobian is assembled at every
-//! iteration but factorised rarely: its Newton step is found by GMRES preconditioned with
-//! the last LU ([`NewtonStrategy::Krylov`]), and the LU is carried to a warm start on the
-//! same scaled grid. The exact Jacobian factorised at every iteration
-//! ([`NewtonStrategy::Full`]) is the reference path; the chord path
-//! ([`NewtonStrategy::Chord`], Shamanskii) reuses the LU as the matrix itself.
+//! search on the residual norm. By default (the fastest, measured) the chord path
+//! ([`NewtonStrategy::Chord`], Shamanskii) reuses an LU as the Newton matrix while its
+//! steps contract the residual, and the LU is carried to a warm start on the same scaled
+//! grid. The exact Jacobian factorised at every iteration ([`NewtonStrategy::Full`]) is
+//! the reference path; Newton–Krylov ([`NewtonStrategy::Krylov`]) assembles the exact
+//! Jacobian at every iteration and finds its step by GMRES preconditioned with the last
+//! LU.
 //! Cold start: Hertz pressure with a small outlet tail and H₀ from Pan–Hamrock's central
 //! film; warm start: a previous solution interpolated in Hertz-scaled X.
 //!
