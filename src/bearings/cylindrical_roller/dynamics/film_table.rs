@@ -668,6 +668,28 @@ impl FastFilm {
 mod tests {
     use super::*;
 
+    /// The truck bearing's contact law (Tables A1/A2: η₀ 0.0499 Pa·s, α 1.39e-8 1/Pa,
+    /// E′ from 210 GPa and ν 0.3, the roller/inner-race radius, 22 mm, the entrainment at
+    /// 209 and 83.26 rad/s) with the slice-law stiffness 2e9 N/m^(10/9), in a film reading
+    /// and at a clearance (negative: interference).
+    fn truck_law(squeeze: Squeeze, clearance_m: f64) -> ContactLaw {
+        ContactLaw {
+            stiffness: 2.0e9,
+            exponent: 10.0 / 9.0,
+            clearance_m,
+            film: super::super::film::FilmLaw {
+                viscosity_pa_s: 0.0499,
+                pressure_viscosity_pa_inv: 1.39e-8,
+                reduced_modulus_pa: 210e9 / (1.0 - 0.09),
+                reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
+                length_m: 0.022,
+                entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
+                squeeze,
+            }
+            .coefficients(),
+        }
+    }
+
     #[test]
     fn the_table_matches_the_exact_root_to_1e_14() {
         // q = (10/9)·0.128; σ from the truck bearing's floor (≈ −2.4 with the
@@ -729,22 +751,7 @@ mod tests {
         // of it over |z| ≤ 1/128 and beyond, u = f − 1 within 1e-15 relative of
         // −3·expm1(z) inside (the series is the more accurate near 0: f − 1 from `exp`
         // cancels).
-        use super::super::film::FilmLaw;
-        let law = ContactLaw {
-            stiffness: 2.0e9,
-            exponent: 10.0 / 9.0,
-            clearance_m: -5e-6,
-            film: FilmLaw {
-                viscosity_pa_s: 0.0499,
-                pressure_viscosity_pa_inv: 1.39e-8,
-                reduced_modulus_pa: 210e9 / (1.0 - 0.09),
-                reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
-                length_m: 0.022,
-                entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
-                squeeze: Squeeze::Normalised,
-            }
-            .coefficients(),
-        };
+        let law = truck_law(Squeeze::Normalised, -5e-6);
         let Some(film) = law.film else {
             panic!("no film")
         };
@@ -803,25 +810,10 @@ mod tests {
         // clearance) and move fast enough to leave the series (|z| > 1/256: those rollers
         // take `load`): the sums to 1e-14·m of the largest roller term (|W|, |W|·|r| for
         // the third; the kernel regroups the sums), the same clamps.
-        use super::super::film::FilmLaw;
         use std::f64::consts::TAU;
         for squeeze in [Squeeze::Normalised, Squeeze::None] {
             for clearance in [-5e-6, 20e-6] {
-                let law = ContactLaw {
-                    stiffness: 2.0e9,
-                    exponent: 10.0 / 9.0,
-                    clearance_m: clearance,
-                    film: FilmLaw {
-                        viscosity_pa_s: 0.0499,
-                        pressure_viscosity_pa_inv: 1.39e-8,
-                        reduced_modulus_pa: 210e9 / (1.0 - 0.09),
-                        reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
-                        length_m: 0.022,
-                        entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
-                        squeeze,
-                    }
-                    .coefficients(),
-                };
+                let law = truck_law(squeeze, clearance);
                 let fast = FastFilm::new(&law, 2e6).unwrap();
                 for m in [12usize, 13] {
                     let (sp, cp): (Vec<f64>, Vec<f64>) = (0..m)
@@ -866,21 +858,7 @@ mod tests {
             }
         }
         // The printed reading has no lane kernel.
-        let printed = ContactLaw {
-            stiffness: 2.0e9,
-            exponent: 10.0 / 9.0,
-            clearance_m: -5e-6,
-            film: super::super::film::FilmLaw {
-                viscosity_pa_s: 0.0499,
-                pressure_viscosity_pa_inv: 1.39e-8,
-                reduced_modulus_pa: 210e9 / (1.0 - 0.09),
-                reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
-                length_m: 0.022,
-                entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
-                squeeze: Squeeze::Printed,
-            }
-            .coefficients(),
-        };
+        let printed = truck_law(Squeeze::Printed, -5e-6);
         let fast = FastFilm::new(&printed, 2e6).unwrap();
         assert!(fast
             .sums(&printed, &[0.0], &[1.0], [0.0; 4], 0.0, 0.0, 1.0)
@@ -898,23 +876,8 @@ mod tests {
         // it by < 1e-21 m, then s0 + h_floor rounds), the stiffness to 1e-6 relative (the Newton's dh/dδ is taken at
         // its last iterate, before the root: measured 1.3e-8 just above the load floor;
         // the sampled outputs do not use the stiffness).
-        use super::super::film::FilmLaw;
         for squeeze in [Squeeze::None, Squeeze::Normalised, Squeeze::Printed] {
-            let law = ContactLaw {
-                stiffness: 2.0e9,
-                exponent: 10.0 / 9.0,
-                clearance_m: -5e-6,
-                film: FilmLaw {
-                    viscosity_pa_s: 0.0499,
-                    pressure_viscosity_pa_inv: 1.39e-8,
-                    reduced_modulus_pa: 210e9 / (1.0 - 0.09),
-                    reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
-                    length_m: 0.022,
-                    entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
-                    squeeze,
-                }
-                .coefficients(),
-            };
+            let law = truck_law(squeeze, -5e-6);
             let fast = FastFilm::new(&law, 2e6).unwrap();
             let (mut worst_w, mut worst_h): (f64, f64) = (0.0, 0.0);
             for j in 0..2000 {
@@ -951,23 +914,8 @@ mod tests {
         // the floor to 6 µm of interference beyond ρ and squeeze rates of both signs
         // (the normalised factor from 0 to ≈ 4): the same branch (separated, floor,
         // clamped) and the load to 1e-13 relative or 1e-12 N.
-        use super::super::film::FilmLaw;
         for squeeze in [Squeeze::None, Squeeze::Normalised, Squeeze::Printed] {
-            let law = ContactLaw {
-                stiffness: 2.0e9,
-                exponent: 10.0 / 9.0,
-                clearance_m: -5e-6,
-                film: FilmLaw {
-                    viscosity_pa_s: 0.0499,
-                    pressure_viscosity_pa_inv: 1.39e-8,
-                    reduced_modulus_pa: 210e9 / (1.0 - 0.09),
-                    reduced_radius_m: 6.35e-3 * 25e-3 / 31.35e-3,
-                    length_m: 0.022,
-                    entrainment_speed_m_s: (209.0 - 83.26) * 0.025,
-                    squeeze,
-                }
-                .coefficients(),
-            };
+            let law = truck_law(squeeze, -5e-6);
             let fast = FastFilm::new(&law, 2e6).unwrap();
             let mut worst: f64 = 0.0;
             for j in 0..2000 {
